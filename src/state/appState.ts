@@ -1,0 +1,182 @@
+import type { Branch, Linkage } from '../solver/types';
+
+/** UI languages: English (default) and Traditional Chinese. */
+export type Locale = 'en' | 'zh-TW';
+
+/** Which start the NR convergence plot and panel show: the previous cycle point or a fixed cold guess. */
+export type NrStart = 'continuation' | 'cold';
+
+/** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
+export type PlotLayout = 'separate' | 'together';
+
+/** Direction of the animated input: +1 counter-clockwise (theta2 increasing), -1 clockwise. */
+export type Direction = 1 | -1;
+
+/** Coupler point P on the coupler plane: distance from the crank pin A (length unit) and angle from AB (degrees, CCW). */
+export interface CouplerPoint {
+  distance: number;
+  angleDeg: number;
+}
+
+/** User pan and zoom on top of the automatic fit: zoom factor (1 = fitted), pan as fractions of the view's width and height. */
+export interface ViewOffset {
+  zoom: number;
+  panX: number;
+  panY: number;
+}
+
+/** The whole shareable state of the simulator; lengths in one user unit, angles in degrees. */
+export interface AppState {
+  linkage: Linkage;
+  /** Input angle in degrees, kept in [0, 360). */
+  theta2Deg: number;
+  branch: Branch;
+  coupler: CouplerPoint;
+  playing: boolean;
+  /** Animation speed in degrees per frame at a nominal 60 frames per second (0.5 to 10). */
+  speedDegPerFrame: number;
+  direction: Direction;
+  showGrid: boolean;
+  showAngles: boolean;
+  showGhost: boolean;
+  showTrace: boolean;
+  nrStart: NrStart;
+  plotLayout: PlotLayout;
+  /** Intervals per cycle: the sweep has samples + 1 points from 0 to 360 degrees. */
+  samples: number;
+  locale: Locale;
+  view: ViewOffset;
+}
+
+/** Nominal frame rate (frames per second) that converts degrees per frame into degrees per second. */
+export const NOMINAL_FPS = 60;
+
+/** Slowest and fastest animation speeds, degrees per frame. */
+export const SPEED_MIN = 0.5;
+export const SPEED_MAX = 10;
+
+/** Smallest and largest sample counts per cycle accepted from the UI or the URL. */
+export const SAMPLES_MIN = 12;
+export const SAMPLES_MAX = 36000;
+
+/** Sample counts offered in the settings (intervals per cycle). */
+export const SAMPLE_CHOICES: readonly number[] = [360, 720, 1800, 3600];
+
+/** The report's linkage: r1 = 6, r2 = 2, r3 = 5, r4 = 5, theta2 = 45 deg, open branch, P at 2.5 and 30 deg. */
+export const DEFAULT_STATE: AppState = {
+  linkage: { r1: 6, r2: 2, r3: 5, r4: 5 },
+  theta2Deg: 45,
+  branch: 'open',
+  coupler: { distance: 2.5, angleDeg: 30 },
+  playing: false,
+  speedDegPerFrame: 1,
+  direction: 1,
+  showGrid: true,
+  showAngles: true,
+  showGhost: true,
+  showTrace: true,
+  nrStart: 'continuation',
+  plotLayout: 'separate',
+  samples: 360,
+  locale: 'en',
+  view: { zoom: 1, panX: 0, panY: 0 },
+};
+
+/** Wraps degrees into [0, 360); non-finite input gives 0. */
+export function normalizeTheta2Deg(deg: number): number {
+  if (!Number.isFinite(deg)) return 0;
+  const w = deg - 360 * Math.floor(deg / 360);
+  // deg = -1e-17 gives w = 360 in floating point: fold it back.
+  return w >= 360 ? 0 : w;
+}
+
+/** Wraps degrees into (-180, 180]; used for every output angle shown to people. */
+export function wrapDeg180(deg: number): number {
+  if (!Number.isFinite(deg)) return deg;
+  if (deg > -180 && deg <= 180) return deg;
+  let w = deg - 360 * Math.floor((deg + 180) / 360);
+  if (w <= -180) w += 360;
+  if (w > 180) w -= 360;
+  return w;
+}
+
+/** Clamps x into [lo, hi]. */
+export function clamp(x: number, lo: number, hi: number): number {
+  return Math.min(hi, Math.max(lo, x));
+}
+
+/** Every state change the UI can make. */
+export type Action =
+  | { type: 'setLength'; field: keyof Linkage; value: number }
+  | { type: 'setLinkage'; linkage: Linkage }
+  | { type: 'setTheta2'; deg: number }
+  | { type: 'setBranch'; branch: Branch }
+  | { type: 'toggleBranch' }
+  | { type: 'setCoupler'; coupler: Partial<CouplerPoint> }
+  | { type: 'setPlaying'; playing: boolean }
+  | { type: 'setSpeed'; degPerFrame: number }
+  | { type: 'setDirection'; direction: Direction }
+  | { type: 'setFlag'; flag: 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace'; value: boolean }
+  | { type: 'setNrStart'; start: NrStart }
+  | { type: 'setPlotLayout'; layout: PlotLayout }
+  | { type: 'setSamples'; samples: number }
+  | { type: 'setLocale'; locale: Locale }
+  | { type: 'setView'; view: ViewOffset }
+  | { type: 'animate'; theta2Deg: number; direction: Direction; branch: Branch }
+  | { type: 'applyPreset'; linkage: Linkage; theta2Deg: number; branch: Branch; coupler: CouplerPoint }
+  | { type: 'replace'; state: AppState };
+
+/** The app's reducer: pure, returns the same object when nothing changes. Assumes values were validated at the edge. */
+export function reducer(state: AppState, action: Action): AppState {
+  switch (action.type) {
+    case 'setLength':
+      if (state.linkage[action.field] === action.value) return state;
+      return { ...state, linkage: { ...state.linkage, [action.field]: action.value } };
+    case 'setLinkage':
+      return { ...state, linkage: { ...action.linkage } };
+    case 'setTheta2': {
+      const deg = normalizeTheta2Deg(action.deg);
+      return deg === state.theta2Deg ? state : { ...state, theta2Deg: deg };
+    }
+    case 'setBranch':
+      return action.branch === state.branch ? state : { ...state, branch: action.branch };
+    case 'toggleBranch':
+      return { ...state, branch: state.branch === 'open' ? 'crossed' : 'open' };
+    case 'setCoupler':
+      return { ...state, coupler: { ...state.coupler, ...action.coupler } };
+    case 'setPlaying':
+      return action.playing === state.playing ? state : { ...state, playing: action.playing };
+    case 'setSpeed':
+      return { ...state, speedDegPerFrame: clamp(action.degPerFrame, SPEED_MIN, SPEED_MAX) };
+    case 'setDirection':
+      return { ...state, direction: action.direction };
+    case 'setFlag':
+      return state[action.flag] === action.value ? state : { ...state, [action.flag]: action.value };
+    case 'setNrStart':
+      return { ...state, nrStart: action.start };
+    case 'setPlotLayout':
+      return { ...state, plotLayout: action.layout };
+    case 'setSamples':
+      return { ...state, samples: Math.round(clamp(action.samples, SAMPLES_MIN, SAMPLES_MAX)) };
+    case 'setLocale':
+      return { ...state, locale: action.locale };
+    case 'setView':
+      return { ...state, view: { ...action.view } };
+    case 'animate': {
+      const deg = normalizeTheta2Deg(action.theta2Deg);
+      if (deg === state.theta2Deg && action.direction === state.direction && action.branch === state.branch) return state;
+      return { ...state, theta2Deg: deg, direction: action.direction, branch: action.branch };
+    }
+    case 'applyPreset':
+      return {
+        ...state,
+        linkage: { ...action.linkage },
+        theta2Deg: normalizeTheta2Deg(action.theta2Deg),
+        branch: action.branch,
+        coupler: { ...action.coupler },
+        view: { zoom: 1, panX: 0, panY: 0 },
+      };
+    case 'replace':
+      return action.state;
+  }
+}

@@ -1,0 +1,91 @@
+/** Which numeric field a value belongs to; names the field in messages. */
+export type FieldName = 'r1' | 'r2' | 'r3' | 'r4' | 'theta2' | 'couplerDistance' | 'couplerAngle' | 'speed';
+
+/** Why a typed value was rejected. */
+export type FieldErrorKind = 'empty' | 'notNumber' | 'notPositive' | 'negative' | 'tooSmall' | 'tooLarge';
+
+/** A rejected value: the field, the text as typed, why, and the accepted range (field units). */
+export interface FieldError {
+  field: FieldName;
+  raw: string;
+  kind: FieldErrorKind;
+  min: number;
+  max: number;
+}
+
+/** Result of parsing a field: the accepted value or the reason it was rejected. */
+export type FieldResult = { ok: true; value: number } | { ok: false; error: FieldError };
+
+/** Accepted range of one field (inclusive) and whether zero is allowed. */
+export interface FieldSpec {
+  min: number;
+  max: number;
+  /** Lengths must be strictly positive; a coupler distance may be 0. */
+  allowZero: boolean;
+  /** Angles may be negative; lengths may not. */
+  signed: boolean;
+}
+
+/** Shortest and longest link length accepted, in the user's unit. */
+export const LENGTH_MIN = 1e-9;
+export const LENGTH_MAX = 1e9;
+/** Largest angle magnitude accepted in a field, degrees (larger values are reduced modulo 360 without meaning). */
+export const ANGLE_ABS_MAX = 1e6;
+
+/** Ranges of every numeric field. */
+export const FIELD_SPECS: Record<FieldName, FieldSpec> = {
+  r1: { min: LENGTH_MIN, max: LENGTH_MAX, allowZero: false, signed: false },
+  r2: { min: LENGTH_MIN, max: LENGTH_MAX, allowZero: false, signed: false },
+  r3: { min: LENGTH_MIN, max: LENGTH_MAX, allowZero: false, signed: false },
+  r4: { min: LENGTH_MIN, max: LENGTH_MAX, allowZero: false, signed: false },
+  theta2: { min: -ANGLE_ABS_MAX, max: ANGLE_ABS_MAX, allowZero: true, signed: true },
+  couplerDistance: { min: 0, max: LENGTH_MAX, allowZero: true, signed: false },
+  couplerAngle: { min: -ANGLE_ABS_MAX, max: ANGLE_ABS_MAX, allowZero: true, signed: true },
+  speed: { min: 0.5, max: 10, allowZero: false, signed: false },
+};
+
+const FULL_WIDTH = /[\uFF10-\uFF19\uFF0E\uFF0D\uFF0B\uFF45\uFF25]/g;
+const DECIMAL = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[+-]?\d+)?$/i;
+
+/** Normalises typed text: trims, maps full-width digits and signs (from CJK input methods) to ASCII, one comma to a point. */
+export function normalizeNumberText(raw: string): string {
+  let s = raw.trim().replace(FULL_WIDTH, (c) => String.fromCharCode(c.charCodeAt(0) - 0xfee0));
+  s = s.replace(/\u2212/g, '-');
+  if (!s.includes('.') && (s.match(/,/g)?.length ?? 0) === 1) s = s.replace(',', '.');
+  return s;
+}
+
+/** Parses a decimal number (no hex, no Infinity, no thousands separators); NaN when the text is not one. */
+export function parseDecimal(raw: string): number {
+  const s = normalizeNumberText(raw);
+  return DECIMAL.test(s) ? Number(s) : Number.NaN;
+}
+
+/** Parses and range-checks the text typed into a field; never throws. */
+export function parseField(field: FieldName, raw: string): FieldResult {
+  const spec = FIELD_SPECS[field];
+  const fail = (kind: FieldErrorKind): FieldResult => ({
+    ok: false,
+    error: { field, raw, kind, min: spec.min, max: spec.max },
+  });
+  if (normalizeNumberText(raw) === '') return fail('empty');
+  const value = parseDecimal(raw);
+  if (Number.isNaN(value)) return fail('notNumber');
+  return checkValue(field, value, raw);
+}
+
+/** Range-checks a number already parsed (for example from a slider or the URL); never throws. */
+export function checkValue(field: FieldName, value: number, raw: string = String(value)): FieldResult {
+  const spec = FIELD_SPECS[field];
+  const fail = (kind: FieldErrorKind): FieldResult => ({
+    ok: false,
+    error: { field, raw, kind, min: spec.min, max: spec.max },
+  });
+  if (typeof value !== 'number' || Number.isNaN(value)) return fail('notNumber');
+  if (!spec.signed && value < 0) return fail('negative');
+  if (!spec.allowZero && value === 0) return fail('notPositive');
+  if (value > spec.max || !Number.isFinite(value)) return fail('tooLarge');
+  if (value < spec.min) return fail(spec.signed ? 'tooLarge' : 'tooSmall');
+  if (!spec.allowZero && value < spec.min) return fail('tooSmall');
+  return { ok: true, value: value === 0 ? 0 : value };
+}

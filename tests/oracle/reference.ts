@@ -1,0 +1,241 @@
+/**
+ * Independent high-precision oracle for the four-bar position problem.
+ *
+ * Every double input (link lengths, theta2) is taken as the exact binary value it holds and the
+ * geometry is evaluated with decimal.js at 60 significant digits, so the results are the true
+ * answers for the given doubles, rounded once to double at the end. The derivation is deliberately
+ * different from the solver's (which uses atan2 of a Kahan area): here both unknown angles come from
+ * the law of cosines in the triangle crank pin A, coupler pin B, rocker pivot O4, via acos.
+ *
+ * Conventions (hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
+ * sigma = +1 ("open") puts B left of the ray A -> O4, which gives sin(t4 - t3) > 0.
+ */
+import Decimal from 'decimal.js';
+
+/** Link lengths as in src/solver/types.ts (kept structural so the oracle imports nothing from src). */
+export interface LinkLengths {
+  r1: number;
+  r2: number;
+  r3: number;
+  r4: number;
+}
+
+/** +1 open, -1 crossed. */
+export type Sigma = 1 | -1;
+
+/** A unique assembly: wrapped angles (rad) and the facts tolerances are derived from. */
+export interface ReferencePose {
+  theta3: number;
+  theta4: number;
+  /** sin(theta4 - theta3), the transmission-angle sine; its sign is sigma. */
+  sinMu: number;
+  /** Distance |A O4| (length unit). */
+  s: number;
+}
+
+/** Outcome of the oracle at one theta2. */
+export type ReferenceOutcome =
+  | { kind: 'unique'; pose: ReferencePose }
+  /** |A O4| outside [|r3 - r4|, r3 + r4]: the loop cannot close. */
+  | { kind: 'unreachable' }
+  /** A lies on O4 and r3 = r4: B anywhere on a circle, t3 = t4 (no unique answer). */
+  | { kind: 'continuum' };
+
+const D = Decimal.clone({ precision: 60, rounding: Decimal.ROUND_HALF_EVEN, minE: -9e15, maxE: 9e15 });
+type Dec = InstanceType<typeof D>;
+
+const PI: Dec = D.acos(-1);
+const TWO_PI: Dec = PI.times(2);
+/** Tolerance for rounding of the 60-digit arithmetic itself when deciding "exactly at a limit". */
+const LIMIT_FUZZ: Dec = new D('1e-50');
+
+/** The exact value of a finite double as a Decimal (mantissa * 2^exponent, rounded only at 60 digits). */
+export function exact(x: number): Dec {
+  if (!Number.isFinite(x)) throw new Error(`oracle needs finite input, got ${x}`);
+  if (x === 0) return new D(0);
+  const view = new DataView(new ArrayBuffer(8));
+  view.setFloat64(0, x);
+  const bits = view.getBigUint64(0);
+  const sign = bits >> 63n ? -1 : 1;
+  const expBits = Number((bits >> 52n) & 0x7ffn);
+  const frac = bits & 0xfffffffffffffn;
+  const mantissa = expBits === 0 ? frac : frac | (1n << 52n);
+  const exponent = (expBits === 0 ? 1 : expBits) - 1075;
+  return new D(mantissa.toString()).times(new D(2).pow(exponent)).times(sign);
+}
+
+/** Wrap a Decimal angle to (-pi, pi]. */
+function wrapDec(a: Dec): Dec {
+  let w = a.minus(TWO_PI.times(a.div(TWO_PI).floor()));
+  // w in [0, 2pi)
+  if (w.greaterThan(PI)) w = w.minus(TWO_PI);
+  return w;
+}
+
+function clampedAcos(c: Dec): Dec | null {
+  if (c.abs().greaterThan(new D(1).plus(LIMIT_FUZZ))) return null;
+  if (c.greaterThan(1)) return new D(0);
+  if (c.lessThan(-1)) return PI;
+  return D.acos(c);
+}
+
+/** Full oracle outcome at theta2 (rad) on branch sigma. */
+export function referenceSolve(l: LinkLengths, theta2: number, sigma: Sigma): ReferenceOutcome {
+  const r1 = exact(l.r1);
+  const r2 = exact(l.r2);
+  const r3 = exact(l.r3);
+  const r4 = exact(l.r4);
+  const t2 = exact(theta2);
+  const ax = r2.times(D.cos(t2));
+  const ay = r2.times(D.sin(t2));
+  // Vector A -> O4 and its length s (law of cosines in triangle O2 A O4 for s^2).
+  const dx = r1.minus(ax);
+  const dy = ay.neg();
+  const s2 = r1.pow(2).plus(r2.pow(2)).minus(r1.times(r2).times(2).times(D.cos(t2)));
+  if (s2.lessThanOrEqualTo(0)) {
+    // Crank pin on O4: a continuum when r3 = r4, otherwise impossible.
+    return r3.minus(r4).abs().lessThanOrEqualTo(r3.times(LIMIT_FUZZ)) ? { kind: 'continuum' } : { kind: 'unreachable' };
+  }
+  const s = s2.sqrt();
+  const beta = D.atan2(dy, dx);
+  // Triangle A B O4 with sides |AB| = r3, |B O4| = r4, |A O4| = s.
+  const cosA = r3.pow(2).plus(s2).minus(r4.pow(2)).div(r3.times(s).times(2));
+  const cosO4 = r4.pow(2).plus(s2).minus(r3.pow(2)).div(r4.times(s).times(2));
+  const psi = clampedAcos(cosA); // interior angle at A
+  const phi = clampedAcos(cosO4); // interior angle at O4
+  if (psi === null || phi === null) return { kind: 'unreachable' };
+  // B left of A->O4 for sigma = +1: rotate the ray A->O4 by +psi at A; at O4 the ray O4->A
+  // (direction beta + pi) is rotated by -phi to reach B.
+  const t3 = beta.plus(psi.times(sigma));
+  const t4 = beta.plus(PI).minus(phi.times(sigma));
+  const mu = t4.minus(t3);
+  return {
+    kind: 'unique',
+    pose: {
+      theta3: wrapDec(t3).toNumber(),
+      theta4: wrapDec(t4).toNumber(),
+      sinMu: D.sin(mu).toNumber(),
+      s: s.toNumber(),
+    },
+  };
+}
+
+/** Reference theta3, theta4 (rad, wrapped to (-pi, pi]) on branch sigma, or null when there is no unique assembly. */
+export function referenceAngles(l: LinkLengths, theta2: number, sigma: Sigma): ReferencePose | null {
+  const out = referenceSolve(l, theta2, sigma);
+  return out.kind === 'unique' ? out.pose : null;
+}
+
+/**
+ * Signed slack of the loop at theta2 in length units: min(r3 + r4 - s, s - |r3 - r4|).
+ * Negative means unreachable; its size says how far from a limit position the input is.
+ */
+export function referenceSlack(l: LinkLengths, theta2: number): number {
+  const r1 = exact(l.r1);
+  const r2 = exact(l.r2);
+  const r3 = exact(l.r3);
+  const r4 = exact(l.r4);
+  const t2 = exact(theta2);
+  const s2 = r1.pow(2).plus(r2.pow(2)).minus(r1.times(r2).times(2).times(D.cos(t2)));
+  const s = s2.greaterThan(0) ? s2.sqrt() : new D(0);
+  return D.min(r3.plus(r4).minus(s), s.minus(r3.minus(r4).abs())).toNumber();
+}
+
+/** Loop-closure residual norm |(f1, f2)| of the given double angles, evaluated exactly (length unit). */
+export function referenceResidual(l: LinkLengths, theta2: number, theta3: number, theta4: number): number {
+  const r1 = exact(l.r1);
+  const r2 = exact(l.r2);
+  const r3 = exact(l.r3);
+  const r4 = exact(l.r4);
+  const t2 = exact(theta2);
+  const t3 = exact(theta3);
+  const t4 = exact(theta4);
+  const f1 = r2.times(D.cos(t2)).plus(r3.times(D.cos(t3))).minus(r4.times(D.cos(t4))).minus(r1);
+  const f2 = r2.times(D.sin(t2)).plus(r3.times(D.sin(t3))).minus(r4.times(D.sin(t4)));
+  return f1.pow(2).plus(f2.pow(2)).sqrt().toNumber();
+}
+
+/** Input-range limits from the reachable band of cos(theta2). */
+export interface ReferenceLimits {
+  /** No theta2 assembles. */
+  empty: boolean;
+  /** Smallest reachable |theta2| (rad); 0 when there is no lower limit. */
+  lowerAbs: number;
+  /** Largest reachable |theta2| (rad); pi when there is no upper limit. */
+  upperAbs: number;
+  hasLower: boolean;
+  hasUpper: boolean;
+  /**
+   * Half-width bounds of cos(theta2) at the limits, cU = (r1^2 + r2^2 - (r3 + r4)^2) / (2 r1 r2)
+   * and cL = (r1^2 + r2^2 - (r3 - r4)^2) / (2 r1 r2): reachable iff cU <= cos(theta2) <= cL.
+   */
+  cosUpper: number;
+  cosLower: number;
+}
+
+/**
+ * Input-range limits (hard-cases.md "Classification"): s <= r3 + r4 iff cos t2 >= cU, s >= |r3 - r4|
+ * iff cos t2 <= cL, so the reachable |t2| is [acos(min(cL, 1)), acos(max(cU, -1))] (empty if cU > cL
+ * or the band misses [-1, 1]). Equivalent to the T1, T2, T3 tests of the table.
+ */
+export function referenceLimits(l: LinkLengths): ReferenceLimits {
+  const r1 = exact(l.r1);
+  const r2 = exact(l.r2);
+  const r3 = exact(l.r3);
+  const r4 = exact(l.r4);
+  const den = r1.times(r2).times(2);
+  const base = r1.pow(2).plus(r2.pow(2));
+  const cU = base.minus(r3.plus(r4).pow(2)).div(den);
+  const cL = base.minus(r3.minus(r4).pow(2)).div(den);
+  const empty = cU.greaterThan(cL) || cU.greaterThan(1) || cL.lessThan(-1);
+  const hasLower = cL.lessThan(1);
+  const hasUpper = cU.greaterThan(-1);
+  return {
+    empty,
+    hasLower,
+    hasUpper,
+    lowerAbs: empty ? NaN : hasLower ? D.acos(cL).toNumber() : 0,
+    upperAbs: empty ? NaN : hasUpper ? D.acos(cU).toNumber() : Math.PI,
+    cosUpper: cU.toNumber(),
+    cosLower: cL.toNumber(),
+  };
+}
+
+/**
+ * Extreme rocker angles (rad) of a crank-rocker: B lies on the circle |O2 B| = r3 + r2 or r3 - r2
+ * (crank and coupler collinear), so the interior angle at O4 of triangle O2 O4 B gives
+ * t4 = pi - acos((r1^2 + r4^2 - d^2) / (2 r1 r4)) on the open branch.
+ */
+export function referenceRockerSwing(l: LinkLengths): { min: number; max: number } {
+  const r1 = exact(l.r1);
+  const r2 = exact(l.r2);
+  const r3 = exact(l.r3);
+  const r4 = exact(l.r4);
+  const t4 = (d: Dec): Dec => PI.minus(D.acos(r1.pow(2).plus(r4.pow(2)).minus(d.pow(2)).div(r1.times(r4).times(2))));
+  const a = t4(r3.plus(r2));
+  const b = t4(r3.minus(r2).abs());
+  return { min: D.min(a, b).toNumber(), max: D.max(a, b).toNumber() };
+}
+
+/** a - b wrapped to (-pi, pi] (rad), in double precision. */
+export function angleDiff(a: number, b: number): number {
+  let d = (a - b) % (2 * Math.PI);
+  if (d > Math.PI) d -= 2 * Math.PI;
+  else if (d <= -Math.PI) d += 2 * Math.PI;
+  return d;
+}
+
+/** Degrees to radians for test inputs (x * pi / 180 in double; 90 -> fl(pi/2), 180 -> fl(pi)). */
+export function deg(x: number): number {
+  return (x * Math.PI) / 180;
+}
+
+/** Radians to degrees for comparing with the table. */
+export function toDeg(x: number): number {
+  return (x * 180) / Math.PI;
+}
+
+/** Exact conversion of a radian double to degrees in 60 digits (for comparing with 10-decimal tables). */
+export function exactToDeg(x: number): number {
+  return exact(x).times(180).div(PI).toNumber();
+}

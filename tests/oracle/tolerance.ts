@@ -1,0 +1,50 @@
+/**
+ * Accuracy a backward-stable solver can reach, from hard-cases.md "Conditioning".
+ *
+ * A backward-stable solve is exact for coordinates perturbed by about ea = 2 eps Lmax (A, B and O4 all
+ * live at that scale). In the triangle A B O4 that moves the angle at A by about ea / (r3 |sin mu|) and
+ * the angle at O4 by ea / (r4 |sin mu|) (law of sines; mu = t4 - t3 is the angle at B), and the
+ * direction of A -> O4 by ea / s. Near a fold sin mu -> 0 and the first-order term is replaced by
+ * the square-root law of acos, saturating at sqrt(K ea / r), i.e. about 1e-8 rad for links of
+ * comparable size ("K eps / sqrt(d + eps)" with d the distance to the limit). With very unequal
+ * links the ratio Lmax / r gives "eps * (longest / shortest)".
+ * K = 10 is the "about 10 eps * condition" allowance of that section.
+ */
+import type { LinkLengths, ReferencePose } from './reference';
+
+export const EPS = Number.EPSILON;
+/** Safety factor of the conditioning section ("about 10 eps * condition"). */
+export const K = 10;
+/** Floor used where the problem is well conditioned (|sin mu| >= 0.1, comparable links). */
+export const BENIGN_TOL = 1e-12;
+
+/** Conditioning bound (rad) for theta3 and theta4 at the reference pose, without any floor. */
+export function conditioningBound(l: LinkLengths, pose: ReferencePose): { theta3: number; theta4: number } {
+  const lMax = Math.max(l.r1, l.r2, l.r3, l.r4);
+  const ea = 2 * EPS * lMax;
+  const g = ea / Math.min(l.r3, l.r4);
+  const damp = Math.sqrt(pose.sinMu * pose.sinMu + K * g);
+  const direction = (K * ea) / pose.s;
+  return {
+    theta3: (K * ea) / (l.r3 * damp) + direction,
+    theta4: (K * ea) / (l.r4 * damp) + direction,
+  };
+}
+
+/** Test tolerance (rad): the conditioning bound, but never tighter than the benign 1e-12. */
+export function angleTolerance(l: LinkLengths, pose: ReferencePose): { theta3: number; theta4: number } {
+  const b = conditioningBound(l, pose);
+  return { theta3: Math.max(BENIGN_TOL, b.theta3), theta4: Math.max(BENIGN_TOL, b.theta4) };
+}
+
+/**
+ * Tolerance (rad) for an input-range limit acos(c): c carries a rounding error of about
+ * dc = eps (r1^2 + r2^2 + (r3 + r4)^2) / (2 r1 r2), which moves acos by dc / sqrt(1 - c^2),
+ * saturating at sqrt(2 dc) when c is near +-1 (a limit near 0 or 180 deg is ill-conditioned).
+ */
+export function limitTolerance(l: LinkLengths, c: number): number {
+  const m = Math.max(l.r1, l.r2, l.r3, l.r4); // normalise so the squares cannot overflow
+  const [a, b, c3, c4] = [l.r1 / m, l.r2 / m, l.r3 / m, l.r4 / m];
+  const dc = (EPS * (a * a + b * b + (c3 + c4) ** 2)) / (2 * a * b);
+  return Math.max(BENIGN_TOL, (K * dc) / Math.sqrt(Math.max(0, 1 - c * c) + K * dc));
+}
