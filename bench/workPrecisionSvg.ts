@@ -23,9 +23,9 @@ function escapeXml(s: string): string {
 
 /** A standalone SVG work-precision diagram (log time per point against log max angle error). */
 export function workPrecisionSvg(series: WorkPrecisionSeries[], opts: WorkPrecisionSvgOptions = {}): string {
-  const width = opts.width ?? 720;
+  const width = opts.width ?? 860;
   const height = opts.height ?? 440;
-  const m = { top: 36, right: 190, bottom: 52, left: 72 };
+  const m = { top: 36, right: 270, bottom: 52, left: 72 };
   const all = series.flatMap((s) => s.points);
   const tMin = Math.min(...all.map((p) => p.nsPerPoint));
   const tMax = Math.max(...all.map((p) => p.nsPerPoint));
@@ -66,7 +66,8 @@ export function workPrecisionSvg(series: WorkPrecisionSeries[], opts: WorkPrecis
     .x((p) => x(p.nsPerPoint))
     .y((p) => y(Math.max(p.maxError, ERROR_FLOOR)));
   series.forEach((s, i) => {
-    const pts = [...s.points].sort((a, b) => a.nsPerPoint - b.nsPerPoint);
+    // Trace each method over its tolerances, loosest first.
+    const pts = [...s.points].sort((a, b) => (b.tol ?? 0) - (a.tol ?? 0));
     out.push(`<path d="${path(pts) ?? ''}" fill="none" stroke="${s.color}" stroke-width="2"/>`);
     for (const p of pts) {
       out.push(
