@@ -7,7 +7,8 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { angleDiff, sweep, theta2Grid } from '../src/solver';
+import { scoreSweep } from '../src/lab/workPrecision';
+import { sweep, theta2Grid } from '../src/solver';
 import type { Linkage, SweepMethod } from '../src/solver';
 import { referenceAngles } from '../tests/oracle/reference';
 import { workPrecisionSvg } from './workPrecisionSvg';
@@ -103,40 +104,9 @@ interface Row {
   falseConvergence: number;
 }
 
-const WRONG = 1e-6; // an angle error this large is not rounding: the point is on the wrong branch or not a solution
-
 function evaluate(c: BenchCase, stepDeg: number, grid: Float64Array, ref: Reference, cfg: Config): Row {
   const opts = { branch: 'open' as const, method: cfg.method, tol: cfg.tol, polish: cfg.polish };
   const r = sweep(c.linkage, grid, opts);
-  const errors: number[] = [];
-  let failures = 0;
-  let wrongBranch = 0;
-  let falseConvergence = 0;
-  for (let i = 0; i < grid.length; i++) {
-    const want = ref.open[i];
-    if (r.status[i] !== 'ok') {
-      if (want) failures++;
-      continue;
-    }
-    if (!want) {
-      falseConvergence++;
-      continue;
-    }
-    const err = Math.max(Math.abs(angleDiff(r.theta3[i], want.theta3)), Math.abs(angleDiff(r.theta4[i], want.theta4)));
-    const other = ref.crossed[i];
-    if (err > WRONG && other) {
-      const errOther = Math.max(
-        Math.abs(angleDiff(r.theta3[i], other.theta3)),
-        Math.abs(angleDiff(r.theta4[i], other.theta4)),
-      );
-      if (errOther < WRONG) {
-        wrongBranch++;
-        continue;
-      }
-    }
-    errors.push(err);
-  }
-  errors.sort((a, b) => a - b);
   const ms = timeSweep(() => sweep(c.linkage, grid, opts));
   return {
     case: c.name,
@@ -147,11 +117,7 @@ function evaluate(c: BenchCase, stepDeg: number, grid: Float64Array, ref: Refere
     points: grid.length,
     nsPerPoint: (ms * 1e6) / grid.length,
     itersPerPoint: r.totalIterations / grid.length,
-    maxError: errors.length ? errors[errors.length - 1] : NaN,
-    p99Error: errors.length ? errors[Math.min(errors.length - 1, Math.floor(0.99 * errors.length))] : NaN,
-    failures,
-    wrongBranch,
-    falseConvergence,
+    ...scoreSweep(r, ref.open, ref.crossed),
   };
 }
 
