@@ -55,7 +55,7 @@ export function inputRange(l: Linkage): InputRange {
 }
 
 const GRASHOF_NAMES = ['GCCC', 'GCRR', 'GRCR', 'GRRC'];
-const CHANGE_NAMES = ['CCC', 'CRR', 'RCR', 'RRC'];
+const CHANGE_NAMES = ['SCCC', 'SCRR', 'SRCR', 'SRRC'];
 const GRASHOF_TYPES: LinkageType[] = ['double-crank', 'crank-rocker', 'double-rocker', 'double-rocker'];
 
 /**

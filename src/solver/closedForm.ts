@@ -4,6 +4,8 @@ import type { Angles, Branch, Linkage } from './types';
 import { normalizeLinkage, validateLinkage } from './validate';
 
 const EPS = Number.EPSILON;
+/** Below this |A O4| (normalised) s^2 underflows and the closed form switches to s-scaled formulas. */
+const TINY_S = 1e-120;
 
 /** Outcome of one closed-form evaluation. */
 export const Assembly = {
@@ -175,6 +177,11 @@ export function assemblyFactors(plan: ClosedFormPlan, theta2: number, f: Assembl
   f.dMinus = dMinus;
   // Crank pin on O4: s = 0, so r3 = r4 (else dMinus < 0 above) and any theta3 = theta4 closes the loop.
   if (dx === 0 && dy === 0) return Assembly.Continuum;
+  if (Math.abs(dx) + Math.abs(dy) < TINY_S) {
+    // s^2 underflows here, so the factors above lost s: decide with |r3 - r4| <= s directly.
+    const sLen = Math.hypot(dx, dy);
+    if (Math.abs(plan.r3 - plan.r4) > sLen * (1 + 8 * EPS)) return Assembly.Unreachable;
+  }
   return status;
 }
 
@@ -214,7 +221,7 @@ export function closedFormAt(
   const im4 = dx * y - dy * x4;
   const mag3 = Math.sqrt(re3 * re3 + im3 * im3);
   const mag4 = Math.sqrt(re4 * re4 + im4 * im4);
-  if (mag3 > 1e-250 && mag4 > 1e-250) {
+  if (Math.abs(dx) + Math.abs(dy) >= TINY_S) {
     out.theta3 = wrapAtan2(im3, re3);
     out.theta4 = wrapAtan2(im4, re4);
     out.cos3 = re3 / mag3;
@@ -222,10 +229,14 @@ export function closedFormAt(
     out.cos4 = re4 / mag4;
     out.sin4 = im4 / mag4;
   } else {
-    // s so small that the products underflow: add the three angles instead.
+    // |A O4| = s so small that s^2 underflows: divide the triangle's X and Y by s, with
+    // q = (r3 - r4) / s: X3 / s = q (r3 + r4) + s, X4 / s = s - q (r3 + r4), Y / s = sqrt(dPlus (1 - q^2)).
+    const sLen = Math.hypot(dx, dy);
+    const q = Math.max(-1, Math.min(1, (r3 - r4) / sLen));
+    const ys = Math.sqrt(f.dPlus) * Math.sqrt((1 - q) * (1 + q));
     const beta = Math.atan2(dy, dx);
-    const psi = Math.atan2(Math.abs(y), x3);
-    const gamma = Math.atan2(Math.abs(y), x4);
+    const psi = Math.atan2(ys, q * (r3 + r4) + sLen);
+    const gamma = Math.atan2(ys, sLen - q * (r3 + r4));
     const a3 = beta + sigma * psi;
     const a4 = beta + Math.PI - sigma * gamma;
     out.cos3 = Math.cos(a3);
