@@ -177,6 +177,27 @@ function targets(l: Linkage, grid: Float64Array) {
   };
 }
 
+/** The README's table: every case at 1 deg, default settings, plus the target line. */
+function markdownTable(rows: Row[], t: ReturnType<typeof targets>): string {
+  const e = (x: number) => (Number.isNaN(x) ? '-' : x.toExponential(1));
+  const lines = [
+    '| case | method | ns/point | iterations/point | max error (rad) | p99 error (rad) | failed | wrong branch | false conv. |',
+    '|---|---|---:|---:|---:|---:|---:|---:|---:|',
+  ];
+  for (const r of rows.filter((x) => x.stepDeg === 1 && (x.tol === null || x.case === CASES[0].name))) {
+    lines.push(
+      `| ${r.case} | ${r.label} | ${r.nsPerPoint.toFixed(0)} | ${r.itersPerPoint.toFixed(2)} | ${e(r.maxError)} | ${e(r.p99Error)} | ${r.failures} | ${r.wrongBranch} | ${r.falseConvergence} |`,
+    );
+  }
+  lines.push(
+    '',
+    `Targets (report's case, 1 deg, 361 points, interleaved medians in one process): seed NR ${t.seedUsPerSweep.toFixed(1)} us/sweep at ${t.seedItersPerPoint.toFixed(2)} it/pt; ` +
+      `default sweep ${t.defaultUsPerSweep.toFixed(1)} us = ${t.defaultOverSeed.toFixed(2)}x seed (target <= 0.5x); ` +
+      `NR continuation ${t.newtonUsPerSweep.toFixed(1)} us = ${t.newtonOverSeed.toFixed(2)}x seed (target <= 1.0x) at ${t.newtonItersPerPoint.toFixed(2)} it/pt (target <= 2.0).`,
+  );
+  return lines.join('\n') + '\n';
+}
+
 function main(): void {
   const rows: Row[] = [];
   const t0 = performance.now();
@@ -242,7 +263,8 @@ function main(): void {
       2,
     ),
   );
-  console.log(`\nwrote bench/results/solver.json and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`);
+  writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, t));
+  console.log(`\nwrote bench/results/solver.json, solver-table.md and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`);
 }
 
 main();

@@ -42,7 +42,7 @@ const MAX_PREDICTED_STEP = 0.5;
 /** Iteration cap of one continuation step before the point is re-seeded from the closed form. */
 const CONTINUATION_MAX_ITERATIONS = 25;
 
-interface SweepArrays extends SweepResult {}
+type SweepArrays = SweepResult;
 
 function unscale(plan: ClosedFormPlan, x: number): number {
   return plan.unscale !== 0 ? x * plan.unscale : scaleByPow2(x, plan.exponent);
