@@ -35,8 +35,12 @@ export function seedFirstGuess(branch: Branch): Angles {
   return { theta3: s * degToRad(30), theta4: s * degToRad(90) };
 }
 
-/** Below this |sin(theta4 - theta3)| the two branches are too close for a sign test; trust the closed form. */
-const AMBIGUOUS_SIN = 1e-7;
+/**
+ * Below this |sin(theta4 - theta3)| NR is near a fold or change point: its answer is only as good as
+ * eps / |sin mu| and the branches are too close for a sign test, so the closed form (exact to rounding
+ * of cos/sin theta2) is taken instead.
+ */
+const AMBIGUOUS_SIN = 1e-3;
 /** Largest predicted change of an angle per point (radians) before the predictor is distrusted. */
 const MAX_PREDICTED_STEP = 0.5;
 /** Iteration cap of one continuation step before the point is re-seeded from the closed form. */
@@ -214,6 +218,7 @@ function sweepNewton(
         } else if (Math.abs(sinMu) >= AMBIGUOUS_SIN) {
           r.branchCorrections++;
         }
+        // else: near a fold, fall through to the closed form below.
       }
     }
     if (!solved) {

@@ -46,32 +46,176 @@ const rows: TableRow[] = [
   { name: 'case 1 at 90, crossed', l: case1, theta2: deg(90), sigma: -1, deg: [-69.2034283393, -147.6664693065] },
   { name: 'case 1 at 180, open', l: case1, theta2: deg(180), sigma: 1, deg: [36.8698976458, 143.1301023542] },
   { name: 'case 1 at 180, crossed', l: case1, theta2: deg(180), sigma: -1, deg: [-36.8698976458, -143.1301023542] },
-  { name: 'case 2 at 180', l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-9 }, theta2: Math.PI, sigma: 1, deg: [0.0009356362, 179.9985965457] },
-  { name: 'case 2 at 180, crossed', l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-9 }, theta2: Math.PI, sigma: -1, deg: [-0.0009356362, -179.9985965457] },
-  { name: 'case 3 at 0', l: { r1: 5, r2: 1, r3: 6, r4: 2 + 1e-9 }, theta2: 0, sigma: 1, deg: [0.0007396854, 0.0022190561] },
-  { name: 'case 5 at 180', l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-12 }, theta2: Math.PI, sigma: 1, deg: [2.95887e-5, 179.9999556169] },
-  { name: 'case 7 antiparallelogram at 90', l: { r1: 4, r2: 2, r3: 4, r4: 2 }, theta2: deg(90), sigma: -1, deg: [-53.1301023542, -143.1301023542] },
+  {
+    name: 'case 2 at 180',
+    l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-9 },
+    theta2: Math.PI,
+    sigma: 1,
+    deg: [0.0009356362, 179.9985965457],
+  },
+  {
+    name: 'case 2 at 180, crossed',
+    l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-9 },
+    theta2: Math.PI,
+    sigma: -1,
+    deg: [-0.0009356362, -179.9985965457],
+  },
+  {
+    name: 'case 3 at 0',
+    l: { r1: 5, r2: 1, r3: 6, r4: 2 + 1e-9 },
+    theta2: 0,
+    sigma: 1,
+    deg: [0.0007396854, 0.0022190561],
+  },
+  {
+    name: 'case 5 at 180',
+    l: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-12 },
+    theta2: Math.PI,
+    sigma: 1,
+    deg: [2.95887e-5, 179.9999556169],
+  },
+  {
+    name: 'case 7 antiparallelogram at 90',
+    l: { r1: 4, r2: 2, r3: 4, r4: 2 },
+    theta2: deg(90),
+    sigma: -1,
+    deg: [-53.1301023542, -143.1301023542],
+  },
   { name: 'case 7 parallelogram at 90', l: { r1: 4, r2: 2, r3: 4, r4: 2 }, theta2: deg(90), sigma: 1, deg: [0, 90] },
-  { name: 'case 8 at 90, open', l: { r1: 2, r2: 2, r3: 4, r4: 4 }, theta2: deg(90), sigma: 1, deg: [24.2951889454, 65.7048110546] },
-  { name: 'case 8 at 90, crossed', l: { r1: 2, r2: 2, r3: 4, r4: 4 }, theta2: deg(90), sigma: -1, deg: [-114.2951889454, -155.7048110546] },
-  { name: 'case 9 kite at 90', l: { r1: 4, r2: 2, r3: 2, r4: 4 }, theta2: deg(90), sigma: 1, deg: [36.8698976458, 126.8698976458] },
+  {
+    name: 'case 8 at 90, open',
+    l: { r1: 2, r2: 2, r3: 4, r4: 4 },
+    theta2: deg(90),
+    sigma: 1,
+    deg: [24.2951889454, 65.7048110546],
+  },
+  {
+    name: 'case 8 at 90, crossed',
+    l: { r1: 2, r2: 2, r3: 4, r4: 4 },
+    theta2: deg(90),
+    sigma: -1,
+    deg: [-114.2951889454, -155.7048110546],
+  },
+  {
+    name: 'case 9 kite at 90',
+    l: { r1: 4, r2: 2, r3: 2, r4: 4 },
+    theta2: deg(90),
+    sigma: 1,
+    deg: [36.8698976458, 126.8698976458],
+  },
   { name: 'case 9 folded at 90', l: { r1: 4, r2: 2, r3: 2, r4: 4 }, theta2: deg(90), sigma: -1, deg: [-90, 180] },
-  { name: 'case 10 at 0', l: { r1: 4, r2: 3, r3: 3.5, r4: 3 }, theta2: 0, sigma: 1, deg: [52.6168015821, 67.975687163] },
-  { name: 'case 11 at 180', l: { r1: 3, r2: 2.5, r3: 4.2, r4: 1.5 }, theta2: Math.PI, sigma: 1, deg: [8.9299764871, 154.2378459017] },
-  { name: 'case 12 at 60, open', l: { r1: 4, r2: 3, r3: 1, r4: 3.5 }, theta2: deg(60), sigma: 1, deg: [29.8530370636, 117.8063239659] },
-  { name: 'case 12 at 60, crossed', l: { r1: 4, r2: 3, r3: 1, r4: 3.5 }, theta2: deg(60), sigma: -1, deg: [-122.0572645675, 149.9894485301] },
-  { name: 'case 13 at fl(pi/2), open', l: { r1: 4, r2: 3, r3: 2.5, r4: 2.5 }, theta2: Math.PI / 2, sigma: 1, deg: [-36.8698972066, 143.1301019149] },
-  { name: 'case 13 at fl(pi/2), crossed', l: { r1: 4, r2: 3, r3: 2.5, r4: 2.5 }, theta2: Math.PI / 2, sigma: -1, deg: [-36.8698980851, 143.1301027934] },
-  { name: 'case 14 at pi/3 + 1e-8, open', l: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 }, theta2: Math.PI / 3 + 1e-8, sigma: 1, deg: [-49.1066047779, 9.549e-7] },
-  { name: 'case 14 at pi/3 + 1e-8, crossed', l: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 }, theta2: Math.PI / 3 + 1e-8, sigma: -1, deg: [-130.8933940762, -179.999999809] },
-  { name: 'case 15 at 0', l: { r1: 1, r2: 1e-6, r3: 1, r4: 1 }, theta2: 0, sigma: 1, deg: [60.0000330797, 119.9999669203] },
-  { name: 'case 16 at 0', l: { r1: 1e6, r2: 1, r3: 1e6 + 0.5, r4: 2 }, theta2: 0, sigma: 1, deg: [7.57952e-5, 41.4096600069] },
-  { name: 'case 16 at 90, open', l: { r1: 1e6, r2: 1, r3: 1e6 + 0.5, r4: 2 }, theta2: deg(90), sigma: 1, deg: [5.3657e-5, 75.5225007884] },
-  { name: 'case 17 (case 1 x 1e200) at 90', l: { r1: 6e200, r2: 2e200, r3: 5e200, r4: 5e200 }, theta2: deg(90), sigma: 1, deg: [32.3335306935, 110.7965716607] },
-  { name: 'case 18 (case 1 x 1e-200) at 90', l: { r1: 6e-200, r2: 2e-200, r3: 5e-200, r4: 5e-200 }, theta2: deg(90), sigma: -1, deg: [-69.2034283393, -147.6664693065] },
-  { name: 'case 19 at 0', l: { r1: 6, r2: 1e-300, r3: 5, r4: 5 }, theta2: 0, sigma: 1, deg: [53.1301023542, 126.8698976458] },
-  { name: 'case 19 at 123', l: { r1: 6, r2: 1e-300, r3: 5, r4: 5 }, theta2: deg(123), sigma: -1, deg: [-53.1301023542, -126.8698976458] },
-  { name: 'case 20 at fl(pi/3), open', l: { r1: 1, r2: 1, r3: 1e-9, r4: 1 }, theta2: Math.PI / 3, sigma: 1, deg: [30.0000056695, 119.9999999427] },
+  {
+    name: 'case 10 at 0',
+    l: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
+    theta2: 0,
+    sigma: 1,
+    deg: [52.6168015821, 67.975687163],
+  },
+  {
+    name: 'case 11 at 180',
+    l: { r1: 3, r2: 2.5, r3: 4.2, r4: 1.5 },
+    theta2: Math.PI,
+    sigma: 1,
+    deg: [8.9299764871, 154.2378459017],
+  },
+  {
+    name: 'case 12 at 60, open',
+    l: { r1: 4, r2: 3, r3: 1, r4: 3.5 },
+    theta2: deg(60),
+    sigma: 1,
+    deg: [29.8530370636, 117.8063239659],
+  },
+  {
+    name: 'case 12 at 60, crossed',
+    l: { r1: 4, r2: 3, r3: 1, r4: 3.5 },
+    theta2: deg(60),
+    sigma: -1,
+    deg: [-122.0572645675, 149.9894485301],
+  },
+  {
+    name: 'case 13 at fl(pi/2), open',
+    l: { r1: 4, r2: 3, r3: 2.5, r4: 2.5 },
+    theta2: Math.PI / 2,
+    sigma: 1,
+    deg: [-36.8698972066, 143.1301019149],
+  },
+  {
+    name: 'case 13 at fl(pi/2), crossed',
+    l: { r1: 4, r2: 3, r3: 2.5, r4: 2.5 },
+    theta2: Math.PI / 2,
+    sigma: -1,
+    deg: [-36.8698980851, 143.1301027934],
+  },
+  {
+    name: 'case 14 at pi/3 + 1e-8, open',
+    l: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
+    theta2: Math.PI / 3 + 1e-8,
+    sigma: 1,
+    deg: [-49.1066047779, 9.549e-7],
+  },
+  {
+    name: 'case 14 at pi/3 + 1e-8, crossed',
+    l: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
+    theta2: Math.PI / 3 + 1e-8,
+    sigma: -1,
+    deg: [-130.8933940762, -179.999999809],
+  },
+  {
+    name: 'case 15 at 0',
+    l: { r1: 1, r2: 1e-6, r3: 1, r4: 1 },
+    theta2: 0,
+    sigma: 1,
+    deg: [60.0000330797, 119.9999669203],
+  },
+  {
+    name: 'case 16 at 0',
+    l: { r1: 1e6, r2: 1, r3: 1e6 + 0.5, r4: 2 },
+    theta2: 0,
+    sigma: 1,
+    deg: [7.57952e-5, 41.4096600069],
+  },
+  {
+    name: 'case 16 at 90, open',
+    l: { r1: 1e6, r2: 1, r3: 1e6 + 0.5, r4: 2 },
+    theta2: deg(90),
+    sigma: 1,
+    deg: [5.3657e-5, 75.5225007884],
+  },
+  {
+    name: 'case 17 (case 1 x 1e200) at 90',
+    l: { r1: 6e200, r2: 2e200, r3: 5e200, r4: 5e200 },
+    theta2: deg(90),
+    sigma: 1,
+    deg: [32.3335306935, 110.7965716607],
+  },
+  {
+    name: 'case 18 (case 1 x 1e-200) at 90',
+    l: { r1: 6e-200, r2: 2e-200, r3: 5e-200, r4: 5e-200 },
+    theta2: deg(90),
+    sigma: -1,
+    deg: [-69.2034283393, -147.6664693065],
+  },
+  {
+    name: 'case 19 at 0',
+    l: { r1: 6, r2: 1e-300, r3: 5, r4: 5 },
+    theta2: 0,
+    sigma: 1,
+    deg: [53.1301023542, 126.8698976458],
+  },
+  {
+    name: 'case 19 at 123',
+    l: { r1: 6, r2: 1e-300, r3: 5, r4: 5 },
+    theta2: deg(123),
+    sigma: -1,
+    deg: [-53.1301023542, -126.8698976458],
+  },
+  {
+    name: 'case 20 at fl(pi/3), open',
+    l: { r1: 1, r2: 1, r3: 1e-9, r4: 1 },
+    theta2: Math.PI / 3,
+    sigma: 1,
+    deg: [30.0000056695, 119.9999999427],
+  },
   { name: 'case 22 at 0, open', l: { r1: 6, r2: 1, r3: 2, r4: 3 }, theta2: 0, sigma: 1, deg: [0, 180] },
   { name: 'case 22 at 0, crossed', l: { r1: 6, r2: 1, r3: 2, r4: 3 }, theta2: 0, sigma: -1, deg: [0, 180] },
 ];
@@ -79,7 +223,9 @@ const rows: TableRow[] = [
 describe('exact', () => {
   it('takes a double as the binary value it holds, not its shortest decimal', () => {
     // fl(0.1) = 0.1000000000000000055511151231257827021181583404541015625
-    expect(exact(0.1).minus('0.1000000000000000055511151231257827021181583404541015625').abs().lessThan('1e-50')).toBe(true);
+    expect(exact(0.1).minus('0.1000000000000000055511151231257827021181583404541015625').abs().lessThan('1e-50')).toBe(
+      true,
+    );
     expect(exact(Math.PI).toString().startsWith('3.14159265358979311599796346854')).toBe(true);
     expect(exact(1e-300).div('1e-300').minus(1).abs().lessThan('1e-15')).toBe(true);
     expect(exact(-2.5).toNumber()).toBe(-2.5);
@@ -114,7 +260,7 @@ describe('referenceAngles', () => {
     if (Math.abs(pose.sinMu) > 1e-30) expect(Math.sign(pose.sinMu)).toBe(sigma);
   });
 
-  it('reports the table\'s unreachable inputs as unreachable', () => {
+  it("reports the table's unreachable inputs as unreachable", () => {
     expect(referenceSolve({ r1: 4, r2: 1, r3: 3, r4: 2 - 1e-12 }, Math.PI, 1).kind).toBe('unreachable');
     expect(referenceSolve({ r1: 4, r2: 3, r3: 3.5, r4: 3 }, deg(136), 1).kind).toBe('unreachable');
     expect(referenceSolve({ r1: 4, r2: 3, r3: 2.5, r4: 2.5 }, nextUp(Math.PI / 2), -1).kind).toBe('unreachable');

@@ -4,8 +4,9 @@
  * Every double input (link lengths, theta2) is taken as the exact binary value it holds and the
  * geometry is evaluated with decimal.js at 60 significant digits, so the results are the true
  * answers for the given doubles, rounded once to double at the end. The derivation is deliberately
- * different from the solver's (which uses atan2 of a Kahan area): here both unknown angles come from
- * the law of cosines in the triangle crank pin A, coupler pin B, rocker pivot O4, via acos.
+ * different from the solver's (atan2 of a Kahan area): here the law of cosines in the triangle crank
+ * pin A, coupler pin B, rocker pivot O4 gives cos psi at A, the vector A -> O4 rotated by sigma psi
+ * and scaled to r3 gives B, and both angles are read off B with atan2.
  *
  * Conventions (hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
  * sigma = +1 ("open") puts B left of the ray A -> O4, which gives sin(t4 - t3) > 0.
@@ -64,19 +65,9 @@ export function exact(x: number): Dec {
   return new D(mantissa.toString()).times(new D(2).pow(exponent)).times(sign);
 }
 
-/** Wrap a Decimal angle to (-pi, pi]. */
+/** atan2 lands in [-pi, pi]; report -pi (a negative-zero y) as pi so results lie in (-pi, pi]. */
 function wrapDec(a: Dec): Dec {
-  let w = a.minus(TWO_PI.times(a.div(TWO_PI).floor()));
-  // w in [0, 2pi)
-  if (w.greaterThan(PI)) w = w.minus(TWO_PI);
-  return w;
-}
-
-function clampedAcos(c: Dec): Dec | null {
-  if (c.abs().greaterThan(new D(1).plus(LIMIT_FUZZ))) return null;
-  if (c.greaterThan(1)) return new D(0);
-  if (c.lessThan(-1)) return PI;
-  return D.acos(c);
+  return a.lessThanOrEqualTo(PI.neg()) ? a.plus(TWO_PI) : a;
 }
 
 /** Full oracle outcome at theta2 (rad) on branch sigma. */
@@ -86,35 +77,39 @@ export function referenceSolve(l: LinkLengths, theta2: number, sigma: Sigma): Re
   const r3 = exact(l.r3);
   const r4 = exact(l.r4);
   const t2 = exact(theta2);
-  const ax = r2.times(D.cos(t2));
+  const c2 = D.cos(t2);
+  const ax = r2.times(c2);
   const ay = r2.times(D.sin(t2));
   // Vector A -> O4 and its length s (law of cosines in triangle O2 A O4 for s^2).
   const dx = r1.minus(ax);
   const dy = ay.neg();
-  const s2 = r1.pow(2).plus(r2.pow(2)).minus(r1.times(r2).times(2).times(D.cos(t2)));
+  const s2 = r1.pow(2).plus(r2.pow(2)).minus(r1.times(r2).times(2).times(c2));
   if (s2.lessThanOrEqualTo(0)) {
     // Crank pin on O4: a continuum when r3 = r4, otherwise impossible.
     return r3.minus(r4).abs().lessThanOrEqualTo(r3.times(LIMIT_FUZZ)) ? { kind: 'continuum' } : { kind: 'unreachable' };
   }
   const s = s2.sqrt();
-  const beta = D.atan2(dy, dx);
-  // Triangle A B O4 with sides |AB| = r3, |B O4| = r4, |A O4| = s.
-  const cosA = r3.pow(2).plus(s2).minus(r4.pow(2)).div(r3.times(s).times(2));
-  const cosO4 = r4.pow(2).plus(s2).minus(r3.pow(2)).div(r4.times(s).times(2));
-  const psi = clampedAcos(cosA); // interior angle at A
-  const phi = clampedAcos(cosO4); // interior angle at O4
-  if (psi === null || phi === null) return { kind: 'unreachable' };
-  // B left of A->O4 for sigma = +1: rotate the ray A->O4 by +psi at A; at O4 the ray O4->A
-  // (direction beta + pi) is rotated by -phi to reach B.
-  const t3 = beta.plus(psi.times(sigma));
-  const t4 = beta.plus(PI).minus(phi.times(sigma));
-  const mu = t4.minus(t3);
+  // Triangle A B O4 with |AB| = r3, |B O4| = r4, |A O4| = s: law of cosines for the angle psi at A.
+  let c = r3.pow(2).plus(s2).minus(r4.pow(2)).div(r3.times(s).times(2));
+  if (c.abs().greaterThan(new D(1).plus(LIMIT_FUZZ))) return { kind: 'unreachable' };
+  if (c.greaterThan(1)) c = new D(1);
+  if (c.lessThan(-1)) c = new D(-1);
+  const sinPsi = new D(1).minus(c.pow(2)).sqrt().times(sigma);
+  // A -> B is A -> O4 rotated by sigma * psi (counter-clockwise for the open branch: B left of the
+  // ray A -> O4) and scaled to length r3.
+  const k = r3.div(s);
+  const ux = k.times(c.times(dx).minus(sinPsi.times(dy)));
+  const uy = k.times(sinPsi.times(dx).plus(c.times(dy)));
+  // O4 -> B.
+  const vx = ax.plus(ux).minus(r1);
+  const vy = ay.plus(uy);
   return {
     kind: 'unique',
     pose: {
-      theta3: wrapDec(t3).toNumber(),
-      theta4: wrapDec(t4).toNumber(),
-      sinMu: D.sin(mu).toNumber(),
+      theta3: wrapDec(D.atan2(uy, ux)).toNumber(),
+      theta4: wrapDec(D.atan2(vy, vx)).toNumber(),
+      // sin(t4 - t3) = (u x v) / (|u| |v|)
+      sinMu: ux.times(vy).minus(uy.times(vx)).div(r3.times(r4)).toNumber(),
       s: s.toNumber(),
     },
   };
@@ -136,7 +131,10 @@ export function referenceSlack(l: LinkLengths, theta2: number): number {
   const r3 = exact(l.r3);
   const r4 = exact(l.r4);
   const t2 = exact(theta2);
-  const s2 = r1.pow(2).plus(r2.pow(2)).minus(r1.times(r2).times(2).times(D.cos(t2)));
+  const s2 = r1
+    .pow(2)
+    .plus(r2.pow(2))
+    .minus(r1.times(r2).times(2).times(D.cos(t2)));
   const s = s2.greaterThan(0) ? s2.sqrt() : new D(0);
   return D.min(r3.plus(r4).minus(s), s.minus(r3.minus(r4).abs())).toNumber();
 }
@@ -150,8 +148,15 @@ export function referenceResidual(l: LinkLengths, theta2: number, theta3: number
   const t2 = exact(theta2);
   const t3 = exact(theta3);
   const t4 = exact(theta4);
-  const f1 = r2.times(D.cos(t2)).plus(r3.times(D.cos(t3))).minus(r4.times(D.cos(t4))).minus(r1);
-  const f2 = r2.times(D.sin(t2)).plus(r3.times(D.sin(t3))).minus(r4.times(D.sin(t4)));
+  const f1 = r2
+    .times(D.cos(t2))
+    .plus(r3.times(D.cos(t3)))
+    .minus(r4.times(D.cos(t4)))
+    .minus(r1);
+  const f2 = r2
+    .times(D.sin(t2))
+    .plus(r3.times(D.sin(t3)))
+    .minus(r4.times(D.sin(t4)));
   return f1.pow(2).plus(f2.pow(2)).sqrt().toNumber();
 }
 

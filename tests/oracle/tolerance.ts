@@ -5,9 +5,10 @@
  * live at that scale). In the triangle A B O4 that moves the angle at A by about ea / (r3 |sin mu|) and
  * the angle at O4 by ea / (r4 |sin mu|) (law of sines; mu = t4 - t3 is the angle at B), and the
  * direction of A -> O4 by ea / s. Near a fold sin mu -> 0 and the first-order term is replaced by
- * the square-root law of acos, saturating at sqrt(K ea / r), i.e. about 1e-8 rad for links of
- * comparable size ("K eps / sqrt(d + eps)" with d the distance to the limit). With very unequal
- * links the ratio Lmax / r gives "eps * (longest / shortest)".
+ * the square-root law of acos: K ea / (r sqrt(sin^2 mu + g)) with g = ea / min(r3, r4), which is the
+ * section's "K eps / sqrt(d + eps)" (sin^2 mu grows like the distance d to the limit) and saturates
+ * at K sqrt(ea / r), i.e. K times the ~1e-8 rad of a limit position for links of comparable size.
+ * With very unequal links the ratio Lmax / r gives "eps * (longest / shortest)".
  * K = 10 is the "about 10 eps * condition" allowance of that section.
  */
 import type { LinkLengths, ReferencePose } from './reference';
@@ -23,7 +24,7 @@ export function conditioningBound(l: LinkLengths, pose: ReferencePose): { theta3
   const lMax = Math.max(l.r1, l.r2, l.r3, l.r4);
   const ea = 2 * EPS * lMax;
   const g = ea / Math.min(l.r3, l.r4);
-  const damp = Math.sqrt(pose.sinMu * pose.sinMu + K * g);
+  const damp = Math.sqrt(pose.sinMu * pose.sinMu + g);
   const direction = (K * ea) / pose.s;
   return {
     theta3: (K * ea) / (l.r3 * damp) + direction,
