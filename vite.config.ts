@@ -17,7 +17,8 @@ export default defineConfig({
     },
   },
   server: { port: 5173 },
-  preview: { port: 4173 },
+  // CORS like static hosts send it: a sandboxed embed iframe has an opaque origin, so its module scripts are cross-origin.
+  preview: { port: 4173, cors: true },
   test: {
     include: ['tests/**/*.test.ts'],
     environment: 'node',

@@ -80,7 +80,7 @@ export const messagesEn: Messages = {
   preset: 'Preset',
   presetPlaceholder: 'Custom linkage',
   presetNames: {
-    report: 'Report case 6-2-5-5 (crank-rocker)',
+    report: 'Report case 6-2-5-5',
     dragLink: 'Drag link (double crank)',
     doubleRocker: 'Grashof double rocker',
     tripleRocker: 'Triple rocker (non-Grashof)',
@@ -99,7 +99,6 @@ export const messagesEn: Messages = {
     'crank-rocker': 'Crank-rocker',
     'double-crank': 'Double crank (drag link)',
     'double-rocker': 'Double rocker',
-    'rocker-crank': 'Rocker-crank',
     'change-point': 'Change point',
     'triple-rocker': 'Triple rocker',
     'cannot-assemble': 'Cannot assemble',
@@ -139,7 +138,7 @@ export const messagesEn: Messages = {
   legendOtherBranch: 'other branch',
   angleFootnote:
     'Angles in degrees, counter-clockwise from the ground line. θ2 runs over one turn, 0° to 360°; θ3, θ4 and μ are wrapped to (−180°, 180°]. Gaps: the linkage cannot assemble there.',
-  noConvergenceData: 'No NR run: the linkage cannot assemble at this θ2.',
+  noConvergenceData: 'No NR run: cannot assemble here.',
 
   canvasLabel: 'Linkage view',
   cannotAssembleAt: (t) => `Cannot assemble at θ2 = ${t}°`,

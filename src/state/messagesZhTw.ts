@@ -80,7 +80,7 @@ export const messagesZhTw: Messages = {
   preset: '預設機構',
   presetPlaceholder: '自訂機構',
   presetNames: {
-    report: '報告案例 6-2-5-5（曲柄搖桿）',
+    report: '報告案例 6-2-5-5',
     dragLink: '拖曳連桿（雙曲柄）',
     doubleRocker: 'Grashof 雙搖桿',
     tripleRocker: '三搖桿（非 Grashof）',
@@ -99,7 +99,6 @@ export const messagesZhTw: Messages = {
     'crank-rocker': '曲柄搖桿',
     'double-crank': '雙曲柄（拖曳連桿）',
     'double-rocker': '雙搖桿',
-    'rocker-crank': '搖桿曲柄',
     'change-point': '變點機構',
     'triple-rocker': '三搖桿',
     'cannot-assemble': '無法組裝',
@@ -139,7 +138,7 @@ export const messagesZhTw: Messages = {
   legendOtherBranch: '另一分支',
   angleFootnote:
     '角度單位為度，自機架線逆時針量起。θ2 為一整圈 0° 至 360°；θ3、θ4 與 μ 換算至 (−180°, 180°]。曲線中斷處表示機構無法組裝。',
-  noConvergenceData: '此 θ2 無法組裝，沒有 NR 迭代。',
+  noConvergenceData: '此處無法組裝，沒有 NR 迭代。',
 
   canvasLabel: '連桿機構圖',
   cannotAssembleAt: (t) => `θ2 = ${t}° 時無法組裝`,

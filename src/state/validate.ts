@@ -86,6 +86,5 @@ export function checkValue(field: FieldName, value: number, raw: string = String
   if (!spec.allowZero && value === 0) return fail('notPositive');
   if (value > spec.max || !Number.isFinite(value)) return fail('tooLarge');
   if (value < spec.min) return fail(spec.signed ? 'tooLarge' : 'tooSmall');
-  if (!spec.allowZero && value < spec.min) return fail('tooSmall');
   return { ok: true, value: value === 0 ? 0 : value };
 }

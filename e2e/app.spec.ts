@@ -1,0 +1,129 @@
+import { expect, test } from '@playwright/test';
+import { artifact, chartPath, inkedPixels, waitReady } from './helpers';
+
+test.describe('the simulator', () => {
+  test('renders the default linkage, its numbers and its plots', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    await expect(page.getByRole('heading', { name: 'Four-bar linkage lab' })).toBeVisible();
+    await expect(page.getByRole('textbox', { name: /^r1/ })).toHaveValue('6');
+    await expect(page.getByRole('textbox', { name: /^r2/ })).toHaveValue('2');
+    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('45');
+    await expect(page.getByTestId('linkage-type')).toHaveText('Crank-rocker');
+    await expect(page.getByText('I-2 GCRR')).toBeVisible();
+    await expect(page.getByTestId('grashof-sums')).toContainText('S + L = 8 < P + Q = 10');
+    await expect(page.getByRole('img', { name: /Linkage view\. θ2 45\.00°, θ3 44\.18°/ })).toBeVisible();
+    expect(await inkedPixels(page)).toBeGreaterThan(2000);
+    expect((await chartPath(page, 0)).length).toBeGreaterThan(200);
+    expect((await chartPath(page, 1)).length).toBeGreaterThan(200);
+    await expect(page.getByTestId('nr-iterations')).toHaveText(/^\d+$/);
+    await page.screenshot({ path: artifact('default.png') });
+  });
+
+  test('redraws the plots while a slider is dragged and ends on the last value', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const before = await chartPath(page, 0);
+    const slider = page.getByRole('slider', { name: /^r2/ });
+    await slider.focus();
+    for (let i = 0; i < 25; i++) await page.keyboard.press('ArrowRight');
+    await expect(page.getByRole('textbox', { name: /^r2/ })).toHaveValue('2.25');
+    await expect.poll(() => chartPath(page, 0)).not.toBe(before);
+    const afterKeys = await chartPath(page, 0);
+    // A real pointer drag along the r3 slider.
+    const box = await page.getByRole('slider', { name: /^r3/ }).boundingBox();
+    if (!box) throw new Error('r3 slider has no box');
+    const y = box.y + box.height / 2;
+    await page.mouse.move(box.x + box.width * 0.25, y);
+    await page.mouse.down();
+    for (let i = 1; i <= 15; i++) await page.mouse.move(box.x + box.width * (0.25 + i * 0.004), y);
+    await page.mouse.up();
+    const r3 = Number(await page.getByRole('textbox', { name: /^r3/ }).inputValue());
+    expect(r3).not.toBe(5);
+    await expect.poll(() => chartPath(page, 0)).not.toBe(afterKeys);
+    await expect(page.getByTestId('grashof-sums')).not.toHaveText(/P \+ Q = 10$/);
+  });
+
+  test('Play advances theta2 and Pause stops it', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const theta2 = page.getByRole('textbox', { name: /^θ2/ });
+    await expect(theta2).toHaveValue('45');
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(page.getByRole('button', { name: 'Pause' })).toBeVisible();
+    await expect.poll(async () => Number(await theta2.inputValue()), { timeout: 5000 }).toBeGreaterThan(50);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    const stopped = await theta2.inputValue();
+    await page.waitForTimeout(600);
+    await expect(theta2).toHaveValue(stopped);
+  });
+
+  test('switches to Traditional Chinese and back', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    await page.getByRole('combobox', { name: 'Language' }).selectOption('zh-TW');
+    await expect(page.getByRole('heading', { name: '四連桿機構實驗室' })).toBeVisible();
+    await expect(page.getByRole('button', { name: '播放' })).toBeVisible();
+    await expect(page.getByTestId('linkage-type')).toHaveText('曲柄搖桿');
+    await expect(page.locator('html')).toHaveAttribute('lang', 'zh-Hant-TW');
+    await expect.poll(() => new URL(page.url()).searchParams.get('lang')).toBe('zh-TW');
+    await page.screenshot({ path: artifact('zh-TW.png') });
+    await page.getByRole('combobox', { name: '語言' }).selectOption('en');
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+  });
+
+  test('picks Traditional Chinese from the browser language', async ({ browser }) => {
+    const context = await browser.newContext({ locale: 'zh-TW', viewport: { width: 1280, height: 800 } });
+    const page = await context.newPage();
+    await page.goto('http://localhost:4173/');
+    await expect(page.getByRole('button', { name: '播放' })).toBeVisible();
+    await context.close();
+  });
+
+  test('shows an inline message for bad input and keeps the last valid linkage', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const r2 = page.getByRole('textbox', { name: /^r2/ });
+    const cases: [string, RegExp][] = [
+      ['', /r2: enter a number/],
+      ['abc', /r2: “abc” is not a number/],
+      ['0', /r2 must be greater than 0, got 0/],
+      ['-1', /r2 must not be negative, got -1/],
+      ['1e308', /r2: 1e308 is out of range/],
+    ];
+    for (const [text, message] of cases) {
+      await r2.fill(text);
+      await expect(page.getByRole('alert').filter({ hasText: message })).toBeVisible();
+      await expect(r2).toHaveAttribute('aria-invalid', 'true');
+      await expect(page.getByTestId('grashof-sums')).toContainText('S + L = 8 < P + Q = 10');
+    }
+    await expect(page.getByRole('alert').first()).toContainText('Keeping the last valid value, 2.');
+    await page.screenshot({ path: artifact('bad-input.png') });
+    expect(await inkedPixels(page)).toBeGreaterThan(2000);
+    await r2.fill('2.5');
+    await expect(page.getByRole('alert')).toHaveCount(0);
+    await expect(page.getByTestId('grashof-sums')).toContainText('S + L = 8.5');
+  });
+
+  test('says the linkage cannot assemble instead of drawing it torn, and the plots have gaps', async ({ page }) => {
+    await page.goto('./?r1=4&r2=3&r3=3.5&r4=3&t2=180');
+    await waitReady(page);
+    await expect(page.getByRole('status').filter({ hasText: 'Cannot assemble at θ2 = 180.00°' })).toHaveCount(1);
+    await expect(page.getByTestId('linkage-type')).toHaveText('Triple rocker');
+    const d = await chartPath(page, 0);
+    expect(d.split('M').length - 1).toBeGreaterThanOrEqual(2);
+    expect(d).not.toContain('NaN');
+    await page.screenshot({ path: artifact('cannot-assemble.png') });
+  });
+
+  test('never draws NaN into the page', async ({ page }) => {
+    await page.goto('./?r1=10&r2=1&r3=2&r4=3');
+    await waitReady(page);
+    await expect(page.getByRole('status').filter({ hasText: 'cannot be assembled at any input angle' })).toHaveCount(1);
+    const html = await page.locator('main').innerHTML();
+    expect(html).not.toContain('NaN');
+    const right = await page.locator('.rightbar').innerText();
+    expect(right).not.toContain('NaN');
+  });
+});

@@ -1,0 +1,64 @@
+import { mkdirSync, readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { Download, FrameLocator, Page } from '@playwright/test';
+import { expect } from '@playwright/test';
+
+/** Where screenshots of the main views are saved (git-ignored). */
+export const ARTIFACTS = join(dirname(fileURLToPath(import.meta.url)), 'artifacts');
+mkdirSync(ARTIFACTS, { recursive: true });
+
+/** Path of an artefact file. */
+export function artifact(name: string): string {
+  return join(ARTIFACTS, name);
+}
+
+/** Waits until the app has its first cycle and pose (data-ready on the root layout). */
+export async function waitReady(page: Page | FrameLocator): Promise<void> {
+  await expect(page.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+}
+
+/** PNG facts from a file's bytes: the signature and the IHDR width and height. */
+export interface PngFacts {
+  signatureOk: boolean;
+  width: number;
+  height: number;
+  bytes: number;
+}
+
+/** Reads a downloaded file and checks it is a PNG, returning its IHDR size. */
+export async function pngFacts(download: Download): Promise<PngFacts> {
+  const path = await download.path();
+  const b = readFileSync(path);
+  const sig = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
+  return {
+    signatureOk: sig.every((v, i) => b[i] === v) && b.toString('latin1', 12, 16) === 'IHDR',
+    width: b.readUInt32BE(16),
+    height: b.readUInt32BE(20),
+    bytes: b.length,
+  };
+}
+
+/** Counts non-background pixels of the linkage canvas (a blank canvas gives 0). */
+export async function inkedPixels(page: Page): Promise<number> {
+  return page.locator('canvas.linkage-canvas').evaluate((c: HTMLCanvasElement) => {
+    const ctx = c.getContext('2d');
+    if (!ctx) return 0;
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200) n++;
+    return n;
+  });
+}
+
+/** The 'd' attribute of the first solid series path of the n-th angle chart on the page. */
+export async function chartPath(page: Page, n = 0): Promise<string> {
+  return page
+    .locator('svg.chart-svg')
+    .nth(n)
+    .evaluate((svg) => {
+      const paths = [...svg.querySelectorAll('g.lines path')];
+      const solid = paths.find((p) => !p.getAttribute('stroke-dasharray'));
+      return solid?.getAttribute('d') ?? '';
+    });
+}

@@ -1,0 +1,116 @@
+import type { Selection } from 'd3-selection';
+import { select } from 'd3-selection';
+
+/** Chart margins in CSS pixels. */
+export interface Margins {
+  top: number;
+  right: number;
+  bottom: number;
+  left: number;
+}
+
+/** Shared look of every chart; attributes (not CSS) so an exported SVG looks the same as on screen. */
+export const CHART_STYLE = {
+  font: 'system-ui, -apple-system, "Segoe UI", "Noto Sans TC", "PingFang TC", "Microsoft JhengHei", sans-serif',
+  fontSize: 11,
+  titleSize: 12.5,
+  axisColor: '#4b5563',
+  gridColor: '#edf0f4',
+  background: '#ffffff',
+  text: '#1f2937',
+  muted: '#6b7280',
+  theta3: '#0f9d76',
+  theta4: '#9333ea',
+  marker: '#f97316',
+  residual: '#2563eb',
+  tolerance: '#9ca3af',
+} as const;
+
+/** The SVG root as a d3 selection. */
+export type SvgSel = Selection<SVGSVGElement, unknown, null, undefined>;
+
+/** Returns the child of parent with this class, creating it (tag) on first use. */
+export function child<K extends keyof SVGElementTagNameMap, P extends SVGElement>(
+  parent: Selection<P, unknown, null, undefined>,
+  tag: K,
+  cls: string,
+): Selection<SVGElementTagNameMap[K], unknown, null, undefined> {
+  const node = (parent.node() as SVGElement).querySelector<SVGElementTagNameMap[K]>(`:scope > ${tag}.${cls}`);
+  if (node) return select(node);
+  const created = (parent.node() as SVGElement).appendChild((parent.node() as SVGElement).ownerDocument.createElementNS('http://www.w3.org/2000/svg', tag));
+  created.setAttribute('class', cls);
+  return select(created as SVGElementTagNameMap[K]);
+}
+
+/** Sets size, font and colour on the SVG root and paints the background; returns the selection. */
+export function prepareSvg(svg: SVGSVGElement, width: number, height: number): SvgSel {
+  const s = select(svg)
+    .attr('width', width)
+    .attr('height', height)
+    .attr('viewBox', `0 0 ${width} ${height}`)
+    .attr('font-family', CHART_STYLE.font)
+    .attr('font-size', CHART_STYLE.fontSize)
+    .attr('color', CHART_STYLE.axisColor);
+  child(s, 'rect', 'bg').attr('width', width).attr('height', height).attr('fill', CHART_STYLE.background);
+  return s;
+}
+
+/** Tidies a d3 axis group: colour, no domain tick caps clutter. */
+export function styleAxis(g: Selection<SVGGElement, unknown, null, undefined>): void {
+  g.attr('color', CHART_STYLE.axisColor).attr('font-family', CHART_STYLE.font).attr('font-size', CHART_STYLE.fontSize);
+}
+
+/** Replaces an ASCII hyphen-minus used as a sign with a typographic minus. */
+export function minus(s: string): string {
+  return s.replace(/^-/, '\u2212').replace(/e-/, 'e\u2212');
+}
+
+/** One legend entry: a line sample and its label. */
+export interface LegendItem {
+  label: string;
+  color: string;
+  faint?: boolean;
+}
+
+/** Rough label width in CSS pixels at the chart font size; labels are not measured so export and screen agree. */
+export function estimateTextWidth(text: string, fontSize: number = CHART_STYLE.fontSize): number {
+  let w = 0;
+  for (const ch of text) w += ch.charCodeAt(0) > 0x2e80 ? fontSize : fontSize * 0.56;
+  return w;
+}
+
+/** Draws (or updates) a one-row legend starting at (x, y) in the SVG: line sample then label, left to right. */
+export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y: number): void {
+  const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
+  const offsets: number[] = [];
+  let cx = 0;
+  for (const it of items) {
+    offsets.push(cx);
+    cx += 22 + estimateTextWidth(it.label) + 14;
+  }
+  const item = legend
+    .selectAll<SVGGElement, LegendItem>('g.item')
+    .data(items)
+    .join((enter) => {
+      const g = enter.append('g').attr('class', 'item');
+      g.append('line');
+      g.append('text');
+      return g;
+    });
+  item.attr('transform', (_d, i) => `translate(${offsets[i]},0)`);
+  item
+    .select('line')
+    .attr('x1', 0)
+    .attr('x2', 16)
+    .attr('y1', 0)
+    .attr('y2', 0)
+    .attr('stroke', (d) => d.color)
+    .attr('stroke-width', (d) => (d.faint ? 1.25 : 2))
+    .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null));
+  item
+    .select('text')
+    .attr('x', 21)
+    .attr('y', 4)
+    .attr('fill', CHART_STYLE.text)
+    .text((d) => d.label);
+}

@@ -1,0 +1,107 @@
+import { memo } from 'react';
+import type { Branch } from '../solver/types';
+import type { NrStart } from '../state/appState';
+import { normalizeTheta2Deg, wrapDeg180 } from '../state/appState';
+import { formatDeg, formatIntervalsDeg, formatNumber, formatSci } from '../state/format';
+import type { CycleResponse, PointResponse } from '../worker/protocol';
+import { useMessages } from './MessagesContext';
+
+/** Props of AnalysisPanel: the latest cycle and point answers, the branch and the chosen NR start. */
+export interface AnalysisPanelProps {
+  cycle: CycleResponse | null;
+  point: PointResponse | null;
+  branch: Branch;
+  nrStart: NrStart;
+}
+
+function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps) {
+  const t = useMessages();
+  const c = cycle?.classification;
+  const sl = c ? c.S + c.L : Number.NaN;
+  const pq = c ? c.P + c.Q : Number.NaN;
+  const relation = !c ? '' : c.type === 'change-point' ? '=' : sl < pq ? '<' : '>';
+  const verdict = !c ? '—' : c.type === 'change-point' ? t.grashofChangePoint : c.grashof ? t.grashofYes : t.grashofNo;
+  const range = !c
+    ? '—'
+    : c.inputRange.full
+      ? t.fullTurn
+      : c.inputRange.intervals.length === 0
+        ? t.noRange
+        : formatIntervalsDeg(c.inputRange.intervals, t.rangeInterval);
+  const nr = point ? (nrStart === 'continuation' ? point.continuation ?? point.cold : point.cold) : null;
+  const pose = point?.pose ?? null;
+  const theta2 = point ? formatDeg(normalizeTheta2Deg((point.theta2Rad * 180) / Math.PI), 2) : '—';
+  const deg = (rad: number) => `${formatDeg(wrapDeg180((rad * 180) / Math.PI), 3)}°`;
+  const cur = cycle ? cycle[branch] : null;
+
+  return (
+    <div className="analysis">
+      <dl className="facts">
+        <div className="fact fact-wide">
+          <dt>{t.grashofCheck}</dt>
+          <dd>
+            <span className="mono" data-testid="grashof-sums">
+              S + L = {formatNumber(sl)} {relation} P + Q = {formatNumber(pq)}
+            </span>
+            <span className={`badge ${c?.grashof ? 'badge-ok' : 'badge-warn'}`}>{verdict}</span>
+          </dd>
+        </div>
+        <div className="fact">
+          <dt>{t.linkageType}</dt>
+          <dd data-testid="linkage-type">{c ? t.types[c.type] : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.barker}</dt>
+          <dd className="mono">{c ? c.barker : '—'}</dd>
+        </div>
+        <div className="fact fact-wide">
+          <dt>{t.inputRange}</dt>
+          <dd>{range}</dd>
+        </div>
+      </dl>
+      <h3 className="subhead">{t.atTheta2(theta2)}</h3>
+      <dl className="facts facts-grid">
+        <div className="fact">
+          <dt>θ3</dt>
+          <dd className="mono">{pose ? deg(pose.theta3) : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>θ4</dt>
+          <dd className="mono">{pose ? deg(pose.theta4) : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.transmissionAngle}</dt>
+          <dd className="mono">{pose ? `${formatDeg((pose.mu * 180) / Math.PI, 3)}°` : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.status}</dt>
+          <dd>{point ? (pose ? (nr ? t.newtonStatus[nr.status] : t.pointStatus.ok) : t.pointStatus.unreachable) : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.nrIterations}</dt>
+          <dd className="mono" data-testid="nr-iterations">
+            {nr ? String(nr.iterations) : '—'}
+          </dd>
+        </div>
+        <div className="fact">
+          <dt>{t.residual}</dt>
+          <dd className="mono">{nr ? formatSci(nr.residual) : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.detJ}</dt>
+          <dd className="mono">{nr ? formatSci(nr.detJ, 4) : '—'}</dd>
+        </div>
+        <div className="fact">
+          <dt>{t.nrStartLabel}</dt>
+          <dd>{nr ? (nr.start === 'continuation' ? t.nrContinuation : t.nrCold) : '—'}</dd>
+        </div>
+      </dl>
+      {cur && cycle ? (
+        <p className="note">{t.cycleSummary(String(cur.okCount), String(cycle.theta2Deg.length), String(cur.totalIterations))}</p>
+      ) : null}
+    </div>
+  );
+}
+
+/** The numbers panel: S + L against P + Q, type and Barker class, input range, and NR figures at theta2. */
+export const AnalysisPanel = memo(AnalysisPanelImpl);

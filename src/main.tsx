@@ -1,0 +1,4 @@
+import './styles.css';
+import { mount } from './mount';
+
+mount('app');

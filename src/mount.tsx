@@ -1,0 +1,30 @@
+import { StrictMode } from 'react';
+import { createRoot } from 'react-dom/client';
+import type { AppMode } from './components/App';
+import { App } from './components/App';
+import { ErrorBoundary } from './components/ErrorBoundary';
+import { getMessages } from './state/i18n';
+import { initialState } from './state/initial';
+import { LOCALE_STORAGE_KEY, readStorage } from './state/storage';
+
+/** Mounts the app (or the embed widget) into #root with the state from the URL, inside an error boundary. */
+export function mount(mode: AppMode): void {
+  const root = document.getElementById('root');
+  if (!root) throw new Error('index.html must have an element with id "root"');
+  const languages = typeof navigator !== 'undefined' ? (navigator.languages ?? [navigator.language]) : [];
+  const initial = initialState(window.location.search, languages, readStorage(LOCALE_STORAGE_KEY));
+  const reset = () => {
+    try {
+      window.location.assign(window.location.pathname);
+    } catch {
+      window.location.reload();
+    }
+  };
+  createRoot(root).render(
+    <StrictMode>
+      <ErrorBoundary messages={getMessages(initial.state.locale)} onReset={reset}>
+        <App mode={mode} initial={initial} />
+      </ErrorBoundary>
+    </StrictMode>,
+  );
+}

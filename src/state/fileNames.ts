@@ -1,0 +1,40 @@
+import type { Branch, Linkage } from '../solver/types';
+import { fileNumber } from './format';
+
+/** PNG export sizes: CSS pixel size, twice that, or 300 DPI at the on-screen physical size (96 CSS px per inch). */
+export type PngSize = 'screen' | '2x' | 'print';
+
+/** Pixel scale factor of each export size relative to CSS pixels. */
+export const PNG_SCALE: Record<PngSize, number> = { screen: 1, '2x': 2, print: 300 / 96 };
+
+/** Resolution written into each export size's pHYs chunk, dots per inch (so all print at the same physical size). */
+export const PNG_DPI: Record<PngSize, number> = { screen: 96, '2x': 192, print: 300 };
+
+const SUFFIX: Record<PngSize, string> = { screen: 'screen', '2x': '2x', print: '300dpi' };
+
+/** What an exported file shows. */
+export type ExportSubject = 'linkage' | 'theta3' | 'theta4' | 'both' | 'convergence';
+
+const SUBJECT: Record<ExportSubject, string> = {
+  linkage: 'linkage',
+  theta3: 'theta3-vs-theta2',
+  theta4: 'theta4-vs-theta2',
+  both: 'theta3-theta4-vs-theta2',
+  convergence: 'nr-convergence',
+};
+
+/** Common stem: fourbar_<r1>-<r2>-<r3>-<r4>_<branch>, ASCII only. */
+export function fileStem(l: Linkage, branch: Branch): string {
+  return `fourbar_${fileNumber(l.r1)}-${fileNumber(l.r2)}-${fileNumber(l.r3)}-${fileNumber(l.r4)}_${branch}`;
+}
+
+/** File name of a PNG export, e.g. fourbar_6-2-5-5_open_theta2-45_linkage_2x.png. */
+export function pngFileName(l: Linkage, branch: Branch, theta2Deg: number, subject: ExportSubject, size: PngSize): string {
+  const at = subject === 'linkage' || subject === 'convergence' ? `_theta2-${fileNumber(Math.round(theta2Deg * 100) / 100)}` : '';
+  return `${fileStem(l, branch)}${at}_${SUBJECT[subject]}_${SUFFIX[size]}.png`;
+}
+
+/** File name of the cycle CSV, e.g. fourbar_6-2-5-5_open_cycle_n360.csv. */
+export function csvFileName(l: Linkage, branch: Branch, samples: number): string {
+  return `${fileStem(l, branch)}_cycle_n${samples}.csv`;
+}

@@ -1,0 +1,49 @@
+import type { AngleInterval } from '../solver/types';
+
+const MINUS = '\u2212';
+
+function trimZeros(s: string): string {
+  // "1.2300" -> "1.23", "2.000e-7" -> "2e-7"; leaves integers alone.
+  return s.replace(/(\.\d*?)0+(?=$|e)/, '$1').replace(/\.(?=$|e)/, '');
+}
+
+/** Formats a number for display with sig significant digits (default 6), exponent form outside [1e-4, 1e6); '—' when not finite. */
+export function formatNumber(x: number, sig = 6): string {
+  if (!Number.isFinite(x)) return '—';
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  const s = a >= 1e-4 && a < 1e6 ? trimZeros(x.toPrecision(sig)) : trimZeros(x.toExponential(sig - 1)).replace('e+', 'e');
+  return s.replace('-', MINUS);
+}
+
+/** Formats an angle in degrees with a fixed number of decimals (default 2); '—' when not finite; never '-0'. */
+export function formatDeg(deg: number, decimals = 2): string {
+  if (!Number.isFinite(deg)) return '—';
+  const s = deg.toFixed(decimals);
+  return (/^-0(\.0*)?$/.test(s) ? s.slice(1) : s).replace('-', MINUS);
+}
+
+/** Formats a small positive quantity (residual, det J) in exponent form with digits decimals (default 2); '—' when not finite. */
+export function formatSci(x: number, digits = 2): string {
+  if (!Number.isFinite(x)) return '—';
+  if (x === 0) return '0';
+  return x.toExponential(digits).replace('e+', 'e').replace(/-/g, MINUS);
+}
+
+/** Formats the input's reachable intervals (radians) as degree ranges joined by a separator. */
+export function formatIntervalsDeg(
+  intervals: readonly AngleInterval[],
+  interval: (lo: string, hi: string) => string,
+  separator = '; ',
+): string {
+  return intervals
+    .map((iv) => interval(formatDeg((iv.lo * 180) / Math.PI, 2), formatDeg((iv.hi * 180) / Math.PI, 2)))
+    .join(separator);
+}
+
+/** A number as a file-name fragment: plain ASCII, no spaces or slashes ("2.5", "1e-7", "m1.5" for -1.5). */
+export function fileNumber(x: number): string {
+  if (!Number.isFinite(x)) return 'nan';
+  const s = Math.abs(x) >= 1e-4 && Math.abs(x) < 1e6 ? trimZeros(x.toPrecision(6)) : trimZeros(x.toExponential(4)).replace('e+', 'e');
+  return s.replace(/^-/, 'm');
+}

@@ -1,0 +1,79 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_STATE, normalizeTheta2Deg, reducer, wrapDeg180 } from '../../src/state/appState';
+
+describe('normalizeTheta2Deg', () => {
+  it('keeps [0, 360) and wraps the rest', () => {
+    expect(normalizeTheta2Deg(45)).toBe(45);
+    expect(normalizeTheta2Deg(360)).toBe(0);
+    expect(normalizeTheta2Deg(-30)).toBe(330);
+    expect(normalizeTheta2Deg(725)).toBe(5);
+  });
+  it('never returns 360 for a tiny negative angle', () => {
+    expect(normalizeTheta2Deg(-1e-17)).toBeLessThan(360);
+    expect(normalizeTheta2Deg(-1e-17)).toBeGreaterThanOrEqual(0);
+  });
+  it('maps non-finite input to 0', () => {
+    expect(normalizeTheta2Deg(Number.NaN)).toBe(0);
+    expect(normalizeTheta2Deg(Infinity)).toBe(0);
+  });
+});
+
+describe('wrapDeg180', () => {
+  it('wraps to (-180, 180]', () => {
+    expect(wrapDeg180(180)).toBe(180);
+    expect(wrapDeg180(-180)).toBe(180);
+    expect(wrapDeg180(190)).toBe(-170);
+    expect(wrapDeg180(-190)).toBe(170);
+    expect(wrapDeg180(540)).toBe(180);
+    expect(wrapDeg180(12.5)).toBe(12.5);
+  });
+  it('leaves NaN as NaN (a gap, never a number)', () => {
+    expect(wrapDeg180(Number.NaN)).toBeNaN();
+  });
+});
+
+describe('reducer', () => {
+  it('starts from the report linkage at 45 degrees on the open branch', () => {
+    expect(DEFAULT_STATE.linkage).toEqual({ r1: 6, r2: 2, r3: 5, r4: 5 });
+    expect(DEFAULT_STATE.theta2Deg).toBe(45);
+    expect(DEFAULT_STATE.branch).toBe('open');
+    expect(DEFAULT_STATE.coupler).toEqual({ distance: 2.5, angleDeg: 30 });
+  });
+  it('sets one length and keeps the others', () => {
+    const s = reducer(DEFAULT_STATE, { type: 'setLength', field: 'r2', value: 2.5 });
+    expect(s.linkage).toEqual({ r1: 6, r2: 2.5, r3: 5, r4: 5 });
+    expect(DEFAULT_STATE.linkage.r2).toBe(2);
+  });
+  it('returns the same object when nothing changes', () => {
+    expect(reducer(DEFAULT_STATE, { type: 'setLength', field: 'r1', value: 6 })).toBe(DEFAULT_STATE);
+    expect(reducer(DEFAULT_STATE, { type: 'setTheta2', deg: 405 })).toBe(DEFAULT_STATE);
+  });
+  it('normalises theta2 and clamps the speed', () => {
+    expect(reducer(DEFAULT_STATE, { type: 'setTheta2', deg: -90 }).theta2Deg).toBe(270);
+    expect(reducer(DEFAULT_STATE, { type: 'setSpeed', degPerFrame: 50 }).speedDegPerFrame).toBe(10);
+    expect(reducer(DEFAULT_STATE, { type: 'setSpeed', degPerFrame: 0.1 }).speedDegPerFrame).toBe(0.5);
+  });
+  it('toggles the branch', () => {
+    expect(reducer(DEFAULT_STATE, { type: 'toggleBranch' }).branch).toBe('crossed');
+  });
+  it('applies a preset and resets the view', () => {
+    const zoomed = reducer(DEFAULT_STATE, { type: 'setView', view: { zoom: 3, panX: 0.2, panY: 0 } });
+    const s = reducer(zoomed, {
+      type: 'applyPreset',
+      linkage: { r1: 4, r2: 2, r3: 4, r4: 2 },
+      theta2Deg: 45,
+      branch: 'open',
+      coupler: { distance: 2, angleDeg: 45 },
+    });
+    expect(s.linkage).toEqual({ r1: 4, r2: 2, r3: 4, r4: 2 });
+    expect(s.view).toEqual({ zoom: 1, panX: 0, panY: 0 });
+  });
+  it('animates theta2, direction and branch together', () => {
+    const s = reducer(DEFAULT_STATE, { type: 'animate', theta2Deg: 370, direction: -1, branch: 'crossed' });
+    expect(s).toMatchObject({ theta2Deg: 10, direction: -1, branch: 'crossed' });
+  });
+  it('rounds and clamps the sample count', () => {
+    expect(reducer(DEFAULT_STATE, { type: 'setSamples', samples: 3600.4 }).samples).toBe(3600);
+    expect(reducer(DEFAULT_STATE, { type: 'setSamples', samples: 1 }).samples).toBe(12);
+  });
+});

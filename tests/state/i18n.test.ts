@@ -1,0 +1,56 @@
+import { describe, expect, it } from 'vitest';
+import { detectLocale, getMessages, matchLocale, parseLocale } from '../../src/state/i18n';
+import { messagesEn } from '../../src/state/messagesEn';
+import { messagesZhTw } from '../../src/state/messagesZhTw';
+
+function shape(o: unknown): unknown {
+  if (typeof o === 'function') return 'fn';
+  if (o && typeof o === 'object') return Object.fromEntries(Object.keys(o).sort().map((k) => [k, shape((o as Record<string, unknown>)[k])]));
+  return typeof o;
+}
+
+describe('messages', () => {
+  it('has the same keys in English and Traditional Chinese', () => {
+    expect(shape(messagesZhTw)).toEqual(shape(messagesEn));
+  });
+
+  it('has no empty string in either language', () => {
+    const walk = (o: unknown, path: string): void => {
+      if (typeof o === 'string') expect(o.trim(), path).not.toBe('');
+      else if (o && typeof o === 'object') for (const [k, v] of Object.entries(o)) walk(v, `${path}.${k}`);
+    };
+    walk(messagesEn, 'en');
+    walk(messagesZhTw, 'zh-TW');
+  });
+
+  it('starts the English field labels with r1..r4 and θ2, and export buttons with Export', () => {
+    for (const f of ['r1', 'r2', 'r3', 'r4'] as const) expect(messagesEn.fieldLabels[f].startsWith(f)).toBe(true);
+    expect(messagesEn.fieldLabels.theta2.startsWith('θ2')).toBe(true);
+    expect(messagesEn.play).toBe('Play');
+    expect(messagesEn.pause).toBe('Pause');
+    for (const k of ['exportLinkage', 'exportTheta3', 'exportTheta4', 'exportBoth', 'exportConvergence', 'exportCsv'] as const) {
+      expect(messagesEn[k].startsWith('Export')).toBe(true);
+    }
+  });
+
+  it('keeps the symbols first in Chinese labels too', () => {
+    for (const f of ['r1', 'r2', 'r3', 'r4'] as const) expect(messagesZhTw.fieldLabels[f].startsWith(f)).toBe(true);
+    expect(messagesZhTw.fieldLabels.theta2.startsWith('θ2')).toBe(true);
+  });
+});
+
+describe('detectLocale', () => {
+  it('picks zh-TW for Traditional Chinese browsers and English otherwise', () => {
+    expect(detectLocale(['zh-TW', 'en'])).toBe('zh-TW');
+    expect(detectLocale(['zh-Hant-HK'])).toBe('zh-TW');
+    expect(detectLocale(['fr-FR', 'en-GB'])).toBe('en');
+    expect(detectLocale(['zh-CN'])).toBe('en');
+    expect(detectLocale([])).toBe('en');
+  });
+  it('matches and parses tags', () => {
+    expect(matchLocale('EN-us')).toBe('en');
+    expect(parseLocale('zh-tw')).toBe('zh-TW');
+    expect(parseLocale('zh')).toBeNull();
+    expect(getMessages('zh-TW').play).toBe('播放');
+  });
+});

@@ -1,0 +1,68 @@
+import { describe, expect, it } from 'vitest';
+import { messagesEn } from '../../src/state/messagesEn';
+import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { checkValue, normalizeNumberText, parseDecimal, parseField } from '../../src/state/validate';
+
+function message(field: Parameters<typeof parseField>[0], raw: string): string {
+  const r = parseField(field, raw);
+  if (r.ok) throw new Error(`expected ${raw} to be rejected`);
+  return messagesEn.fieldError(r.error, { raw: raw.trim(), min: String(r.error.min), max: String(r.error.max) });
+}
+
+describe('parseDecimal', () => {
+  it('reads plain and exponent decimals', () => {
+    expect(parseDecimal('2.5')).toBe(2.5);
+    expect(parseDecimal(' -1e-7 ')).toBe(-1e-7);
+    expect(parseDecimal('.5')).toBe(0.5);
+    expect(parseDecimal('5.')).toBe(5);
+  });
+  it('rejects hex, Infinity, words and thousands separators', () => {
+    for (const s of ['0x10', 'Infinity', 'abc', '1,000.5', '1e', '--1', '']) expect(parseDecimal(s)).toBeNaN();
+  });
+  it('accepts a decimal comma and full-width digits from CJK input methods', () => {
+    expect(parseDecimal('2,5')).toBe(2.5);
+    expect(normalizeNumberText('２．５')).toBe('2.5');
+    expect(parseDecimal('－３')).toBe(-3);
+  });
+});
+
+describe('parseField', () => {
+  it('accepts a positive length', () => {
+    expect(parseField('r2', '2.5')).toEqual({ ok: true, value: 2.5 });
+    expect(parseField('r1', '1e-7')).toEqual({ ok: true, value: 1e-7 });
+    expect(parseField('r1', '1e7')).toEqual({ ok: true, value: 1e7 });
+  });
+  it('names the field and the value for empty, text, zero, negative and 1e308', () => {
+    expect(message('r2', '')).toBe('r2: enter a number.');
+    expect(message('r2', 'abc')).toBe('r2: “abc” is not a number.');
+    expect(message('r3', '0')).toBe('r3 must be greater than 0, got 0.');
+    expect(message('r4', '-1')).toBe('r4 must not be negative, got -1.');
+    expect(message('r1', '1e308')).toContain('r1: 1e308 is out of range');
+    expect(message('r1', '1e-12')).toContain('r1: 1e-12 is too small');
+  });
+  it('rejects an absurd angle but takes negative ones', () => {
+    expect(parseField('theta2', '-30')).toEqual({ ok: true, value: -30 });
+    expect(parseField('theta2', '1e308').ok).toBe(false);
+  });
+  it('allows a coupler point on the crank pin (distance 0) but not a negative distance', () => {
+    expect(parseField('couplerDistance', '0')).toEqual({ ok: true, value: 0 });
+    expect(parseField('couplerDistance', '-1').ok).toBe(false);
+  });
+  it('keeps the speed within 0.5 to 10 degrees per frame', () => {
+    expect(parseField('speed', '10').ok).toBe(true);
+    expect(parseField('speed', '11').ok).toBe(false);
+    expect(parseField('speed', '0.25').ok).toBe(false);
+  });
+  it('has a message in Traditional Chinese that names the field and value too', () => {
+    const r = parseField('r2', 'abc');
+    if (r.ok) throw new Error('expected a rejection');
+    expect(messagesZhTw.fieldError(r.error, { raw: 'abc', min: '1e-9', max: '1e9' })).toBe('r2：「abc」不是數字。');
+  });
+});
+
+describe('checkValue', () => {
+  it('rejects NaN and infinities from sliders or URLs', () => {
+    expect(checkValue('r1', Number.NaN).ok).toBe(false);
+    expect(checkValue('r1', Infinity).ok).toBe(false);
+  });
+});
