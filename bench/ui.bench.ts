@@ -153,6 +153,36 @@ async function measureFirstLoad(page: Page) {
   };
 }
 
+/** Solver work (points solved, NR iterations) the worker reported for a fixed script on a page: 40 r2 steps, 3 s of Play. */
+async function measureWork(page: Page, url: string) {
+  await page.goto(url);
+  await waitReady(page);
+  await page.waitForTimeout(300);
+  await page.evaluate(() => performance.clearMarks());
+  const slider = page.getByRole('slider', { name: /^r2/ });
+  await slider.focus();
+  for (let i = 0; i < 40; i++) {
+    await page.keyboard.press('ArrowRight');
+    await page.waitForTimeout(16);
+  }
+  await page.getByRole('button', { name: 'Play' }).click();
+  await page.waitForTimeout(3000);
+  await page.getByRole('button', { name: 'Pause' }).click();
+  await page.waitForTimeout(300);
+  return page.evaluate(() => {
+    const sum = { responses: 0, points: 0, iterations: 0 };
+    for (const kind of ['cycle', 'point']) {
+      for (const e of performance.getEntriesByName(`fourbar:work:${kind}`)) {
+        const d = (e as PerformanceMark).detail as { points: number; iterations: number };
+        sum.responses++;
+        sum.points += d.points;
+        sum.iterations += d.iterations;
+      }
+    }
+    return sum;
+  });
+}
+
 async function main(): Promise<void> {
   const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
   const server = await preview({ root: ROOT, logLevel: 'error', preview: { port: PORT, strictPort: true } });
@@ -179,6 +209,9 @@ async function main(): Promise<void> {
     const animation = await measureAnimation(page);
     const drag360 = await measureDrag(page, 360);
     const drag3600 = await measureDrag(page, 3600);
+    // Compute only what the view needs: the same script with every view shown, and with all but the canvas hidden.
+    const workShown = await measureWork(page, `${BASE}embed.html?panels=controls,info,plots&ghost=1&trace=1`);
+    const workHidden = await measureWork(page, `${BASE}embed.html?panels=controls&ghost=0&trace=0`);
     const result = {
       date: new Date().toISOString(),
       browser: browser.version(),
@@ -186,6 +219,7 @@ async function main(): Promise<void> {
       animation,
       drag: { n360: drag360, n3600: drag3600 },
       firstLoad,
+      work: { shown: workShown, hidden: workHidden, pointsRatio: workHidden.points / workShown.points },
       targets: { medianFps: 58, longTasks: 0, dragP95Ms: 16, firstLoadGzipKB: 150 },
     };
     mkdirSync(join(ROOT, 'bench', 'results'), { recursive: true });
@@ -201,6 +235,9 @@ async function main(): Promise<void> {
       { measure: 'drag latency p95, n=3600 (ms)', value: f(drag3600.p95Ms), target: '<= 16', met: ok(drag3600.p95Ms <= 16) },
       { measure: 'drag to next frame p95, n=3600 (ms)', value: f(drag3600.toNextFrameP95Ms), target: '', met: '' },
       { measure: 'last drag value drawn (n=3600)', value: String(drag3600.lastValueDrawn), target: 'true', met: ok(drag3600.lastValueDrawn) },
+      { measure: 'solver points, views shown (script)', value: String(workShown.points), target: '', met: '' },
+      { measure: 'solver points, views hidden (script)', value: String(workHidden.points), target: '< shown', met: ok(workHidden.points < workShown.points) },
+      { measure: 'NR iterations shown / hidden', value: `${workShown.iterations} / ${workHidden.iterations}`, target: '', met: '' },
       { measure: 'first-load JS gzip (KB)', value: f(firstLoad.gzipKB), target: '<= 150', met: ok(firstLoad.gzipKB <= 150) },
       { measure: 'first-load JS raw (KB)', value: f(firstLoad.rawKB), target: '', met: '' },
     ]);

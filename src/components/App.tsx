@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useLayoutEffect, useMemo, useReducer, useRef } from 'react';
+import { Suspense, lazy, useCallback, useEffect, useLayoutEffect, useMemo, useReducer, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../solver/angles';
@@ -29,7 +29,11 @@ import { MessagesContext } from './MessagesContext';
 import { SharePanel } from './SharePanel';
 import { useAnimationFrame } from './useAnimationFrame';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
+import { useElementSize } from './useElementSize';
 import { decodeStatuses } from '../worker/statusCodes';
+
+// The solver lab (its charts and tables) loads only when it is opened.
+const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
 
 /** The full app or the compact embeddable widget. */
 export type AppMode = 'app' | 'embed';
@@ -78,8 +82,29 @@ export function App({ mode, initial }: AppProps) {
   const embedOptions = initial.embed;
   const t = getMessages(state.locale);
   const { client, mode: solverMode } = useSolverClient();
-  const { cycle, error: cycleError } = useCycle(client, state.linkage, state.samples, state.coupler);
-  const point = usePoint(client, state.linkage, state.branch, state.theta2Deg, state.samples, state.coupler);
+  const onLab = mode === 'app' && state.page === 'lab';
+  // A callback ref kept in state, so the size follows the plots card when it is mounted again (page switch).
+  const [plotsEl, setPlotsEl] = useState<HTMLElement | null>(null);
+  const plotsSize = useElementSize(useMemo(() => ({ current: plotsEl }), [plotsEl]));
+  const showPlots = mode === 'embed' ? initial.embed.panels.includes('plots') : !onLab;
+  const dpr = typeof window !== 'undefined' ? window.devicePixelRatio || 1 : 1;
+  // Only what the visible views show is computed: plot samples follow the plots' pixel width.
+  const plotPixels = showPlots && plotsSize.width > 0 ? Math.round(plotsSize.width * dpr) : 0;
+  const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const cycleNeeds = useMemo(
+    () => ({ solver, branch: state.branch, otherBranch: state.showGhost, curves: state.showTrace && !onLab, plotPixels }),
+    [solver, state.branch, state.showGhost, state.showTrace, onLab, plotPixels],
+  );
+  const pointNeeds = useMemo(
+    () => ({
+      solver,
+      ghost: state.showGhost && !onLab,
+      newton: mode === 'app' || initial.embed.panels.includes('info'),
+    }),
+    [solver, state.showGhost, onLab, mode, initial.embed.panels],
+  );
+  const { cycle, error: cycleError } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
+  const point = usePoint(client, state.linkage, state.branch, state.theta2Deg, state.samples, state.coupler, pointNeeds);
   const deg = useMemo(() => (cycle ? cycleDegrees(cycle) : null), [cycle]);
   const rangeDeg = useMemo(() => (cycle ? rangeToDeg(cycle.classification.inputRange) : null), [cycle]);
   const rocking = cycle ? !cycle.classification.inputRange.full && cycle.classification.inputRange.intervals.length > 0 : false;
@@ -264,7 +289,7 @@ export function App({ mode, initial }: AppProps) {
             </section>
           ) : null}
           {show('plots') ? (
-            <section className="card embed-card embed-plots">
+            <section className="card embed-card embed-plots" ref={setPlotsEl}>
               <AnglePlotsPanel deg={deg} point={point} branch={state.branch} showOther={state.showGhost} layout={state.plotLayout} dispatch={dispatch} />
             </section>
           ) : null}
@@ -297,16 +322,40 @@ export function App({ mode, initial }: AppProps) {
               <p className="app-subtitle">{t.appSubtitle}</p>
             </div>
           </div>
+          <div className="page-tabs" role="tablist" aria-label={t.viewSimulator + ' / ' + t.viewLab}>
+            {(['simulator', 'lab'] as const).map((p) => (
+              <button
+                key={p}
+                type="button"
+                role="tab"
+                id={`tab-${p}`}
+                aria-selected={state.page === p}
+                aria-controls="page-main"
+                className={`page-tab${state.page === p ? ' active' : ''}`}
+                onClick={() => dispatch({ type: 'setPage', page: p })}
+              >
+                {p === 'simulator' ? t.viewSimulator : t.viewLab}
+              </button>
+            ))}
+          </div>
           <LanguageSelect locale={state.locale} dispatch={dispatch} />
         </header>
         <aside className="sidebar" aria-label={t.sectionLinks}>
           <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
         </aside>
-        <main className="main">
-          <section className="card stage">{canvas}</section>
-          <section className="card plots" aria-label={t.sectionPlots}>
-            <AnglePlotsPanel deg={deg} point={point} branch={state.branch} showOther={state.showGhost} layout={state.plotLayout} dispatch={dispatch} />
-          </section>
+        <main className={`main${onLab ? ' main-lab' : ''}`} id="page-main" role="tabpanel" aria-labelledby={`tab-${state.page}`}>
+          {onLab ? (
+            <Suspense fallback={<p className="note">{t.labRun}…</p>}>
+              <LabPanel client={client} state={state} dispatch={dispatch} />
+            </Suspense>
+          ) : (
+            <>
+              <section className="card stage">{canvas}</section>
+              <section className="card plots" aria-label={t.sectionPlots} ref={setPlotsEl}>
+                <AnglePlotsPanel deg={deg} point={point} branch={state.branch} showOther={state.showGhost} layout={state.plotLayout} dispatch={dispatch} />
+              </section>
+            </>
+          )}
         </main>
         <aside className="rightbar">
           <section className="card" aria-labelledby="sec-analysis">

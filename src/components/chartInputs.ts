@@ -35,6 +35,8 @@ export interface ConvergenceInputs {
   emptyText: string;
 }
 
+const EMPTY = new Float64Array(0);
+
 /** Degrees wrapped to (-180, 180] from radians; NaN stays NaN (a gap). */
 export function toWrappedDeg(rad: ArrayLike<number>): Float64Array {
   const out = new Float64Array(rad.length);
@@ -49,16 +51,20 @@ export interface CycleDegrees {
   crossed: { theta3: Float64Array; theta4: Float64Array };
 }
 
-/** Converts a cycle's angles to wrapped degrees for plotting. */
+/** Converts a cycle's angles to wrapped degrees for plotting: its adaptive plot samples when it has them. */
 export function cycleDegrees(cycle: CycleResponse): CycleDegrees {
+  const plot = cycle.plot;
+  if (plot) {
+    const branch = (b: { theta3: Float64Array; theta4: Float64Array } | null) =>
+      b ? { theta3: toWrappedDeg(b.theta3), theta4: toWrappedDeg(b.theta4) } : { theta3: EMPTY, theta4: EMPTY };
+    return { theta2Deg: plot.theta2Deg, open: branch(plot.open), crossed: branch(plot.crossed) };
+  }
   return {
     theta2Deg: cycle.theta2Deg,
     open: { theta3: toWrappedDeg(cycle.open.theta3), theta4: toWrappedDeg(cycle.open.theta4) },
     crossed: { theta3: toWrappedDeg(cycle.crossed.theta3), theta4: toWrappedDeg(cycle.crossed.theta4) },
   };
 }
-
-const EMPTY = new Float64Array(0);
 
 /** Inputs of an angle chart: the branch's curves (the other branch faint when showOther) and labels. */
 export function angleChartInputs(

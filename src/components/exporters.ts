@@ -27,7 +27,8 @@ export async function linkagePng(scene: LinkageScene, view: ViewOffset, width: n
   return withPngDpi(await canvasToPngBytes(canvas), PNG_DPI[size]);
 }
 
-function detachedSvg(): SVGSVGElement {
+/** A new SVG element outside the document, for off-screen chart rendering. */
+export function detachedSvg(): SVGSVGElement {
   return document.createElementNS('http://www.w3.org/2000/svg', 'svg');
 }
 
@@ -61,4 +62,9 @@ export function downloadPng(bytes: Uint8Array, fileName: string): void {
 /** Downloads the cycle as CSV (d3-dsv formatting) under fileName. */
 export function downloadCsv(table: CycleTable, fileName: string): void {
   downloadBlob(new Blob([cycleToCsv(table)], { type: 'text/csv;charset=utf-8' }), fileName);
+}
+
+/** Downloads text (CSV) under fileName with the given MIME type. */
+export function downloadText(text: string, fileName: string, type: string): void {
+  downloadBlob(new Blob([text], { type }), fileName);
 }

@@ -1,4 +1,5 @@
 import { angleDiff, radToDeg } from '../solver/angles';
+export { distanceToNearestLimitDeg } from './limits';
 import { classify } from '../solver/classify';
 import { sweep, theta2Grid } from '../solver/sweep';
 import type { Angles, Branch, Linkage, SweepMethod, SweepResult } from '../solver/types';
@@ -133,17 +134,29 @@ function median(xs: number[]): number {
   return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
 }
 
-/** Median wall time (ms) of run, repeated for at least minMs and 5 runs, after 2 warm-up runs. */
+/** Shortest batch that is timed (ms): browsers coarsen performance.now() to 0.1 ms without cross-origin isolation. */
+const MIN_BATCH_MS = 2;
+
+/**
+ * Median wall time (ms) of one run: runs are timed in batches long enough for a coarse clock
+ * (the batch size doubles until a batch takes MIN_BATCH_MS), for at least minMs and 5 batches.
+ */
 export function medianTime(run: () => void, now: () => number, minMs: number): number {
   run();
-  run();
+  let reps = 1;
+  for (;;) {
+    const a = now();
+    for (let i = 0; i < reps; i++) run();
+    if (now() - a >= MIN_BATCH_MS || reps >= 1 << 16) break;
+    reps *= 2;
+  }
   const times: number[] = [];
   const t0 = now();
   while (times.length < 5 || now() - t0 < minMs) {
     const a = now();
-    run();
-    times.push(now() - a);
-    if (times.length > 2000) break;
+    for (let i = 0; i < reps; i++) run();
+    times.push((now() - a) / reps);
+    if (times.length > 500) break;
   }
   return median(times);
 }
@@ -227,14 +240,4 @@ export async function runWorkPrecision(l: Linkage, opts: LabOptions): Promise<La
     limitsDeg,
     minSinMu: { value: minSin, theta2Deg: minAt },
   };
-}
-
-/** Distance in degrees from theta2Deg to the nearest of limitsDeg, modulo 360; Infinity when there are none. */
-export function distanceToNearestLimitDeg(theta2Deg: number, limitsDeg: readonly number[]): number {
-  let best = Infinity;
-  for (const lim of limitsDeg) {
-    const d = Math.abs((((theta2Deg - lim) % 360) + 540) % 360 - 180);
-    best = Math.min(best, d);
-  }
-  return best;
 }

@@ -35,5 +35,5 @@ export {
 } from './newton';
 export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid } from './sweep';
 export { validateLinkage } from './validate';
-export { adaptiveSweep } from './sampling';
-export type { AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
+export { adaptiveGrid, adaptiveSweep } from './sampling';
+export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';

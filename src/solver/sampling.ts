@@ -4,9 +4,10 @@ import { Assembly, branchSign, closedFormAt, newClosedFormPoint, planClosedForm 
 import { sweep } from './sweep';
 import type { Branch, Linkage, SweepMethod, SweepResult } from './types';
 
-/** Options of adaptiveSweep. Angles in radians. */
-export interface AdaptiveSweepOptions {
-  branch: Branch;
+/** Options of adaptiveGrid. Angles in radians. */
+export interface AdaptiveGridOptions {
+  /** Branches whose curves the grid must resolve (default both). */
+  branches?: readonly Branch[];
   /** Width of the plot in device pixels: the base grid has about one sample per pixel (default 360). */
   pixels?: number;
   /** Start of the input range (default 0). */
@@ -17,6 +18,11 @@ export interface AdaptiveSweepOptions {
   maxJumpRad?: number;
   /** Hard cap on the number of samples (default 8 x the base grid). */
   maxPoints?: number;
+}
+
+/** Options of adaptiveSweep. */
+export interface AdaptiveSweepOptions extends Omit<AdaptiveGridOptions, 'branches'> {
+  branch: Branch;
   /** Sweep method for the final pass (default: the sweep default). */
   method?: SweepMethod;
 }
@@ -33,15 +39,15 @@ const MIN_SPACING = 1e-9;
 const MAX_PASSES = 24;
 
 /**
- * Samples the cycle as densely as the plot needs and no more: one sample per pixel, plus the
- * exact limit angles of the input's reachable range with geometric refinement towards them
- * (angles move like sqrt(distance) there), plus bisection wherever a curve turns faster than
- * maxJumpRad between neighbours (near-toggle positions). Solves pointwise with the closed form to
- * pick the grid, then runs the requested sweep method over it. Throws for a bad linkage.
+ * Input angles (radians, increasing) that sample the cycle as densely as a plot needs and no more:
+ * one sample per pixel, plus the exact limit angles of the input's reachable range with geometric
+ * refinement towards them (angles move like sqrt(distance) there), plus bisection wherever a curve
+ * of one of the branches turns faster than maxJumpRad between neighbours (near-toggle positions).
+ * The grid is chosen with the closed form. Throws for a bad linkage.
  */
-export function adaptiveSweep(l: Linkage, opts: AdaptiveSweepOptions): AdaptiveSweepResult {
+export function adaptiveGrid(l: Linkage, opts: AdaptiveGridOptions): Float64Array {
   const plan = planClosedForm(l);
-  const sigma = branchSign(opts.branch);
+  const sigmas = (opts.branches ?? ['open', 'crossed']).map(branchSign);
   const start = opts.startRad ?? 0;
   const end = opts.endRad ?? 2 * Math.PI;
   if (!(end > start)) throw new Error(`endRad must exceed startRad, got ${start}..${end}`);
@@ -70,30 +76,33 @@ export function adaptiveSweep(l: Linkage, opts: AdaptiveSweepOptions): AdaptiveS
   }
 
   const p = newClosedFormPoint();
-  const solve = (t: number) => {
-    const a = closedFormAt(plan, t, sigma, p);
-    return a === Assembly.Ok || a === Assembly.Limit ? { t3: p.theta3, t4: p.theta4 } : null;
-  };
+  type Pose = Array<{ t3: number; t4: number } | null>;
+  const solve = (t: number): Pose =>
+    sigmas.map((sigma) => {
+      const a = closedFormAt(plan, t, sigma, p);
+      return a === Assembly.Ok || a === Assembly.Limit ? { t3: p.theta3, t4: p.theta4 } : null;
+    });
+  const fastOrEdge = (a: Pose, b: Pose, gap: number): boolean =>
+    a.some((pa, k) => {
+      const pb = b[k];
+      if (pa !== null && pb !== null) {
+        return Math.max(Math.abs(angleDiff(pb.t3, pa.t3)), Math.abs(angleDiff(pb.t4, pa.t4))) > maxJump;
+      }
+      return (pa === null) !== (pb === null) && gap > step * 1e-6;
+    });
   let xs = [...grid].sort((a, b) => a - b);
   let poses = xs.map(solve);
   for (let pass = 0; pass < MAX_PASSES && xs.length < maxPoints; pass++) {
     const nx: number[] = [];
-    const np: Array<{ t3: number; t4: number } | null> = [];
+    const np: Pose[] = [];
     let added = 0;
     for (let i = 0; i < xs.length; i++) {
       nx.push(xs[i]);
       np.push(poses[i]);
       if (i + 1 === xs.length) break;
-      const a = poses[i];
-      const b = poses[i + 1];
       const gap = xs[i + 1] - xs[i];
       if (gap < 2 * MIN_SPACING || xs.length + added >= maxPoints) continue;
-      const fast =
-        a !== null &&
-        b !== null &&
-        Math.max(Math.abs(angleDiff(b.t3, a.t3)), Math.abs(angleDiff(b.t4, a.t4))) > maxJump;
-      const edge = (a === null) !== (b === null) && gap > step * 1e-6;
-      if (fast || edge) {
+      if (fastOrEdge(poses[i], poses[i + 1], gap)) {
         const mid = xs[i] + gap / 2;
         nx.push(mid);
         np.push(solve(mid));
@@ -104,6 +113,15 @@ export function adaptiveSweep(l: Linkage, opts: AdaptiveSweepOptions): AdaptiveS
     poses = np;
     if (added === 0) break;
   }
-  const result = sweep(l, xs, { branch: opts.branch, method: opts.method });
-  return { ...result, baseCount: base + 1, refinedCount: xs.length - (base + 1) };
+  return Float64Array.from(xs);
+}
+
+/**
+ * adaptiveGrid for one branch, then the requested sweep method over that grid. Throws for a bad linkage.
+ */
+export function adaptiveSweep(l: Linkage, opts: AdaptiveSweepOptions): AdaptiveSweepResult {
+  const grid = adaptiveGrid(l, { ...opts, branches: [opts.branch] });
+  const result = sweep(l, grid, { branch: opts.branch, method: opts.method });
+  const base = Math.max(8, Math.min(100_000, Math.round(opts.pixels ?? 360)));
+  return { ...result, baseCount: base + 1, refinedCount: grid.length - (base + 1) };
 }

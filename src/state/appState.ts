@@ -1,4 +1,4 @@
-import type { Branch, Linkage } from '../solver/types';
+import type { Branch, Linkage, SweepMethod } from '../solver/types';
 
 /** UI languages: English (default) and Traditional Chinese. */
 export type Locale = 'en' | 'zh-TW';
@@ -8,6 +8,18 @@ export type NrStart = 'continuation' | 'cold';
 
 /** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
 export type PlotLayout = 'separate' | 'together';
+
+/** Which page the app shows: the simulator, or the solver lab (work-precision study of the current linkage). */
+export type Page = 'simulator' | 'lab';
+
+/** The solver methods the user can choose (the lab's methods). */
+export const METHODS: readonly SweepMethod[] = ['closed-form', 'closed-form-polish', 'newton', 'newton-no-predictor', 'seed'];
+
+/** NR tolerances offered in the lab (relative for the project's NR, absolute for the report's); null = default. */
+export const TOLERANCES: readonly number[] = [1e-3, 1e-6, 1e-9, 1e-12, 1e-15];
+
+/** Input steps (degrees) the lab can sweep with. */
+export const LAB_STEPS_DEG: readonly number[] = [0.1, 1, 5];
 
 /** Direction of the animated input: +1 counter-clockwise (theta2 increasing), -1 clockwise. */
 export type Direction = 1 | -1;
@@ -46,6 +58,13 @@ export interface AppState {
   samples: number;
   locale: Locale;
   view: ViewOffset;
+  /** Method of the cycle sweep and of the NR runs shown at the current theta2 (chosen in the solver lab). */
+  method: SweepMethod;
+  /** NR tolerance for the chosen method; null = the method's default (full precision; 1e-9 absolute for seed). */
+  tol: number | null;
+  page: Page;
+  /** Input step of the solver lab's cycle, degrees. */
+  labStepDeg: number;
 }
 
 /** Nominal frame rate (frames per second) that converts degrees per frame into degrees per second. */
@@ -80,6 +99,10 @@ export const DEFAULT_STATE: AppState = {
   samples: 360,
   locale: 'en',
   view: { zoom: 1, panX: 0, panY: 0 },
+  method: 'newton',
+  tol: null,
+  page: 'simulator',
+  labStepDeg: 1,
 };
 
 /** Wraps degrees into [0, 360); non-finite input gives 0. */
@@ -124,6 +147,9 @@ export type Action =
   | { type: 'setView'; view: ViewOffset }
   | { type: 'animate'; theta2Deg: number; direction: Direction; branch: Branch }
   | { type: 'applyPreset'; linkage: Linkage; theta2Deg: number; branch: Branch; coupler: CouplerPoint }
+  | { type: 'setMethod'; method: SweepMethod; tol: number | null }
+  | { type: 'setPage'; page: Page }
+  | { type: 'setLabStep'; stepDeg: number }
   | { type: 'replace'; state: AppState };
 
 /** The app's reducer: pure, returns the same object when nothing changes. Assumes values were validated at the edge. */
@@ -176,6 +202,13 @@ export function reducer(state: AppState, action: Action): AppState {
         coupler: { ...action.coupler },
         view: { zoom: 1, panX: 0, panY: 0 },
       };
+    case 'setMethod':
+      if (action.method === state.method && action.tol === state.tol) return state;
+      return { ...state, method: action.method, tol: action.tol };
+    case 'setPage':
+      return action.page === state.page ? state : { ...state, page: action.page, playing: false };
+    case 'setLabStep':
+      return action.stepDeg === state.labStepDeg ? state : { ...state, labStepDeg: action.stepDeg };
     case 'replace':
       return action.state;
   }

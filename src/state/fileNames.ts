@@ -38,3 +38,9 @@ export function pngFileName(l: Linkage, branch: Branch, theta2Deg: number, subje
 export function csvFileName(l: Linkage, branch: Branch, samples: number): string {
   return `${fileStem(l, branch)}_cycle_n${samples}.csv`;
 }
+
+/** File name of a solver lab export, e.g. fourbar_6-2-5-5_open_work-precision_step1_2x.png or ..._step1.csv. */
+export function labFileName(l: Linkage, branch: Branch, stepDeg: number, ext: 'png' | 'csv', size?: PngSize): string {
+  const sz = ext === 'png' && size ? `_${SUFFIX[size]}` : '';
+  return `${fileStem(l, branch)}_work-precision_step${fileNumber(stepDeg)}${sz}.${ext}`;
+}

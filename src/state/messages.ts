@@ -1,5 +1,6 @@
-import type { LinkageType, NewtonStatus, PointStatus } from '../solver/types';
+import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../solver/types';
 import type { FieldError, FieldName } from './validate';
+import type { HardCaseId } from './hardCases';
 import type { PresetId } from './presets';
 
 /** Every UI string of one language; functions take already formatted numbers (strings). */
@@ -130,4 +131,55 @@ export interface Messages {
   errorTitle: string;
   errorBody: string;
   errorReset: string;
+
+  /** Short names of the hard cases (lab presets). */
+  hardCaseNames: Record<HardCaseId, string>;
+  /** One sentence per hard case: what makes it hard. */
+  hardCaseNotes: Record<HardCaseId, string>;
+  viewSimulator: string;
+  viewLab: string;
+  labTitle: string;
+  labIntro: string;
+  labRun: string;
+  labRerun: string;
+  labCancel: string;
+  /** Progress line; percent is a formatted number without the % sign. */
+  labProgress: (stage: string, percent: string) => string;
+  labCancelled: string;
+  labStep: string;
+  labMethod: string;
+  labTolerance: string;
+  labToleranceDefault: string;
+  methodNames: Record<SweepMethod, string>;
+  labTableHeaders: {
+    method: string;
+    nsPerPoint: string;
+    itersPerPoint: string;
+    maxError: string;
+    p99Error: string;
+    failed: string;
+    wrongBranch: string;
+    falseConvergence: string;
+  };
+  labDiagramTitle: string;
+  labDiagramX: string;
+  labDiagramY: string;
+  /** Legend entry for the diamond marking a method's default settings. */
+  labLegendDefault: string;
+  /** Legend entry for the red outline of configurations that failed somewhere on the cycle. */
+  labLegendFailed: string;
+  /** Tooltip of one diagram point; all arguments already formatted. */
+  labPointTooltip: (method: string, tol: string, nsPerPoint: string, maxError: string) => string;
+  labCycleTitle: string;
+  labCycleIterations: string;
+  labCycleDetJ: string;
+  labNearestLimit: (deg: string, atDeg: string) => string;
+  labNoLimit: string;
+  labMinSin: (value: string, atDeg: string) => string;
+  labHardCases: string;
+  labHardCasesIntro: string;
+  labChooseNote: string;
+  exportLabPng: string;
+  exportLabCsv: string;
+  labWhatItMeans: string;
 }

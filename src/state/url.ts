@@ -1,5 +1,5 @@
 import type { AppState, Direction, NrStart, PlotLayout } from './appState';
-import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg, wrapDeg180 } from './appState';
+import { DEFAULT_STATE, LAB_STEPS_DEG, METHODS, SAMPLES_MAX, SAMPLES_MIN, TOLERANCES, normalizeTheta2Deg, wrapDeg180 } from './appState';
 import { parseLocale } from './i18n';
 import type { FieldName } from './validate';
 import { checkValue, parseDecimal } from './validate';
@@ -174,6 +174,34 @@ export function parseUrl(
         else bad(key, value, `expected a pan fraction from -${PAN_MAX} to ${PAN_MAX}`);
         break;
       }
+      case 'm': {
+        const m = METHODS.find((x) => x === value);
+        if (m) state.method = m;
+        else bad(key, value, `expected one of ${METHODS.join(', ')}`);
+        break;
+      }
+      case 'tol': {
+        if (value === 'default') {
+          state.tol = null;
+          break;
+        }
+        const x = Number(value.trim());
+        const t = TOLERANCES.find((v) => v === x);
+        if (t !== undefined) state.tol = t;
+        else bad(key, value, `expected default or one of ${TOLERANCES.join(', ')}`);
+        break;
+      }
+      case 'page':
+        if (value === 'sim' || value === 'lab') state.page = value === 'lab' ? 'lab' : 'simulator';
+        else bad(key, value, 'expected sim or lab');
+        break;
+      case 'lstep': {
+        const x = Number(value.trim());
+        const st = LAB_STEPS_DEG.find((v) => v === x);
+        if (st !== undefined) state.labStepDeg = st;
+        else bad(key, value, `expected one of ${LAB_STEPS_DEG.join(', ')}`);
+        break;
+      }
       case 'panels': {
         const list = parseList(value, EMBED_PANELS);
         if (list) embed.panels = list;
@@ -215,6 +243,10 @@ export function serializeState(state: AppState, embed?: EmbedOptions): string {
   p.set('plots', state.plotLayout);
   p.set('n', String(state.samples));
   p.set('lang', state.locale);
+  p.set('m', state.method);
+  p.set('tol', state.tol === null ? 'default' : String(state.tol));
+  if (state.page === 'lab') p.set('page', 'lab');
+  if (state.labStepDeg !== DEFAULT_STATE.labStepDeg) p.set('lstep', String(state.labStepDeg));
   if (state.view.zoom !== 1 || state.view.panX !== 0 || state.view.panY !== 0) {
     p.set('z', String(state.view.zoom));
     p.set('px', String(state.view.panX));

@@ -26,9 +26,9 @@ export interface FieldSpec {
   signed: boolean;
 }
 
-/** Shortest and longest link length accepted, in the user's unit. */
-export const LENGTH_MIN = 1e-9;
-export const LENGTH_MAX = 1e9;
+/** Shortest and longest link length accepted, in the user's unit: the solver is scale-free; 1e308 is refused (squares of the sum overflow elsewhere). */
+export const LENGTH_MIN = 1e-300;
+export const LENGTH_MAX = 1e300;
 /** Largest angle magnitude accepted in a field, degrees (larger values are reduced modulo 360 without meaning). */
 export const ANGLE_ABS_MAX = 1e6;
 

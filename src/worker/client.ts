@@ -1,8 +1,10 @@
 import type { ComputeResult } from './compute';
+import type { LabResult } from '../lab/workPrecision';
 import type {
   CycleRequest,
   CycleResponse,
   ErrorResponse,
+  LabRequest,
   PointRequest,
   PointResponse,
   SolverRequest,
@@ -12,6 +14,21 @@ import type {
 /** What a cycle or point request carries besides its type and id. */
 export type CycleParams = Omit<CycleRequest, 'type' | 'id'>;
 export type PointParams = Omit<PointRequest, 'type' | 'id'>;
+export type LabParams = Omit<LabRequest, 'type' | 'id'>;
+
+/** A running lab study: its result (null when cancelled) and a way to cancel it. */
+export interface LabRun {
+  result: Promise<LabResult | null>;
+  cancel: () => void;
+}
+
+interface LabPending {
+  request: LabRequest;
+  resolve: (r: LabResult | null) => void;
+  reject: (e: Error) => void;
+  onProgress: (fraction: number, stage: string) => void;
+  cancelled: boolean;
+}
 
 /** The part of a Worker the client uses (a real Worker, or a fake in tests). */
 export interface WorkerLike {
@@ -77,6 +94,7 @@ export class SolverClient {
   private modeValue: SolverMode = 'starting';
   private startTimer: ReturnType<typeof setTimeout> | null = null;
   private compute: Promise<(req: SolverRequest) => ComputeResult> | null = null;
+  private labs = new Map<number, LabPending>();
   private disposed = false;
   private readonly options: SolverClientOptions;
 
@@ -112,12 +130,38 @@ export class SolverClient {
     return this.request('point', params);
   }
 
+  /**
+   * Starts the solver lab's study (in the worker, or here when there is none); onProgress gets the
+   * fraction done and the stage. cancel() makes the result resolve to null. Rejects with SolverError.
+   */
+  runLab(params: LabParams, onProgress: (fraction: number, stage: string) => void): LabRun {
+    const id = this.nextId++;
+    const request: LabRequest = { ...params, type: 'lab', id };
+    let pending: LabPending | null = null;
+    const result = new Promise<LabResult | null>((resolve, reject) => {
+      pending = { request, resolve, reject, onProgress, cancelled: false };
+    });
+    const p = pending as unknown as LabPending;
+    this.labs.set(id, p);
+    if (this.disposed) p.resolve(null);
+    else if (this.modeValue === 'main-thread' || !this.worker) this.labHere(p);
+    else this.worker.postMessage(request);
+    const cancel = () => {
+      if (p.cancelled) return;
+      p.cancelled = true;
+      if (this.worker && this.modeValue !== 'main-thread') this.worker.postMessage({ type: 'cancel', id });
+    };
+    return { result, cancel };
+  }
+
   /** Stops the worker; pending requests resolve to null. */
   dispose(): void {
     this.disposed = true;
     if (this.startTimer) clearTimeout(this.startTimer);
     this.worker?.terminate();
     this.worker = null;
+    for (const lab of this.labs.values()) lab.resolve(null);
+    this.labs.clear();
     for (const ch of Object.values(this.channels)) {
       ch.inFlight?.resolve(null);
       ch.queued?.resolve(null);
@@ -176,7 +220,12 @@ export class SolverClient {
       this.startTimer = null;
       this.setMode('worker');
     }
-    const channel: Channel = response.type === 'error' ? response.requestType : response.type;
+    if (response.type === 'lab' || response.type === 'lab-progress' || (response.type === 'error' && response.requestType === 'lab')) {
+      this.onLabMessage(response);
+      return;
+    }
+    if (response.type === 'error' && response.requestType === 'cancel') return;
+    const channel = (response.type === 'error' ? response.requestType : response.type) as Channel;
     const ch = this.channels[channel];
     if (!ch.inFlight || ch.inFlight.request.id !== response.id) return;
     const done = ch.inFlight;
@@ -185,6 +234,25 @@ export class SolverClient {
     const next = ch.queued;
     ch.queued = null;
     if (next) this.dispatch(channel, next);
+  }
+
+  private onLabMessage(response: SolverResponse): void {
+    const lab = this.labs.get(response.id);
+    if (!lab) return;
+    if (response.type === 'lab-progress') {
+      if (!lab.cancelled) lab.onProgress(response.fraction, response.stage);
+      return;
+    }
+    this.labs.delete(response.id);
+    if (response.type === 'error') lab.reject(new SolverError(response));
+    else if (response.type === 'lab') lab.resolve(lab.cancelled ? null : response.result);
+  }
+
+  private labHere(lab: LabPending): void {
+    void import('./labRunner').then(
+      (m) => m.runLabRequest(lab.request, (r) => this.onLabMessage(r), () => lab.cancelled),
+      (e: unknown) => lab.reject(new Error(`lab failed to load: ${e instanceof Error ? e.message : String(e)}`)),
+    );
   }
 
   private fallBack(reason: string): void {
@@ -201,6 +269,7 @@ export class SolverClient {
     for (const ch of Object.values(this.channels)) {
       if (ch.inFlight) this.solveHere(ch.inFlight.request);
     }
+    for (const lab of this.labs.values()) this.labHere(lab);
   }
 
   private setMode(mode: SolverMode, reason?: string): void {
@@ -215,7 +284,7 @@ export class SolverClient {
         // Answer asynchronously, as the worker would, so latest-wins behaves the same.
         setTimeout(() => {
           if (this.disposed) return;
-          const channel: Channel = request.type;
+          const channel = request.type as Channel;
           if (this.channels[channel].inFlight?.request.id !== request.id) return;
           this.onMessage(handle(request).response);
         }, 0);

@@ -1,12 +1,28 @@
-import { DEFAULT_TOLERANCE, classify, couplerPoint, degToRad, seedFirstGuess, solveClosedForm, solveNewton, sweep, transmissionAngle } from '../solver';
-import type { Angles, Branch, Linkage, NewtonResult } from '../solver/types';
+import {
+  DEFAULT_TOLERANCE,
+  SEED_TOLERANCE,
+  adaptiveGrid,
+  classify,
+  couplerPoint,
+  degToRad,
+  radToDeg,
+  seedFirstGuess,
+  solveClosedForm,
+  solveNewton,
+  sweep,
+  transmissionAngle,
+  velocityRatios,
+} from '../solver';
+import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
 import { encodeStatuses } from './statusCodes';
 import type {
   BranchCycle,
   CycleRequest,
   CycleResponse,
+  MethodChoice,
   NewtonSummary,
+  PlotSeries,
   PointRequest,
   PointResponse,
   PoseAngles,
@@ -24,8 +40,30 @@ function sigmaOf(a: Angles): number {
   return Math.sin(a.theta4 - a.theta3) >= 0 ? 1 : -1;
 }
 
-function branchCycle(l: Linkage, theta2Rad: Float64Array, branch: Branch, coupler: CycleRequest['coupler']): BranchCycle {
-  const r = sweep(l, theta2Rad, { branch, method: 'newton' });
+function skippedCycle(n: number): BranchCycle {
+  const nan = () => new Float64Array(n).fill(Number.NaN);
+  return {
+    theta3: nan(),
+    theta4: nan(),
+    iterations: new Int32Array(n),
+    residual: nan(),
+    statusCodes: new Uint8Array(n).fill(1),
+    px: nan(),
+    py: nan(),
+    totalIterations: 0,
+    branchCorrections: 0,
+    okCount: 0,
+    skipped: true,
+  };
+}
+
+/** Sweep options for a method choice: an explicit tolerance turns polishing off, so the tolerance shows. */
+function sweepOptions(branch: Branch, solver: MethodChoice) {
+  return { branch, method: solver.method, tol: solver.tol ?? undefined, polish: solver.tol === null };
+}
+
+function branchCycle(l: Linkage, theta2Rad: Float64Array, branch: Branch, coupler: CycleRequest['coupler'], solver: MethodChoice): BranchCycle {
+  const r = sweep(l, theta2Rad, sweepOptions(branch, solver));
   const n = theta2Rad.length;
   const px = new Float64Array(n).fill(Number.NaN);
   const py = new Float64Array(n).fill(Number.NaN);
@@ -48,7 +86,18 @@ function branchCycle(l: Linkage, theta2Rad: Float64Array, branch: Branch, couple
     totalIterations: r.totalIterations,
     branchCorrections: r.branchCorrections,
     okCount,
+    skipped: false,
   };
+}
+
+function plotSeries(l: Linkage, pixels: number, branches: Branch[], solver: MethodChoice): PlotSeries {
+  const grid = adaptiveGrid(l, { pixels, branches });
+  const one = (b: Branch) => {
+    if (!branches.includes(b)) return null;
+    const r = sweep(l, grid, sweepOptions(b, solver));
+    return { theta3: r.theta3, theta4: r.theta4 };
+  };
+  return { theta2Deg: grid.map(radToDeg), open: one('open'), crossed: one('crossed') };
 }
 
 /** Solves the whole cycle of a request (both branches, NR continuation sweeps) and its coupler curves. */
@@ -62,9 +111,22 @@ export function computeCycle(req: CycleRequest): ComputeResult {
     theta2Deg[k] = (360 * k) / n;
     theta2Rad[k] = degToRad(theta2Deg[k]);
   }
-  const open = branchCycle(req.linkage, theta2Rad, 'open', req.coupler);
-  const crossed = branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler);
-  const curves = couplerCurves(req.linkage, classification, req.coupler, open, crossed, n);
+  // The other branch only when something shows it; a rocking input needs both (it changes branch at its limits).
+  const rocking = !classification.inputRange.full;
+  const want = (b: Branch) => b === req.branch || req.otherBranch || rocking;
+  const open = want('open') ? branchCycle(req.linkage, theta2Rad, 'open', req.coupler, req.solver) : skippedCycle(n + 1);
+  const crossed = want('crossed') ? branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler, req.solver) : skippedCycle(n + 1);
+  const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, open, crossed, n) : [];
+  const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
+  const plot = req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver) : null;
+  let points = 0;
+  let iterations = 0;
+  for (const b of [open, crossed]) {
+    if (!b.skipped) points += n + 1;
+    iterations += b.totalIterations;
+  }
+  for (const c of curves) if (c.rocking) points += c.x.length;
+  if (plot) points += plot.theta2Deg.length * branches.length;
   const response: CycleResponse = {
     type: 'cycle',
     id: req.id,
@@ -76,6 +138,9 @@ export function computeCycle(req: CycleRequest): ComputeResult {
     open,
     crossed,
     curves,
+    plot,
+    solver: { ...req.solver },
+    work: { points, iterations },
     elapsedMs: performance.now() - t0,
   };
   const buffers: ArrayBufferLike[] = [theta2Deg.buffer];
@@ -83,6 +148,10 @@ export function computeCycle(req: CycleRequest): ComputeResult {
     buffers.push(b.theta3.buffer, b.theta4.buffer, b.iterations.buffer, b.residual.buffer, b.statusCodes.buffer, b.px.buffer, b.py.buffer);
   }
   for (const c of curves) buffers.push(c.x.buffer, c.y.buffer);
+  if (plot) {
+    buffers.push(plot.theta2Deg.buffer);
+    for (const b of [plot.open, plot.crossed]) if (b) buffers.push(b.theta3.buffer, b.theta4.buffer);
+  }
   // Shared buffers cannot be transferred (and the sweep never makes one); each buffer may appear once.
   const transfer = [...new Set(buffers)].filter((b): b is ArrayBuffer => b instanceof ArrayBuffer);
   return { response, transfer };
@@ -93,7 +162,22 @@ function pose(theta2: number, a: Angles | null): PoseAngles | null {
   return { theta2, theta3: a.theta3, theta4: a.theta4, mu: transmissionAngle(a) };
 }
 
-function summary(start: NewtonSummary['start'], guess: Angles, r: NewtonResult, sigma: number, l: Linkage): NewtonSummary {
+/** NR options for the chosen method: the report's Algorithm 1 for seed, the tolerance unpolished when one is chosen. */
+function newtonOptions(solver: MethodChoice): NewtonOptions {
+  if (solver.method === 'seed') return { seed: true, tol: solver.tol ?? undefined };
+  if (solver.tol !== null && (solver.method === 'newton' || solver.method === 'newton-no-predictor')) {
+    return { tol: solver.tol, polish: false };
+  }
+  return {};
+}
+
+/** The absolute residual tolerance NR stops at (length unit) under these options. */
+function toleranceOf(opts: NewtonOptions, l: Linkage): number {
+  if (opts.seed) return opts.tol ?? SEED_TOLERANCE;
+  return (opts.tol ?? DEFAULT_TOLERANCE) * (l.r1 + l.r2 + l.r3 + l.r4);
+}
+
+function summary(start: NewtonSummary['start'], guess: Angles, r: NewtonResult, sigma: number, tolerance: number): NewtonSummary {
   return {
     start,
     guess,
@@ -104,28 +188,49 @@ function summary(start: NewtonSummary['start'], guess: Angles, r: NewtonResult, 
     theta3: r.theta3,
     theta4: r.theta4,
     onBranch: r.status === 'converged' && sigmaOf(r) === sigma,
-    tolerance: DEFAULT_TOLERANCE * (l.r1 + l.r2 + l.r3 + l.r4),
+    tolerance,
     log: r.log,
   };
 }
 
 /**
- * Solves one pose: the closed form on the requested branch and on the other one (the ghost), and NR
- * from the continuation start (the solution one cycle step back) and from the report's cold first guess.
+ * Solves one pose: the closed form on the requested branch and, when drawn, on the other one (the ghost);
+ * when a panel shows them, NR with the chosen method from the continuation start (the solution one
+ * cycle step back, plus the velocity-ratio predictor for 'newton') and from the report's cold first guess.
  */
 export function computePoint(req: PointRequest): ComputeResult {
-  const { linkage: l, branch, theta2Rad } = req;
+  const { linkage: l, branch, theta2Rad, solver } = req;
   const other: Branch = branch === 'open' ? 'crossed' : 'open';
   const sigma = branch === 'open' ? 1 : -1;
   const main = solveClosedForm(l, theta2Rad, branch);
-  const ghost = solveClosedForm(l, theta2Rad, other);
+  const ghost = req.ghost ? solveClosedForm(l, theta2Rad, other) : null;
   let continuation: NewtonSummary | null = null;
   let cold: NewtonSummary | null = null;
-  if (main) {
-    const prev = solveClosedForm(l, theta2Rad - req.stepRad, branch);
-    if (prev) continuation = summary('continuation', prev, solveNewton(l, theta2Rad, prev), sigma, l);
+  let points = req.ghost ? 2 : 1;
+  let iterations = 0;
+  if (main && req.newton) {
+    const opts = newtonOptions(solver);
+    const tolerance = toleranceOf(opts, l);
+    const prevRad = theta2Rad - req.stepRad;
+    const prev = solveClosedForm(l, prevRad, branch);
+    if (prev) {
+      let start: Angles = { theta3: prev.theta3, theta4: prev.theta4 };
+      if (solver.method === 'newton') {
+        const v = velocityRatios(l, prevRad, prev);
+        if (Number.isFinite(v.dTheta3) && Number.isFinite(v.dTheta4)) {
+          start = { theta3: prev.theta3 + v.dTheta3 * req.stepRad, theta4: prev.theta4 + v.dTheta4 * req.stepRad };
+        }
+      }
+      const r = solveNewton(l, theta2Rad, start, opts);
+      continuation = summary('continuation', start, r, sigma, tolerance);
+      points += 2;
+      iterations += r.iterations;
+    }
     const guess = seedFirstGuess(branch);
-    cold = summary('cold', guess, solveNewton(l, theta2Rad, guess), sigma, l);
+    const rc = solveNewton(l, theta2Rad, guess, opts);
+    cold = summary('cold', guess, rc, sigma, tolerance);
+    points += 1;
+    iterations += rc.iterations;
   }
   const response: PointResponse = {
     type: 'point',
@@ -138,6 +243,8 @@ export function computePoint(req: PointRequest): ComputeResult {
     ghost: pose(theta2Rad, ghost),
     continuation,
     cold,
+    solver: { ...solver },
+    work: { points, iterations },
   };
   return { response, transfer: [] };
 }
@@ -150,6 +257,9 @@ export function handleRequest(req: SolverRequest): ComputeResult {
         return computeCycle(req);
       case 'point':
         return computePoint(req);
+      case 'lab':
+      case 'cancel':
+        throw new Error(`${req.type} requests are handled by the worker's lab runner`);
       default: {
         const unknown = req as { type?: unknown; id?: unknown };
         throw new Error(`unknown request type ${JSON.stringify(unknown.type)}`);

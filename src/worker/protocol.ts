@@ -1,11 +1,17 @@
-import type {
-  Angles,
-  Branch,
-  Classification,
-  IterationRecord,
-  Linkage,
-  NewtonStatus,
-} from '../solver/types';
+import type { LabResult } from '../lab/workPrecision';
+import type { Angles, Branch, Classification, IterationRecord, Linkage, NewtonStatus, SweepMethod } from '../solver/types';
+
+/** The solver method and NR tolerance the main view uses (chosen in the solver lab); tol null = the method's default. */
+export interface MethodChoice {
+  method: SweepMethod;
+  tol: number | null;
+}
+
+/** Solver work one response cost: points solved (closed form or NR) and NR iterations. */
+export interface WorkCount {
+  points: number;
+  iterations: number;
+}
 
 /** Coupler point for the worker: distance from A (length unit) and angle from AB (radians). */
 export interface CouplerSpec {
@@ -20,6 +26,14 @@ export interface CycleRequest {
   linkage: Linkage;
   samples: number;
   coupler: CouplerSpec;
+  solver: MethodChoice;
+  /** The branch the view shows; the other is swept only when otherBranch (ghost or plots show it) or the input rocks. */
+  branch: Branch;
+  otherBranch: boolean;
+  /** Coupler curves only when the trace is shown. */
+  curves: boolean;
+  /** Device-pixel width of the angle plots; 0 when no plot is visible (no plot sampling at all). */
+  plotPixels: number;
 }
 
 /** Ask for one pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
@@ -32,10 +46,29 @@ export interface PointRequest {
   /** Step of the cycle (radians): the continuation start is the solution one step back. */
   stepRad: number;
   coupler: CouplerSpec;
+  solver: MethodChoice;
+  /** Solve the other branch (the ghost) only when it is drawn; run NR only when a panel shows it. */
+  ghost: boolean;
+  newton: boolean;
+}
+
+/** Ask for the solver lab's work-precision study of a linkage (long: progress messages, cancellable). */
+export interface LabRequest {
+  type: 'lab';
+  id: number;
+  linkage: Linkage;
+  branch: Branch;
+  stepDeg: number;
+}
+
+/** Cancel the lab request with this id (it answers with result null). */
+export interface CancelRequest {
+  type: 'cancel';
+  id: number;
 }
 
 /** Every request the main thread can send. */
-export type SolverRequest = CycleRequest | PointRequest;
+export type SolverRequest = CycleRequest | PointRequest | LabRequest | CancelRequest;
 
 /** One branch of the swept cycle; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
 export interface BranchCycle {
@@ -51,6 +84,16 @@ export interface BranchCycle {
   totalIterations: number;
   branchCorrections: number;
   okCount: number;
+  /** True when this branch was not swept (not shown): arrays are NaN, okCount 0. */
+  skipped: boolean;
+}
+
+/** Angle plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). */
+export interface PlotSeries {
+  theta2Deg: Float64Array;
+  /** Radians wrapped to (-pi, pi], NaN in gaps; null when that branch is not shown. */
+  open: { theta3: Float64Array; theta4: Float64Array } | null;
+  crossed: { theta3: Float64Array; theta4: Float64Array } | null;
 }
 
 /** A closed coupler curve (length unit); closed when its first and last points coincide or it rocks between limits. */
@@ -79,6 +122,10 @@ export interface CycleResponse {
   open: BranchCycle;
   crossed: BranchCycle;
   curves: CouplerCurve[];
+  /** Plot samples, or null when no plot is visible. */
+  plot: PlotSeries | null;
+  solver: MethodChoice;
+  work: WorkCount;
   elapsedMs: number;
 }
 
@@ -122,6 +169,23 @@ export interface PointResponse {
   continuation: NewtonSummary | null;
   /** NR from the report's fixed first guess. */
   cold: NewtonSummary | null;
+  solver: MethodChoice;
+  work: WorkCount;
+}
+
+/** Progress of a lab request: fraction in [0, 1] and the stage being computed. */
+export interface LabProgressResponse {
+  type: 'lab-progress';
+  id: number;
+  fraction: number;
+  stage: string;
+}
+
+/** The lab's answer; result null when it was cancelled. */
+export interface LabResponse {
+  type: 'lab';
+  id: number;
+  result: LabResult | null;
 }
 
 /** The worker could not answer a request: the message names what was wrong. */
@@ -133,4 +197,4 @@ export interface ErrorResponse {
 }
 
 /** Every answer the worker can send. */
-export type SolverResponse = CycleResponse | PointResponse | ErrorResponse;
+export type SolverResponse = CycleResponse | PointResponse | LabResponse | LabProgressResponse | ErrorResponse;

@@ -1,11 +1,24 @@
 /// <reference lib="webworker" />
 import { handleRequest } from './compute';
-import type { SolverRequest } from './protocol';
+import { runLabRequest } from './labRunner';
+import type { SolverRequest, SolverResponse } from './protocol';
 
 declare const self: DedicatedWorkerGlobalScope;
 
-// A thin switch: every request is answered by handleRequest, which never throws.
+const cancelled = new Set<number>();
+const post = (r: SolverResponse) => self.postMessage(r);
+
+// A thin switch: lab requests run asynchronously (cancellable), everything else through handleRequest, which never throws.
 self.onmessage = (event: MessageEvent<SolverRequest>) => {
-  const { response, transfer } = handleRequest(event.data);
+  const req = event.data;
+  if (req.type === 'cancel') {
+    cancelled.add(req.id);
+    return;
+  }
+  if (req.type === 'lab') {
+    void runLabRequest(req, post, () => cancelled.has(req.id)).finally(() => cancelled.delete(req.id));
+    return;
+  }
+  const { response, transfer } = handleRequest(req);
   self.postMessage(response, transfer);
 };

@@ -1,7 +1,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { AppState } from '../../src/state/appState';
-import { DEFAULT_STATE } from '../../src/state/appState';
+import { DEFAULT_STATE, LAB_STEPS_DEG, METHODS, TOLERANCES } from '../../src/state/appState';
 import { DEFAULT_EMBED, appUrl, embedCode, embedUrl, parseUrl, serializeState } from '../../src/state/url';
 
 const quiet = () => undefined;
@@ -38,6 +38,10 @@ describe('serializeState and parseUrl', () => {
         panX: fc.double({ min: -100, max: 100, noNaN: true }),
         panY: fc.double({ min: -100, max: 100, noNaN: true }),
       }),
+      method: fc.constantFrom(...METHODS),
+      tol: fc.constantFrom(null, ...TOLERANCES),
+      page: fc.constantFrom('simulator' as const, 'lab' as const),
+      labStepDeg: fc.constantFrom(...LAB_STEPS_DEG),
     });
     fc.assert(
       fc.property(state, (s) => {
@@ -49,6 +53,17 @@ describe('serializeState and parseUrl', () => {
       }),
       { seed: 20251222, numRuns: 300 },
     );
+  });
+
+  it('rejects an unknown method, tolerance or page with a warning', () => {
+    const warnings: string[] = [];
+    const r = parseUrl('m=bisection&tol=1e-7&page=debug&lstep=2', DEFAULT_STATE, (m) => warnings.push(m));
+    expect(r.state.method).toBe(DEFAULT_STATE.method);
+    expect(r.state.tol).toBe(DEFAULT_STATE.tol);
+    expect(r.state.page).toBe('simulator');
+    expect(r.state.labStepDeg).toBe(1);
+    expect(warnings).toHaveLength(4);
+    expect(warnings[0]).toContain('m="bisection"');
   });
 
   it('keeps lengths like 2.000000001 exactly', () => {

@@ -38,7 +38,8 @@ describe('parseField', () => {
     expect(message('r3', '0')).toBe('r3 must be greater than 0, got 0.');
     expect(message('r4', '-1')).toBe('r4 must not be negative, got -1.');
     expect(message('r1', '1e308')).toContain('r1: 1e308 is out of range');
-    expect(message('r1', '1e-12')).toContain('r1: 1e-12 is too small');
+    expect(message('r1', '1e-320')).toContain('r1: 1e-320 is too small');
+    expect(parseField('r1', '1e-12')).toEqual({ ok: true, value: 1e-12 });
   });
   it('rejects an absurd angle but takes negative ones', () => {
     expect(parseField('theta2', '-30')).toEqual({ ok: true, value: -30 });

@@ -24,7 +24,9 @@ class FakeWorker implements WorkerLike {
   }
 }
 
-const point = (theta2Rad: number) => ({ linkage: L, branch: 'open' as const, theta2Rad, stepRad: Math.PI / 180, coupler: C });
+const SOLVER = { method: 'newton' as const, tol: null };
+const point = (theta2Rad: number) => ({ linkage: L, branch: 'open' as const, theta2Rad, stepRad: Math.PI / 180, coupler: C, solver: SOLVER, ghost: true, newton: true });
+const CYCLE_NEEDS = { solver: SOLVER, branch: 'open' as const, otherBranch: true, curves: true, plotPixels: 0 };
 
 describe('SolverClient', () => {
   it('keeps one request in flight and one queued: no backlog while a slider is dragged', async () => {
@@ -61,7 +63,7 @@ describe('SolverClient', () => {
   it('keeps the cycle and point channels independent', async () => {
     const w = new FakeWorker();
     const client = new SolverClient({ createWorker: () => w });
-    const c = client.requestCycle({ linkage: L, samples: 36, coupler: C });
+    const c = client.requestCycle({ linkage: L, samples: 36, coupler: C, ...CYCLE_NEEDS });
     const p = client.requestPoint(point(1));
     expect(w.received.map((r) => r.type)).toEqual(['cycle', 'point']);
     w.answer(1);
@@ -80,7 +82,7 @@ describe('SolverClient', () => {
       onModeChange: (m) => modes.push(m),
     });
     expect(client.mode).toBe('main-thread');
-    const r = await client.requestCycle({ linkage: L, samples: 360, coupler: C });
+    const r = await client.requestCycle({ linkage: L, samples: 360, coupler: C, ...CYCLE_NEEDS });
     expect(r?.theta2Deg.length).toBe(361);
     expect(modes).toEqual(['main-thread']);
     client.dispose();

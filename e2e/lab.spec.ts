@@ -1,0 +1,68 @@
+import type { Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
+import { artifact, waitReady } from './helpers';
+
+/** Waits until the lab shows a finished study (data-ready on the lab root). */
+async function waitLab(page: Page): Promise<void> {
+  await expect(page.getByTestId('solver-lab')).toHaveAttribute('data-ready', 'true', { timeout: 90_000 });
+}
+
+/** Distinct method colours among the diagram's markers: one per method drawn. */
+async function methodsDrawn(page: Page): Promise<number> {
+  return page.getByTestId('work-precision').evaluate((svg) => {
+    const fills = new Set<string>();
+    for (const el of svg.querySelectorAll('g.markers [data-method]')) fills.add(el.getAttribute('data-method') ?? '');
+    return fills.size;
+  });
+}
+
+test.describe('the solver lab', () => {
+  test('draws a work-precision diagram of at least four methods on the default linkage', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    await page.getByRole('tab', { name: 'Solver lab' }).click();
+    await waitLab(page);
+    expect(await methodsDrawn(page)).toBeGreaterThanOrEqual(4);
+    const rows = page.locator('table.lab-table tbody tr');
+    expect(await rows.count()).toBeGreaterThanOrEqual(4);
+    // The report's linkage: no failures, no branch jumps, no false convergence for any default.
+    for (const cell of await page.locator('table.lab-table td.bad').all()) expect(await cell.textContent()).toBe('0');
+    await expect(page.getByTestId('lab-limit')).toHaveText('The crank turns fully: no input limit.');
+    await page.screenshot({ path: artifact('lab.png') });
+  });
+
+  test('re-runs on a near-toggle hard case and still shows every method', async ({ page }) => {
+    await page.goto('./?page=lab');
+    await waitLab(page);
+    await page.getByRole('button', { name: /^2\. Near toggle/ }).click();
+    await expect(page.getByRole('textbox', { name: /^r4/ })).toHaveValue('2.000000001');
+    await expect(page.getByTestId('solver-lab')).toHaveAttribute('data-ready', 'false');
+    await waitLab(page);
+    expect(await methodsDrawn(page)).toBeGreaterThanOrEqual(4);
+    await page.screenshot({ path: artifact('lab-near-toggle.png') });
+  });
+
+  test('the method chosen in the lab changes the main view’s iteration counts', async ({ page }) => {
+    await page.goto('./?page=lab');
+    await waitLab(page);
+    const summary = page.getByText(/NR iterations in all/);
+    const before = await summary.textContent();
+    await page.getByRole('combobox', { name: 'Method' }).selectOption('seed');
+    await expect(summary).not.toHaveText(before ?? '');
+    const count = (s: string | null) => Number(/(\d+) NR iterations/.exec(s ?? '')?.[1]);
+    // The report's NR needs about 2.5 iterations a point, the polished continuation about 1.1.
+    expect(count(await summary.textContent())).toBeGreaterThan(count(before));
+    await page.getByRole('combobox', { name: 'Method' }).selectOption('closed-form');
+    await expect(summary).toHaveText(/ 0 NR iterations/);
+    // The choice is part of the shared state.
+    await expect.poll(() => new URL(page.url()).searchParams.get('m')).toBe('closed-form');
+  });
+
+  test('cancels a running study and keeps the page usable', async ({ page }) => {
+    await page.goto('./?page=lab&lstep=0.1');
+    await expect(page.getByRole('button', { name: 'Cancel' })).toBeVisible({ timeout: 20_000 });
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await expect(page.getByText('Cancelled. The last finished result stays on screen.')).toBeVisible();
+    await expect(page.getByRole('button', { name: /^Run/ })).toBeEnabled();
+  });
+});

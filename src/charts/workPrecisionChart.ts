@@ -1,0 +1,607 @@
+import { axisBottom, axisLeft } from 'd3-axis';
+import { scaleLog } from 'd3-scale';
+import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
+import type { LabPoint, LabSeries } from '../lab/workPrecision';
+import type { SweepMethod } from '../solver/types';
+import type { Margins, SvgSel } from './chartFrame';
+import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis } from './chartFrame';
+
+/** Fixed colour of each lab method, so a method looks the same in every chart and table. */
+export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
+  'closed-form': '#0f9d76',
+  'closed-form-polish': '#2563eb',
+  newton: '#9333ea',
+  'newton-no-predictor': '#a16207',
+  seed: '#475569',
+};
+
+/** Outline of a marker whose configuration failed, jumped branch or falsely converged somewhere on the cycle. */
+export const FAILURE_COLOR = '#dc2626';
+
+/** Errors below this (rad), exact zeros included, are drawn at this floor of the log scale. */
+export const ERROR_FLOOR = 1e-17;
+
+/** Which point the user chose: a method and its tolerance (null: the method's default). */
+export interface WorkPrecisionHighlight {
+  method: SweepMethod;
+  tol: number | null;
+}
+
+/** Options of drawWorkPrecisionChart; sizes in CSS pixels. */
+export interface WorkPrecisionChartOptions {
+  width: number;
+  height: number;
+  title: string;
+  /** x axis label, e.g. 'median time per point (ns)'. */
+  xLabel: string;
+  /** y axis label, e.g. 'max angle error (rad)'. */
+  yLabel: string;
+  /** The chosen method and tolerance, drawn with an orange ring; none by default. */
+  highlight?: WorkPrecisionHighlight | null;
+  /** Small tolerance labels ('1e-6') beside the traced points; default true. */
+  tolLabels?: boolean;
+  /** Legend and tooltip label per method; default each series' own label. */
+  methodLabels?: Partial<Record<SweepMethod, string>>;
+  /** Text for the default tolerance in tooltips; default 'default'. */
+  defaultTolText?: string;
+  /** Extra legend entry explaining the diamond (default settings); omitted when not given. */
+  defaultLegend?: string;
+  /** Extra legend entry explaining the red outline (failures, wrong branch, false convergence); omitted when not given. */
+  failureLegend?: string;
+  /** Tooltip text of one marker; default label, tolerance, ns/pt and max error on separate lines. */
+  tooltip?: (series: LabSeries, point: LabPoint) => string;
+  /** Text shown in the middle when there is no point to plot. */
+  emptyText?: string;
+  /** Default { top: 55 plus 16 per extra legend row, right: 16, bottom: 40, left: 66 }; values given here win. */
+  margins?: Partial<Margins>;
+}
+
+/**
+ * Formats a tolerance for labels and CSV: 'default' (or defaultText) for null, otherwise the shortest
+ * exponent form with an ASCII minus, e.g. 1e-6 -> '1e-6', 2.5e-9 -> '2.5e-9'.
+ */
+export function formatTol(tol: number | null, defaultText = 'default'): string {
+  if (tol === null) return defaultText;
+  if (!Number.isFinite(tol)) return String(tol);
+  return tol.toExponential().replace('e+', 'e');
+}
+
+/** The y value a max error is drawn at (rad): NaN stays NaN (not drawn), anything below ERROR_FLOOR sits on it. */
+export function plottedError(maxError: number): number {
+  if (Number.isNaN(maxError)) return NaN;
+  return maxError < ERROR_FLOOR ? ERROR_FLOOR : maxError;
+}
+
+/** True when a point can be drawn: a finite positive time and a max error that is not NaN. */
+export function isDrawable(p: LabPoint): boolean {
+  return (
+    Number.isFinite(p.nsPerPoint) &&
+    p.nsPerPoint > 0 &&
+    !Number.isNaN(p.maxError) &&
+    Number.isFinite(plottedError(p.maxError))
+  );
+}
+
+/** True when the configuration went wrong somewhere on the cycle (failed, wrong branch or false convergence). */
+export function hasTrouble(p: LabPoint): boolean {
+  return p.failures > 0 || p.wrongBranch > 0 || p.falseConvergence > 0;
+}
+
+/** One method's curve split for drawing: traced points loosest tolerance first (NaN ones kept, as gaps) and its default point. */
+export interface CurvePoints {
+  traced: LabPoint[];
+  /** The tol === null point, or null when the method has none or it cannot be drawn. */
+  defaultPoint: LabPoint | null;
+}
+
+/**
+ * Orders a method's points for its curve: the points with a tolerance sorted by tolerance descending
+ * (loosest first; ties keep their order), and the default point apart (it is not joined).
+ */
+export function orderedCurvePoints(series: LabSeries): CurvePoints {
+  const traced = series.points.filter((p) => p.tol !== null).sort((a, b) => (b.tol as number) - (a.tol as number));
+  const d = series.points.find((p) => p.tol === null);
+  return { traced, defaultPoint: d && isDrawable(d) ? d : null };
+}
+
+/** m times 10^e, correctly rounded (10 ** -4 is not the double nearest 1e-4). */
+export function dec(m: number, e: number): number {
+  return Number(`${m}e${e}`);
+}
+
+/** Largest of 1, 2, 5 times a power of ten at or below v (v > 0). */
+function niceBelow(v: number): number {
+  const e = Math.floor(Math.log10(v));
+  for (const m of [5, 2, 1]) if (dec(m, e) <= v * (1 + 1e-12)) return dec(m, e);
+  return dec(1, e);
+}
+
+/** Smallest of 1, 2, 5 times a power of ten at or above v (v > 0). */
+function niceAbove(v: number): number {
+  const e = Math.floor(Math.log10(v));
+  for (const m of [1, 2, 5, 10]) if (dec(m, e) >= v * (1 - 1e-12)) return dec(m, e);
+  return dec(1, e + 1);
+}
+
+/**
+ * Log-scale domains of the diagram from the drawable points: x (ns per point) padded by 15 % and
+ * widened to 1-2-5 bounds, y (rad, floored at ERROR_FLOOR) padded by a quarter decade and widened to
+ * whole decades. Without points: x [10, 10000], y [1e-17, 1].
+ */
+export function workPrecisionDomains(series: readonly LabSeries[]): { x: [number, number]; y: [number, number] } {
+  let x0 = Infinity;
+  let x1 = 0;
+  let y0 = Infinity;
+  let y1 = 0;
+  for (const s of series) {
+    for (const p of s.points) {
+      if (!isDrawable(p)) continue;
+      const e = plottedError(p.maxError);
+      x0 = Math.min(x0, p.nsPerPoint);
+      x1 = Math.max(x1, p.nsPerPoint);
+      y0 = Math.min(y0, e);
+      y1 = Math.max(y1, e);
+    }
+  }
+  if (!(x1 > 0)) return { x: [10, 10000], y: [ERROR_FLOOR, 1] };
+  let xlo = niceBelow(x0 / 1.15);
+  let xhi = niceAbove(x1 * 1.15);
+  if (xhi / xlo < 10) {
+    // Less than a decade of spread: centre a full decade on the data so the axis has ticks to read.
+    const mid = Math.sqrt(x0 * x1);
+    xlo = niceBelow(mid / Math.sqrt(10));
+    xhi = niceAbove(mid * Math.sqrt(10));
+  }
+  const ylo = dec(1, Math.floor(Math.log10(y0) - 0.25));
+  let yhi = dec(1, Math.ceil(Math.log10(y1) + 0.25));
+  if (yhi / ylo < 100) yhi = ylo * 100;
+  return { x: [xlo, xhi], y: [ylo, yhi] };
+}
+
+/**
+ * Tick values of a log axis over [lo, hi]: powers of ten, thinned to every k-th decade (counted from
+ * 10^anchorExponent, default 10^0) so there are at most maxTicks, plus 2 and 5 times each power when
+ * the domain spans under three decades.
+ */
+export function logTicks(domain: readonly [number, number], maxTicks: number, anchorExponent = 0): number[] {
+  const [lo, hi] = domain;
+  const e0 = Math.ceil(Math.log10(lo) - 1e-9);
+  const e1 = Math.floor(Math.log10(hi) + 1e-9);
+  const inside = (v: number) => v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9);
+  const out: number[] = [];
+  if (Math.log10(hi / lo) < 3) {
+    for (let e = e0 - 1; e <= e1; e++) for (const m of [1, 2, 5]) if (inside(dec(m, e))) out.push(dec(m, e));
+    return out;
+  }
+  const every = Math.max(1, Math.ceil((e1 - e0 + 1) / Math.max(2, maxTicks)));
+  // Thin on a fixed lattice (1e-16, 1e-14, ... for every = 2) so the ticks do not shift as the data moves.
+  for (let e = e0; e <= e1; e++) if ((((e - anchorExponent) % every) + every) % every === 0) out.push(dec(1, e));
+  return out;
+}
+
+/** Formats a positive time tick (ns): plain digits from 0.01 to 99999, otherwise like formatTol ('1e6'). */
+export function formatTimeTick(v: number): string {
+  if (v >= 0.01 && v < 1e5) return String(Number(v.toPrecision(3)));
+  return formatErrorTick(v);
+}
+
+/** Formats a positive error tick (rad) in exponent form with a typographic minus: 1e-16 -> '1e−16', 5e-3 -> '5e−3'. */
+export function formatErrorTick(v: number): string {
+  return minus(formatTol(Number(v.toPrecision(3))));
+}
+
+/** A text label's box in plot pixels. */
+export interface LabelBox {
+  x0: number;
+  y0: number;
+  x1: number;
+  y1: number;
+}
+
+/** A placed label: anchor point of the text (baseline) and its text-anchor. */
+export interface PlacedLabel {
+  x: number;
+  y: number;
+  anchor: 'start' | 'middle' | 'end';
+}
+
+function overlaps(a: LabelBox, b: LabelBox): boolean {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+/**
+ * Greedy label placement: for each point (x, y) with a label of width w and font size h, tries right,
+ * left, above, below, then the four diagonals, gap pixels away (per item, else defaultGap), and keeps
+ * the first spot inside [0, width] x [0, height] that overlaps neither an obstacle nor an earlier
+ * label; null when every spot is taken.
+ */
+export function placeLabels(
+  items: ReadonlyArray<{ x: number; y: number; w: number; h: number; gap?: number }>,
+  obstacles: readonly LabelBox[],
+  width: number,
+  height: number,
+  defaultGap = 7,
+): Array<PlacedLabel | null> {
+  const taken: LabelBox[] = [...obstacles];
+  return items.map(({ x, y, w, h, gap = defaultGap }) => {
+    const asc = 0.75 * h;
+    const desc = 0.25 * h;
+    const spots: PlacedLabel[] = [
+      { x: x + gap, y: y + asc / 2, anchor: 'start' },
+      { x: x - gap, y: y + asc / 2, anchor: 'end' },
+      { x, y: y - gap - desc, anchor: 'middle' },
+      { x, y: y + gap + asc, anchor: 'middle' },
+      { x: x + gap * 0.7, y: y - gap * 0.7, anchor: 'start' },
+      { x: x + gap * 0.7, y: y + gap * 0.7 + asc, anchor: 'start' },
+      { x: x - gap * 0.7, y: y - gap * 0.7, anchor: 'end' },
+      { x: x - gap * 0.7, y: y + gap * 0.7 + asc, anchor: 'end' },
+    ];
+    for (const s of spots) {
+      const left = s.anchor === 'start' ? s.x : s.anchor === 'end' ? s.x - w : s.x - w / 2;
+      // 3 px of air around each label so neighbours never read as one word.
+      const box = { x0: left - 3, y0: s.y - asc - 1, x1: left + w + 3, y1: s.y + desc + 1 };
+      if (left < 0 || left + w > width || s.y - asc < 0 || s.y + desc > height) continue;
+      if (taken.some((t) => overlaps(t, box))) continue;
+      taken.push(box);
+      return s;
+    }
+    return null;
+  });
+}
+
+/** One entry of a method legend. */
+export interface MethodLegendItem {
+  label: string;
+  color: string;
+  /** 'line': plain line; 'curve': line with a dot; 'default': filled diamond; 'defaultKey': hollow diamond; 'failureKey': red-ringed dot. */
+  kind: 'line' | 'curve' | 'default' | 'defaultKey' | 'failureKey';
+}
+
+/** Height of one legend row in pixels. */
+export const LEGEND_ROW = 16;
+const LEGEND_SAMPLE = 22;
+const LEGEND_GAP = 14;
+
+/** Wraps legend entries of these label widths into rows no wider than maxWidth; returns [x, row] per entry (pixels, row index). */
+export function legendLayout(labelWidths: readonly number[], maxWidth: number): Array<[number, number]> {
+  const out: Array<[number, number]> = [];
+  let x = 0;
+  let row = 0;
+  for (const w of labelWidths) {
+    const full = LEGEND_SAMPLE + w;
+    if (x > 0 && x + full > maxWidth) {
+      x = 0;
+      row++;
+    }
+    out.push([x, row]);
+    x += full + LEGEND_GAP;
+  }
+  return out;
+}
+
+/** Draws (or updates) a legend at (x, y) in the SVG that wraps into rows of at most maxWidth pixels; returns the number of rows. */
+export function drawMethodLegend(
+  s: SvgSel,
+  items: readonly MethodLegendItem[],
+  x: number,
+  y: number,
+  maxWidth: number,
+): number {
+  const layout = legendLayout(
+    items.map((it) => estimateTextWidth(it.label)),
+    maxWidth,
+  );
+  const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
+  const item = legend
+    .selectAll<SVGGElement, MethodLegendItem>('g.item')
+    .data(items)
+    .join((enter) => {
+      const g = enter.append('g').attr('class', 'item');
+      g.append('line');
+      g.append('path');
+      g.append('text');
+      return g;
+    });
+  item.attr('transform', (_d, i) => `translate(${layout[i][0]},${layout[i][1] * LEGEND_ROW})`);
+  item
+    .select('line')
+    .attr('x1', 0)
+    .attr('x2', 16)
+    .attr('y1', 0)
+    .attr('y2', 0)
+    .attr('stroke', (d) => d.color)
+    .attr('stroke-width', 1.75)
+    .attr('display', (d) => (d.kind === 'curve' || d.kind === 'line' ? null : 'none'));
+  item
+    .select('path')
+    .attr('transform', 'translate(8,0)')
+    .attr('d', (d) => (d.kind === 'default' || d.kind === 'defaultKey' ? symbol(symbolDiamond, 70)() : '') ?? '')
+    .attr('fill', (d) => (d.kind === 'default' ? d.color : '#ffffff'))
+    .attr('stroke', (d) => (d.kind === 'default' ? '#ffffff' : d.kind === 'defaultKey' ? CHART_STYLE.muted : 'none'))
+    .attr('stroke-width', (d) => (d.kind === 'defaultKey' ? 1.25 : 1));
+  item
+    .selectAll<SVGCircleElement, MethodLegendItem>('circle')
+    .data((d) => (d.kind === 'curve' || d.kind === 'failureKey' ? [d] : []))
+    .join('circle')
+    .attr('cx', 8)
+    .attr('cy', 0)
+    .attr('r', (d) => (d.kind === 'curve' ? 3 : 3.5))
+    .attr('fill', (d) => (d.kind === 'curve' ? d.color : '#ffffff'))
+    .attr('stroke', (d) => (d.kind === 'curve' ? '#ffffff' : FAILURE_COLOR))
+    .attr('stroke-width', (d) => (d.kind === 'curve' ? 1 : 2));
+  item
+    .select('text')
+    .attr('x', 21)
+    .attr('y', 4)
+    .attr('fill', CHART_STYLE.text)
+    .text((d) => d.label);
+  return items.length ? layout[layout.length - 1][1] + 1 : 0;
+}
+
+/** One drawn marker (internal). */
+interface Marker {
+  series: LabSeries;
+  point: LabPoint;
+  isDefault: boolean;
+  color: string;
+  x: number;
+  y: number;
+}
+
+function defaultTooltip(label: string, p: LabPoint, defaultTolText: string): string {
+  const err = p.maxError === 0 ? '0' : p.maxError.toExponential(2);
+  return `${label}\ntol ${formatTol(p.tol, defaultTolText)}\n${p.nsPerPoint.toFixed(0)} ns/pt\nmax error ${err} rad`;
+}
+
+/**
+ * Draws (or redraws in place) the lab's work-precision diagram: median time per point (ns) against
+ * max angle error (rad), both log scales. Each traced method is a line over its tolerances (loosest
+ * first); a method's default is a diamond; red outlines mark configurations that failed, jumped
+ * branch or falsely converged; NaN errors are skipped; errors below ERROR_FLOOR sit on the floor.
+ */
+export function drawWorkPrecisionChart(
+  svg: SVGSVGElement,
+  series: readonly LabSeries[],
+  options: WorkPrecisionChartOptions,
+): void {
+  const { width, height } = options;
+  const s = prepareSvg(svg, width, height);
+  const labelOf = (sr: LabSeries) => options.methodLabels?.[sr.method] ?? sr.label;
+  const defaultTolText = options.defaultTolText ?? 'default';
+  const curves = series.map((sr) => ({ sr, ...orderedCurvePoints(sr) }));
+
+  const legendItems: MethodLegendItem[] = curves.map((c) => ({
+    label: labelOf(c.sr),
+    color: METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted,
+    kind: c.traced.length > 0 ? 'curve' : 'default',
+  }));
+  const anyDefaultOfTraced = curves.some((c) => c.traced.length > 0 && c.defaultPoint);
+  if (options.defaultLegend && anyDefaultOfTraced) {
+    legendItems.push({ label: options.defaultLegend, color: CHART_STYLE.muted, kind: 'defaultKey' });
+  }
+  const anyTrouble = series.some((sr) => sr.points.some((p) => isDrawable(p) && hasTrouble(p)));
+  if (options.failureLegend && anyTrouble) {
+    legendItems.push({ label: options.failureLegend, color: FAILURE_COLOR, kind: 'failureKey' });
+  }
+  const legendRows = drawMethodLegend(s, legendItems, 14, 33, width - 28);
+  const m: Margins = {
+    top: options.margins?.top ?? 33 + Math.max(0, legendRows - 1) * LEGEND_ROW + 22,
+    right: options.margins?.right ?? 16,
+    bottom: options.margins?.bottom ?? 40,
+    left: options.margins?.left ?? 66,
+  };
+  const iw = Math.max(10, width - m.left - m.right);
+  const ih = Math.max(10, height - m.top - m.bottom);
+
+  const dom = workPrecisionDomains(series);
+  const x = scaleLog().domain(dom.x).range([0, iw]).clamp(true);
+  const y = scaleLog().domain(dom.y).range([ih, 0]).clamp(true);
+  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
+
+  const xTicks = logTicks(dom.x, Math.max(2, Math.floor(iw / 60)));
+  const anyFloored = series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
+  const yTicks = logTicks(
+    dom.y,
+    Math.max(2, Math.floor(ih / 24)),
+    anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0,
+  );
+
+  const grid = child(plot, 'g', 'grid');
+  grid
+    .selectAll<SVGLineElement, number>('line.gy')
+    .data(yTicks)
+    .join('line')
+    .attr('class', 'gy')
+    .attr('x1', 0)
+    .attr('x2', iw)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+  grid
+    .selectAll<SVGLineElement, number>('line.gx')
+    .data(xTicks)
+    .join('line')
+    .attr('class', 'gx')
+    .attr('y1', 0)
+    .attr('y2', ih)
+    .attr('x1', (d) => x(d))
+    .attr('x2', (d) => x(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+  // The floor: everything at or below 1e-17 rad, exact answers included, is drawn on this dashed line.
+  grid
+    .selectAll<SVGLineElement, number>('line.floor')
+    .data(anyFloored ? [ERROR_FLOOR] : [])
+    .join('line')
+    .attr('class', 'floor')
+    .attr('x1', 0)
+    .attr('x2', iw)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.tolerance)
+    .attr('stroke-dasharray', '3 3');
+
+  const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
+  ax.call(
+    axisBottom(x)
+      .tickValues(xTicks)
+      .tickFormat((d) => formatTimeTick(Number(d)))
+      .tickSizeOuter(0),
+  );
+  styleAxis(ax);
+  const ay = child(plot, 'g', 'axis-y');
+  ay.call(
+    axisLeft(y)
+      .tickValues(yTicks)
+      .tickFormat((d) =>
+        anyFloored && Number(d) === ERROR_FLOOR ? `≤${formatErrorTick(ERROR_FLOOR)}` : formatErrorTick(Number(d)),
+      )
+      .tickSizeOuter(0),
+  );
+  styleAxis(ay);
+
+  const markers: Marker[] = [];
+  for (const c of curves) {
+    const color = METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted;
+    for (const p of c.traced) {
+      if (isDrawable(p))
+        markers.push({
+          series: c.sr,
+          point: p,
+          isDefault: false,
+          color,
+          x: x(p.nsPerPoint),
+          y: y(plottedError(p.maxError)),
+        });
+    }
+    if (c.defaultPoint) {
+      const p = c.defaultPoint;
+      markers.push({
+        series: c.sr,
+        point: p,
+        isDefault: true,
+        color,
+        x: x(p.nsPerPoint),
+        y: y(plottedError(p.maxError)),
+      });
+    }
+  }
+
+  const gen = line<LabPoint>()
+    .defined((p) => isDrawable(p))
+    .x((p) => x(p.nsPerPoint))
+    .y((p) => y(plottedError(p.maxError)));
+  child(plot, 'g', 'curves')
+    .selectAll<SVGPathElement, (typeof curves)[number]>('path')
+    .data(curves.filter((c) => c.traced.length > 0))
+    .join('path')
+    .attr('fill', 'none')
+    .attr('stroke', (c) => METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted)
+    .attr('stroke-width', 1.6)
+    .attr('stroke-opacity', 0.85)
+    .attr('stroke-linejoin', 'round')
+    .attr('d', (c) => gen(c.traced) ?? '');
+
+  const tip = (mk: Marker) =>
+    options.tooltip
+      ? options.tooltip(mk.series, mk.point)
+      : defaultTooltip(labelOf(mk.series), mk.point, defaultTolText);
+  // Defaults first so the smaller traced dots stay visible on top of a diamond they coincide with.
+  const ordered = [...markers.filter((mk) => mk.isDefault), ...markers.filter((mk) => !mk.isDefault)];
+  const marks = child(plot, 'g', 'markers')
+    .selectAll<SVGPathElement, Marker>('path')
+    .data(ordered)
+    .join((enter) => {
+      const p = enter.append('path');
+      p.append('title');
+      return p;
+    })
+    .attr('transform', (mk) => `translate(${mk.x},${mk.y})`)
+    .attr('data-method', (mk) => mk.series.method)
+    .attr('data-tol', (mk) => formatTol(mk.point.tol))
+    .attr('d', (mk) => (mk.isDefault ? symbol(symbolDiamond, 110)() : symbol(symbolCircle, 34)()) ?? '')
+    .attr('fill', (mk) => mk.color)
+    .attr('stroke', (mk) => (hasTrouble(mk.point) ? FAILURE_COLOR : '#ffffff'))
+    .attr('stroke-width', (mk) => (hasTrouble(mk.point) ? 2 : 1));
+  marks.select('title').text(tip);
+
+  const hl = options.highlight;
+  const chosen = hl ? markers.filter((mk) => mk.series.method === hl.method && mk.point.tol === hl.tol) : [];
+  child(plot, 'g', 'highlight')
+    .selectAll<SVGCircleElement, Marker>('circle')
+    .data(chosen)
+    .join('circle')
+    .attr('cx', (mk) => mk.x)
+    .attr('cy', (mk) => mk.y)
+    .attr('r', (mk) => (mk.isDefault ? 10 : 8))
+    .attr('fill', 'none')
+    .attr('stroke', CHART_STYLE.marker)
+    .attr('stroke-width', 2)
+    .attr('pointer-events', 'none');
+
+  const labelSize = 9.5;
+  // The chosen point is labelled first so it is never the one crowded out.
+  const labelled =
+    options.tolLabels === false
+      ? []
+      : [...chosen.filter((mk) => !mk.isDefault), ...markers.filter((mk) => !mk.isDefault && !chosen.includes(mk))];
+  const texts = labelled.map((mk) => minus(formatTol(mk.point.tol)));
+  const obstacles: LabelBox[] = markers.map((mk) => {
+    const r = chosen.includes(mk) ? 11 : mk.isDefault ? 7 : 4;
+    return { x0: mk.x - r, y0: mk.y - r, x1: mk.x + r, y1: mk.y + r };
+  });
+  const spots = placeLabels(
+    labelled.map((mk, i) => ({
+      x: mk.x,
+      y: mk.y,
+      w: 1.25 * estimateTextWidth(texts[i], labelSize), // the estimate runs about 20 % short for digits and '−'
+      h: labelSize,
+      gap: chosen.includes(mk) ? 14 : 7, // clear of the marker (r 4) or the highlight ring (r 11), plus the 3 px of air
+    })),
+    obstacles,
+    iw,
+    ih,
+  );
+  const labels = labelled
+    .map((mk, i) => ({ mk, text: texts[i], spot: spots[i] }))
+    .filter((l): l is { mk: Marker; text: string; spot: PlacedLabel } => l.spot !== null);
+  child(plot, 'g', 'tol-labels')
+    .selectAll<SVGTextElement, (typeof labels)[number]>('text')
+    .data(labels)
+    .join('text')
+    .attr('x', (l) => l.spot.x)
+    .attr('y', (l) => l.spot.y)
+    .attr('text-anchor', (l) => l.spot.anchor)
+    .attr('font-size', labelSize)
+    .attr('fill', (l) => l.mk.color)
+    .attr('pointer-events', 'none')
+    .text((l) => l.text);
+
+  const empty = markers.length === 0;
+  child(s, 'text', 'title')
+    .attr('x', 14)
+    .attr('y', 17)
+    .attr('font-size', CHART_STYLE.titleSize)
+    .attr('font-weight', 600)
+    .attr('fill', CHART_STYLE.text)
+    .text(options.title);
+  child(s, 'text', 'xlabel')
+    .attr('display', empty ? 'none' : null)
+    .attr('x', m.left + iw / 2)
+    .attr('y', height - 6)
+    .attr('text-anchor', 'middle')
+    .attr('fill', CHART_STYLE.muted)
+    .text(options.xLabel);
+  child(s, 'text', 'ylabel')
+    .attr('display', empty ? 'none' : null)
+    .attr('transform', `translate(12,${m.top + ih / 2}) rotate(-90)`)
+    .attr('text-anchor', 'middle')
+    .attr('fill', CHART_STYLE.muted)
+    .text(options.yLabel);
+  plot.attr('display', empty ? 'none' : null);
+  child(s, 'text', 'empty')
+    .attr('x', width / 2)
+    .attr('y', m.top + ih / 2)
+    .attr('text-anchor', 'middle')
+    .attr('fill', CHART_STYLE.muted)
+    .text(empty ? (options.emptyText ?? '') : '');
+}

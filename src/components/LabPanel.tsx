@@ -1,0 +1,301 @@
+import { useCallback, useMemo, useState } from 'react';
+import type { Dispatch } from 'react';
+import { drawCycleChart } from '../charts/cycleChart';
+import { drawWorkPrecisionChart, formatTol } from '../charts/workPrecisionChart';
+import { distanceToNearestLimitDeg } from '../lab/limits';
+import type { LabPoint, LabResult, LabSeries } from '../lab/workPrecision';
+import type { SweepMethod } from '../solver/types';
+import type { Action, AppState } from '../state/appState';
+import { LAB_STEPS_DEG, METHODS, TOLERANCES } from '../state/appState';
+import type { PngSize } from '../state/fileNames';
+import { labFileName } from '../state/fileNames';
+import { formatDeg, formatSci } from '../state/format';
+import { HARD_CASES } from '../state/hardCases';
+import { labToCsv } from '../state/labCsv';
+import type { SolverClient } from '../worker/client';
+import { downloadPng, downloadText } from './exporters';
+import { labPng } from './labExport';
+import { useMessages } from './MessagesContext';
+import { Segmented } from './Segmented';
+import { SvgChartView } from './SvgChartView';
+import { useLab } from './useLab';
+
+/** Props of LabPanel: the solver client, the app state and its dispatch. */
+export interface LabPanelProps {
+  client: SolverClient | null;
+  state: AppState;
+  dispatch: Dispatch<Action>;
+}
+
+/** Logical (CSS pixel) size of the exported work-precision diagram. */
+export const LAB_EXPORT_SIZE = { width: 760, height: 460 } as const;
+
+function defaultPoint(s: LabSeries): LabPoint | undefined {
+  return s.points.find((p) => p.tol === null);
+}
+
+function fmtErr(x: number): string {
+  return Number.isFinite(x) ? formatSci(x, 2) : '—';
+}
+
+/**
+ * The solver lab: a work-precision study of the current linkage computed in the worker (progress,
+ * cancel), the per-method counts of failed, wrong-branch and falsely converged points, iterations
+ * and |det J| along the cycle, the distance to the nearest limit, the method and tolerance that
+ * drive the main view, hard-case presets, and PNG/CSV export of the diagram.
+ */
+export function LabPanel({ client, state, dispatch }: LabPanelProps) {
+  const t = useMessages();
+  const lab = useLab(client, state.linkage, state.branch, state.labStepDeg);
+  const [pngSize, setPngSize] = useState<PngSize>('2x');
+  const [exportStatus, setExportStatus] = useState('');
+  const result: LabResult | null = lab.result;
+  const highlight = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const methodLabels = t.methodNames;
+
+  const chartOptions = useMemo(
+    () => ({
+      title: t.labDiagramTitle,
+      xLabel: t.labDiagramX,
+      yLabel: t.labDiagramY,
+      highlight,
+      methodLabels,
+      defaultTolText: t.labToleranceDefault,
+      defaultLegend: t.labLegendDefault,
+      failureLegend: t.labLegendFailed,
+      tooltip: (s: LabSeries, p: LabPoint) =>
+        t.labPointTooltip(t.methodNames[s.method], formatTol(p.tol, t.labToleranceDefault), p.nsPerPoint.toFixed(0), fmtErr(p.maxError)),
+      emptyText: t.labRun + '…',
+    }),
+    [t, highlight, methodLabels],
+  );
+  const drawDiagram = useCallback(
+    (svg: SVGSVGElement, width: number, height: number) =>
+      drawWorkPrecisionChart(svg, result ? result.series : [], { ...chartOptions, width, height }),
+    [result, chartOptions],
+  );
+  const drawCycle = useCallback(
+    (svg: SVGSVGElement, width: number, height: number) => {
+      if (!result) return;
+      drawCycleChart(
+        svg,
+        {
+          theta2Deg: result.theta2Deg,
+          detJ: result.detJ,
+          iterations: result.iterations.map((it) => ({ ...it, label: t.methodNames[it.method] })),
+          limitsDeg: result.limitsDeg,
+          currentDeg: state.theta2Deg,
+        },
+        {
+          width,
+          height,
+          title: t.labCycleTitle,
+          xLabel: t.axisTheta2,
+          iterationsLabel: t.labCycleIterations,
+          detJLabel: t.labCycleDetJ,
+        },
+      );
+    },
+    [result, t, state.theta2Deg],
+  );
+
+  const onPng = async () => {
+    if (!result) return;
+    setExportStatus('');
+    try {
+      const { width, height } = LAB_EXPORT_SIZE;
+      const bytes = await labPng(result.series, { ...chartOptions, width, height }, pngSize);
+      downloadPng(bytes, labFileName(result.linkage, result.branch, result.stepDeg, 'png', pngSize));
+    } catch (e) {
+      setExportStatus(t.exportFailed(e instanceof Error ? e.message : String(e)));
+    }
+  };
+  const onCsv = () => {
+    if (!result) return;
+    downloadText(labToCsv(result), labFileName(result.linkage, result.branch, result.stepDeg, 'csv'), 'text/csv;charset=utf-8');
+  };
+
+  const limitText = (() => {
+    if (!result) return null;
+    if (result.limitsDeg.length === 0) return t.labNoLimit;
+    const d = distanceToNearestLimitDeg(state.theta2Deg, result.limitsDeg);
+    const nearest = result.limitsDeg.reduce((best, x) =>
+      distanceToNearestLimitDeg(state.theta2Deg, [x]) < distanceToNearestLimitDeg(state.theta2Deg, [best]) ? x : best,
+    );
+    return t.labNearestLimit(formatDeg(d, 4), formatDeg(nearest, 4));
+  })();
+
+  const percent = lab.progress ? String(Math.round(lab.progress.fraction * 100)) : '0';
+  const chosenSeries = result?.series.find((s) => s.method === state.method);
+  const chosenPoint = chosenSeries?.points.find((p) => p.tol === state.tol);
+
+  return (
+    <div className="lab" data-testid="solver-lab" data-ready={result && !lab.running ? 'true' : 'false'}>
+      <section className="card lab-card" aria-labelledby="lab-title">
+        <h2 id="lab-title" className="section-title">
+          {t.labTitle}
+        </h2>
+        <p className="note">{t.labIntro}</p>
+        <div className="lab-toolbar">
+          <Segmented<string>
+            legend={t.labStep}
+            value={String(state.labStepDeg)}
+            options={LAB_STEPS_DEG.map((s) => ({ value: String(s), label: `${s}°` }))}
+            onChange={(v) => dispatch({ type: 'setLabStep', stepDeg: Number(v) })}
+          />
+          {lab.running ? (
+            <button type="button" className="btn btn-small" onClick={lab.cancel}>
+              {t.labCancel}
+            </button>
+          ) : (
+            <button type="button" className="btn btn-small btn-primary" onClick={lab.run} disabled={!client}>
+              {result ? t.labRerun : t.labRun}
+            </button>
+          )}
+          <div className="lab-progress">
+            <progress max={100} value={lab.running ? Number(percent) : result ? 100 : 0} aria-label={t.labProgress(lab.progress?.stage ?? '', percent)} />
+            <span className="status-line" role="status" aria-live="polite">
+              {lab.running ? t.labProgress(lab.progress?.stage ?? '', percent) : lab.cancelled ? t.labCancelled : (lab.error ?? '')}
+            </span>
+          </div>
+        </div>
+        <SvgChartView draw={drawDiagram} label={t.labDiagramTitle} className="lab-diagram" testId="work-precision" />
+        <div className="lab-table-wrap">
+          <table className="lab-table">
+            <thead>
+              <tr>
+                <th scope="col">{t.labTableHeaders.method}</th>
+                <th scope="col">{t.labTableHeaders.nsPerPoint}</th>
+                <th scope="col">{t.labTableHeaders.itersPerPoint}</th>
+                <th scope="col">{t.labTableHeaders.maxError}</th>
+                <th scope="col">{t.labTableHeaders.failed}</th>
+                <th scope="col">{t.labTableHeaders.wrongBranch}</th>
+                <th scope="col">{t.labTableHeaders.falseConvergence}</th>
+              </tr>
+            </thead>
+            <tbody>
+              {(result?.series ?? []).flatMap((s) => {
+                const rows: Array<{ p: LabPoint; chosen: boolean }> = [];
+                const d = defaultPoint(s);
+                if (d) rows.push({ p: d, chosen: s.method === state.method && state.tol === null });
+                if (s.method === state.method && state.tol !== null && chosenPoint) rows.push({ p: chosenPoint, chosen: true });
+                return rows.map(({ p, chosen }) => (
+                  <tr key={`${s.method}-${p.tol}`} className={chosen ? 'chosen' : undefined}>
+                    <th scope="row">
+                      {t.methodNames[s.method]}
+                      {p.tol !== null ? `, tol ${formatTol(p.tol)}` : ''}
+                    </th>
+                    <td className="mono">{p.nsPerPoint.toFixed(0)}</td>
+                    <td className="mono">{p.itersPerPoint.toFixed(2)}</td>
+                    <td className="mono">{fmtErr(p.maxError)}</td>
+                    <td className={`mono${p.failures ? ' bad' : ''}`}>{p.failures}</td>
+                    <td className={`mono${p.wrongBranch ? ' bad' : ''}`}>{p.wrongBranch}</td>
+                    <td className={`mono${p.falseConvergence ? ' bad' : ''}`}>{p.falseConvergence}</td>
+                  </tr>
+                ));
+              })}
+            </tbody>
+          </table>
+        </div>
+        <div className="lab-choose">
+          <label className="field-inline">
+            <span>{t.labMethod}</span>
+            <select
+              className="select"
+              aria-label={t.labMethod}
+              value={state.method}
+              onChange={(e) => dispatch({ type: 'setMethod', method: e.target.value as SweepMethod, tol: state.tol })}
+            >
+              {METHODS.map((m) => (
+                <option key={m} value={m}>
+                  {t.methodNames[m]}
+                </option>
+              ))}
+            </select>
+          </label>
+          <label className="field-inline">
+            <span>{t.labTolerance}</span>
+            <select
+              className="select"
+              aria-label={t.labTolerance}
+              value={state.tol === null ? 'default' : String(state.tol)}
+              disabled={state.method === 'closed-form' || state.method === 'closed-form-polish'}
+              onChange={(e) =>
+                dispatch({ type: 'setMethod', method: state.method, tol: e.target.value === 'default' ? null : Number(e.target.value) })
+              }
+            >
+              <option value="default">{t.labToleranceDefault}</option>
+              {TOLERANCES.map((x) => (
+                <option key={x} value={String(x)}>
+                  {formatTol(x)}
+                </option>
+              ))}
+            </select>
+          </label>
+          <p className="note note-muted">{t.labChooseNote}</p>
+        </div>
+        {result ? (
+          <>
+            <p className="note" data-testid="lab-limit">
+              {limitText}
+            </p>
+            <p className="note">{t.labMinSin(formatSci(result.minSinMu.value, 3), formatDeg(result.minSinMu.theta2Deg, 2))}</p>
+          </>
+        ) : null}
+        <SvgChartView draw={drawCycle} label={t.labCycleTitle} className="lab-cycle" />
+        <div className="export-buttons lab-export">
+          <Segmented<PngSize>
+            legend={t.exportSize}
+            value={pngSize}
+            options={[
+              { value: 'screen', label: t.sizeScreen },
+              { value: '2x', label: t.size2x },
+              { value: 'print', label: t.sizePrint },
+            ]}
+            onChange={setPngSize}
+          />
+          <button type="button" className="btn btn-small" onClick={() => void onPng()} disabled={!result}>
+            {t.exportLabPng}
+          </button>
+          <button type="button" className="btn btn-small" onClick={onCsv} disabled={!result}>
+            {t.exportLabCsv}
+          </button>
+          <span className="status-line" role="status">
+            {exportStatus}
+          </span>
+        </div>
+        <p className="note">{t.labWhatItMeans}</p>
+      </section>
+      <section className="card lab-card" aria-labelledby="lab-hard">
+        <h2 id="lab-hard" className="section-title">
+          {t.labHardCases}
+        </h2>
+        <p className="note">{t.labHardCasesIntro}</p>
+        <ul className="hard-cases">
+          {HARD_CASES.map((c) => (
+            <li key={c.id}>
+              <button
+                type="button"
+                className="hard-case"
+                onClick={() =>
+                  dispatch({
+                    type: 'applyPreset',
+                    linkage: c.linkage,
+                    theta2Deg: c.theta2Deg,
+                    branch: c.branch,
+                    coupler: { distance: c.linkage.r3 / 2, angleDeg: 30 },
+                  })
+                }
+              >
+                <span className="hard-case-name">
+                  {c.number}. {t.hardCaseNames[c.id]}
+                </span>
+                <span className="hard-case-note">{t.hardCaseNotes[c.id]}</span>
+              </button>
+            </li>
+          ))}
+        </ul>
+      </section>
+    </div>
+  );
+}

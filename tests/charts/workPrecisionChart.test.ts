@@ -1,0 +1,202 @@
+import { describe, expect, it } from 'vitest';
+import type { LabPoint, LabSeries } from '../../src/lab/workPrecision';
+import {
+  ERROR_FLOOR,
+  METHOD_COLORS,
+  formatErrorTick,
+  formatTimeTick,
+  formatTol,
+  hasTrouble,
+  legendLayout,
+  logTicks,
+  orderedCurvePoints,
+  placeLabels,
+  plottedError,
+  workPrecisionDomains,
+} from '../../src/charts/workPrecisionChart';
+
+function pt(tol: number | null, nsPerPoint: number, maxError: number, failures = 0): LabPoint {
+  return {
+    tol,
+    nsPerPoint,
+    maxError,
+    p99Error: maxError,
+    failures,
+    wrongBranch: 0,
+    falseConvergence: 0,
+    itersPerPoint: 1,
+  };
+}
+
+describe('formatTol', () => {
+  it('writes the default as text and tolerances in short exponent form', () => {
+    expect(formatTol(null)).toBe('default');
+    expect(formatTol(null, 'Vorgabe')).toBe('Vorgabe');
+    expect(formatTol(1e-6)).toBe('1e-6');
+    expect(formatTol(1e-15)).toBe('1e-15');
+    expect(formatTol(2.5e-9)).toBe('2.5e-9');
+    expect(formatTol(1e3)).toBe('1e3');
+  });
+});
+
+describe('plottedError', () => {
+  it('puts exact zeros and tiny errors on the floor and keeps NaN out', () => {
+    expect(plottedError(0)).toBe(ERROR_FLOOR);
+    expect(plottedError(1e-20)).toBe(ERROR_FLOOR);
+    expect(plottedError(3e-10)).toBe(3e-10);
+    expect(Number.isNaN(plottedError(NaN))).toBe(true);
+  });
+});
+
+describe('hasTrouble', () => {
+  it('flags failures, wrong branches and false convergence', () => {
+    expect(hasTrouble(pt(1e-3, 100, 1e-3))).toBe(false);
+    expect(hasTrouble(pt(1e-3, 100, 1e-3, 2))).toBe(true);
+    expect(hasTrouble({ ...pt(1e-3, 100, 1e-3), wrongBranch: 1 })).toBe(true);
+    expect(hasTrouble({ ...pt(1e-3, 100, 1e-3), falseConvergence: 1 })).toBe(true);
+  });
+});
+
+describe('orderedCurvePoints', () => {
+  it('traces tolerances loosest first and keeps the default apart', () => {
+    const s: LabSeries = {
+      method: 'newton',
+      label: 'NR',
+      points: [
+        pt(null, 300, 1e-15),
+        pt(1e-9, 200, 1e-9),
+        pt(1e-3, 150, 1e-3),
+        pt(1e-15, 250, 1e-15),
+        pt(1e-6, 180, 1e-6),
+      ],
+    };
+    const c = orderedCurvePoints(s);
+    expect(c.traced.map((p) => p.tol)).toEqual([1e-3, 1e-6, 1e-9, 1e-15]);
+    expect(c.defaultPoint?.nsPerPoint).toBe(300);
+  });
+
+  it('keeps NaN points in the trace (they become gaps) but drops a NaN default', () => {
+    const s: LabSeries = {
+      method: 'seed',
+      label: 'seed',
+      points: [pt(null, 100, NaN), pt(1e-6, 90, NaN), pt(1e-3, 80, 1e-3)],
+    };
+    const c = orderedCurvePoints(s);
+    expect(c.traced).toHaveLength(2);
+    expect(Number.isNaN(c.traced[1].maxError)).toBe(true);
+    expect(c.defaultPoint).toBeNull();
+  });
+
+  it('gives a method with only its default a single marker and no curve', () => {
+    const c = orderedCurvePoints({ method: 'closed-form', label: 'CF', points: [pt(null, 50, 4e-16)] });
+    expect(c.traced).toEqual([]);
+    expect(c.defaultPoint?.maxError).toBe(4e-16);
+  });
+});
+
+describe('workPrecisionDomains', () => {
+  it('pads errors to whole decades and times to 1-2-5 bounds', () => {
+    const series: LabSeries[] = [
+      { method: 'closed-form', label: '', points: [pt(null, 164, 4.4e-16)] },
+      { method: 'newton', label: '', points: [pt(1e-3, 1029, 0.0508), pt(1e-9, 341, 2.5e-7)] },
+    ];
+    const d = workPrecisionDomains(series);
+    expect(d.x).toEqual([100, 2000]);
+    expect(d.y[0]).toBeCloseTo(1e-16, 30);
+    expect(d.y[1]).toBeCloseTo(0.1, 15);
+  });
+
+  it('reaches below the floor when an error is exactly zero, and ignores NaN points', () => {
+    const d = workPrecisionDomains([
+      { method: 'newton', label: '', points: [pt(1e-3, 100, 0), pt(1e-6, 1e9, NaN), pt(1e-9, 300, 1e-3)] },
+    ]);
+    expect(d.y[0]).toBeLessThan(ERROR_FLOOR);
+    expect(d.x[1]).toBeLessThan(1e4);
+  });
+
+  it('shows at least a decade of time when every method takes about the same', () => {
+    const d = workPrecisionDomains([
+      { method: 'newton', label: '', points: [pt(1e-3, 300, 1e-3), pt(1e-6, 320, 1e-6)] },
+    ]);
+    expect(d.x[1] / d.x[0]).toBeGreaterThanOrEqual(10);
+    expect(d.x[0]).toBeLessThan(300);
+    expect(d.x[1]).toBeGreaterThan(320);
+  });
+
+  it('falls back to fixed ranges without data', () => {
+    expect(workPrecisionDomains([])).toEqual({ x: [10, 10000], y: [ERROR_FLOOR, 1] });
+  });
+});
+
+describe('logTicks', () => {
+  it('adds 2 and 5 multiples on a short axis', () => {
+    expect(logTicks([100, 2000], 10)).toEqual([100, 200, 500, 1000, 2000]);
+  });
+
+  it('thins long axes on a fixed lattice of decades', () => {
+    const t = logTicks([1e-18, 1], 10);
+    expect(t.length).toBeLessThanOrEqual(10);
+    expect(t.map((v) => Math.round(Math.log10(v)))).toEqual([-18, -16, -14, -12, -10, -8, -6, -4, -2, 0]);
+    // Anchored at the floor's exponent, 1e-17 is a tick so it can be labelled.
+    expect(logTicks([1e-18, 1], 9, -17).map((v) => Math.round(Math.log10(v)))).toContain(-17);
+  });
+});
+
+describe('tick formats', () => {
+  it('writes times as plain numbers and errors as powers with a typographic minus', () => {
+    expect(formatTimeTick(500)).toBe('500');
+    expect(formatTimeTick(2000)).toBe('2000');
+    expect(formatTimeTick(1e6)).toBe('1e6');
+    expect(formatErrorTick(1e-16)).toBe('1e\u221216');
+    expect(formatErrorTick(0.01)).toBe('1e\u22122');
+    expect(formatErrorTick(5e-3)).toBe('5e\u22123');
+  });
+});
+
+describe('placeLabels', () => {
+  const inside = (b: { x: number; w: number }, W: number) => b.x >= 0 && b.x + b.w <= W;
+
+  it('puts a label to the right of its point when there is room', () => {
+    const [p] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [], 200, 100);
+    expect(p).toEqual({ x: 57, y: 53.75, anchor: 'start' });
+  });
+
+  it('moves to the left at the right edge and skips spots taken by earlier labels', () => {
+    const [a] = placeLabels([{ x: 195, y: 50, w: 20, h: 10 }], [], 200, 100);
+    expect(a?.anchor).toBe('end');
+    expect(inside({ x: (a?.x ?? 0) - 20, w: 20 }, 200)).toBe(true);
+    const [b, c] = placeLabels(
+      [
+        { x: 50, y: 50, w: 20, h: 10 },
+        { x: 50, y: 50, w: 20, h: 10 },
+      ],
+      [],
+      200,
+      100,
+    );
+    expect(b?.anchor).toBe('start');
+    expect(c?.anchor).toBe('end');
+  });
+
+  it('avoids obstacles and gives up when every spot is blocked', () => {
+    const [p] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 52, y0: 40, x1: 80, y1: 60 }], 200, 100);
+    expect(p?.anchor).not.toBe('start');
+    const [q] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 0, y0: 0, x1: 200, y1: 100 }], 200, 100);
+    expect(q).toBeNull();
+  });
+});
+
+describe('legendLayout', () => {
+  it('wraps entries into rows no wider than the space', () => {
+    const rows = legendLayout([100, 100, 100], 300).map((p) => p[1]);
+    expect(rows).toEqual([0, 0, 1]);
+    expect(legendLayout([500], 300)).toEqual([[0, 0]]);
+  });
+});
+
+describe('METHOD_COLORS', () => {
+  it('gives the five lab methods five different colours', () => {
+    const ids = ['closed-form', 'closed-form-polish', 'newton', 'newton-no-predictor', 'seed'] as const;
+    expect(new Set(ids.map((id) => METHOD_COLORS[id])).size).toBe(5);
+  });
+});
