@@ -3,7 +3,7 @@ import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis } from './chartFrame';
+import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -128,26 +128,7 @@ export function drawAngleChart(svg: SVGSVGElement, data: AngleChartData, options
   const xTicks = [0, 60, 120, 180, 240, 300, 360];
 
   const grid = child(plot, 'g', 'grid');
-  grid
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(yTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.gridColor);
-  grid
-    .selectAll<SVGLineElement, number>('line.gx')
-    .data(xTicks)
-    .join('line')
-    .attr('class', 'gx')
-    .attr('y1', 0)
-    .attr('y2', ih)
-    .attr('x1', (d) => x(d))
-    .attr('x2', (d) => x(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
 
   const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
   ax.call(axisBottom(x).tickValues(xTicks).tickFormat((d) => `${d}`).tickSizeOuter(0));

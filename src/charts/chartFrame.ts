@@ -114,3 +114,36 @@ export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y
     .attr('fill', CHART_STYLE.text)
     .text((d) => d.label);
 }
+
+/** Grid lines: horizontal at yTicks (class gy) across width, vertical at xTicks (class gx) down height; pixels. */
+export function drawGridLines(
+  grid: Selection<SVGGElement, unknown, null, undefined>,
+  width: number,
+  height: number,
+  yTicks: readonly number[],
+  y: (v: number) => number,
+  xTicks?: readonly number[],
+  x?: (v: number) => number,
+): void {
+  grid
+    .selectAll<SVGLineElement, number>('line.gy')
+    .data(yTicks)
+    .join('line')
+    .attr('class', 'gy')
+    .attr('x1', 0)
+    .attr('x2', width)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+  if (!xTicks || !x) return;
+  grid
+    .selectAll<SVGLineElement, number>('line.gx')
+    .data(xTicks)
+    .join('line')
+    .attr('class', 'gx')
+    .attr('y1', 0)
+    .attr('y2', height)
+    .attr('x1', (d) => x(d))
+    .attr('x2', (d) => x(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+}

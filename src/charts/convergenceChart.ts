@@ -2,7 +2,7 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLinear, scaleLog } from 'd3-scale';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis } from './chartFrame';
+import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -87,16 +87,7 @@ export function drawConvergenceChart(svg: SVGSVGElement, runs: ConvergenceRun[],
   const xTicks = x.ticks(Math.min(maxIt, 10)).filter((t) => Number.isInteger(t));
 
   const grid = child(plot, 'g', 'grid');
-  grid
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(decades)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawGridLines(grid, iw, ih, decades, y);
 
   const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
   ax.call(axisBottom(x).tickValues(xTicks).tickFormat((d) => `${d}`).tickSizeOuter(0));

@@ -4,7 +4,7 @@ import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../solver/types';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, minus, prepareSvg, styleAxis } from './chartFrame';
+import { CHART_STYLE, child, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
 import { LEGEND_ROW, METHOD_COLORS, dec, drawMethodLegend } from './workPrecisionChart';
 
 /** NR iterations at each theta2 sample of one method. */
@@ -223,41 +223,9 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   }
 
   const gridTop = child(top, 'g', 'grid');
-  gridTop
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(itTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => yIt(d))
-    .attr('y2', (d) => yIt(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawGridLines(gridTop, iw, hTop, itTicks, yIt, xTicks, x);
   const gridBot = child(bot, 'g', 'grid');
-  gridBot
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(detTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => yDet(d))
-    .attr('y2', (d) => yDet(d))
-    .attr('stroke', CHART_STYLE.gridColor);
-  for (const [g, h] of [
-    [gridTop, hTop],
-    [gridBot, hBot],
-  ] as const) {
-    g.selectAll<SVGLineElement, number>('line.gx')
-      .data(xTicks)
-      .join('line')
-      .attr('class', 'gx')
-      .attr('y1', 0)
-      .attr('y2', h)
-      .attr('x1', (d) => x(d))
-      .attr('x2', (d) => x(d))
-      .attr('stroke', CHART_STYLE.gridColor);
-  }
+  drawGridLines(gridBot, iw, hBot, detTicks, yDet, xTicks, x);
 
   // The top panel shares the x axis: tick marks only, the numbers are under the bottom panel.
   const axTop = child(top, 'g', 'axis-x').attr('transform', `translate(0,${hTop})`);

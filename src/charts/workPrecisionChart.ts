@@ -4,7 +4,7 @@ import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
 import type { Margins, SvgSel } from './chartFrame';
-import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis } from './chartFrame';
+import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
@@ -407,26 +407,7 @@ export function drawWorkPrecisionChart(
   );
 
   const grid = child(plot, 'g', 'grid');
-  grid
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(yTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.gridColor);
-  grid
-    .selectAll<SVGLineElement, number>('line.gx')
-    .data(xTicks)
-    .join('line')
-    .attr('class', 'gx')
-    .attr('y1', 0)
-    .attr('y2', ih)
-    .attr('x1', (d) => x(d))
-    .attr('x2', (d) => x(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
   // The floor: everything at or below 1e-17 rad, exact answers included, is drawn on this dashed line.
   grid
     .selectAll<SVGLineElement, number>('line.floor')

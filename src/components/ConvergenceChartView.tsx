@@ -1,7 +1,7 @@
-import { useLayoutEffect, useRef } from 'react';
+import { useCallback } from 'react';
 import { drawConvergenceChart } from '../charts/convergenceChart';
 import type { ConvergenceInputs } from './chartInputs';
-import { useElementSize } from './useElementSize';
+import { SvgChartView } from './SvgChartView';
 
 /** Props of ConvergenceChartView: the runs and labels; it sizes itself to its box. */
 export interface ConvergenceChartViewProps {
@@ -11,20 +11,12 @@ export interface ConvergenceChartViewProps {
 
 /** The live NR convergence chart (residual against iteration, log scale). */
 export function ConvergenceChartView({ inputs, label }: ConvergenceChartViewProps) {
-  const boxRef = useRef<HTMLDivElement>(null);
-  const svgRef = useRef<SVGSVGElement>(null);
-  const { width, height } = useElementSize(boxRef);
-
-  useLayoutEffect(() => {
-    const svg = svgRef.current;
-    if (!svg || width <= 0 || height <= 0) return;
-    const { runs, ...opts } = inputs;
-    drawConvergenceChart(svg, runs, { ...opts, width, height });
-  }, [inputs, width, height]);
-
-  return (
-    <div className="chart-box" ref={boxRef}>
-      <svg ref={svgRef} role="img" aria-label={label} className="chart-svg" />
-    </div>
+  const draw = useCallback(
+    (svg: SVGSVGElement, width: number, height: number) => {
+      const { runs, ...opts } = inputs;
+      drawConvergenceChart(svg, runs, { ...opts, width, height });
+    },
+    [inputs],
   );
+  return <SvgChartView draw={draw} label={label} />;
 }

@@ -20,7 +20,7 @@ export function SvgChartView({ draw, label, className, testId }: SvgChartViewPro
     draw(svg, width, height);
   }, [draw, width, height]);
   return (
-    <div className={`chart-box ${className ?? ''}`} ref={boxRef}>
+    <div className={className ? `chart-box ${className}` : 'chart-box'} ref={boxRef}>
       <svg ref={svgRef} role="img" aria-label={label} className="chart-svg" data-testid={testId} />
     </div>
   );
