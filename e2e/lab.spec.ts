@@ -1,6 +1,7 @@
 import type { Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
-import { artifact, waitReady } from './helpers';
+import { readFileSync } from 'node:fs';
+import { artifact, pngFacts, waitReady } from './helpers';
 
 /** Waits until the lab shows a finished study (data-ready on the lab root). */
 async function waitLab(page: Page): Promise<void> {
@@ -56,6 +57,30 @@ test.describe('the solver lab', () => {
     await expect(summary).toHaveText(/ 0 NR iterations/);
     // The choice is part of the shared state.
     await expect.poll(() => new URL(page.url()).searchParams.get('m')).toBe('closed-form');
+  });
+
+  test('exports the diagram as a PNG and its data as CSV', async ({ page }) => {
+    await page.goto('./?page=lab');
+    await waitLab(page);
+    const [png] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export diagram PNG' }).click()]);
+    expect(png.suggestedFilename()).toBe('fourbar_6-2-5-5_open_work-precision_step1_2x.png');
+    const facts = await pngFacts(png);
+    expect(facts.signatureOk).toBe(true);
+    expect([facts.width, facts.height]).toEqual([1520, 920]);
+    const [csv] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export diagram CSV' }).click()]);
+    expect(csv.suggestedFilename()).toBe('fourbar_6-2-5-5_open_work-precision_step1.csv');
+    const lines = readFileSync(await csv.path(), 'utf8').trim().split('\n');
+    expect(lines[0]).toBe('method,tolerance,ns_per_point,iterations_per_point,max_error_rad,p99_error_rad,failed,wrong_branch,false_convergence,points,step_deg');
+    // Five methods, three of them traced over five tolerances: 5 defaults + 15 tolerance rows.
+    expect(lines).toHaveLength(1 + 20);
+    expect(lines.join('\n')).not.toMatch(/NaN|Infinity/);
+  });
+
+  test('reads in Traditional Chinese', async ({ page }) => {
+    await page.goto('./?page=lab&lang=zh-TW');
+    await waitLab(page);
+    await expect(page.getByRole('tab', { name: '求解器實驗室' })).toHaveAttribute('aria-selected', 'true');
+    await page.screenshot({ path: artifact('lab-zh-TW.png') });
   });
 
   test('cancels a running study and keeps the page usable', async ({ page }) => {

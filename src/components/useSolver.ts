@@ -1,4 +1,4 @@
-import { useEffect, useState } from 'react';
+import { useEffect, useLayoutEffect, useState } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../solver/angles';
 import type { Branch, Linkage } from '../solver/types';
@@ -53,7 +53,8 @@ export function useCycle(
   // With both branches wanted the branch choice does not change the request: no re-solve on a branch switch.
   const branch: Branch = needs.otherBranch ? 'open' : needs.branch;
   const { otherBranch, curves, plotPixels } = needs;
-  useEffect(() => {
+  // A layout effect posts the request before the browser paints: a passive effect would wait a frame.
+  useLayoutEffect(() => {
     if (!client) return;
     client
       .requestCycle({
@@ -71,7 +72,7 @@ export function useCycle(
           if (!r) return;
           setCycle(r);
           setError(null);
-          markWork('cycle', r.work);
+          markWork('cycle', r.work, r.elapsedMs);
         },
         (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
       );
@@ -103,7 +104,7 @@ export function usePoint(
   const { distance, angleDeg } = coupler;
   const { method, tol } = needs.solver;
   const { ghost, newton } = needs;
-  useEffect(() => {
+  useLayoutEffect(() => {
     if (!client) return;
     client
       .requestPoint({
@@ -129,6 +130,6 @@ export function usePoint(
 }
 
 /** Records the solver work of a response as a performance mark (read by npm run bench:ui). */
-function markWork(kind: 'cycle' | 'point', work: WorkCount): void {
-  if (typeof performance.mark === 'function') performance.mark(`fourbar:work:${kind}`, { detail: { ...work } });
+function markWork(kind: 'cycle' | 'point', work: WorkCount, elapsedMs?: number): void {
+  if (typeof performance.mark === 'function') performance.mark(`fourbar:work:${kind}`, { detail: { ...work, elapsedMs } });
 }
