@@ -7,6 +7,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { LAB_TOLERANCES } from '../src/lab/options';
 import { medianTime, scoreSweep } from '../src/lab/workPrecision';
 import { sweep, theta2Grid } from '../src/solver';
 import type { Linkage, SweepMethod } from '../src/solver';
@@ -29,7 +30,6 @@ const CASES: BenchCase[] = [
   { name: 'drag link 1-2-sqrt(5.25)-1.5', linkage: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 } },
 ];
 const STEPS_DEG = [0.1, 1, 5];
-const TOLERANCES = [1e-3, 1e-6, 1e-9, 1e-12, 1e-15];
 
 interface Config {
   label: string;
@@ -46,7 +46,7 @@ function configs(): Config[] {
     { label: 'NR no predictor, polished', method: 'newton-no-predictor' },
     { label: 'seed NR (report, abs 1e-9)', method: 'seed' },
   ];
-  for (const tol of TOLERANCES) {
+  for (const tol of LAB_TOLERANCES) {
     list.push({ label: 'NR + predictor', method: 'newton', tol, polish: false });
     list.push({ label: 'NR no predictor', method: 'newton-no-predictor', tol, polish: false });
     list.push({ label: 'seed NR', method: 'seed', tol });

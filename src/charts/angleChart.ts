@@ -3,7 +3,7 @@ import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
+import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -160,24 +160,7 @@ export function drawAngleChart(svg: SVGSVGElement, data: AngleChartData, options
       return gen(wrappedSegments(xs, ys)) ?? '';
     });
 
-  child(s, 'text', 'title')
-    .attr('x', 14)
-    .attr('y', 17)
-    .attr('font-size', CHART_STYLE.titleSize)
-    .attr('font-weight', 600)
-    .attr('fill', CHART_STYLE.text)
-    .text(options.title);
-  child(s, 'text', 'xlabel')
-    .attr('x', m.left + iw / 2)
-    .attr('y', height - 6)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.xLabel);
-  child(s, 'text', 'ylabel')
-    .attr('transform', `translate(12,${m.top + ih / 2}) rotate(-90)`)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.yLabel);
+  drawChartText(s, { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] }, m.left, iw, width, height);
 
   drawLegend(s, data.series, 14, 33);
 

@@ -147,3 +147,63 @@ export function drawGridLines(
     .attr('x2', (d) => x(d))
     .attr('stroke', CHART_STYLE.gridColor);
 }
+
+/** A rotated y-axis label and the vertical centre of the panel it names (pixels from the SVG top). */
+export interface YLabel {
+  text: string;
+  centerY: number;
+}
+
+/** Texts around a chart's plot area: the title, the x label and one y label per panel. */
+export interface ChartText {
+  title: string;
+  xLabel: string;
+  yLabels: readonly YLabel[];
+}
+
+/**
+ * Draws the title (top left), the x label centred under the plot (plotLeft, plotWidth) and the rotated
+ * y labels; with emptyText given (no data), the axis labels and plot are hidden and the text is centred
+ * at emptyCenterY instead. Sizes in CSS pixels.
+ */
+export function drawChartText(
+  s: SvgSel,
+  text: ChartText,
+  plotLeft: number,
+  plotWidth: number,
+  width: number,
+  height: number,
+  empty?: { plot: Selection<SVGGElement, unknown, null, undefined>; text: string | null; centerY: number },
+): void {
+  const hide = empty?.text != null ? 'none' : null;
+  child(s, 'text', 'title')
+    .attr('x', 14)
+    .attr('y', 17)
+    .attr('font-size', CHART_STYLE.titleSize)
+    .attr('font-weight', 600)
+    .attr('fill', CHART_STYLE.text)
+    .text(text.title);
+  child(s, 'text', 'xlabel')
+    .attr('display', hide)
+    .attr('x', plotLeft + plotWidth / 2)
+    .attr('y', height - 6)
+    .attr('text-anchor', 'middle')
+    .attr('fill', CHART_STYLE.muted)
+    .text(text.xLabel);
+  text.yLabels.forEach((yl, i) => {
+    child(s, 'text', i === 0 ? 'ylabel' : `ylabel-${i}`)
+      .attr('display', hide)
+      .attr('transform', `translate(12,${yl.centerY}) rotate(-90)`)
+      .attr('text-anchor', 'middle')
+      .attr('fill', CHART_STYLE.muted)
+      .text(yl.text);
+  });
+  if (!empty) return;
+  empty.plot.attr('display', hide);
+  child(s, 'text', 'empty')
+    .attr('x', width / 2)
+    .attr('y', empty.centerY)
+    .attr('text-anchor', 'middle')
+    .attr('fill', CHART_STYLE.muted)
+    .text(empty.text ?? '');
+}

@@ -2,7 +2,7 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLinear, scaleLog } from 'd3-scale';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
+import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -151,33 +151,15 @@ export function drawConvergenceChart(svg: SVGSVGElement, runs: ConvergenceRun[],
     .attr('stroke', (d) => d[2])
     .attr('stroke-width', 1.25);
 
-  child(s, 'text', 'title')
-    .attr('x', 14)
-    .attr('y', 17)
-    .attr('font-size', CHART_STYLE.titleSize)
-    .attr('font-weight', 600)
-    .attr('fill', CHART_STYLE.text)
-    .text(options.title);
-  child(s, 'text', 'xlabel')
-    .attr('display', runs.length === 0 ? 'none' : null)
-    .attr('x', m.left + iw / 2)
-    .attr('y', height - 6)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.xLabel);
-  child(s, 'text', 'ylabel')
-    .attr('display', runs.length === 0 ? 'none' : null)
-    .attr('transform', `translate(12,${m.top + ih / 2}) rotate(-90)`)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.yLabel);
-  plot.attr('display', runs.length === 0 ? 'none' : null);
-  child(s, 'text', 'empty')
-    .attr('x', width / 2)
-    .attr('y', m.top + ih / 2)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(runs.length === 0 ? (options.emptyText ?? '') : '');
+  drawChartText(
+    s,
+    { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] },
+    m.left,
+    iw,
+    width,
+    height,
+    { plot, text: runs.length === 0 ? (options.emptyText ?? '') : null, centerY: m.top + ih / 2 },
+  );
 
   drawLegend(s, runs, 14, 33);
 }

@@ -4,7 +4,7 @@ import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../solver/types';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
+import { CHART_STYLE, child, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
 import { LEGEND_ROW, METHOD_COLORS, dec, drawMethodLegend } from './workPrecisionChart';
 
 /** NR iterations at each theta2 sample of one method. */
@@ -324,27 +324,19 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
     .attr('stroke', CHART_STYLE.marker)
     .attr('stroke-width', 1.5);
 
-  child(s, 'text', 'title')
-    .attr('x', 14)
-    .attr('y', 17)
-    .attr('font-size', CHART_STYLE.titleSize)
-    .attr('font-weight', 600)
-    .attr('fill', CHART_STYLE.text)
-    .text(options.title);
-  child(s, 'text', 'xlabel')
-    .attr('x', m.left + iw / 2)
-    .attr('y', height - 6)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.xLabel);
-  child(s, 'text', 'ylabel-top')
-    .attr('transform', `translate(12,${m.top + hTop / 2}) rotate(-90)`)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.iterationsLabel);
-  child(s, 'text', 'ylabel-bottom')
-    .attr('transform', `translate(12,${m.top + yBot0 + hBot / 2}) rotate(-90)`)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.detJLabel);
+  drawChartText(
+    s,
+    {
+      title: options.title,
+      xLabel: options.xLabel,
+      yLabels: [
+        { text: options.iterationsLabel, centerY: m.top + hTop / 2 },
+        { text: options.detJLabel, centerY: m.top + yBot0 + hBot / 2 },
+      ],
+    },
+    m.left,
+    iw,
+    width,
+    height,
+  );
 }

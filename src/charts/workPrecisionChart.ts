@@ -4,7 +4,7 @@ import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
 import type { Margins, SvgSel } from './chartFrame';
-import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis, drawGridLines } from './chartFrame';
+import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
@@ -557,32 +557,13 @@ export function drawWorkPrecisionChart(
     .attr('pointer-events', 'none')
     .text((l) => l.text);
 
-  const empty = markers.length === 0;
-  child(s, 'text', 'title')
-    .attr('x', 14)
-    .attr('y', 17)
-    .attr('font-size', CHART_STYLE.titleSize)
-    .attr('font-weight', 600)
-    .attr('fill', CHART_STYLE.text)
-    .text(options.title);
-  child(s, 'text', 'xlabel')
-    .attr('display', empty ? 'none' : null)
-    .attr('x', m.left + iw / 2)
-    .attr('y', height - 6)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.xLabel);
-  child(s, 'text', 'ylabel')
-    .attr('display', empty ? 'none' : null)
-    .attr('transform', `translate(12,${m.top + ih / 2}) rotate(-90)`)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(options.yLabel);
-  plot.attr('display', empty ? 'none' : null);
-  child(s, 'text', 'empty')
-    .attr('x', width / 2)
-    .attr('y', m.top + ih / 2)
-    .attr('text-anchor', 'middle')
-    .attr('fill', CHART_STYLE.muted)
-    .text(empty ? (options.emptyText ?? '') : '');
+  drawChartText(
+    s,
+    { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] },
+    m.left,
+    iw,
+    width,
+    height,
+    { plot, text: markers.length === 0 ? (options.emptyText ?? '') : null, centerY: m.top + ih / 2 },
+  );
 }

@@ -2,11 +2,12 @@ import { useCallback, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
 import { drawCycleChart } from '../charts/cycleChart';
 import { drawWorkPrecisionChart, formatTol } from '../charts/workPrecisionChart';
-import { distanceToNearestLimitDeg } from '../lab/limits';
+import { nearestLimitDeg } from '../lab/limits';
 import type { LabPoint, LabResult, LabSeries } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
 import type { Action, AppState } from '../state/appState';
-import { LAB_STEPS_DEG, METHODS, TOLERANCES } from '../state/appState';
+import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
+import { SWEEP_METHODS } from '../solver/methods';
 import type { PngSize } from '../state/fileNames';
 import { labFileName } from '../state/fileNames';
 import { formatDeg, formatSci } from '../state/format';
@@ -115,15 +116,12 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
     downloadText(labToCsv(result), labFileName(result.linkage, result.branch, result.stepDeg, 'csv'), 'text/csv;charset=utf-8');
   };
 
-  const limitText = (() => {
-    if (!result) return null;
-    if (result.limitsDeg.length === 0) return t.labNoLimit;
-    const d = distanceToNearestLimitDeg(state.theta2Deg, result.limitsDeg);
-    const nearest = result.limitsDeg.reduce((best, x) =>
-      distanceToNearestLimitDeg(state.theta2Deg, [x]) < distanceToNearestLimitDeg(state.theta2Deg, [best]) ? x : best,
-    );
-    return t.labNearestLimit(formatDeg(d, 4), formatDeg(nearest, 4));
-  })();
+  const nearest = result ? nearestLimitDeg(state.theta2Deg, result.limitsDeg) : null;
+  const limitText = !result
+    ? null
+    : nearest
+      ? t.labNearestLimit(formatDeg(nearest.distanceDeg, 4), formatDeg(nearest.limitDeg, 4))
+      : t.labNoLimit;
 
   const percent = lab.progress ? String(Math.round(lab.progress.fraction * 100)) : '0';
   const chosenSeries = result?.series.find((s) => s.method === state.method);
@@ -206,7 +204,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
               value={state.method}
               onChange={(e) => dispatch({ type: 'setMethod', method: e.target.value as SweepMethod, tol: state.tol })}
             >
-              {METHODS.map((m) => (
+              {SWEEP_METHODS.map((m) => (
                 <option key={m} value={m}>
                   {t.methodNames[m]}
                 </option>
@@ -225,7 +223,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
               }
             >
               <option value="default">{t.labToleranceDefault}</option>
-              {TOLERANCES.map((x) => (
+              {LAB_TOLERANCES.map((x) => (
                 <option key={x} value={String(x)}>
                   {formatTol(x)}
                 </option>

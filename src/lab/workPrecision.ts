@@ -1,11 +1,11 @@
 import { angleDiff, radToDeg } from '../solver/angles';
 export { distanceToNearestLimitDeg } from './limits';
+import { LAB_TOLERANCES } from './options';
 import { classify } from '../solver/classify';
 import { sweep, theta2Grid } from '../solver/sweep';
 import type { Angles, Branch, Linkage, SweepMethod, SweepResult } from '../solver/types';
 
-/** NR tolerances the lab traces each NR method over (relative for the project's NR, absolute for seed). */
-export const LAB_TOLERANCES: readonly number[] = [1e-3, 1e-6, 1e-9, 1e-12, 1e-15];
+export { LAB_TOLERANCES } from './options';
 
 /** An angle error this large is not rounding: the point is on the wrong branch or not a solution (rad). */
 export const GROSS_ERROR_RAD = 1e-6;

@@ -1,3 +1,4 @@
+import { couplerPoint, jointPositions } from '../solver/kinematics';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
 import type { CouplerCurve, PoseAngles } from '../worker/protocol';
@@ -64,11 +65,10 @@ export interface CouplerGeometry {
 /** Joint positions of a solved pose (length unit); null when there is no pose or a coordinate is not finite. */
 export function scenePose(l: Linkage, a: PoseAngles | null, c: CouplerGeometry): ScenePose | null {
   if (!a) return null;
-  const A = { x: l.r2 * Math.cos(a.theta2), y: l.r2 * Math.sin(a.theta2) };
-  const B = { x: A.x + l.r3 * Math.cos(a.theta3), y: A.y + l.r3 * Math.sin(a.theta3) };
-  const P = { x: A.x + c.distance * Math.cos(a.theta3 + c.angleRad), y: A.y + c.distance * Math.sin(a.theta3 + c.angleRad) };
+  const { O2, A, B, O4 } = jointPositions(l, a.theta2, a);
+  const P = couplerPoint(l, a.theta2, a.theta3, c.distance, c.angleRad);
   for (const v of [A.x, A.y, B.x, B.y, P.x, P.y]) if (!Number.isFinite(v)) return null;
-  return { O2: { x: 0, y: 0 }, O4: { x: l.r1, y: 0 }, A, B, P, theta2: a.theta2, theta3: a.theta3, theta4: a.theta4, mu: a.mu };
+  return { O2, O4, A, B, P, theta2: a.theta2, theta3: a.theta3, theta4: a.theta4, mu: a.mu };
 }
 
 /** Picks which curves are current: a branch curve when the input turns fully, else the circuit holding theta2. */

@@ -12,16 +12,10 @@ import type { ClosedFormPlan } from './closedForm';
 import { newNewtonState, newtonCore, newtonSettings } from './newton';
 import type { NewtonProblem, NewtonState } from './newton';
 import type { Angles, Branch, Linkage, PointStatus, SweepMethod, SweepOptions, SweepResult } from './types';
+import { SWEEP_METHODS } from './methods';
 import { scaleByPow2 } from './validate';
 
-/** The sweep methods, best default first. */
-export const SWEEP_METHODS: readonly SweepMethod[] = [
-  'closed-form',
-  'closed-form-polish',
-  'newton',
-  'newton-no-predictor',
-  'seed',
-];
+export { SWEEP_METHODS } from './methods';
 
 /** Default sweep method: the stable closed form (full precision, fastest; see npm run bench). */
 export const DEFAULT_SWEEP_METHOD: SweepMethod = 'closed-form';

@@ -12,15 +12,6 @@ export type PlotLayout = 'separate' | 'together';
 /** Which page the app shows: the simulator, or the solver lab (work-precision study of the current linkage). */
 export type Page = 'simulator' | 'lab';
 
-/** The solver methods the user can choose (the lab's methods). */
-export const METHODS: readonly SweepMethod[] = ['closed-form', 'closed-form-polish', 'newton', 'newton-no-predictor', 'seed'];
-
-/** NR tolerances offered in the lab (relative for the project's NR, absolute for the report's); null = default. */
-export const TOLERANCES: readonly number[] = [1e-3, 1e-6, 1e-9, 1e-12, 1e-15];
-
-/** Input steps (degrees) the lab can sweep with. */
-export const LAB_STEPS_DEG: readonly number[] = [0.1, 1, 5];
-
 /** Direction of the animated input: +1 counter-clockwise (theta2 increasing), -1 clockwise. */
 export type Direction = 1 | -1;
 

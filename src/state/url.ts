@@ -1,5 +1,7 @@
 import type { AppState, Direction, NrStart, PlotLayout } from './appState';
-import { DEFAULT_STATE, LAB_STEPS_DEG, METHODS, SAMPLES_MAX, SAMPLES_MIN, TOLERANCES, normalizeTheta2Deg, wrapDeg180 } from './appState';
+import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
+import { SWEEP_METHODS } from '../solver/methods';
+import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg, wrapDeg180 } from './appState';
 import { parseLocale } from './i18n';
 import type { FieldName } from './validate';
 import { checkValue, parseDecimal } from './validate';
@@ -175,9 +177,9 @@ export function parseUrl(
         break;
       }
       case 'm': {
-        const m = METHODS.find((x) => x === value);
+        const m = SWEEP_METHODS.find((x) => x === value);
         if (m) state.method = m;
-        else bad(key, value, `expected one of ${METHODS.join(', ')}`);
+        else bad(key, value, `expected one of ${SWEEP_METHODS.join(', ')}`);
         break;
       }
       case 'tol': {
@@ -186,9 +188,9 @@ export function parseUrl(
           break;
         }
         const x = Number(value.trim());
-        const t = TOLERANCES.find((v) => v === x);
+        const t = LAB_TOLERANCES.find((v) => v === x);
         if (t !== undefined) state.tol = t;
-        else bad(key, value, `expected default or one of ${TOLERANCES.join(', ')}`);
+        else bad(key, value, `expected default or one of ${LAB_TOLERANCES.join(', ')}`);
         break;
       }
       case 'page':

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { nearestLimitDeg } from '../../src/lab/limits';
 import { referencePose } from '../../src/lab/reference';
 import {
   distanceToNearestLimitDeg,
@@ -135,5 +136,13 @@ describe('distanceToNearestLimitDeg', () => {
     expect(distanceToNearestLimitDeg(10, [])).toBe(Infinity);
     expect(distanceToNearestLimitDeg(170, [-170])).toBeCloseTo(20, 12);
     expect(distanceToNearestLimitDeg(0, [135, -135])).toBeCloseTo(135, 12);
+  });
+});
+
+describe('nearestLimitDeg', () => {
+  it('names the nearest limit and its distance, or null without limits', () => {
+    expect(nearestLimitDeg(10, [])).toBeNull();
+    expect(nearestLimitDeg(130, [135.95, -135.95])).toEqual({ distanceDeg: expect.closeTo(5.95, 12), limitDeg: 135.95 });
+    expect(nearestLimitDeg(-170, [135.95, -135.95])).toEqual({ distanceDeg: expect.closeTo(34.05, 12), limitDeg: -135.95 });
   });
 });

@@ -1,7 +1,9 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { AppState } from '../../src/state/appState';
-import { DEFAULT_STATE, LAB_STEPS_DEG, METHODS, TOLERANCES } from '../../src/state/appState';
+import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../src/lab/options';
+import { SWEEP_METHODS } from '../../src/solver/methods';
+import { DEFAULT_STATE } from '../../src/state/appState';
 import { DEFAULT_EMBED, appUrl, embedCode, embedUrl, parseUrl, serializeState } from '../../src/state/url';
 
 const quiet = () => undefined;
@@ -38,8 +40,8 @@ describe('serializeState and parseUrl', () => {
         panX: fc.double({ min: -100, max: 100, noNaN: true }),
         panY: fc.double({ min: -100, max: 100, noNaN: true }),
       }),
-      method: fc.constantFrom(...METHODS),
-      tol: fc.constantFrom(null, ...TOLERANCES),
+      method: fc.constantFrom(...SWEEP_METHODS),
+      tol: fc.constantFrom(null, ...LAB_TOLERANCES),
       page: fc.constantFrom('simulator' as const, 'lab' as const),
       labStepDeg: fc.constantFrom(...LAB_STEPS_DEG),
     });
