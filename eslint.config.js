@@ -19,6 +19,20 @@ export default tseslint.config(
     rules: { 'react-hooks/rules-of-hooks': 'error', 'react-hooks/exhaustive-deps': 'warn' },
   },
   {
+    // Units in one place (src/solver/angles.ts): no hand-written degree conversions or pi arithmetic elsewhere.
+    files: ['src/**/*.{ts,tsx}'],
+    ignores: ['src/solver/angles.ts'],
+    rules: {
+      'no-restricted-syntax': [
+        'error',
+        {
+          selector: "MemberExpression[object.name='Math'][property.name='PI']",
+          message: 'Use the units module (src/solver/angles.ts): degToRad/radToDeg, PI, TWO_PI, the wraps.',
+        },
+      ],
+    },
+  },
+  {
     files: ['src/solver/**/*.ts', 'src/lab/**/*.ts'],
     rules: {
       'no-restricted-imports': [
@@ -27,7 +41,10 @@ export default tseslint.config(
           patterns: [
             { group: ['react', 'react-dom', 'react/*', 'react-dom/*'], message: 'The solver is pure: no React.' },
             { group: ['d3-*', 'd3'], message: 'The solver is pure: no d3.' },
-            { group: ['../components/*', '../render/*', '../charts/*', '../worker/*', '../state/*'], message: 'The solver depends on nothing in the app.' },
+            {
+              group: ['../components/*', '../render/*', '../charts/*', '../worker/*', '../state/*'],
+              message: 'The solver depends on nothing in the app.',
+            },
           ],
         },
       ],

@@ -122,7 +122,9 @@ function printRows(rows: Row[]): void {
     console.log(
       `${r.label.padEnd(46)} ${String(r.stepDeg).padStart(5)} ${r.nsPerPoint.toFixed(0).padStart(7)} ${r.itersPerPoint
         .toFixed(2)
-        .padStart(6)} ${fmtE(r.maxError).padStart(8)} ${fmtE(r.p99Error).padStart(8)}  ${String(r.failures).padStart(4)} ${String(
+        .padStart(
+          6,
+        )} ${fmtE(r.maxError).padStart(8)} ${fmtE(r.p99Error).padStart(8)}  ${String(r.failures).padStart(4)} ${String(
         r.wrongBranch,
       ).padStart(5)} ${String(r.falseConvergence).padStart(5)}`,
     );
@@ -202,7 +204,11 @@ function main(): void {
       for (let pass = 0; pass < PASSES; pass++) {
         list.forEach((cfg, k) => {
           const opts = { branch: 'open' as const, method: cfg.method, tol: cfg.tol, polish: cfg.polish };
-          const ms = medianTime(() => sweep(c.linkage, grid, opts), () => performance.now(), MIN_MS / PASSES);
+          const ms = medianTime(
+            () => sweep(c.linkage, grid, opts),
+            () => performance.now(),
+            MIN_MS / PASSES,
+          );
           stepRows[k].nsPerPoint = Math.min(stepRows[k].nsPerPoint, (ms * 1e6) / grid.length);
         });
       }
@@ -214,7 +220,9 @@ function main(): void {
   const report = CASES[0];
   const t = targets(report.linkage, theta2Grid(0, 360, 1));
   console.log(`\n== Targets on ${report.name} at 1 deg (361 points), medians of interleaved runs in one process`);
-  console.log(`seed NR (report's Algorithm 2): ${t.seedUsPerSweep.toFixed(1)} us/sweep, ${t.seedItersPerPoint.toFixed(2)} it/pt`);
+  console.log(
+    `seed NR (report's Algorithm 2): ${t.seedUsPerSweep.toFixed(1)} us/sweep, ${t.seedItersPerPoint.toFixed(2)} it/pt`,
+  );
   console.log(
     `default sweep (closed form):    ${t.defaultUsPerSweep.toFixed(1)} us/sweep = ${t.defaultOverSeed.toFixed(2)}x seed  (target <= 0.5x: ${
       t.pass.defaultAtMostHalfOfSeed ? 'PASS' : 'FAIL'
@@ -262,7 +270,9 @@ function main(): void {
     ),
   );
   writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, t));
-  console.log(`\nwrote bench/results/solver.json, solver-table.md and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`);
+  console.log(
+    `\nwrote bench/results/solver.json, solver-table.md and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`,
+  );
 }
 
 main();

@@ -76,60 +76,70 @@ async function measureDrag(page: Page, samples: number) {
   await page.goto(`${BASE}?n=${samples}`);
   await waitReady(page);
   await page.waitForTimeout(300);
-  return page.evaluate(async ({ steps, warmup }) => {
-    const slider = document.querySelector<HTMLInputElement>('input[type="range"][aria-label^="r2"]');
-    if (!slider) throw new Error('no r2 slider');
-    const setValue = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')!.set!;
-    // Warm up the JIT and the worker with an unmeasured drag, then drag back over fresh values.
-    for (let i = 0; i < warmup; i++) {
-      await new Promise((r) => requestAnimationFrame(r));
-      setValue.call(slider, String(Math.round((3 - (i + 1) * 0.01) * 100) / 100));
-      slider.dispatchEvent(new Event('input', { bubbles: true }));
-    }
-    await new Promise((r) => setTimeout(r, 300));
-    const sent: { r2: number; t0: number; latency: number | null; frame: number | null }[] = [];
-    const pending: number[] = [];
-    const observer = new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) {
-        if (e.name !== 'fourbar:cycle-drawn') continue;
-        const r2 = (e as PerformanceMark).detail?.r2 as number;
-        const seq = sent.findIndex((s) => s.r2 === r2);
-        if (seq < 0) continue;
-        const drawn = e.startTime;
-        for (let i = 0; i <= seq; i++) if (sent[i].latency === null) sent[i].latency = drawn - sent[i].t0;
-        // The browser presents it at the next frame: also count latency to that.
-        requestAnimationFrame(() => {
-          const now = performance.now();
-          for (let i = 0; i <= seq; i++) if (sent[i].frame === null) sent[i].frame = now - sent[i].t0;
-        });
-        pending.push(seq);
+  return page.evaluate(
+    async ({ steps, warmup }) => {
+      const slider = document.querySelector<HTMLInputElement>('input[type="range"][aria-label^="r2"]');
+      if (!slider) throw new Error('no r2 slider');
+      const setValue = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')!.set!;
+      // Warm up the JIT and the worker with an unmeasured drag, then drag back over fresh values.
+      for (let i = 0; i < warmup; i++) {
+        await new Promise((r) => requestAnimationFrame(r));
+        setValue.call(slider, String(Math.round((3 - (i + 1) * 0.01) * 100) / 100));
+        slider.dispatchEvent(new Event('input', { bubbles: true }));
       }
-    });
-    observer.observe({ type: 'mark', buffered: false });
-    for (let i = 0; i < steps; i++) {
-      await new Promise((r) => requestAnimationFrame(r));
-      const r2 = Math.round((2 + (i + 1) * 0.01) * 100) / 100;
-      setValue.call(slider, String(r2));
-      sent.push({ r2: Number(slider.value), t0: performance.now(), latency: null, frame: null });
-      slider.dispatchEvent(new Event('input', { bubbles: true }));
-    }
-    const deadline = performance.now() + 3000;
-    while (sent[sent.length - 1].latency === null && performance.now() < deadline) await new Promise((r) => setTimeout(r, 20));
-    observer.disconnect();
-    const lat = sent.map((s) => s.latency).filter((x): x is number => x !== null).sort((a, b) => a - b);
-    const frames = sent.map((s) => s.frame).filter((x): x is number => x !== null).sort((a, b) => a - b);
-    const q = (p: number, a = lat) => a[Math.min(a.length - 1, Math.max(0, Math.round(p * (a.length - 1))))];
-    return {
-      inputs: sent.length,
-      redrawsSeen: new Set(pending).size,
-      lastValueDrawn: sent[sent.length - 1].latency !== null,
-      medianMs: q(0.5),
-      p95Ms: q(0.95),
-      maxMs: lat[lat.length - 1],
-      toNextFrameMedianMs: q(0.5, frames),
-      toNextFrameP95Ms: q(0.95, frames),
-    };
-  }, { steps: DRAG_STEPS, warmup: 40 });
+      await new Promise((r) => setTimeout(r, 300));
+      const sent: { r2: number; t0: number; latency: number | null; frame: number | null }[] = [];
+      const pending: number[] = [];
+      const observer = new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) {
+          if (e.name !== 'fourbar:cycle-drawn') continue;
+          const r2 = (e as PerformanceMark).detail?.r2 as number;
+          const seq = sent.findIndex((s) => s.r2 === r2);
+          if (seq < 0) continue;
+          const drawn = e.startTime;
+          for (let i = 0; i <= seq; i++) if (sent[i].latency === null) sent[i].latency = drawn - sent[i].t0;
+          // The browser presents it at the next frame: also count latency to that.
+          requestAnimationFrame(() => {
+            const now = performance.now();
+            for (let i = 0; i <= seq; i++) if (sent[i].frame === null) sent[i].frame = now - sent[i].t0;
+          });
+          pending.push(seq);
+        }
+      });
+      observer.observe({ type: 'mark', buffered: false });
+      for (let i = 0; i < steps; i++) {
+        await new Promise((r) => requestAnimationFrame(r));
+        const r2 = Math.round((2 + (i + 1) * 0.01) * 100) / 100;
+        setValue.call(slider, String(r2));
+        sent.push({ r2: Number(slider.value), t0: performance.now(), latency: null, frame: null });
+        slider.dispatchEvent(new Event('input', { bubbles: true }));
+      }
+      const deadline = performance.now() + 3000;
+      while (sent[sent.length - 1].latency === null && performance.now() < deadline)
+        await new Promise((r) => setTimeout(r, 20));
+      observer.disconnect();
+      const lat = sent
+        .map((s) => s.latency)
+        .filter((x): x is number => x !== null)
+        .sort((a, b) => a - b);
+      const frames = sent
+        .map((s) => s.frame)
+        .filter((x): x is number => x !== null)
+        .sort((a, b) => a - b);
+      const q = (p: number, a = lat) => a[Math.min(a.length - 1, Math.max(0, Math.round(p * (a.length - 1))))];
+      return {
+        inputs: sent.length,
+        redrawsSeen: new Set(pending).size,
+        lastValueDrawn: sent[sent.length - 1].latency !== null,
+        medianMs: q(0.5),
+        p95Ms: q(0.95),
+        maxMs: lat[lat.length - 1],
+        toNextFrameMedianMs: q(0.5, frames),
+        toNextFrameP95Ms: q(0.95, frames),
+      };
+    },
+    { steps: DRAG_STEPS, warmup: 40 },
+  );
 }
 
 /** JavaScript fetched on first load (entry, chunks, worker), raw and gzip -9. */
@@ -189,10 +199,21 @@ async function main(): Promise<void> {
   const browser = await chromium.launch({
     executablePath,
     headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+    args: [
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--no-first-run',
+    ],
   });
   try {
-    const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, deviceScaleFactor: 1, locale: 'en-US' });
+    const context = await browser.newContext({
+      viewport: { width: 1280, height: 800 },
+      deviceScaleFactor: 1,
+      locale: 'en-US',
+    });
     await context.addInitScript(() => {
       const w = window as unknown as { __longTasks: { start: number; duration: number }[] };
       w.__longTasks = [];
@@ -227,18 +248,58 @@ async function main(): Promise<void> {
     const f = (x: number, d = 1) => (Number.isFinite(x) ? x.toFixed(d) : '—');
     const ok = (b: boolean) => (b ? 'yes' : 'NO');
     console.table([
-      { measure: 'animation median FPS', value: f(animation.medianFps), target: '>= 58', met: ok(animation.medianFps >= 58) },
+      {
+        measure: 'animation median FPS',
+        value: f(animation.medianFps),
+        target: '>= 58',
+        met: ok(animation.medianFps >= 58),
+      },
       { measure: 'animation p95 frame (ms)', value: f(animation.p95FrameMs), target: '', met: '' },
-      { measure: 'long tasks > 50 ms (10 s)', value: String(animation.longTasks), target: '0', met: ok(animation.longTasks === 0) },
-      { measure: 'drag latency p95, n=360 (ms)', value: f(drag360.p95Ms), target: '<= 16', met: ok(drag360.p95Ms <= 16) },
+      {
+        measure: 'long tasks > 50 ms (10 s)',
+        value: String(animation.longTasks),
+        target: '0',
+        met: ok(animation.longTasks === 0),
+      },
+      {
+        measure: 'drag latency p95, n=360 (ms)',
+        value: f(drag360.p95Ms),
+        target: '<= 16',
+        met: ok(drag360.p95Ms <= 16),
+      },
       { measure: 'drag latency median, n=3600 (ms)', value: f(drag3600.medianMs), target: '', met: '' },
-      { measure: 'drag latency p95, n=3600 (ms)', value: f(drag3600.p95Ms), target: '<= 16', met: ok(drag3600.p95Ms <= 16) },
+      {
+        measure: 'drag latency p95, n=3600 (ms)',
+        value: f(drag3600.p95Ms),
+        target: '<= 16',
+        met: ok(drag3600.p95Ms <= 16),
+      },
       { measure: 'drag to next frame p95, n=3600 (ms)', value: f(drag3600.toNextFrameP95Ms), target: '', met: '' },
-      { measure: 'last drag value drawn (n=3600)', value: String(drag3600.lastValueDrawn), target: 'true', met: ok(drag3600.lastValueDrawn) },
+      {
+        measure: 'last drag value drawn (n=3600)',
+        value: String(drag3600.lastValueDrawn),
+        target: 'true',
+        met: ok(drag3600.lastValueDrawn),
+      },
       { measure: 'solver points, views shown (script)', value: String(workShown.points), target: '', met: '' },
-      { measure: 'solver points, views hidden (script)', value: String(workHidden.points), target: '< shown', met: ok(workHidden.points < workShown.points) },
-      { measure: 'NR iterations shown / hidden', value: `${workShown.iterations} / ${workHidden.iterations}`, target: '', met: '' },
-      { measure: 'first-load JS gzip (KB)', value: f(firstLoad.gzipKB), target: '<= 150', met: ok(firstLoad.gzipKB <= 150) },
+      {
+        measure: 'solver points, views hidden (script)',
+        value: String(workHidden.points),
+        target: '< shown',
+        met: ok(workHidden.points < workShown.points),
+      },
+      {
+        measure: 'NR iterations shown / hidden',
+        value: `${workShown.iterations} / ${workHidden.iterations}`,
+        target: '',
+        met: '',
+      },
+      {
+        measure: 'first-load JS gzip (KB)',
+        value: f(firstLoad.gzipKB),
+        target: '<= 150',
+        met: ok(firstLoad.gzipKB <= 150),
+      },
       { measure: 'first-load JS raw (KB)', value: f(firstLoad.rawKB), target: '', met: '' },
     ]);
     console.log('wrote bench/results/ui.json');

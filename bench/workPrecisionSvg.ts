@@ -41,7 +41,8 @@ export function workPrecisionSvg(series: WorkPrecisionSeries[], opts: WorkPrecis
     `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="system-ui, sans-serif" font-size="12">`,
     `<rect width="${width}" height="${height}" fill="#fff"/>`,
   );
-  if (opts.title) out.push(`<text x="${m.left}" y="22" font-size="14" font-weight="600">${escapeXml(opts.title)}</text>`);
+  if (opts.title)
+    out.push(`<text x="${m.left}" y="22" font-size="14" font-weight="600">${escapeXml(opts.title)}</text>`);
   for (const t of x.ticks(6)) {
     const label = x.tickFormat(6, '~s')(t);
     if (!label) continue;

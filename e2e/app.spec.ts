@@ -1,5 +1,5 @@
 import { expect, test } from '@playwright/test';
-import { artifact, chartPath, inkedPixels, waitReady } from './helpers';
+import { ORIGIN, artifact, chartPath, inkedPixels, waitReady } from './helpers';
 
 test.describe('the simulator', () => {
   test('renders the default linkage, its numbers and its plots', async ({ page }) => {
@@ -76,7 +76,7 @@ test.describe('the simulator', () => {
   test('picks Traditional Chinese from the browser language', async ({ browser }) => {
     const context = await browser.newContext({ locale: 'zh-TW', viewport: { width: 1280, height: 800 } });
     const page = await context.newPage();
-    await page.goto('http://localhost:4173/');
+    await page.goto(`${ORIGIN}/`);
     await expect(page.getByRole('button', { name: '播放' })).toBeVisible();
     await context.close();
   });

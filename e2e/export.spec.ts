@@ -88,7 +88,9 @@ test.describe('exports', () => {
     await page.goto('./?r1=4&r2=3&r3=3.5&r4=3&t2=0');
     await waitReady(page);
     const d = await download(page, 'Export cycle CSV');
-    const rows = csvParseRows(readFileSync(await d.path(), 'utf8')).slice(1).filter((r) => r.length > 1);
+    const rows = csvParseRows(readFileSync(await d.path(), 'utf8'))
+      .slice(1)
+      .filter((r) => r.length > 1);
     expect(rows).toHaveLength(361);
     expect(rows[180].slice(1, 4)).toEqual(['', '', 'unreachable']);
     expect(rows[0][3]).toBe('ok');

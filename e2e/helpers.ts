@@ -4,6 +4,9 @@ import { fileURLToPath } from 'node:url';
 import type { Download, FrameLocator, Page } from '@playwright/test';
 import { expect } from '@playwright/test';
 
+/** Origin of the preview server the specs run against (E2E_PORT, as in playwright.config.ts). */
+export const ORIGIN = `http://localhost:${process.env.E2E_PORT ?? 4173}`;
+
 /** Where screenshots of the main views are saved (git-ignored). */
 export const ARTIFACTS = join(dirname(fileURLToPath(import.meta.url)), 'artifacts');
 mkdirSync(ARTIFACTS, { recursive: true });

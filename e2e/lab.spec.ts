@@ -62,15 +62,25 @@ test.describe('the solver lab', () => {
   test('exports the diagram as a PNG and its data as CSV', async ({ page }) => {
     await page.goto('./?page=lab');
     await waitLab(page);
-    const [png] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export diagram PNG' }).click()]);
+    const [png] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export diagram PNG' }).click(),
+    ]);
     expect(png.suggestedFilename()).toBe('fourbar_6-2-5-5_open_work-precision_step1_2x.png');
     const facts = await pngFacts(png);
     expect(facts.signatureOk).toBe(true);
     expect([facts.width, facts.height]).toEqual([1520, 920]);
-    const [csv] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export diagram CSV' }).click()]);
+    const [csv] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export diagram CSV' }).click(),
+    ]);
     expect(csv.suggestedFilename()).toBe('fourbar_6-2-5-5_open_work-precision_step1.csv');
-    const lines = readFileSync(await csv.path(), 'utf8').trim().split('\n');
-    expect(lines[0]).toBe('method,tolerance,ns_per_point,iterations_per_point,max_error_rad,p99_error_rad,failed,wrong_branch,false_convergence,points,step_deg');
+    const lines = readFileSync(await csv.path(), 'utf8')
+      .trim()
+      .split('\n');
+    expect(lines[0]).toBe(
+      'method,tolerance,ns_per_point,iterations_per_point,max_error_rad,p99_error_rad,failed,wrong_branch,false_convergence,points,step_deg',
+    );
     // Five methods, three of them traced over five tolerances: 5 defaults + 15 tolerance rows.
     expect(lines).toHaveLength(1 + 20);
     expect(lines.join('\n')).not.toMatch(/NaN|Infinity/);

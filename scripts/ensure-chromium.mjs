@@ -52,7 +52,8 @@ export async function findChromium({ install = false } = {}) {
   const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
   const sudo = isRoot ? [] : onPath('sudo') ? ['sudo', '-n'] : null;
   if (sudo && onPath('apt-get')) {
-    const run = (args) => (sudo.length ? tryRun(sudo[0], [...sudo.slice(1), 'apt-get', ...args]) : tryRun('apt-get', args));
+    const run = (args) =>
+      sudo.length ? tryRun(sudo[0], [...sudo.slice(1), 'apt-get', ...args]) : tryRun('apt-get', args);
     if (run(['install', '-y', 'chromium']) || (run(['update']) && run(['install', '-y', 'chromium']))) {
       return systemChromium();
     }

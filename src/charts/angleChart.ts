@@ -3,7 +3,16 @@ import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
+import {
+  CHART_STYLE,
+  child,
+  drawLegend,
+  minus,
+  prepareSvg,
+  styleAxis,
+  drawGridLines,
+  drawChartText,
+} from './chartFrame';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -131,10 +140,20 @@ export function drawAngleChart(svg: SVGSVGElement, data: AngleChartData, options
   drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
 
   const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
-  ax.call(axisBottom(x).tickValues(xTicks).tickFormat((d) => `${d}`).tickSizeOuter(0));
+  ax.call(
+    axisBottom(x)
+      .tickValues(xTicks)
+      .tickFormat((d) => `${d}`)
+      .tickSizeOuter(0),
+  );
   styleAxis(ax);
   const ay = child(plot, 'g', 'axis-y');
-  ay.call(axisLeft(y).tickValues(yTicks).tickFormat((d) => minus(`${d}`)).tickSizeOuter(0));
+  ay.call(
+    axisLeft(y)
+      .tickValues(yTicks)
+      .tickFormat((d) => minus(`${d}`))
+      .tickSizeOuter(0),
+  );
   styleAxis(ay);
 
   const gen = line<[number, number]>()
@@ -160,12 +179,23 @@ export function drawAngleChart(svg: SVGSVGElement, data: AngleChartData, options
       return gen(wrappedSegments(xs, ys)) ?? '';
     });
 
-  drawChartText(s, { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] }, m.left, iw, width, height);
+  drawChartText(
+    s,
+    { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] },
+    m.left,
+    iw,
+    width,
+    height,
+  );
 
   drawLegend(s, data.series, 14, 33);
 
   const marker = child(plot, 'g', 'marker');
-  child(marker, 'line', 'mline').attr('y1', 0).attr('y2', ih).attr('stroke', CHART_STYLE.marker).attr('stroke-width', 1.25);
+  child(marker, 'line', 'mline')
+    .attr('y1', 0)
+    .attr('y2', ih)
+    .attr('stroke', CHART_STYLE.marker)
+    .attr('stroke-width', 1.25);
   svg.dataset.iw = String(iw);
   svg.dataset.ih = String(ih);
   svg.dataset.y0 = String(y.domain()[0]);

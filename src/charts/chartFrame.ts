@@ -1,5 +1,6 @@
 import type { Selection } from 'd3-selection';
 import { select } from 'd3-selection';
+import { COLORS, FONTS, FONT_SIZES } from '../theme/tokens';
 
 /** Chart margins in CSS pixels. */
 export interface Margins {
@@ -11,19 +12,19 @@ export interface Margins {
 
 /** Shared look of every chart; attributes (not CSS) so an exported SVG looks the same as on screen. */
 export const CHART_STYLE = {
-  font: 'system-ui, -apple-system, "Segoe UI", "Noto Sans TC", "PingFang TC", "Microsoft JhengHei", sans-serif',
-  fontSize: 11,
-  titleSize: 12.5,
-  axisColor: '#4b5563',
-  gridColor: '#edf0f4',
-  background: '#ffffff',
-  text: '#1f2937',
-  muted: '#6b7280',
-  theta3: '#0f9d76',
-  theta4: '#9333ea',
-  marker: '#f97316',
-  residual: '#2563eb',
-  tolerance: '#9ca3af',
+  font: FONTS.sans,
+  fontSize: FONT_SIZES.chart,
+  titleSize: FONT_SIZES.chartTitle,
+  axisColor: COLORS.textMuted,
+  gridColor: COLORS.chartGrid,
+  background: COLORS.surface,
+  text: COLORS.text,
+  muted: COLORS.chartMuted,
+  theta3: COLORS.coupler,
+  theta4: COLORS.rocker,
+  marker: COLORS.marker,
+  residual: COLORS.residual,
+  tolerance: COLORS.tolerance,
 } as const;
 
 /** The SVG root as a d3 selection. */
@@ -37,7 +38,9 @@ export function child<K extends keyof SVGElementTagNameMap, P extends SVGElement
 ): Selection<SVGElementTagNameMap[K], unknown, null, undefined> {
   const node = (parent.node() as SVGElement).querySelector<SVGElementTagNameMap[K]>(`:scope > ${tag}.${cls}`);
   if (node) return select(node);
-  const created = (parent.node() as SVGElement).appendChild((parent.node() as SVGElement).ownerDocument.createElementNS('http://www.w3.org/2000/svg', tag));
+  const created = (parent.node() as SVGElement).appendChild(
+    (parent.node() as SVGElement).ownerDocument.createElementNS('http://www.w3.org/2000/svg', tag),
+  );
   created.setAttribute('class', cls);
   return select(created as SVGElementTagNameMap[K]);
 }

@@ -2,7 +2,16 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLinear, scaleLog } from 'd3-scale';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawLegend, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
+import {
+  CHART_STYLE,
+  child,
+  drawLegend,
+  minus,
+  prepareSvg,
+  styleAxis,
+  drawGridLines,
+  drawChartText,
+} from './chartFrame';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -67,7 +76,11 @@ export function formatPowerOfTen(v: number): string {
  * Draws (or redraws in place) the NR convergence chart: residual |f| against iteration on a log scale,
  * like the report's figure 4.3, with the tolerance as a dashed line. Zero residuals sit on the floor.
  */
-export function drawConvergenceChart(svg: SVGSVGElement, runs: ConvergenceRun[], options: ConvergenceChartOptions): void {
+export function drawConvergenceChart(
+  svg: SVGSVGElement,
+  runs: ConvergenceRun[],
+  options: ConvergenceChartOptions,
+): void {
   const m = options.margins ?? DEFAULT_MARGINS;
   const { width, height } = options;
   const s = prepareSvg(svg, width, height);
@@ -90,10 +103,20 @@ export function drawConvergenceChart(svg: SVGSVGElement, runs: ConvergenceRun[],
   drawGridLines(grid, iw, ih, decades, y);
 
   const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
-  ax.call(axisBottom(x).tickValues(xTicks).tickFormat((d) => `${d}`).tickSizeOuter(0));
+  ax.call(
+    axisBottom(x)
+      .tickValues(xTicks)
+      .tickFormat((d) => `${d}`)
+      .tickSizeOuter(0),
+  );
   styleAxis(ax);
   const ay = child(plot, 'g', 'axis-y');
-  ay.call(axisLeft(y).tickValues(decades).tickFormat((d) => formatPowerOfTen(Number(d))).tickSizeOuter(0));
+  ay.call(
+    axisLeft(y)
+      .tickValues(decades)
+      .tickFormat((d) => formatPowerOfTen(Number(d)))
+      .tickSizeOuter(0),
+  );
   styleAxis(ay);
 
   const tol = options.tolerance;
@@ -142,7 +165,9 @@ export function drawConvergenceChart(svg: SVGSVGElement, runs: ConvergenceRun[],
     .attr('d', (d) => gen(d.iterations.map((it, i) => [it, d.residuals[i]] as [number, number])) ?? '');
   runSel
     .selectAll<SVGCircleElement, [number, number, string, boolean]>('circle')
-    .data((d) => d.iterations.map((it, i) => [it, d.residuals[i], d.color, d.faint === true] as [number, number, string, boolean]))
+    .data((d) =>
+      d.iterations.map((it, i) => [it, d.residuals[i], d.color, d.faint === true] as [number, number, string, boolean]),
+    )
     .join('circle')
     .attr('cx', (d) => x(d[0]))
     .attr('cy', (d) => y(floor(d[1])))

@@ -4,7 +4,16 @@ import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
 import type { Margins, SvgSel } from './chartFrame';
-import { CHART_STYLE, child, estimateTextWidth, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
+import {
+  CHART_STYLE,
+  child,
+  estimateTextWidth,
+  minus,
+  prepareSvg,
+  styleAxis,
+  drawGridLines,
+  drawChartText,
+} from './chartFrame';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {

@@ -1,7 +1,7 @@
 import { memo } from 'react';
 import type { Branch } from '../solver/types';
 import type { NrStart } from '../state/appState';
-import { normalizeTheta2Deg, wrapDeg180 } from '../state/appState';
+import { radToDeg, radToDeg180, radToDeg360 } from '../solver/angles';
 import { formatDeg, formatIntervalsDeg, formatNumber, formatSci } from '../state/format';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { useMessages } from './MessagesContext';
@@ -28,10 +28,10 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
       : c.inputRange.intervals.length === 0
         ? t.noRange
         : formatIntervalsDeg(c.inputRange.intervals, t.rangeInterval);
-  const nr = point ? (nrStart === 'continuation' ? point.continuation ?? point.cold : point.cold) : null;
+  const nr = point ? (nrStart === 'continuation' ? (point.continuation ?? point.cold) : point.cold) : null;
   const pose = point?.pose ?? null;
-  const theta2 = point ? formatDeg(normalizeTheta2Deg((point.theta2Rad * 180) / Math.PI), 2) : '—';
-  const deg = (rad: number) => `${formatDeg(wrapDeg180((rad * 180) / Math.PI), 3)}°`;
+  const theta2 = point ? formatDeg(radToDeg360(point.theta2Rad), 2) : '—';
+  const deg = (rad: number) => `${formatDeg(radToDeg180(rad), 3)}°`;
   const cur = cycle ? cycle[branch] : null;
 
   return (
@@ -71,11 +71,13 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
         </div>
         <div className="fact">
           <dt>{t.transmissionAngle}</dt>
-          <dd className="mono">{pose ? `${formatDeg((pose.mu * 180) / Math.PI, 3)}°` : '—'}</dd>
+          <dd className="mono">{pose ? `${formatDeg(radToDeg(pose.mu), 3)}°` : '—'}</dd>
         </div>
         <div className="fact">
           <dt>{t.status}</dt>
-          <dd>{point ? (pose ? (nr ? t.newtonStatus[nr.status] : t.pointStatus.ok) : t.pointStatus.unreachable) : '—'}</dd>
+          <dd>
+            {point ? (pose ? (nr ? t.newtonStatus[nr.status] : t.pointStatus.ok) : t.pointStatus.unreachable) : '—'}
+          </dd>
         </div>
         <div className="fact">
           <dt>{t.nrIterations}</dt>
@@ -97,7 +99,9 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
         </div>
       </dl>
       {cur && cycle ? (
-        <p className="note">{t.cycleSummary(String(cur.okCount), String(cycle.theta2Deg.length), String(cur.totalIterations))}</p>
+        <p className="note">
+          {t.cycleSummary(String(cur.okCount), String(cycle.theta2Deg.length), String(cur.totalIterations))}
+        </p>
       ) : null}
     </div>
   );

@@ -1,14 +1,14 @@
 import { Suspense, lazy, useCallback, useEffect, useLayoutEffect, useMemo, useReducer, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { degToRad } from '../solver/angles';
+import { degToRad, radToDeg, radToDeg360 } from '../solver/angles';
 import type { Branch } from '../solver/types';
 import type { BranchExtent, SceneText } from '../render/scene';
 import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
 import type { LinkageScene } from '../render/scene';
 import { advanceTheta2, degreesForElapsed, rangeToDeg } from '../state/animation';
 import type { Action, AppState, Locale } from '../state/appState';
-import { normalizeTheta2Deg, reducer } from '../state/appState';
+import { reducer } from '../state/appState';
 import type { ExportSubject, PngSize } from '../state/fileNames';
 import { csvFileName, pngFileName } from '../state/fileNames';
 import { formatDeg, formatIntervalsDeg, formatNumber } from '../state/format';
@@ -92,7 +92,13 @@ export function App({ mode, initial }: AppProps) {
   const plotPixels = showPlots && plotsSize.width > 0 ? Math.round(plotsSize.width * dpr) : 0;
   const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   const cycleNeeds = useMemo(
-    () => ({ solver, branch: state.branch, otherBranch: state.showGhost, curves: state.showTrace && !onLab, plotPixels }),
+    () => ({
+      solver,
+      branch: state.branch,
+      otherBranch: state.showGhost,
+      curves: state.showTrace && !onLab,
+      plotPixels,
+    }),
     [solver, state.branch, state.showGhost, state.showTrace, onLab, plotPixels],
   );
   const pointNeeds = useMemo(
@@ -104,14 +110,25 @@ export function App({ mode, initial }: AppProps) {
     [solver, state.showGhost, onLab, mode, initial.embed.panels],
   );
   const { cycle, error: cycleError } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
-  const point = usePoint(client, state.linkage, state.branch, state.theta2Deg, state.samples, state.coupler, pointNeeds);
+  const point = usePoint(
+    client,
+    state.linkage,
+    state.branch,
+    state.theta2Deg,
+    state.samples,
+    state.coupler,
+    pointNeeds,
+  );
   const deg = useMemo(() => (cycle ? cycleDegrees(cycle) : null), [cycle]);
   const rangeDeg = useMemo(() => (cycle ? rangeToDeg(cycle.classification.inputRange) : null), [cycle]);
-  const rocking = cycle ? !cycle.classification.inputRange.full && cycle.classification.inputRange.intervals.length > 0 : false;
+  const rocking = cycle
+    ? !cycle.classification.inputRange.full && cycle.classification.inputRange.intervals.length > 0
+    : false;
 
   useLayoutEffect(() => {
     // After the children's layout effects: the plots now show this cycle. The UI benchmark listens for it.
-    if (cycle && typeof performance.mark === 'function') performance.mark('fourbar:cycle-drawn', { detail: { ...cycle.linkage } });
+    if (cycle && typeof performance.mark === 'function')
+      performance.mark('fourbar:cycle-drawn', { detail: { ...cycle.linkage } });
   }, [cycle]);
 
   const stateRef = useRef<AppState>(state);
@@ -159,11 +176,20 @@ export function App({ mode, initial }: AppProps) {
     () => (point ? point.coupler : { distance: state.coupler.distance, angleRad: degToRad(state.coupler.angleDeg) }),
     [point, state.coupler.distance, state.coupler.angleDeg],
   );
-  const pose = useMemo(() => scenePose(sceneLinkage, point?.pose ?? null, sceneCoupler), [sceneLinkage, point, sceneCoupler]);
-  const ghost = useMemo(() => scenePose(sceneLinkage, point?.ghost ?? null, sceneCoupler), [sceneLinkage, point, sceneCoupler]);
+  const pose = useMemo(
+    () => scenePose(sceneLinkage, point?.pose ?? null, sceneCoupler),
+    [sceneLinkage, point, sceneCoupler],
+  );
+  const ghost = useMemo(
+    () => scenePose(sceneLinkage, point?.ghost ?? null, sceneCoupler),
+    [sceneLinkage, point, sceneCoupler],
+  );
   const theta2Rad = point ? point.theta2Rad : degToRad(state.theta2Deg);
   const drawBranch: Branch = point ? point.branch : state.branch;
-  const curves = useMemo(() => (cycle ? sceneCurves(cycle.curves, drawBranch, theta2Rad) : []), [cycle, drawBranch, theta2Rad]);
+  const curves = useMemo(
+    () => (cycle ? sceneCurves(cycle.curves, drawBranch, theta2Rad) : []),
+    [cycle, drawBranch, theta2Rad],
+  );
   const cycleBounds = useMemo(() => {
     if (!cycle) return null;
     const other: Branch = drawBranch === 'open' ? 'crossed' : 'open';
@@ -175,10 +201,18 @@ export function App({ mode, initial }: AppProps) {
   const bounds = cycleBounds ?? sceneBounds(sceneLinkage, [], [], [pose, ghost]);
 
   const classification = cycle?.classification ?? null;
-  const theta2Text = formatDeg(normalizeTheta2Deg((theta2Rad * 180) / Math.PI), 2);
-  const warning = point && !point.pose ? (classification?.type === 'cannot-assemble' ? t.cannotAssembleAny : t.cannotAssembleAt(theta2Text)) : null;
+  const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
+  const warning =
+    point && !point.pose
+      ? classification?.type === 'cannot-assemble'
+        ? t.cannotAssembleAny
+        : t.cannotAssembleAt(theta2Text)
+      : null;
   const warningDetail =
-    warning && classification && classification.type !== 'cannot-assemble' && classification.inputRange.intervals.length > 0
+    warning &&
+    classification &&
+    classification.type !== 'cannot-assemble' &&
+    classification.inputRange.intervals.length > 0
       ? t.reachableHint(formatIntervalsDeg(classification.inputRange.intervals, t.rangeInterval))
       : null;
   const text: SceneText = useMemo(
@@ -206,10 +240,22 @@ export function App({ mode, initial }: AppProps) {
       text,
       bounds,
     }),
-    [sceneLinkage, theta2Rad, pose, ghost, curves, state.showGrid, state.showAngles, state.showGhost, state.showTrace, text, bounds],
+    [
+      sceneLinkage,
+      theta2Rad,
+      pose,
+      ghost,
+      curves,
+      state.showGrid,
+      state.showAngles,
+      state.showGhost,
+      state.showTrace,
+      text,
+      bounds,
+    ],
   );
   const description = pose
-    ? `θ2 ${theta2Text}°, θ3 ${formatDeg((pose.theta3 * 180) / Math.PI, 2)}°, θ4 ${formatDeg((pose.theta4 * 180) / Math.PI, 2)}°, μ ${formatDeg((pose.mu * 180) / Math.PI, 2)}°`
+    ? `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`
     : (warning ?? '');
 
   const canvasSize = useRef({ width: 640, height: 420 });
@@ -231,7 +277,13 @@ export function App({ mode, initial }: AppProps) {
       bytes = await convergencePng(convergenceInputs(p, s.nrStart, m), width, height, size);
     } else {
       const { width, height } = ANGLE_EXPORT_SIZE;
-      bytes = await angleChartPng(angleChartInputs(subject, d, s.branch, s.showGhost, m), angleMarker(subject, p), width, height, size);
+      bytes = await angleChartPng(
+        angleChartInputs(subject, d, s.branch, s.showGhost, m),
+        angleMarker(subject, p),
+        width,
+        height,
+        size,
+      );
     }
     downloadPng(bytes, name);
   }, []);
@@ -240,12 +292,27 @@ export function App({ mode, initial }: AppProps) {
     if (!c) throw new Error('the cycle is still being solved');
     const b = c[s.branch];
     downloadCsv(
-      { theta2Deg: c.theta2Deg, theta3Rad: b.theta3, theta4Rad: b.theta4, status: decodeStatuses(b.statusCodes), iterations: b.iterations, residual: b.residual },
+      {
+        theta2Deg: c.theta2Deg,
+        theta3Rad: b.theta3,
+        theta4Rad: b.theta4,
+        status: decodeStatuses(b.statusCodes),
+        iterations: b.iterations,
+        residual: b.residual,
+      },
       csvFileName(c.linkage, s.branch, c.samples),
     );
   }, []);
 
-  const canvas = <LinkageCanvas scene={scene} view={state.view} onViewChange={onViewChange} onSize={onCanvasSize} description={description} />;
+  const canvas = (
+    <LinkageCanvas
+      scene={scene}
+      view={state.view}
+      onViewChange={onViewChange}
+      onSize={onCanvasSize}
+      description={description}
+    />
+  );
   const solverNote = solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null;
   const errorNote = cycleError ? (
     <p className="note note-error" role="alert">
@@ -279,7 +346,14 @@ export function App({ mode, initial }: AppProps) {
             <div className="embed-stage">{canvas}</div>
             {show('controls') ? (
               <aside className="embed-controls">
-                <ControlsPanel state={state} dispatch={dispatch} locked={embedOptions.locked} compact rocking={rocking} onStep={onStep} />
+                <ControlsPanel
+                  state={state}
+                  dispatch={dispatch}
+                  locked={embedOptions.locked}
+                  compact
+                  rocking={rocking}
+                  onStep={onStep}
+                />
               </aside>
             ) : null}
           </div>
@@ -290,7 +364,14 @@ export function App({ mode, initial }: AppProps) {
           ) : null}
           {show('plots') ? (
             <section className="card embed-card embed-plots" ref={setPlotsEl}>
-              <AnglePlotsPanel deg={deg} point={point} branch={state.branch} showOther={state.showGhost} layout={state.plotLayout} dispatch={dispatch} />
+              <AnglePlotsPanel
+                deg={deg}
+                point={point}
+                branch={state.branch}
+                showOther={state.showGhost}
+                layout={state.plotLayout}
+                dispatch={dispatch}
+              />
             </section>
           ) : null}
           {show('export') ? (
@@ -311,7 +392,13 @@ export function App({ mode, initial }: AppProps) {
         <header className="topbar">
           <div className="brand">
             <svg className="logo" viewBox="0 0 32 32" aria-hidden="true">
-              <path d="M5 25 L11 12 L24 9 L27 25" fill="none" stroke="currentColor" strokeWidth="2.4" strokeLinejoin="round" />
+              <path
+                d="M5 25 L11 12 L24 9 L27 25"
+                fill="none"
+                stroke="currentColor"
+                strokeWidth="2.4"
+                strokeLinejoin="round"
+              />
               <circle cx="5" cy="25" r="2.6" fill="#fff" stroke="currentColor" strokeWidth="1.6" />
               <circle cx="27" cy="25" r="2.6" fill="#fff" stroke="currentColor" strokeWidth="1.6" />
               <circle cx="11" cy="12" r="2.2" fill="#fff" stroke="currentColor" strokeWidth="1.6" />
@@ -343,7 +430,12 @@ export function App({ mode, initial }: AppProps) {
         <aside className="sidebar" aria-label={t.sectionLinks}>
           <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
         </aside>
-        <main className={`main${onLab ? ' main-lab' : ''}`} id="page-main" role="tabpanel" aria-labelledby={`tab-${state.page}`}>
+        <main
+          className={`main${onLab ? ' main-lab' : ''}`}
+          id="page-main"
+          role="tabpanel"
+          aria-labelledby={`tab-${state.page}`}
+        >
           {onLab ? (
             <Suspense fallback={<p className="note">{t.labRun}…</p>}>
               <LabPanel client={client} state={state} dispatch={dispatch} />
@@ -352,7 +444,14 @@ export function App({ mode, initial }: AppProps) {
             <>
               <section className="card stage">{canvas}</section>
               <section className="card plots" aria-label={t.sectionPlots} ref={setPlotsEl}>
-                <AnglePlotsPanel deg={deg} point={point} branch={state.branch} showOther={state.showGhost} layout={state.plotLayout} dispatch={dispatch} />
+                <AnglePlotsPanel
+                  deg={deg}
+                  point={point}
+                  branch={state.branch}
+                  showOther={state.showGhost}
+                  layout={state.plotLayout}
+                  dispatch={dispatch}
+                />
               </section>
             </>
           )}

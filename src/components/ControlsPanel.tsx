@@ -56,7 +56,13 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             onChange={(e) => {
               if (!e.target.value) return;
               const p = getPreset(e.target.value as PresetId);
-              dispatch({ type: 'applyPreset', linkage: p.linkage, theta2Deg: p.theta2Deg, branch: p.branch, coupler: p.coupler });
+              dispatch({
+                type: 'applyPreset',
+                linkage: p.linkage,
+                theta2Deg: p.theta2Deg,
+                branch: p.branch,
+                coupler: p.coupler,
+              });
             }}
           >
             <option value="">{t.presetPlaceholder}</option>
@@ -118,7 +124,14 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
           {t.sectionAnimation}
         </h2>
         <div className="play-row">
-          <button type="button" className="icon-btn" aria-label={t.stepBack} title={t.stepBack} disabled={isLocked('theta2')} onClick={() => onStep(-1)}>
+          <button
+            type="button"
+            className="icon-btn"
+            aria-label={t.stepBack}
+            title={t.stepBack}
+            disabled={isLocked('theta2')}
+            onClick={() => onStep(-1)}
+          >
             <Icon name="stepBack" />
           </button>
           <button
@@ -130,7 +143,14 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             <Icon name={state.playing ? 'pause' : 'play'} size={14} />
             <span>{state.playing ? t.pause : t.play}</span>
           </button>
-          <button type="button" className="icon-btn" aria-label={t.stepForward} title={t.stepForward} disabled={isLocked('theta2')} onClick={() => onStep(1)}>
+          <button
+            type="button"
+            className="icon-btn"
+            aria-label={t.stepForward}
+            title={t.stepForward}
+            disabled={isLocked('theta2')}
+            onClick={() => onStep(1)}
+          >
             <Icon name="stepForward" />
           </button>
         </div>
@@ -191,10 +211,26 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             {t.sectionDisplay}
           </h2>
           <div className="toggles">
-            <Toggle label={t.showGrid} checked={state.showGrid} onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGrid', value: v })} />
-            <Toggle label={t.showAngles} checked={state.showAngles} onChange={(v) => dispatch({ type: 'setFlag', flag: 'showAngles', value: v })} />
-            <Toggle label={t.showGhost} checked={state.showGhost} onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGhost', value: v })} />
-            <Toggle label={t.showTrace} checked={state.showTrace} onChange={(v) => dispatch({ type: 'setFlag', flag: 'showTrace', value: v })} />
+            <Toggle
+              label={t.showGrid}
+              checked={state.showGrid}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGrid', value: v })}
+            />
+            <Toggle
+              label={t.showAngles}
+              checked={state.showAngles}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showAngles', value: v })}
+            />
+            <Toggle
+              label={t.showGhost}
+              checked={state.showGhost}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGhost', value: v })}
+            />
+            <Toggle
+              label={t.showTrace}
+              checked={state.showTrace}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showTrace', value: v })}
+            />
           </div>
           <label className="inline-field">
             <span>{t.samples}</span>
@@ -203,7 +239,10 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
               value={String(state.samples)}
               onChange={(e) => dispatch({ type: 'setSamples', samples: Number(e.target.value) })}
             >
-              {(SAMPLE_CHOICES.includes(state.samples) ? SAMPLE_CHOICES : [...SAMPLE_CHOICES, state.samples].sort((a, b) => a - b)).map((n) => (
+              {(SAMPLE_CHOICES.includes(state.samples)
+                ? SAMPLE_CHOICES
+                : [...SAMPLE_CHOICES, state.samples].sort((a, b) => a - b)
+              ).map((n) => (
                 <option key={n} value={n}>
                   {n + 1}
                 </option>

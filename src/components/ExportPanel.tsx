@@ -41,7 +41,12 @@ function ExportPanelImpl({ onPng, onCsv, compact = false }: ExportPanelProps) {
       />
       <div className="export-buttons">
         {shown.map((i) => (
-          <button key={i.subject} type="button" className="btn btn-small" onClick={() => run(() => onPng(i.subject, size))}>
+          <button
+            key={i.subject}
+            type="button"
+            className="btn btn-small"
+            onClick={() => run(() => onPng(i.subject, size))}
+          >
             {i.label}
           </button>
         ))}

@@ -65,7 +65,12 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
       defaultLegend: t.labLegendDefault,
       failureLegend: t.labLegendFailed,
       tooltip: (s: LabSeries, p: LabPoint) =>
-        t.labPointTooltip(t.methodNames[s.method], formatTol(p.tol, t.labToleranceDefault), p.nsPerPoint.toFixed(0), fmtErr(p.maxError)),
+        t.labPointTooltip(
+          t.methodNames[s.method],
+          formatTol(p.tol, t.labToleranceDefault),
+          p.nsPerPoint.toFixed(0),
+          fmtErr(p.maxError),
+        ),
       emptyText: t.labRun + '…',
     }),
     [t, highlight, methodLabels],
@@ -113,7 +118,11 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
   };
   const onCsv = () => {
     if (!result) return;
-    downloadText(labToCsv(result), labFileName(result.linkage, result.branch, result.stepDeg, 'csv'), 'text/csv;charset=utf-8');
+    downloadText(
+      labToCsv(result),
+      labFileName(result.linkage, result.branch, result.stepDeg, 'csv'),
+      'text/csv;charset=utf-8',
+    );
   };
 
   const nearest = result ? nearestLimitDeg(state.theta2Deg, result.limitsDeg) : null;
@@ -151,9 +160,17 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
             </button>
           )}
           <div className="lab-progress">
-            <progress max={100} value={lab.running ? Number(percent) : result ? 100 : 0} aria-label={t.labProgress(lab.progress?.stage ?? '', percent)} />
+            <progress
+              max={100}
+              value={lab.running ? Number(percent) : result ? 100 : 0}
+              aria-label={t.labProgress(lab.progress?.stage ?? '', percent)}
+            />
             <span className="status-line" role="status" aria-live="polite">
-              {lab.running ? t.labProgress(lab.progress?.stage ?? '', percent) : lab.cancelled ? t.labCancelled : (lab.error ?? '')}
+              {lab.running
+                ? t.labProgress(lab.progress?.stage ?? '', percent)
+                : lab.cancelled
+                  ? t.labCancelled
+                  : (lab.error ?? '')}
             </span>
           </div>
         </div>
@@ -176,7 +193,8 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
                 const rows: Array<{ p: LabPoint; chosen: boolean }> = [];
                 const d = defaultPoint(s);
                 if (d) rows.push({ p: d, chosen: s.method === state.method && state.tol === null });
-                if (s.method === state.method && state.tol !== null && chosenPoint) rows.push({ p: chosenPoint, chosen: true });
+                if (s.method === state.method && state.tol !== null && chosenPoint)
+                  rows.push({ p: chosenPoint, chosen: true });
                 return rows.map(({ p, chosen }) => (
                   <tr key={`${s.method}-${p.tol}`} className={chosen ? 'chosen' : undefined}>
                     <th scope="row">
@@ -219,7 +237,11 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
               value={state.tol === null ? 'default' : String(state.tol)}
               disabled={state.method === 'closed-form' || state.method === 'closed-form-polish'}
               onChange={(e) =>
-                dispatch({ type: 'setMethod', method: state.method, tol: e.target.value === 'default' ? null : Number(e.target.value) })
+                dispatch({
+                  type: 'setMethod',
+                  method: state.method,
+                  tol: e.target.value === 'default' ? null : Number(e.target.value),
+                })
               }
             >
               <option value="default">{t.labToleranceDefault}</option>
@@ -237,7 +259,9 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
             <p className="note" data-testid="lab-limit">
               {limitText}
             </p>
-            <p className="note">{t.labMinSin(formatSci(result.minSinMu.value, 3), formatDeg(result.minSinMu.theta2Deg, 2))}</p>
+            <p className="note">
+              {t.labMinSin(formatSci(result.minSinMu.value, 3), formatDeg(result.minSinMu.theta2Deg, 2))}
+            </p>
           </>
         ) : null}
         <SvgChartView draw={drawCycle} label={t.labCycleTitle} className="lab-cycle" />

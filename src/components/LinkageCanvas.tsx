@@ -81,7 +81,11 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
         onPointerMove={(e) => {
           const d = drag.current;
           if (!d || d.id !== e.pointerId || width <= 0 || height <= 0) return;
-          onViewChange({ zoom: view.zoom, panX: d.panX + (e.clientX - d.x) / width, panY: d.panY + (e.clientY - d.y) / height });
+          onViewChange({
+            zoom: view.zoom,
+            panX: d.panX + (e.clientX - d.x) / width,
+            panY: d.panY + (e.clientY - d.y) / height,
+          });
         }}
         onPointerUp={() => {
           drag.current = null;

@@ -86,7 +86,11 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
               }
             }}
           />
-          {unit ? <span className="numctl-unit" aria-hidden="true">{unit}</span> : null}
+          {unit ? (
+            <span className="numctl-unit" aria-hidden="true">
+              {unit}
+            </span>
+          ) : null}
         </span>
       </div>
       <input

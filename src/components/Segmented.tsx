@@ -18,7 +18,14 @@ export interface SegmentedProps<T extends string> {
 }
 
 /** A radio group styled as segmented buttons; arrow keys move between choices as in any radio group. */
-export function Segmented<T extends string>({ legend, value, options, onChange, disabled, hideLegend }: SegmentedProps<T>) {
+export function Segmented<T extends string>({
+  legend,
+  value,
+  options,
+  onChange,
+  disabled,
+  hideLegend,
+}: SegmentedProps<T>) {
   const name = useId();
   return (
     <fieldset className="segmented" disabled={disabled}>
@@ -26,7 +33,13 @@ export function Segmented<T extends string>({ legend, value, options, onChange, 
       <div className="segmented-row">
         {options.map((o) => (
           <label key={o.value} className={`segmented-item${o.value === value ? ' is-on' : ''}`}>
-            <input type="radio" name={name} value={o.value} checked={o.value === value} onChange={() => onChange(o.value)} />
+            <input
+              type="radio"
+              name={name}
+              value={o.value}
+              checked={o.value === value}
+              onChange={() => onChange(o.value)}
+            />
             <span>{o.label}</span>
           </label>
         ))}

@@ -33,9 +33,15 @@ function SharePanelImpl({ state, pageHref }: SharePanelProps) {
     setShown(text);
   };
   const togglePanel = (p: EmbedPanel, on: boolean) =>
-    setEmbed((e) => ({ ...e, panels: on ? EMBED_PANELS.filter((x) => x === p || e.panels.includes(x)) : e.panels.filter((x) => x !== p) }));
+    setEmbed((e) => ({
+      ...e,
+      panels: on ? EMBED_PANELS.filter((x) => x === p || e.panels.includes(x)) : e.panels.filter((x) => x !== p),
+    }));
   const toggleLock = (params: LockableParam[], on: boolean) =>
-    setEmbed((e) => ({ ...e, locked: on ? [...new Set([...e.locked, ...params])] : e.locked.filter((x) => !params.includes(x)) }));
+    setEmbed((e) => ({
+      ...e,
+      locked: on ? [...new Set([...e.locked, ...params])] : e.locked.filter((x) => !params.includes(x)),
+    }));
 
   return (
     <div className="share-panel">
@@ -54,19 +60,41 @@ function SharePanelImpl({ state, pageHref }: SharePanelProps) {
         <fieldset className="checks">
           <legend>{t.embedPanels}</legend>
           {EMBED_PANELS.map((p) => (
-            <Toggle key={p} label={t.panelNames[p]} checked={embed.panels.includes(p)} onChange={(v) => togglePanel(p, v)} />
+            <Toggle
+              key={p}
+              label={t.panelNames[p]}
+              checked={embed.panels.includes(p)}
+              onChange={(v) => togglePanel(p, v)}
+            />
           ))}
         </fieldset>
         <fieldset className="checks">
           <legend>{t.embedLock}</legend>
-          <Toggle label={t.lockLengths} checked={LENGTHS.every((p) => embed.locked.includes(p))} onChange={(v) => toggleLock(LENGTHS, v)} />
-          <Toggle label={t.lockAngle} checked={embed.locked.includes('theta2')} onChange={(v) => toggleLock(['theta2'], v)} />
+          <Toggle
+            label={t.lockLengths}
+            checked={LENGTHS.every((p) => embed.locked.includes(p))}
+            onChange={(v) => toggleLock(LENGTHS, v)}
+          />
+          <Toggle
+            label={t.lockAngle}
+            checked={embed.locked.includes('theta2')}
+            onChange={(v) => toggleLock(['theta2'], v)}
+          />
         </fieldset>
       </details>
       <p className="status-line" role="status" aria-live="polite">
         {status}
       </p>
-      {shown ? <textarea className="share-text" readOnly value={shown} aria-label={t.sectionShare} rows={3} onFocus={(e) => e.currentTarget.select()} /> : null}
+      {shown ? (
+        <textarea
+          className="share-text"
+          readOnly
+          value={shown}
+          aria-label={t.sectionShare}
+          rows={3}
+          onFocus={(e) => e.currentTarget.select()}
+        />
+      ) : null}
     </div>
   );
 }

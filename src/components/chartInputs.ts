@@ -2,7 +2,7 @@ import type { AngleChartData, AngleMarker } from '../charts/angleChart';
 import { CHART_STYLE } from '../charts/chartFrame';
 import type { ConvergenceRun } from '../charts/convergenceChart';
 import type { Branch } from '../solver/types';
-import { normalizeTheta2Deg, wrapDeg180 } from '../state/appState';
+import { radToDeg180, radToDeg360 } from '../solver/angles';
 import type { NrStart } from '../state/appState';
 import { formatDeg } from '../state/format';
 import type { Messages } from '../state/messages';
@@ -40,7 +40,7 @@ const EMPTY = new Float64Array(0);
 /** Degrees wrapped to (-180, 180] from radians; NaN stays NaN (a gap). */
 export function toWrappedDeg(rad: ArrayLike<number>): Float64Array {
   const out = new Float64Array(rad.length);
-  for (let i = 0; i < rad.length; i++) out[i] = wrapDeg180((rad[i] * 180) / Math.PI);
+  for (let i = 0; i < rad.length; i++) out[i] = radToDeg180(rad[i]);
   return out;
 }
 
@@ -88,17 +88,23 @@ export function angleChartInputs(
   if (kind === 'theta4' || kind === 'both') add('theta4', CHART_STYLE.theta4, 'θ4');
   const title = kind === 'theta3' ? t.chartTheta3 : kind === 'theta4' ? t.chartTheta4 : t.chartBoth;
   const yLabel = kind === 'theta3' ? t.axisTheta3 : kind === 'theta4' ? t.axisTheta4 : t.axisAngle;
-  return { data: { theta2Deg: deg ? deg.theta2Deg : EMPTY, series }, title, xLabel: t.axisTheta2, yLabel, markerColors };
+  return {
+    data: { theta2Deg: deg ? deg.theta2Deg : EMPTY, series },
+    title,
+    xLabel: t.axisTheta2,
+    yLabel,
+    markerColors,
+  };
 }
 
 /** The marker of an angle chart: the solved pose's theta2 and angles (degrees); NaN values when not assembled. */
 export function angleMarker(kind: AngleChartKind, point: PointResponse | null): AngleMarker {
   const pose = point ? point.pose : null;
   const values: number[] = [];
-  const val = (key: 'theta3' | 'theta4') => (pose ? wrapDeg180((pose[key] * 180) / Math.PI) : Number.NaN);
+  const val = (key: 'theta3' | 'theta4') => (pose ? radToDeg180(pose[key]) : Number.NaN);
   if (kind === 'theta3' || kind === 'both') values.push(val('theta3'));
   if (kind === 'theta4' || kind === 'both') values.push(val('theta4'));
-  const theta2Deg = point ? normalizeTheta2Deg((point.theta2Rad * 180) / Math.PI) : Number.NaN;
+  const theta2Deg = point ? radToDeg360(point.theta2Rad) : Number.NaN;
   return { theta2Deg, valuesDeg: values };
 }
 
@@ -121,7 +127,7 @@ export function convergenceInputs(point: PointResponse | null, start: NrStart, t
   const b = run(main, false);
   if (a) runs.push(a);
   if (b) runs.push(b);
-  const theta2 = point ? formatDeg(normalizeTheta2Deg((point.theta2Rad * 180) / Math.PI), 2) : '—';
+  const theta2 = point ? formatDeg(radToDeg360(point.theta2Rad), 2) : '—';
   const tolerance = main ? main.tolerance : Number.NaN;
   return {
     runs,

@@ -15,7 +15,13 @@ import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
 import type { AngleChartInputs, ConvergenceInputs } from './chartInputs';
 
 /** Draws the linkage scene at width x height CSS pixels into a new canvas at the export size; returns PNG bytes with DPI. */
-export async function linkagePng(scene: LinkageScene, view: ViewOffset, width: number, height: number, size: PngSize): Promise<Uint8Array> {
+export async function linkagePng(
+  scene: LinkageScene,
+  view: ViewOffset,
+  width: number,
+  height: number,
+  size: PngSize,
+): Promise<Uint8Array> {
   const scale = PNG_SCALE[size];
   const canvas = document.createElement('canvas');
   canvas.width = Math.round(width * scale);
@@ -41,13 +47,24 @@ export async function angleChartPng(
   size: PngSize,
 ): Promise<Uint8Array> {
   const svg = detachedSvg();
-  drawAngleChart(svg, inputs.data, { width, height, title: inputs.title, xLabel: inputs.xLabel, yLabel: inputs.yLabel });
+  drawAngleChart(svg, inputs.data, {
+    width,
+    height,
+    title: inputs.title,
+    xLabel: inputs.xLabel,
+    yLabel: inputs.yLabel,
+  });
   updateAngleMarker(svg, marker, inputs.markerColors);
   return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
 }
 
 /** Renders the convergence chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
-export async function convergencePng(inputs: ConvergenceInputs, width: number, height: number, size: PngSize): Promise<Uint8Array> {
+export async function convergencePng(
+  inputs: ConvergenceInputs,
+  width: number,
+  height: number,
+  size: PngSize,
+): Promise<Uint8Array> {
   const svg = detachedSvg();
   const { runs, ...opts } = inputs;
   drawConvergenceChart(svg, runs, { ...opts, width, height });

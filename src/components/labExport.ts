@@ -8,9 +8,12 @@ import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
 import { detachedSvg } from './exporters';
 
 /** Renders the work-precision diagram off screen at opts.width x opts.height CSS pixels; PNG bytes at the export size. */
-export async function labPng(series: readonly LabSeries[], opts: WorkPrecisionChartOptions, size: PngSize): Promise<Uint8Array> {
+export async function labPng(
+  series: readonly LabSeries[],
+  opts: WorkPrecisionChartOptions,
+  size: PngSize,
+): Promise<Uint8Array> {
   const svg = detachedSvg();
   drawWorkPrecisionChart(svg, series, opts);
   return withPngDpi(await svgToPngBytes(svg, opts.width, opts.height, PNG_SCALE[size]), PNG_DPI[size]);
 }
-

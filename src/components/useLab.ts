@@ -27,7 +27,13 @@ export function useLab(
   branch: Branch,
   stepDeg: number,
 ): LabState & { run: () => void; cancel: () => void } {
-  const [state, setState] = useState<LabState>({ result: null, running: false, progress: null, cancelled: false, error: null });
+  const [state, setState] = useState<LabState>({
+    result: null,
+    running: false,
+    progress: null,
+    cancelled: false,
+    error: null,
+  });
   // The running job; a newer run or an unmount replaces it, and answers of any other job are dropped.
   const jobRef = useRef<{ cancel: () => void } | null>(null);
   const { r1, r2, r3, r4 } = linkage;

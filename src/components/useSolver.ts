@@ -131,5 +131,6 @@ export function usePoint(
 
 /** Records the solver work of a response as a performance mark (read by npm run bench:ui). */
 function markWork(kind: 'cycle' | 'point', work: WorkCount, elapsedMs?: number): void {
-  if (typeof performance.mark === 'function') performance.mark(`fourbar:work:${kind}`, { detail: { ...work, elapsedMs } });
+  if (typeof performance.mark === 'function')
+    performance.mark(`fourbar:work:${kind}`, { detail: { ...work, elapsedMs } });
 }

@@ -1,5 +1,8 @@
 /** The limit angle (degrees) nearest to theta2Deg around the circle and the distance to it; null without limits. */
-export function nearestLimitDeg(theta2Deg: number, limitsDeg: readonly number[]): { distanceDeg: number; limitDeg: number } | null {
+export function nearestLimitDeg(
+  theta2Deg: number,
+  limitsDeg: readonly number[],
+): { distanceDeg: number; limitDeg: number } | null {
   let best: { distanceDeg: number; limitDeg: number } | null = null;
   for (const lim of limitsDeg) {
     const d = Math.abs(((((theta2Deg - lim) % 360) + 540) % 360) - 180);

@@ -226,7 +226,8 @@ export async function runWorkPrecision(l: Linkage, opts: LabOptions): Promise<La
   for (let pass = 0; pass < TIMING_PASSES; pass++) {
     for (let k = 0; k < configs.length; k++) {
       const { m, tol } = configs[k];
-      if (await progress(`timing ${pass + 1}/${TIMING_PASSES}: ${m.label}${tol === null ? '' : `, tol ${tol}`}`)) return null;
+      if (await progress(`timing ${pass + 1}/${TIMING_PASSES}: ${m.label}${tol === null ? '' : `, tol ${tol}`}`))
+        return null;
       const so = sweepOptions(opts.branch, m.method, tol);
       const ms = medianTime(() => sweep(l, grid, so), opts.now, minMs / TIMING_PASSES);
       points[k].nsPerPoint = Math.min(points[k].nsPerPoint, (ms * 1e6) / grid.length);

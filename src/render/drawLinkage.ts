@@ -1,3 +1,4 @@
+import { PI, TWO_PI, angleDiff, radToDeg } from '../solver/angles';
 import type { LinkageScene, ScenePose } from './scene';
 import { THEME } from './theme';
 import type { ViewTransform } from './view';
@@ -120,7 +121,7 @@ function drawJoint(ctx: Ctx, p: Px, r: number = THEME.jointRadius): void {
   ctx.strokeStyle = THEME.jointStroke;
   ctx.lineWidth = 1.75;
   ctx.beginPath();
-  ctx.arc(p.x, p.y, r, 0, 2 * Math.PI);
+  ctx.arc(p.x, p.y, r, 0, TWO_PI);
   ctx.fill();
   ctx.stroke();
 }
@@ -183,9 +184,7 @@ function arcLabel(ctx: Ctx, c: Px, radius: number, fromRad: number, toRad: numbe
 }
 
 function shortest(from: number, to: number): number {
-  let d = to - from;
-  d -= 2 * Math.PI * Math.round(d / (2 * Math.PI));
-  return d;
+  return angleDiff(to, from);
 }
 
 function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePose, ghost: boolean): void {
@@ -204,7 +203,7 @@ function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePo
       ctx.strokeStyle = THEME.ghost;
       ctx.lineWidth = 1.5;
       ctx.beginPath();
-      ctx.arc(p.x, p.y, 3.5, 0, 2 * Math.PI);
+      ctx.arc(p.x, p.y, 3.5, 0, TWO_PI);
       ctx.stroke();
     }
     return;
@@ -226,10 +225,10 @@ function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePo
   drawJoint(ctx, A);
   drawJoint(ctx, B);
   ctx.fillStyle = THEME.trace;
-  ctx.strokeStyle = '#9a3412';
+  ctx.strokeStyle = THEME.couplerPoint;
   ctx.lineWidth = 1.5;
   ctx.beginPath();
-  ctx.arc(P.x, P.y, 5, 0, 2 * Math.PI);
+  ctx.arc(P.x, P.y, 5, 0, TWO_PI);
   ctx.fill();
   ctx.stroke();
 
@@ -239,11 +238,12 @@ function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePo
   const lb = away(B, A, O4);
   label(ctx, t.B, lb.x, lb.y, THEME.text, true);
   const lp = away(P, A, B);
-  label(ctx, t.P, lp.x, lp.y, '#9a3412', true);
+  label(ctx, t.P, lp.x, lp.y, THEME.couplerPoint, true);
   const t2 = shortest(0, pose.theta2);
-  const t2Pos = t2 >= 0 ? t2 : 2 * Math.PI + t2;
+  const t2Pos = t2 >= 0 ? t2 : TWO_PI + t2;
   const arcMid = { x: O2.x + 30 * Math.cos(t2Pos / 2), y: O2.y - 30 * Math.sin(t2Pos / 2) };
-  const pOffLine = Math.abs((B.x - A.x) * (P.y - A.y) - (B.y - A.y) * (P.x - A.x)) > 4 * Math.hypot(B.x - A.x, B.y - A.y);
+  const pOffLine =
+    Math.abs((B.x - A.x) * (P.y - A.y) - (B.y - A.y) * (P.x - A.x)) > 4 * Math.hypot(B.x - A.x, B.y - A.y);
   const l2 = sideOf(O2, A, arcMid);
   label(ctx, 'r2', l2.x, l2.y, THEME.crank);
   const l3 = sideOf(A, B, pOffLine ? P : O2);
@@ -252,7 +252,7 @@ function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePo
   label(ctx, 'r4', l4.x, l4.y, THEME.rocker);
 
   if (scene.showAngles) {
-    const deg = (r: number) => t.formatAngle((r * 180) / Math.PI);
+    const deg = (r: number) => t.formatAngle(radToDeg(r));
     const r0 = 30;
     arcLabel(ctx, O2, r0, 0, t2Pos, `θ2 ${deg(t2Pos)}`, THEME.crank);
     // Dashed references parallel to the ground line at A and O4.
@@ -268,8 +268,8 @@ function drawPose(ctx: Ctx, scene: LinkageScene, v: ViewTransform, pose: ScenePo
     ctx.setLineDash([]);
     arcLabel(ctx, A, r0 - 4, 0, shortest(0, pose.theta3), `θ3 ${deg(shortest(0, pose.theta3))}`, THEME.coupler);
     arcLabel(ctx, O4, r0 + 4, 0, shortest(0, pose.theta4), `θ4 ${deg(shortest(0, pose.theta4))}`, THEME.rocker);
-    const fromB = pose.theta3 + Math.PI;
-    const toB = fromB + shortest(fromB, pose.theta4 + Math.PI);
+    const fromB = pose.theta3 + PI;
+    const toB = fromB + shortest(fromB, pose.theta4 + PI);
     arcLabel(ctx, B, 22, fromB, toB, `μ ${deg(pose.mu)}`, THEME.angle);
   }
 }
@@ -343,10 +343,10 @@ export function drawLinkage(ctx: Ctx, scene: LinkageScene, view: ViewTransform):
     ctx.lineWidth = 1.25;
     ctx.setLineDash([4, 4]);
     ctx.beginPath();
-    ctx.arc(A.x, A.y, l.r3 * v.scale, 0, 2 * Math.PI);
+    ctx.arc(A.x, A.y, l.r3 * v.scale, 0, TWO_PI);
     ctx.stroke();
     ctx.beginPath();
-    ctx.arc(O4.x, O4.y, l.r4 * v.scale, 0, 2 * Math.PI);
+    ctx.arc(O4.x, O4.y, l.r4 * v.scale, 0, TWO_PI);
     ctx.stroke();
     ctx.setLineDash([]);
     drawLink(ctx, O2, A, THEME.crank, THEME.linkWidth);

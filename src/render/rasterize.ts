@@ -17,7 +17,12 @@ function loadImage(src: string): Promise<HTMLImageElement> {
 }
 
 /** Renders an SVG of width x height CSS pixels to PNG bytes at scale pixels per CSS pixel, on a white background. */
-export async function svgToPngBytes(svg: SVGSVGElement, width: number, height: number, scale: number): Promise<Uint8Array> {
+export async function svgToPngBytes(
+  svg: SVGSVGElement,
+  width: number,
+  height: number,
+  scale: number,
+): Promise<Uint8Array> {
   // A data URL (not a blob URL) so this also works in an opaque-origin sandboxed iframe.
   const img = await loadImage(`data:image/svg+xml;charset=utf-8,${encodeURIComponent(svgToText(svg))}`);
   const canvas = document.createElement('canvas');

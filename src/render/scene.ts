@@ -1,3 +1,4 @@
+import { TWO_PI } from '../solver/angles';
 import { couplerPoint, jointPositions } from '../solver/kinematics';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
@@ -75,8 +76,8 @@ export function scenePose(l: Linkage, a: PoseAngles | null, c: CouplerGeometry):
 export function sceneCurves(curves: readonly CouplerCurve[], branch: string, theta2Rad: number): SceneCurve[] {
   return curves.map((c) => {
     if (!c.rocking) return { x: c.x, y: c.y, current: c.branch === branch };
-    const k = Math.ceil((c.loRad - theta2Rad) / (2 * Math.PI));
-    const t = theta2Rad + 2 * Math.PI * k;
+    const k = Math.ceil((c.loRad - theta2Rad) / TWO_PI);
+    const t = theta2Rad + TWO_PI * k;
     return { x: c.x, y: c.y, current: t <= c.hiRad + 1e-12 };
   });
 }

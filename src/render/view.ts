@@ -47,7 +47,13 @@ export function extendBoundsCircle(b: Bounds, x: number, y: number, r: number): 
  * default 0.08) and applies the user's zoom and pan. Works at any scale: lengths of 1e-7 or 1e7 give
  * the same picture. Degenerate bounds (a point, or nothing) get a unit box around them.
  */
-export function fitView(bounds: Bounds, width: number, height: number, offset: ViewOffset, margin = 0.08): ViewTransform {
+export function fitView(
+  bounds: Bounds,
+  width: number,
+  height: number,
+  offset: ViewOffset,
+  margin = 0.08,
+): ViewTransform {
   let { minX, minY, maxX, maxY } = bounds;
   if (!(minX <= maxX && minY <= maxY)) {
     minX = -1;
@@ -58,7 +64,8 @@ export function fitView(bounds: Bounds, width: number, height: number, offset: V
   let spanX = maxX - minX;
   let spanY = maxY - minY;
   const span = Math.max(spanX, spanY);
-  const minSpan = span > 0 ? span * 1e-3 : Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) || 1;
+  const minSpan =
+    span > 0 ? span * 1e-3 : Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) || 1;
   spanX = Math.max(spanX, minSpan);
   spanY = Math.max(spanY, minSpan);
   const w = Math.max(1, width);
@@ -96,7 +103,14 @@ export function toWorld(v: ViewTransform, sx: number, sy: number): { x: number; 
 }
 
 /** New offset after zooming by factor about the CSS pixel (cx, cy): the world point under it stays put. */
-export function zoomAbout(offset: ViewOffset, factor: number, cx: number, cy: number, width: number, height: number): ViewOffset {
+export function zoomAbout(
+  offset: ViewOffset,
+  factor: number,
+  cx: number,
+  cy: number,
+  width: number,
+  height: number,
+): ViewOffset {
   const zoom = Math.min(1e3, Math.max(1e-3, offset.zoom * factor));
   const f = zoom / offset.zoom;
   const dx = cx - width / 2;

@@ -1,3 +1,4 @@
+import { PI, TWO_PI } from './angles';
 import { sumOfProducts } from './exact';
 import type { AngleInterval, Classification, InputRange, Linkage, LinkageType } from './types';
 import { normalizeLinkage, validateLinkage } from './validate';
@@ -41,11 +42,11 @@ export function inputRange(l: Linkage): InputRange {
   const hasMin = t1 * t2 < 0;
   // Can the loop close at all? (r3 + r4 >= |r1 - r2| and |r3 - r4| <= r1 + r2 at some input angle.)
   if ((hasMax && uMax * vMax < 0) || pMin * qMin < 0) return { full: false, intervals: [] };
-  const tMax = hasMax ? limitAngle(uMax, vMax, -t3, sumAll) : Math.PI;
+  const tMax = hasMax ? limitAngle(uMax, vMax, -t3, sumAll) : PI;
   const tMin = hasMin ? limitAngle(uMin, vMin, pMin, qMin) : 0;
-  if (!hasMax && !hasMin) return { full: true, intervals: [{ lo: -Math.PI, hi: Math.PI }] };
+  if (!hasMax && !hasMin) return { full: true, intervals: [{ lo: -PI, hi: PI }] };
   if (hasMax && !hasMin) return { full: false, intervals: [{ lo: -tMax, hi: tMax }] };
-  if (!hasMax && hasMin) return { full: false, intervals: [{ lo: tMin, hi: 2 * Math.PI - tMin }] };
+  if (!hasMax && hasMin) return { full: false, intervals: [{ lo: tMin, hi: TWO_PI - tMin }] };
   if (tMin > tMax) return { full: false, intervals: [] };
   const intervals: AngleInterval[] = [
     { lo: tMin, hi: tMax },

@@ -1,3 +1,4 @@
+import { PI } from './angles';
 import { sumOfProducts } from './exact';
 import type { DD } from './exact';
 import type { Angles, Branch, Linkage } from './types';
@@ -101,7 +102,7 @@ export function planClosedForm(l: Linkage): ClosedFormPlan {
 /** atan2 wrapped to (-pi, pi] (atan2 gives -pi for a negative zero). */
 export function wrapAtan2(y: number, x: number): number {
   const t = Math.atan2(y, x);
-  return t === -Math.PI ? Math.PI : t;
+  return t === -PI ? PI : t;
 }
 
 /** Triangle factors of one input angle, filled in by assemblyFactors (normalised units). */
@@ -193,19 +194,14 @@ const scratchFactors = newAssemblyFactors();
  * theta4 = beta + pi - sigma gamma are read off complex products (A->O4 rotated by the
  * triangle's angles), so only two atan2 calls are needed and cos/sin come for free.
  */
-export function closedFormAt(
-  plan: ClosedFormPlan,
-  theta2: number,
-  sigma: number,
-  out: ClosedFormPoint,
-): Assembly {
+export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number, out: ClosedFormPoint): Assembly {
   const f = scratchFactors;
   const status = assemblyFactors(plan, theta2, f);
   if (status === Assembly.Unreachable) return status;
   const { r1, r2, r3, r4 } = plan;
   const { dx, dy, x3, x4 } = f;
   if (status === Assembly.Continuum) {
-    const t = sigma > 0 ? theta2 : theta2 + Math.PI;
+    const t = sigma > 0 ? theta2 : theta2 + PI;
     const w = wrapAtan2(Math.sin(t), Math.cos(t));
     out.theta3 = w;
     out.theta4 = w;
@@ -238,7 +234,7 @@ export function closedFormAt(
     const psi = Math.atan2(ys, q * (r3 + r4) + sLen);
     const gamma = Math.atan2(ys, sLen - q * (r3 + r4));
     const a3 = beta + sigma * psi;
-    const a4 = beta + Math.PI - sigma * gamma;
+    const a4 = beta + PI - sigma * gamma;
     out.cos3 = Math.cos(a3);
     out.sin3 = Math.sin(a3);
     out.cos4 = Math.cos(a4);

@@ -26,13 +26,7 @@ export { classify, inputRange } from './classify';
 export { solveClosedForm } from './closedForm';
 export { couplerPoint, jointPositions, loopResidual, transmissionAngle, velocityRatios } from './kinematics';
 export type { Joints, Point } from './kinematics';
-export {
-  DEFAULT_TOLERANCE,
-  SEED_MAX_ITERATIONS,
-  SEED_SINGULAR_DET,
-  SEED_TOLERANCE,
-  solveNewton,
-} from './newton';
+export { DEFAULT_TOLERANCE, SEED_MAX_ITERATIONS, SEED_SINGULAR_DET, SEED_TOLERANCE, solveNewton } from './newton';
 export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid } from './sweep';
 export { validateLinkage } from './validate';
 export { adaptiveGrid, adaptiveSweep } from './sampling';

@@ -73,12 +73,7 @@ export function newNewtonState(theta3 = 0, theta4 = 0): NewtonState {
  * last step was not yet negligible (error after a step ~ step^2 / |sin mu|), reverting a polish
  * step that does not lower the residual. Angles stay unwrapped (continuous) in the state.
  */
-export function newtonCore(
-  p: NewtonProblem,
-  s: NewtonSettings,
-  st: NewtonState,
-  log: IterationRecord[] | null,
-): void {
+export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState, log: IterationRecord[] | null): void {
   const { r1, r2, r3, r4, cos2, sin2 } = p;
   let t3 = st.theta3;
   let t4 = st.theta4;
@@ -197,7 +192,8 @@ export function newtonSettings(opts: NewtonOptions, total: number): NewtonSettin
 export function solveNewton(l: Linkage, theta2: number, guess: Angles, opts: NewtonOptions = {}): NewtonResult {
   validateLinkage(l);
   if (!Number.isFinite(theta2)) throw new Error(`theta2 must be a finite angle in radians, got ${theta2}`);
-  if (!guess || !Number.isFinite(guess.theta3)) throw new Error(`guess.theta3 must be a finite angle, got ${guess?.theta3}`);
+  if (!guess || !Number.isFinite(guess.theta3))
+    throw new Error(`guess.theta3 must be a finite angle, got ${guess?.theta3}`);
   if (!Number.isFinite(guess.theta4)) throw new Error(`guess.theta4 must be a finite angle, got ${guess.theta4}`);
   const seed = opts.seed === true;
   const n = seed ? { ...l, exponent: 0 } : normalizeLinkage(l);

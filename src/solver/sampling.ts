@@ -1,4 +1,4 @@
-import { angleDiff } from './angles';
+import { TWO_PI, angleDiff } from './angles';
 import { classify } from './classify';
 import { Assembly, branchSign, closedFormAt, newClosedFormPoint, planClosedForm } from './closedForm';
 import { sweep } from './sweep';
@@ -49,10 +49,10 @@ export function adaptiveGrid(l: Linkage, opts: AdaptiveGridOptions): Float64Arra
   const plan = planClosedForm(l);
   const sigmas = (opts.branches ?? ['open', 'crossed']).map(branchSign);
   const start = opts.startRad ?? 0;
-  const end = opts.endRad ?? 2 * Math.PI;
+  const end = opts.endRad ?? TWO_PI;
   if (!(end > start)) throw new Error(`endRad must exceed startRad, got ${start}..${end}`);
   const base = Math.max(8, Math.min(100_000, Math.round(opts.pixels ?? 360)));
-  const maxJump = opts.maxJumpRad ?? (2 * Math.PI) / 180;
+  const maxJump = opts.maxJumpRad ?? TWO_PI / 180;
   const maxPoints = opts.maxPoints ?? 8 * (base + 1);
   const step = (end - start) / base;
   const grid = new Set<number>();
@@ -63,7 +63,7 @@ export function adaptiveGrid(l: Linkage, opts: AdaptiveGridOptions): Float64Arra
     for (const iv of inputRange.intervals) {
       for (const lim of [iv.lo, iv.hi]) {
         for (let k = -2; k <= 2; k++) {
-          const t = lim + 2 * Math.PI * k;
+          const t = lim + TWO_PI * k;
           if (t < start || t > end) continue;
           grid.add(t);
           for (let d = step / 2; d > MIN_SPACING; d /= 4) {

@@ -67,7 +67,13 @@ function checkTheta2s(theta2s: ArrayLike<number>): void {
   }
 }
 
-function sweepClosedForm(plan: ClosedFormPlan, theta2s: ArrayLike<number>, sigma: number, polish: boolean, r: SweepArrays): void {
+function sweepClosedForm(
+  plan: ClosedFormPlan,
+  theta2s: ArrayLike<number>,
+  sigma: number,
+  polish: boolean,
+  r: SweepArrays,
+): void {
   const p = newClosedFormPoint();
   const problem: NewtonProblem = { r1: plan.r1, r2: plan.r2, r3: plan.r3, r4: plan.r4, cos2: 1, sin2: 0 };
   const settings = newtonSettings({ maxIterations: 1, polish: true }, plan.r1 + plan.r2 + plan.r3 + plan.r4);
@@ -110,7 +116,13 @@ function sweepClosedForm(plan: ClosedFormPlan, theta2s: ArrayLike<number>, sigma
   }
 }
 
-function sweepSeed(l: Linkage, theta2s: ArrayLike<number>, branch: Branch, tol: number | undefined, r: SweepArrays): void {
+function sweepSeed(
+  l: Linkage,
+  theta2s: ArrayLike<number>,
+  branch: Branch,
+  tol: number | undefined,
+  r: SweepArrays,
+): void {
   const settings = newtonSettings({ seed: true, tol }, 0);
   const problem: NewtonProblem = { ...l, cos2: 1, sin2: 0 };
   const guess = seedFirstGuess(branch);
@@ -139,7 +151,16 @@ function sweepSeed(l: Linkage, theta2s: ArrayLike<number>, branch: Branch, tol: 
 }
 
 /** Cubic Hermite extrapolation of y at x from (x0, y0, d0) and (x1, y1, d1); Euler when x0 is absent. */
-function predict(x: number, x1: number, y1: number, d1: number, x0: number, y0: number, d0: number, hermite: boolean): number {
+function predict(
+  x: number,
+  x1: number,
+  y1: number,
+  d1: number,
+  x0: number,
+  y0: number,
+  d0: number,
+  hermite: boolean,
+): number {
   const h1 = x - x1;
   if (!hermite) return y1 + d1 * h1;
   const h = x1 - x0;
@@ -168,8 +189,16 @@ function sweepNewton(
   const st: NewtonState = newNewtonState();
   // Continuation memory: the last two solved points (unwrapped angles) and their tangents.
   let have = 0;
-  let xa = 0, a3 = 0, a4 = 0, da3 = 0, da4 = 0; // older
-  let xb = 0, b3 = 0, b4 = 0, db3 = 0, db4 = 0; // newer
+  let xa = 0,
+    a3 = 0,
+    a4 = 0,
+    da3 = 0,
+    da4 = 0; // older
+  let xb = 0,
+    b3 = 0,
+    b4 = 0,
+    db3 = 0,
+    db4 = 0; // newer
   for (let i = 0; i < theta2s.length; i++) {
     const t2 = theta2s[i];
     r.theta2[i] = t2;
@@ -186,7 +215,11 @@ function sweepNewton(
     let solved = false;
     let t3 = 0;
     let t4 = 0;
-    let c3 = 1, s3 = 0, c4 = 1, s4 = 0, res = 0;
+    let c3 = 1,
+      s3 = 0,
+      c4 = 1,
+      s4 = 0,
+      res = 0;
     if (have > 0) {
       let g3 = b3;
       let g4 = b4;
@@ -208,7 +241,11 @@ function sweepNewton(
           solved = true;
           t3 = st.theta3;
           t4 = st.theta4;
-          c3 = st.cos3; s3 = st.sin3; c4 = st.cos4; s4 = st.sin4; res = st.residual;
+          c3 = st.cos3;
+          s3 = st.sin3;
+          c4 = st.cos4;
+          s4 = st.sin4;
+          res = st.residual;
         } else if (Math.abs(sinMu) >= AMBIGUOUS_SIN) {
           r.branchCorrections++;
         }
@@ -226,7 +263,11 @@ function sweepNewton(
         t3 = b3 + wrapAngle(t3 - b3);
         t4 = b4 + wrapAngle(t4 - b4);
       }
-      c3 = cf.cos3; s3 = cf.sin3; c4 = cf.cos4; s4 = cf.sin4; res = cf.residual;
+      c3 = cf.cos3;
+      s3 = cf.sin3;
+      c4 = cf.cos4;
+      s4 = cf.sin4;
+      res = cf.residual;
     }
     r.theta3[i] = wrapAngle(t3);
     r.theta4[i] = wrapAngle(t4);
@@ -241,8 +282,16 @@ function sweepNewton(
     const sin34 = s3 * c4 - c3 * s4;
     const d3 = (r2 * (s4 * c2 - c4 * s2)) / (r3 * sin34);
     const d4 = (r2 * (s2 * c3 - c2 * s3)) / (-r4 * sin34);
-    xa = xb; a3 = b3; a4 = b4; da3 = db3; da4 = db4;
-    xb = t2; b3 = t3; b4 = t4; db3 = d3; db4 = d4;
+    xa = xb;
+    a3 = b3;
+    a4 = b4;
+    da3 = db3;
+    da4 = db4;
+    xb = t2;
+    b3 = t3;
+    b4 = t4;
+    db3 = d3;
+    db4 = d4;
     const finite = Number.isFinite(d3) && Number.isFinite(d4);
     have = finite ? Math.min(have + 1, 2) : 0;
   }

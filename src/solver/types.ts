@@ -17,12 +17,7 @@ export interface Angles {
 
 /** Linkage type as used by the app (see classify). */
 export type LinkageType =
-  | 'crank-rocker'
-  | 'double-crank'
-  | 'double-rocker'
-  | 'change-point'
-  | 'triple-rocker'
-  | 'cannot-assemble';
+  'crank-rocker' | 'double-crank' | 'double-rocker' | 'change-point' | 'triple-rocker' | 'cannot-assemble';
 
 /** Closed interval of the input angle theta2 in radians, lo <= hi; may extend past pi when it wraps. */
 export interface AngleInterval {
@@ -97,12 +92,7 @@ export interface NewtonResult extends Angles {
 export type PointStatus = 'ok' | 'unreachable' | 'singular' | 'failed';
 
 /** Sweep methods: default 'newton' continuation with predictor, variants for the benchmark and the lab. */
-export type SweepMethod =
-  | 'newton'
-  | 'newton-no-predictor'
-  | 'seed'
-  | 'closed-form'
-  | 'closed-form-polish';
+export type SweepMethod = 'newton' | 'newton-no-predictor' | 'seed' | 'closed-form' | 'closed-form-polish';
 
 /** Options of sweep. */
 export interface SweepOptions {

@@ -1,3 +1,4 @@
+import { radToDeg } from '../solver/angles';
 import type { AngleInterval, Branch } from '../solver/types';
 import type { Direction } from './appState';
 import { NOMINAL_FPS, normalizeTheta2Deg } from './appState';
@@ -22,7 +23,7 @@ export const LIMIT_INSET_DEG = 1e-6;
 export function rangeToDeg(range: { full: boolean; intervals: readonly AngleInterval[] }): InputRangeDeg {
   return {
     full: range.full,
-    intervals: range.intervals.map((iv) => ({ lo: (iv.lo * 180) / Math.PI, hi: (iv.hi * 180) / Math.PI })),
+    intervals: range.intervals.map((iv) => ({ lo: radToDeg(iv.lo), hi: radToDeg(iv.hi) })),
   };
 }
 

@@ -1,3 +1,4 @@
+import { wrapDeg360 } from '../solver/angles';
 import type { Branch, Linkage, SweepMethod } from '../solver/types';
 
 /** UI languages: English (default) and Traditional Chinese. */
@@ -96,23 +97,8 @@ export const DEFAULT_STATE: AppState = {
   labStepDeg: 1,
 };
 
-/** Wraps degrees into [0, 360); non-finite input gives 0. */
-export function normalizeTheta2Deg(deg: number): number {
-  if (!Number.isFinite(deg)) return 0;
-  const w = deg - 360 * Math.floor(deg / 360);
-  // deg = -1e-17 gives w = 360 in floating point: fold it back.
-  return w >= 360 ? 0 : w;
-}
-
-/** Wraps degrees into (-180, 180]; used for every output angle shown to people. */
-export function wrapDeg180(deg: number): number {
-  if (!Number.isFinite(deg)) return deg;
-  if (deg > -180 && deg <= 180) return deg;
-  let w = deg - 360 * Math.floor((deg + 180) / 360);
-  if (w <= -180) w += 360;
-  if (w > 180) w -= 360;
-  return w;
-}
+/** Wraps degrees into [0, 360); non-finite input gives 0. Kept as the state's name for the units module's wrap. */
+export const normalizeTheta2Deg = wrapDeg360;
 
 /** Clamps x into [lo, hi]. */
 export function clamp(x: number, lo: number, hi: number): number {
@@ -181,7 +167,8 @@ export function reducer(state: AppState, action: Action): AppState {
       return { ...state, view: { ...action.view } };
     case 'animate': {
       const deg = normalizeTheta2Deg(action.theta2Deg);
-      if (deg === state.theta2Deg && action.direction === state.direction && action.branch === state.branch) return state;
+      if (deg === state.theta2Deg && action.direction === state.direction && action.branch === state.branch)
+        return state;
       return { ...state, theta2Deg: deg, direction: action.direction, branch: action.branch };
     }
     case 'applyPreset':

@@ -1,6 +1,6 @@
 import { csvFormatRows } from 'd3-dsv';
 import type { PointStatus } from '../solver/types';
-import { wrapDeg180 } from './appState';
+import { radToDeg180 } from '../solver/angles';
 
 /** One branch of a swept cycle: input angles in degrees, output angles in radians (NaN where not assembled). */
 export interface CycleTable {
@@ -30,8 +30,8 @@ export function cycleToCsv(table: CycleTable): string {
   const n = table.theta2Deg.length;
   for (let i = 0; i < n; i++) {
     const ok = table.status[i] === 'ok';
-    const t3 = ok ? wrapDeg180((table.theta3Rad[i] * 180) / Math.PI) : Number.NaN;
-    const t4 = ok ? wrapDeg180((table.theta4Rad[i] * 180) / Math.PI) : Number.NaN;
+    const t3 = ok ? radToDeg180(table.theta3Rad[i]) : Number.NaN;
+    const t4 = ok ? radToDeg180(table.theta4Rad[i]) : Number.NaN;
     rows.push([
       csvNumber(table.theta2Deg[i]),
       csvNumber(t3),

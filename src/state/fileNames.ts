@@ -29,8 +29,17 @@ export function fileStem(l: Linkage, branch: Branch): string {
 }
 
 /** File name of a PNG export, e.g. fourbar_6-2-5-5_open_theta2-45_linkage_2x.png. */
-export function pngFileName(l: Linkage, branch: Branch, theta2Deg: number, subject: ExportSubject, size: PngSize): string {
-  const at = subject === 'linkage' || subject === 'convergence' ? `_theta2-${fileNumber(Math.round(theta2Deg * 100) / 100)}` : '';
+export function pngFileName(
+  l: Linkage,
+  branch: Branch,
+  theta2Deg: number,
+  subject: ExportSubject,
+  size: PngSize,
+): string {
+  const at =
+    subject === 'linkage' || subject === 'convergence'
+      ? `_theta2-${fileNumber(Math.round(theta2Deg * 100) / 100)}`
+      : '';
   return `${fileStem(l, branch)}${at}_${SUBJECT[subject]}_${SUFFIX[size]}.png`;
 }
 

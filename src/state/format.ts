@@ -1,3 +1,4 @@
+import { radToDeg } from '../solver/angles';
 import type { AngleInterval } from '../solver/types';
 
 const MINUS = '\u2212';
@@ -12,7 +13,8 @@ export function formatNumber(x: number, sig = 6): string {
   if (!Number.isFinite(x)) return '—';
   if (x === 0) return '0';
   const a = Math.abs(x);
-  const s = a >= 1e-4 && a < 1e6 ? trimZeros(x.toPrecision(sig)) : trimZeros(x.toExponential(sig - 1)).replace('e+', 'e');
+  const s =
+    a >= 1e-4 && a < 1e6 ? trimZeros(x.toPrecision(sig)) : trimZeros(x.toExponential(sig - 1)).replace('e+', 'e');
   return s.replace('-', MINUS);
 }
 
@@ -36,14 +38,15 @@ export function formatIntervalsDeg(
   interval: (lo: string, hi: string) => string,
   separator = '; ',
 ): string {
-  return intervals
-    .map((iv) => interval(formatDeg((iv.lo * 180) / Math.PI, 2), formatDeg((iv.hi * 180) / Math.PI, 2)))
-    .join(separator);
+  return intervals.map((iv) => interval(formatDeg(radToDeg(iv.lo), 2), formatDeg(radToDeg(iv.hi), 2))).join(separator);
 }
 
 /** A number as a file-name fragment: plain ASCII, no spaces or slashes ("2.5", "1e-7", "m1.5" for -1.5). */
 export function fileNumber(x: number): string {
   if (!Number.isFinite(x)) return 'nan';
-  const s = Math.abs(x) >= 1e-4 && Math.abs(x) < 1e6 ? trimZeros(x.toPrecision(6)) : trimZeros(x.toExponential(4)).replace('e+', 'e');
+  const s =
+    Math.abs(x) >= 1e-4 && Math.abs(x) < 1e6
+      ? trimZeros(x.toPrecision(6))
+      : trimZeros(x.toExponential(4)).replace('e+', 'e');
   return s.replace(/^-/, 'm');
 }

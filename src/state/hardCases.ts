@@ -1,3 +1,4 @@
+import { radToDeg } from '../solver/angles';
 import type { Branch, Linkage } from '../solver/types';
 
 /** Identifiers of the 23 hard cases, in table order. */
@@ -76,7 +77,7 @@ export const HARD_CASES: readonly HardCase[] = [
     id: 'dragLinkFlat',
     number: 14,
     linkage: { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
-    theta2Deg: 60 + (1e-8 * 180) / Math.PI,
+    theta2Deg: 60 + radToDeg(1e-8),
     branch: 'crossed',
   },
   { id: 'tinyCrank', number: 15, linkage: { r1: 1, r2: 1e-6, r3: 1, r4: 1 }, theta2Deg: 0, branch: 'open' },

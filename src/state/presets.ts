@@ -29,14 +29,62 @@ export interface Preset {
  * mirrored assembly, so the straight stretch runs along the top of its curve instead of the bottom.
  */
 export const PRESETS: readonly Preset[] = [
-  { id: 'report', linkage: { r1: 6, r2: 2, r3: 5, r4: 5 }, theta2Deg: 45, branch: 'open', coupler: { distance: 2.5, angleDeg: 30 } },
-  { id: 'dragLink', linkage: { r1: 2, r2: 4, r3: 4.5, r4: 5 }, theta2Deg: 45, branch: 'open', coupler: { distance: 2, angleDeg: 40 } },
-  { id: 'doubleRocker', linkage: { r1: 4, r2: 3, r3: 1, r4: 3.5 }, theta2Deg: 60, branch: 'open', coupler: { distance: 1.5, angleDeg: 60 } },
-  { id: 'tripleRocker', linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 }, theta2Deg: 0, branch: 'open', coupler: { distance: 1.75, angleDeg: 30 } },
-  { id: 'parallelogram', linkage: { r1: 4, r2: 2, r3: 4, r4: 2 }, theta2Deg: 45, branch: 'open', coupler: { distance: 2, angleDeg: 45 } },
-  { id: 'nearToggle', linkage: { r1: 4, r2: 1, r3: 3, r4: 2.000000001 }, theta2Deg: 170, branch: 'open', coupler: { distance: 1.5, angleDeg: 20 } },
-  { id: 'chebyshevLambda', linkage: { r1: 2, r2: 1, r3: 2.5, r4: 2.5 }, theta2Deg: 0, branch: 'crossed', coupler: { distance: 5, angleDeg: 0 } },
-  { id: 'hoeckens', linkage: { r1: 2, r2: 1, r3: 2.5, r4: 2.5 }, theta2Deg: 0, branch: 'open', coupler: { distance: 5, angleDeg: 0 } },
+  {
+    id: 'report',
+    linkage: { r1: 6, r2: 2, r3: 5, r4: 5 },
+    theta2Deg: 45,
+    branch: 'open',
+    coupler: { distance: 2.5, angleDeg: 30 },
+  },
+  {
+    id: 'dragLink',
+    linkage: { r1: 2, r2: 4, r3: 4.5, r4: 5 },
+    theta2Deg: 45,
+    branch: 'open',
+    coupler: { distance: 2, angleDeg: 40 },
+  },
+  {
+    id: 'doubleRocker',
+    linkage: { r1: 4, r2: 3, r3: 1, r4: 3.5 },
+    theta2Deg: 60,
+    branch: 'open',
+    coupler: { distance: 1.5, angleDeg: 60 },
+  },
+  {
+    id: 'tripleRocker',
+    linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
+    theta2Deg: 0,
+    branch: 'open',
+    coupler: { distance: 1.75, angleDeg: 30 },
+  },
+  {
+    id: 'parallelogram',
+    linkage: { r1: 4, r2: 2, r3: 4, r4: 2 },
+    theta2Deg: 45,
+    branch: 'open',
+    coupler: { distance: 2, angleDeg: 45 },
+  },
+  {
+    id: 'nearToggle',
+    linkage: { r1: 4, r2: 1, r3: 3, r4: 2.000000001 },
+    theta2Deg: 170,
+    branch: 'open',
+    coupler: { distance: 1.5, angleDeg: 20 },
+  },
+  {
+    id: 'chebyshevLambda',
+    linkage: { r1: 2, r2: 1, r3: 2.5, r4: 2.5 },
+    theta2Deg: 0,
+    branch: 'crossed',
+    coupler: { distance: 5, angleDeg: 0 },
+  },
+  {
+    id: 'hoeckens',
+    linkage: { r1: 2, r2: 1, r3: 2.5, r4: 2.5 },
+    theta2Deg: 0,
+    branch: 'open',
+    coupler: { distance: 5, angleDeg: 0 },
+  },
 ];
 
 /** The preset with this id; throws for an unknown id (a programmer error). */

@@ -1,7 +1,8 @@
 import type { AppState, Direction, NrStart, PlotLayout } from './appState';
 import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
 import { SWEEP_METHODS } from '../solver/methods';
-import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg, wrapDeg180 } from './appState';
+import { wrapDeg180 } from '../solver/angles';
+import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg } from './appState';
 import { parseLocale } from './i18n';
 import type { FieldName } from './validate';
 import { checkValue, parseDecimal } from './validate';
@@ -21,7 +22,16 @@ export interface EmbedOptions {
 /** All embed panels in display order. */
 export const EMBED_PANELS: readonly EmbedPanel[] = ['controls', 'info', 'plots', 'export'];
 /** All lockable parameters. */
-export const LOCKABLE_PARAMS: readonly LockableParam[] = ['r1', 'r2', 'r3', 'r4', 'theta2', 'branch', 'coupler', 'play'];
+export const LOCKABLE_PARAMS: readonly LockableParam[] = [
+  'r1',
+  'r2',
+  'r3',
+  'r4',
+  'theta2',
+  'branch',
+  'coupler',
+  'play',
+];
 /** An embed shows the controls and the plots, with nothing locked, unless the URL says otherwise. */
 export const DEFAULT_EMBED: EmbedOptions = { panels: ['controls', 'plots'], locked: [] };
 
@@ -83,7 +93,11 @@ export function parseUrl(
     const x = parseDecimal(value);
     const r = checkValue(field, x, value);
     if (!r.ok) {
-      bad(key, value, r.error.kind === 'notNumber' ? 'not a number' : `${r.error.kind} (allowed ${r.error.min} to ${r.error.max})`);
+      bad(
+        key,
+        value,
+        r.error.kind === 'notNumber' ? 'not a number' : `${r.error.kind} (allowed ${r.error.min} to ${r.error.max})`,
+      );
       return null;
     }
     return r.value;
@@ -144,7 +158,8 @@ export function parseUrl(
         break;
       }
       case 'nr':
-        if (value === 'cont' || value === 'cold') state.nrStart = (value === 'cont' ? 'continuation' : 'cold') as NrStart;
+        if (value === 'cont' || value === 'cold')
+          state.nrStart = (value === 'cont' ? 'continuation' : 'cold') as NrStart;
         else bad(key, value, 'expected cont or cold');
         break;
       case 'plots':

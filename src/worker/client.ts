@@ -170,7 +170,10 @@ export class SolverClient {
     }
   }
 
-  private request<C extends Channel>(channel: C, params: C extends 'cycle' ? CycleParams : PointParams): Promise<ResponseOf<C> | null> {
+  private request<C extends Channel>(
+    channel: C,
+    params: C extends 'cycle' ? CycleParams : PointParams,
+  ): Promise<ResponseOf<C> | null> {
     const id = this.nextId++;
     this.latest[channel] = id;
     const request = { ...params, type: channel, id } as SolverRequest;
@@ -204,7 +207,10 @@ export class SolverClient {
       return;
     }
     if (this.modeValue === 'starting' && !this.startTimer) {
-      this.startTimer = setTimeout(() => this.fallBack('worker did not answer in time'), this.options.startTimeoutMs ?? 4000);
+      this.startTimer = setTimeout(
+        () => this.fallBack('worker did not answer in time'),
+        this.options.startTimeoutMs ?? 4000,
+      );
     }
     try {
       this.worker.postMessage(pending.request);
@@ -220,7 +226,11 @@ export class SolverClient {
       this.startTimer = null;
       this.setMode('worker');
     }
-    if (response.type === 'lab' || response.type === 'lab-progress' || (response.type === 'error' && response.requestType === 'lab')) {
+    if (
+      response.type === 'lab' ||
+      response.type === 'lab-progress' ||
+      (response.type === 'error' && response.requestType === 'lab')
+    ) {
       this.onLabMessage(response);
       return;
     }
@@ -250,7 +260,12 @@ export class SolverClient {
 
   private labHere(lab: LabPending): void {
     void import('./labRunner').then(
-      (m) => m.runLabRequest(lab.request, (r) => this.onLabMessage(r), () => lab.cancelled),
+      (m) =>
+        m.runLabRequest(
+          lab.request,
+          (r) => this.onLabMessage(r),
+          () => lab.cancelled,
+        ),
       (e: unknown) => lab.reject(new Error(`lab failed to load: ${e instanceof Error ? e.message : String(e)}`)),
     );
   }

@@ -62,7 +62,13 @@ function sweepOptions(branch: Branch, solver: MethodChoice) {
   return { branch, method: solver.method, tol: solver.tol ?? undefined, polish: solver.tol === null };
 }
 
-function branchCycle(l: Linkage, theta2Rad: Float64Array, branch: Branch, coupler: CycleRequest['coupler'], solver: MethodChoice): BranchCycle {
+function branchCycle(
+  l: Linkage,
+  theta2Rad: Float64Array,
+  branch: Branch,
+  coupler: CycleRequest['coupler'],
+  solver: MethodChoice,
+): BranchCycle {
   const r = sweep(l, theta2Rad, sweepOptions(branch, solver));
   const n = theta2Rad.length;
   const px = new Float64Array(n).fill(Number.NaN);
@@ -114,8 +120,12 @@ export function computeCycle(req: CycleRequest): ComputeResult {
   // The other branch only when something shows it; a rocking input needs both (it changes branch at its limits).
   const rocking = !classification.inputRange.full;
   const want = (b: Branch) => b === req.branch || req.otherBranch || rocking;
-  const open = want('open') ? branchCycle(req.linkage, theta2Rad, 'open', req.coupler, req.solver) : skippedCycle(n + 1);
-  const crossed = want('crossed') ? branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler, req.solver) : skippedCycle(n + 1);
+  const open = want('open')
+    ? branchCycle(req.linkage, theta2Rad, 'open', req.coupler, req.solver)
+    : skippedCycle(n + 1);
+  const crossed = want('crossed')
+    ? branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler, req.solver)
+    : skippedCycle(n + 1);
   const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, open, crossed, n) : [];
   const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
   const plot = req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver) : null;
@@ -145,7 +155,15 @@ export function computeCycle(req: CycleRequest): ComputeResult {
   };
   const buffers: ArrayBufferLike[] = [theta2Deg.buffer];
   for (const b of [open, crossed]) {
-    buffers.push(b.theta3.buffer, b.theta4.buffer, b.iterations.buffer, b.residual.buffer, b.statusCodes.buffer, b.px.buffer, b.py.buffer);
+    buffers.push(
+      b.theta3.buffer,
+      b.theta4.buffer,
+      b.iterations.buffer,
+      b.residual.buffer,
+      b.statusCodes.buffer,
+      b.px.buffer,
+      b.py.buffer,
+    );
   }
   for (const c of curves) buffers.push(c.x.buffer, c.y.buffer);
   if (plot) {
@@ -177,7 +195,13 @@ function toleranceOf(opts: NewtonOptions, l: Linkage): number {
   return (opts.tol ?? DEFAULT_TOLERANCE) * (l.r1 + l.r2 + l.r3 + l.r4);
 }
 
-function summary(start: NewtonSummary['start'], guess: Angles, r: NewtonResult, sigma: number, tolerance: number): NewtonSummary {
+function summary(
+  start: NewtonSummary['start'],
+  guess: Angles,
+  r: NewtonResult,
+  sigma: number,
+  tolerance: number,
+): NewtonSummary {
   return {
     start,
     guess,

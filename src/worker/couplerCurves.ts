@@ -1,4 +1,5 @@
 import { couplerPoint, solveClosedForm } from '../solver';
+import { PI, TWO_PI } from '../solver/angles';
 import type { Branch, Classification, Linkage } from '../solver/types';
 import type { BranchCycle, CouplerCurve, CouplerSpec } from './protocol';
 
@@ -29,7 +30,7 @@ export function couplerCurves(
     const lo = width > 2 * LIMIT_INSET_RAD ? iv.lo + LIMIT_INSET_RAD : (iv.lo + iv.hi) / 2;
     const hi = width > 2 * LIMIT_INSET_RAD ? iv.hi - LIMIT_INSET_RAD : lo;
     // Cluster samples toward the limits (cosine spacing): P moves fastest there.
-    const m = Math.max(32, Math.ceil((samplesPerTurn * width) / (2 * Math.PI)));
+    const m = Math.max(32, Math.ceil((samplesPerTurn * width) / TWO_PI));
     const xs: number[] = [];
     const ys: number[] = [];
     const push = (t2: number, branch: Branch): void => {
@@ -41,13 +42,20 @@ export function couplerCurves(
         ys.push(p.y);
       }
     };
-    for (let k = 0; k <= m; k++) push(lo + ((hi - lo) * (1 - Math.cos((Math.PI * k) / m))) / 2, 'open');
-    for (let k = m; k >= 0; k--) push(lo + ((hi - lo) * (1 - Math.cos((Math.PI * k) / m))) / 2, 'crossed');
+    for (let k = 0; k <= m; k++) push(lo + ((hi - lo) * (1 - Math.cos((PI * k) / m))) / 2, 'open');
+    for (let k = m; k >= 0; k--) push(lo + ((hi - lo) * (1 - Math.cos((PI * k) / m))) / 2, 'crossed');
     if (xs.length > 0) {
       xs.push(xs[0]);
       ys.push(ys[0]);
     }
-    curves.push({ x: Float64Array.from(xs), y: Float64Array.from(ys), branch: 'open', rocking: true, loRad: iv.lo, hiRad: iv.hi });
+    curves.push({
+      x: Float64Array.from(xs),
+      y: Float64Array.from(ys),
+      branch: 'open',
+      rocking: true,
+      loRad: iv.lo,
+      hiRad: iv.hi,
+    });
   }
   return curves;
 }

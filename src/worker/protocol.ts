@@ -1,5 +1,13 @@
 import type { LabResult } from '../lab/workPrecision';
-import type { Angles, Branch, Classification, IterationRecord, Linkage, NewtonStatus, SweepMethod } from '../solver/types';
+import type {
+  Angles,
+  Branch,
+  Classification,
+  IterationRecord,
+  Linkage,
+  NewtonStatus,
+  SweepMethod,
+} from '../solver/types';
 
 /** The solver method and NR tolerance the main view uses (chosen in the solver lab); tol null = the method's default. */
 export interface MethodChoice {

@@ -39,7 +39,9 @@ describe('plotIndices', () => {
     expect(plotIndices([1, 2, 3], 10)).toEqual([0, 1, 2]);
   });
   it('thins long series but keeps run ends, gap starts, wraps and the last sample', () => {
-    const y = Array.from({ length: 101 }, (_, i) => (i >= 40 && i <= 52 ? Number.NaN : i === 70 ? 179 : i === 71 ? -179 : i));
+    const y = Array.from({ length: 101 }, (_, i) =>
+      i >= 40 && i <= 52 ? Number.NaN : i === 70 ? 179 : i === 71 ? -179 : i,
+    );
     const idx = plotIndices(y, 10);
     expect(idx.length).toBeLessThan(30);
     for (const must of [0, 39, 40, 53, 70, 71, 100]) expect(idx).toContain(must);

@@ -59,7 +59,13 @@ describe('scoreSweep', () => {
     // Scored against the crossed reference, every point is on the "wrong" branch.
     expect(scoreSweep(r, crossed, open).wrongBranch).toBe(grid.length);
     // A reference that says "cannot assemble" turns each ok point into a false convergence.
-    expect(scoreSweep(r, open.map(() => null), crossed).falseConvergence).toBe(grid.length);
+    expect(
+      scoreSweep(
+        r,
+        open.map(() => null),
+        crossed,
+      ).falseConvergence,
+    ).toBe(grid.length);
     const failed = { ...r, status: r.status.map(() => 'failed' as const) };
     expect(scoreSweep(failed, open, crossed).failures).toBe(grid.length);
   });
@@ -97,7 +103,13 @@ describe('runWorkPrecision', () => {
   });
 
   it('shows the report’s NR jumping branch on a drag link where every project method stays put', async () => {
-    const r = (await runWorkPrecision(DRAG_LINK, { branch: 'open', stepDeg: 2, now, minTimeMs: 1, reference: referencePose }))!;
+    const r = (await runWorkPrecision(DRAG_LINK, {
+      branch: 'open',
+      stepDeg: 2,
+      now,
+      minTimeMs: 1,
+      reference: referencePose,
+    }))!;
     const seed = r.series.find((s) => s.method === 'seed')!.points.find((p) => p.tol === null)!;
     expect(seed.wrongBranch + seed.failures).toBeGreaterThan(0);
     for (const s of r.series.filter((x) => x.method !== 'seed')) {
@@ -109,7 +121,9 @@ describe('runWorkPrecision', () => {
   it('reports the input limits of a triple rocker and never counts a point past them as converged', async () => {
     const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
     const r = (await runWorkPrecision(l, { branch: 'open', stepDeg: 5, now, minTimeMs: 1, reference: referencePose }))!;
-    expect(r.limitsDeg.map((d) => Math.abs(d))).toEqual([135.9513743259, 135.9513743259].map((x) => expect.closeTo(x, 8)));
+    expect(r.limitsDeg.map((d) => Math.abs(d))).toEqual(
+      [135.9513743259, 135.9513743259].map((x) => expect.closeTo(x, 8)),
+    );
     for (const s of r.series.filter((x) => x.method !== 'seed')) {
       for (const p of s.points) expect(p.falseConvergence, `${s.label} ${p.tol}`).toBe(0);
     }
@@ -142,7 +156,13 @@ describe('distanceToNearestLimitDeg', () => {
 describe('nearestLimitDeg', () => {
   it('names the nearest limit and its distance, or null without limits', () => {
     expect(nearestLimitDeg(10, [])).toBeNull();
-    expect(nearestLimitDeg(130, [135.95, -135.95])).toEqual({ distanceDeg: expect.closeTo(5.95, 12), limitDeg: 135.95 });
-    expect(nearestLimitDeg(-170, [135.95, -135.95])).toEqual({ distanceDeg: expect.closeTo(34.05, 12), limitDeg: -135.95 });
+    expect(nearestLimitDeg(130, [135.95, -135.95])).toEqual({
+      distanceDeg: expect.closeTo(5.95, 12),
+      limitDeg: 135.95,
+    });
+    expect(nearestLimitDeg(-170, [135.95, -135.95])).toEqual({
+      distanceDeg: expect.closeTo(34.05, 12),
+      limitDeg: -135.95,
+    });
   });
 });

@@ -7,7 +7,11 @@ describe('scenePose', () => {
   it('places the joints from the angles, with the rocker closing the loop', () => {
     // Hard case 1 at theta2 = 90 deg, open branch: (32.3335306935, 110.7965716607) deg.
     const d = Math.PI / 180;
-    const p = scenePose(L, { theta2: 90 * d, theta3: 32.3335306935 * d, theta4: 110.7965716607 * d, mu: 0 }, { distance: 0, angleRad: 0 });
+    const p = scenePose(
+      L,
+      { theta2: 90 * d, theta3: 32.3335306935 * d, theta4: 110.7965716607 * d, mu: 0 },
+      { distance: 0, angleRad: 0 },
+    );
     if (!p) throw new Error('expected a pose');
     expect(Math.hypot(p.B.x - p.O4.x, p.B.y - p.O4.y)).toBeCloseTo(5, 8);
     expect(p.P).toEqual(p.A);

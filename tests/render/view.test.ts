@@ -15,7 +15,10 @@ describe('fitView', () => {
   it('keeps the bounds inside the view with a margin and y pointing up', () => {
     const v = fitView({ minX: 0, minY: 0, maxX: 10, maxY: 10 }, 400, 200, NO_OFFSET);
     expect(toScreenY(v, 10)).toBeLessThan(toScreenY(v, 0));
-    for (const [x, y] of [[0, 0], [10, 10]]) {
+    for (const [x, y] of [
+      [0, 0],
+      [10, 10],
+    ]) {
       expect(toScreenX(v, x)).toBeGreaterThan(0);
       expect(toScreenX(v, x)).toBeLessThan(400);
       expect(toScreenY(v, y)).toBeGreaterThanOrEqual(200 * 0.08 - 1e-9);

@@ -58,7 +58,9 @@ describe('adaptiveGrid', () => {
   });
 
   it('throws for a bad linkage or range, naming the value', () => {
-    expect(() => adaptiveGrid({ r1: 6, r2: -2, r3: 5, r4: 5 }, { pixels: 10 })).toThrow('r2 must be a positive finite length, got -2');
+    expect(() => adaptiveGrid({ r1: 6, r2: -2, r3: 5, r4: 5 }, { pixels: 10 })).toThrow(
+      'r2 must be a positive finite length, got -2',
+    );
     expect(() => adaptiveGrid(REPORT, { pixels: 10, startRad: 1, endRad: 1 })).toThrow(/endRad/);
   });
 });

@@ -39,7 +39,13 @@ describe('advanceTheta2', () => {
   });
 
   it('jumps to the nearest limit from an unreachable angle', () => {
-    const range = { full: false, intervals: [{ lo: 38.6, hi: 78.6 }, { lo: -78.6, hi: -38.6 }] };
+    const range = {
+      full: false,
+      intervals: [
+        { lo: 38.6, hi: 78.6 },
+        { lo: -78.6, hi: -38.6 },
+      ],
+    };
     const s = advanceTheta2(100, 0, 1, 'open', range);
     expect(s.theta2Deg).toBeCloseTo(78.6, 4);
     const t = advanceTheta2(300, 0, 1, 'open', range);
@@ -47,10 +53,17 @@ describe('advanceTheta2', () => {
   });
 
   it('stays put when the linkage cannot assemble anywhere', () => {
-    expect(advanceTheta2(45, 5, 1, 'open', { full: false, intervals: [] })).toEqual({ theta2Deg: 45, direction: 1, branch: 'open' });
+    expect(advanceTheta2(45, 5, 1, 'open', { full: false, intervals: [] })).toEqual({
+      theta2Deg: 45,
+      direction: 1,
+      branch: 'open',
+    });
   });
 
   it('converts the solver range from radians', () => {
-    expect(rangeToDeg({ full: false, intervals: [{ lo: -Math.PI / 2, hi: Math.PI / 2 }] }).intervals[0]).toEqual({ lo: -90, hi: 90 });
+    expect(rangeToDeg({ full: false, intervals: [{ lo: -Math.PI / 2, hi: Math.PI / 2 }] }).intervals[0]).toEqual({
+      lo: -90,
+      hi: 90,
+    });
   });
 });

@@ -1,36 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_STATE, normalizeTheta2Deg, reducer, wrapDeg180 } from '../../src/state/appState';
-
-describe('normalizeTheta2Deg', () => {
-  it('keeps [0, 360) and wraps the rest', () => {
-    expect(normalizeTheta2Deg(45)).toBe(45);
-    expect(normalizeTheta2Deg(360)).toBe(0);
-    expect(normalizeTheta2Deg(-30)).toBe(330);
-    expect(normalizeTheta2Deg(725)).toBe(5);
-  });
-  it('never returns 360 for a tiny negative angle', () => {
-    expect(normalizeTheta2Deg(-1e-17)).toBeLessThan(360);
-    expect(normalizeTheta2Deg(-1e-17)).toBeGreaterThanOrEqual(0);
-  });
-  it('maps non-finite input to 0', () => {
-    expect(normalizeTheta2Deg(Number.NaN)).toBe(0);
-    expect(normalizeTheta2Deg(Infinity)).toBe(0);
-  });
-});
-
-describe('wrapDeg180', () => {
-  it('wraps to (-180, 180]', () => {
-    expect(wrapDeg180(180)).toBe(180);
-    expect(wrapDeg180(-180)).toBe(180);
-    expect(wrapDeg180(190)).toBe(-170);
-    expect(wrapDeg180(-190)).toBe(170);
-    expect(wrapDeg180(540)).toBe(180);
-    expect(wrapDeg180(12.5)).toBe(12.5);
-  });
-  it('leaves NaN as NaN (a gap, never a number)', () => {
-    expect(wrapDeg180(Number.NaN)).toBeNaN();
-  });
-});
+import { DEFAULT_STATE, reducer } from '../../src/state/appState';
 
 describe('reducer', () => {
   it('starts from the report linkage at 45 degrees on the open branch', () => {

@@ -24,7 +24,9 @@ describe('formatDeg and formatSci', () => {
     expect(formatSci(0)).toBe('0');
   });
   it('formats the input range', () => {
-    expect(formatIntervalsDeg([{ lo: -Math.PI / 2, hi: Math.PI / 2 }], (a, b) => `${a}..${b}`)).toBe('\u221290.00..90.00');
+    expect(formatIntervalsDeg([{ lo: -Math.PI / 2, hi: Math.PI / 2 }], (a, b) => `${a}..${b}`)).toBe(
+      '\u221290.00..90.00',
+    );
   });
 });
 
@@ -32,9 +34,15 @@ describe('file names', () => {
   it('are ASCII and say what the file holds', () => {
     const l = { r1: 6, r2: 2, r3: 5, r4: 5 };
     expect(pngFileName(l, 'open', 45, 'linkage', '2x')).toBe('fourbar_6-2-5-5_open_theta2-45_linkage_2x.png');
-    expect(pngFileName(l, 'crossed', 45, 'theta3', 'print')).toBe('fourbar_6-2-5-5_crossed_theta3-vs-theta2_300dpi.png');
-    expect(pngFileName(l, 'open', 12.3456, 'convergence', 'screen')).toBe('fourbar_6-2-5-5_open_theta2-12.35_nr-convergence_screen.png');
-    expect(csvFileName({ r1: 1e-7, r2: 2.5, r3: 5, r4: 5 }, 'open', 360)).toBe('fourbar_1e-7-2.5-5-5_open_cycle_n360.csv');
+    expect(pngFileName(l, 'crossed', 45, 'theta3', 'print')).toBe(
+      'fourbar_6-2-5-5_crossed_theta3-vs-theta2_300dpi.png',
+    );
+    expect(pngFileName(l, 'open', 12.3456, 'convergence', 'screen')).toBe(
+      'fourbar_6-2-5-5_open_theta2-12.35_nr-convergence_screen.png',
+    );
+    expect(csvFileName({ r1: 1e-7, r2: 2.5, r3: 5, r4: 5 }, 'open', 360)).toBe(
+      'fourbar_1e-7-2.5-5-5_open_cycle_n360.csv',
+    );
     expect(fileNumber(-1.5)).toBe('m1.5');
   });
 });

@@ -5,7 +5,12 @@ import { messagesZhTw } from '../../src/state/messagesZhTw';
 
 function shape(o: unknown): unknown {
   if (typeof o === 'function') return 'fn';
-  if (o && typeof o === 'object') return Object.fromEntries(Object.keys(o).sort().map((k) => [k, shape((o as Record<string, unknown>)[k])]));
+  if (o && typeof o === 'object')
+    return Object.fromEntries(
+      Object.keys(o)
+        .sort()
+        .map((k) => [k, shape((o as Record<string, unknown>)[k])]),
+    );
   return typeof o;
 }
 
@@ -28,7 +33,14 @@ describe('messages', () => {
     expect(messagesEn.fieldLabels.theta2.startsWith('θ2')).toBe(true);
     expect(messagesEn.play).toBe('Play');
     expect(messagesEn.pause).toBe('Pause');
-    for (const k of ['exportLinkage', 'exportTheta3', 'exportTheta4', 'exportBoth', 'exportConvergence', 'exportCsv'] as const) {
+    for (const k of [
+      'exportLinkage',
+      'exportTheta3',
+      'exportTheta4',
+      'exportBoth',
+      'exportConvergence',
+      'exportCsv',
+    ] as const) {
       expect(messagesEn[k].startsWith('Export')).toBe(true);
     }
   });

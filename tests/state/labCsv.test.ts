@@ -6,7 +6,10 @@ import { LAB_CSV_HEADER, labToCsv } from '../../src/state/labCsv';
 
 describe('labToCsv', () => {
   it('writes a header and one parseable row per method and tolerance, nothing NaN', async () => {
-    const r = (await runWorkPrecision({ r1: 6, r2: 2, r3: 5, r4: 5 }, { branch: 'open', stepDeg: 30, now: () => performance.now(), minTimeMs: 0, reference: referencePose }))!;
+    const r = (await runWorkPrecision(
+      { r1: 6, r2: 2, r3: 5, r4: 5 },
+      { branch: 'open', stepDeg: 30, now: () => performance.now(), minTimeMs: 0, reference: referencePose },
+    ))!;
     const rows = csvParseRows(labToCsv(r));
     expect(rows[0]).toEqual([...LAB_CSV_HEADER]);
     const n = r.series.reduce((k, s) => k + s.points.length, 0);

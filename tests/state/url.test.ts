@@ -75,8 +75,10 @@ describe('serializeState and parseUrl', () => {
 
   it('ignores each bad parameter with a warning and keeps the default', () => {
     const warnings: string[] = [];
-    const r = parseUrl('?r1=abc&r2=-1&r3=0&r4=1e308&t2=NaN&br=sideways&n=7&lang=fr&spd=99&z=0&grid=maybe&bogus=1', DEFAULT_STATE, (m) =>
-      warnings.push(m),
+    const r = parseUrl(
+      '?r1=abc&r2=-1&r3=0&r4=1e308&t2=NaN&br=sideways&n=7&lang=fr&spd=99&z=0&grid=maybe&bogus=1',
+      DEFAULT_STATE,
+      (m) => warnings.push(m),
     );
     expect(r.state).toEqual(DEFAULT_STATE);
     expect(warnings).toHaveLength(12);

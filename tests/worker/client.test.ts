@@ -25,7 +25,16 @@ class FakeWorker implements WorkerLike {
 }
 
 const SOLVER = { method: 'newton' as const, tol: null };
-const point = (theta2Rad: number) => ({ linkage: L, branch: 'open' as const, theta2Rad, stepRad: Math.PI / 180, coupler: C, solver: SOLVER, ghost: true, newton: true });
+const point = (theta2Rad: number) => ({
+  linkage: L,
+  branch: 'open' as const,
+  theta2Rad,
+  stepRad: Math.PI / 180,
+  coupler: C,
+  solver: SOLVER,
+  ghost: true,
+  newton: true,
+});
 const CYCLE_NEEDS = { solver: SOLVER, branch: 'open' as const, otherBranch: true, curves: true, plotPixels: 0 };
 
 describe('SolverClient', () => {
