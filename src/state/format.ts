@@ -50,3 +50,9 @@ export function fileNumber(x: number): string {
       : trimZeros(x.toExponential(4)).replace('e+', 'e');
   return s.replace(/^-/, 'm');
 }
+
+/** Shortens text to at most maxChars characters (default 24; code points, not UTF-16 units), ending in '…' when cut. */
+export function truncateText(s: string, maxChars = 24): string {
+  const chars = Array.from(s);
+  return chars.length <= maxChars ? s : `${chars.slice(0, Math.max(1, maxChars - 1)).join('')}…`;
+}

@@ -27,6 +27,10 @@ export const messagesEn: Messages = {
     couplerDistance: 'P distance from A',
     couplerAngle: 'P angle from AB (°)',
     speed: 'Speed (°/frame)',
+    omega2: 'ω2 input angular velocity',
+    alpha2: 'α2 input angular acceleration (rad/s²)',
+    muBandLo: 'μ band, lower edge (°)',
+    muBandHi: 'μ band, upper edge (°)',
   },
   sliderSuffix: 'slider',
   fieldShortNames: {
@@ -38,6 +42,10 @@ export const messagesEn: Messages = {
     couplerDistance: 'P distance',
     couplerAngle: 'P angle',
     speed: 'Speed',
+    omega2: 'ω2',
+    alpha2: 'α2',
+    muBandLo: 'μ lower edge',
+    muBandHi: 'μ upper edge',
   },
   fieldError: (e, f) => {
     const name = messagesEn.fieldShortNames[e.field];
