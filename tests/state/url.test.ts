@@ -385,6 +385,30 @@ describe('parseUrl range checks', () => {
   });
 });
 
+describe('parseUrl meanings', () => {
+  it('reads each word as the state it names', () => {
+    const cases: Array<[string, Partial<AppState>]> = [
+      ['br=crossed', { branch: 'crossed' }],
+      ['dir=cw', { direction: -1 }],
+      ['dir=ccw', { direction: 1 }],
+      ['nr=cold', { nrStart: 'cold' }],
+      ['nr=cont', { nrStart: 'continuation' }],
+      ['plots=together', { plotLayout: 'together' }],
+      ['page=lab', { page: 'lab' }],
+      ['lang=zh-TW', { locale: 'zh-TW' }],
+      ['tol=default', { tol: null }],
+      [
+        'grid=0&ang=off&ghost=no&trace=false&play=yes',
+        { showGrid: false, showAngles: false, showGhost: false, showTrace: false, playing: true },
+      ],
+      ['m=seed', { method: 'seed' }],
+    ];
+    for (const [q, expected] of cases) expect(parseUrl(q, DEFAULT_STATE, quiet).state, q).toMatchObject(expected);
+    const back = new URLSearchParams(serializeState({ ...DEFAULT_STATE, direction: -1, nrStart: 'cold', page: 'lab' }));
+    expect([back.get('dir'), back.get('nr'), back.get('page')]).toEqual(['cw', 'cold', 'lab']);
+  });
+});
+
 describe('parseUrl ignored parameters', () => {
   it('lists each bad or unknown parameter with its raw value, in URL order, and warns once for each', () => {
     const warnings: string[] = [];
