@@ -13,7 +13,9 @@ describe('ignoredNoticeText', () => {
     expect(ignoredNoticeText(ignored, messagesEn)).toBe(
       'This link has a value the simulator cannot use, so the default is shown instead: r3 = “abc”.',
     );
-    expect(ignoredNoticeText(ignored, messagesZhTw)).toBe('此連結有一個模擬器無法使用的值，已改用預設值：r3 =「abc」。');
+    expect(ignoredNoticeText(ignored, messagesZhTw)).toBe(
+      '此連結有一個模擬器無法使用的值，已改用預設值：r3 =「abc」。',
+    );
   });
 
   it('counts several and lists at most four, then how many more', () => {
