@@ -2,7 +2,9 @@ import { memo } from 'react';
 import type { Branch } from '../solver/types';
 import type { NrStart } from '../state/appState';
 import { radToDeg, radToDeg180, radToDeg360 } from '../solver/angles';
-import { formatDeg, formatIntervalsDeg, formatNumber, formatSci } from '../state/format';
+import { formatDeg, formatSci } from '../state/format';
+import { grashofSumsText } from '../state/grashofText';
+import { formatInputRange } from '../state/inputRange';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { useMessages } from './MessagesContext';
 
@@ -17,17 +19,8 @@ export interface AnalysisPanelProps {
 function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps) {
   const t = useMessages();
   const c = cycle?.classification;
-  const sl = c ? c.S + c.L : Number.NaN;
-  const pq = c ? c.P + c.Q : Number.NaN;
-  const relation = !c ? '' : c.type === 'change-point' ? '=' : sl < pq ? '<' : '>';
   const verdict = !c ? '—' : c.type === 'change-point' ? t.grashofChangePoint : c.grashof ? t.grashofYes : t.grashofNo;
-  const range = !c
-    ? '—'
-    : c.inputRange.full
-      ? t.fullTurn
-      : c.inputRange.intervals.length === 0
-        ? t.noRange
-        : formatIntervalsDeg(c.inputRange.intervals, t.rangeInterval);
+  const range = c ? formatInputRange(c.inputRange, t) : '—';
   const nr = point ? (nrStart === 'continuation' ? (point.continuation ?? point.cold) : point.cold) : null;
   const pose = point?.pose ?? null;
   const theta2 = point ? formatDeg(radToDeg360(point.theta2Rad), 2) : '—';
@@ -41,7 +34,7 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
           <dt>{t.grashofCheck}</dt>
           <dd>
             <span className="mono" data-testid="grashof-sums">
-              S + L = {formatNumber(sl)} {relation} P + Q = {formatNumber(pq)}
+              {c ? grashofSumsText(c) : 'S + L = — P + Q = —'}
             </span>
             <span className={`badge ${c?.grashof ? 'badge-ok' : 'badge-warn'}`}>{verdict}</span>
           </dd>

@@ -2,7 +2,8 @@ import { memo, useEffect, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Linkage } from '../solver/types';
 import type { Action, AppState, Direction } from '../state/appState';
-import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN } from '../state/appState';
+import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../state/appState';
+import { THETA2_DECIMALS } from '../state/format';
 import type { PresetId } from '../state/presets';
 import { PRESETS, getPreset, matchPreset } from '../state/presets';
 import { lengthSliderRange, needsNewRange } from '../state/sliderRange';
@@ -87,7 +88,7 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             min={range.min}
             max={range.max}
             step={range.step}
-            disabled={isLocked(f)}
+            locked={isLocked(f)}
             onCommit={(v) => dispatch({ type: 'setLength', field: f, value: v })}
           />
         ))}
@@ -99,18 +100,19 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
         </h2>
         <NumberControl
           field="theta2"
-          value={Math.round(state.theta2Deg * 1e6) / 1e6}
+          value={state.theta2Deg}
+          decimals={THETA2_DECIMALS}
           min={0}
           max={360}
           step={0.5}
           unit="°"
-          disabled={isLocked('theta2')}
+          locked={isLocked('theta2')}
           onCommit={(v) => dispatch({ type: 'setTheta2', deg: v })}
         />
         <Segmented
           legend={t.branch}
           value={state.branch}
-          disabled={isLocked('branch')}
+          locked={isLocked('branch')}
           options={[
             { value: 'open', label: t.branchOpen },
             { value: 'crossed', label: t.branchCrossed },
@@ -136,8 +138,9 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
           </button>
           <button
             type="button"
-            className="btn btn-primary play-btn"
+            className={`btn btn-primary play-btn${isLocked('play') ? ' is-locked' : ''}`}
             disabled={isLocked('play')}
+            title={isLocked('play') ? t.locked : undefined}
             onClick={() => dispatch({ type: 'setPlaying', playing: !state.playing })}
           >
             <Icon name={state.playing ? 'pause' : 'play'} size={14} />
@@ -161,7 +164,7 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
               value={state.speedDegPerFrame}
               min={SPEED_MIN}
               max={SPEED_MAX}
-              step={0.5}
+              step={SPEED_STEP}
               onCommit={(v) => dispatch({ type: 'setSpeed', degPerFrame: v })}
             />
             <Segmented<'1' | '-1'>
@@ -189,7 +192,7 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             min={0}
             max={range.max}
             step={range.step}
-            disabled={isLocked('coupler')}
+            locked={isLocked('coupler')}
             onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { distance: v } })}
           />
           <NumberControl
@@ -199,7 +202,7 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
             max={180}
             step={1}
             unit="°"
-            disabled={isLocked('coupler')}
+            locked={isLocked('coupler')}
             onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { angleDeg: v } })}
           />
         </section>

@@ -13,6 +13,7 @@ import { labFileName } from '../state/fileNames';
 import { formatDeg, formatSci } from '../state/format';
 import { HARD_CASES } from '../state/hardCases';
 import { labToCsv } from '../state/labCsv';
+import { labProgressStatus } from '../state/labStage';
 import type { SolverClient } from '../worker/client';
 import { downloadPng, downloadText } from './exporters';
 import { labPng } from './labExport';
@@ -132,7 +133,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
       ? t.labNearestLimit(formatDeg(nearest.distanceDeg, 4), formatDeg(nearest.limitDeg, 4))
       : t.labNoLimit;
 
-  const percent = lab.progress ? String(Math.round(lab.progress.fraction * 100)) : '0';
+  const status = labProgressStatus({ ...lab, hasResult: result !== null }, t);
   const chosenSeries = result?.series.find((s) => s.method === state.method);
   const chosenPoint = chosenSeries?.points.find((p) => p.tol === state.tol);
 
@@ -160,17 +161,9 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
             </button>
           )}
           <div className="lab-progress">
-            <progress
-              max={100}
-              value={lab.running ? Number(percent) : result ? 100 : 0}
-              aria-label={t.labProgress(lab.progress?.stage ?? '', percent)}
-            />
+            <progress max={100} value={status.percent} aria-label={t.labTitle} aria-valuetext={status.text} />
             <span className="status-line" role="status" aria-live="polite">
-              {lab.running
-                ? t.labProgress(lab.progress?.stage ?? '', percent)
-                : lab.cancelled
-                  ? t.labCancelled
-                  : (lab.error ?? '')}
+              {lab.running ? status.text : lab.cancelled ? t.labCancelled : (lab.error ?? '')}
             </span>
           </div>
         </div>

@@ -1,7 +1,7 @@
 import { useEffect, useId, useRef, useState } from 'react';
 import type { FieldName } from '../state/validate';
 import { parseField } from '../state/validate';
-import { formatNumber } from '../state/format';
+import { fieldText, formatNumber, truncateText } from '../state/format';
 import { useMessages } from './MessagesContext';
 
 /** Props of NumberControl: the field, its value (field units) and slider range; onCommit gets only valid values. */
@@ -13,18 +13,49 @@ export interface NumberControlProps {
   step: number;
   onCommit: (value: number) => void;
   disabled?: boolean;
+  /** Locked by an embed: shown read-only with a lock mark (class is-locked), the slider disabled. */
+  locked?: boolean;
+  /** Decimals the field shows (trailing zeros dropped); absent: the exact value. */
+  decimals?: number;
   /** Unit text after the field, e.g. '°'. */
   unit?: string;
 }
 
+/** Most characters of a rejected text that the inline message echoes. */
+export const ECHO_MAX_CHARS = 24;
+
+function LockMark() {
+  return (
+    <svg className="lock-mark" width="11" height="11" viewBox="0 0 16 16" aria-hidden="true" focusable="false">
+      <path
+        d="M4.5 7V5a3.5 3.5 0 0 1 7 0v2h1a1 1 0 0 1 1 1v6a1 1 0 0 1-1 1h-9a1 1 0 0 1-1-1V8a1 1 0 0 1 1-1zm1.8 0h3.4V5a1.7 1.7 0 0 0-3.4 0z"
+        fill="currentColor"
+      />
+    </svg>
+  );
+}
+
 /**
  * A slider and a numeric field for one value. Typing a bad value (empty, text, zero, negative, too large)
- * shows an inline message naming the field and the value and keeps the last valid one; Escape restores it.
+ * shows an inline message naming the field and the value (cut to ECHO_MAX_CHARS) and keeps the last valid
+ * one; Escape restores it. The field shows the value to `decimals` when given, so Play shows 255.05, not 255.045227.
  */
-export function NumberControl({ field, value, min, max, step, onCommit, disabled = false, unit }: NumberControlProps) {
+export function NumberControl({
+  field,
+  value,
+  min,
+  max,
+  step,
+  onCommit,
+  disabled = false,
+  locked = false,
+  decimals,
+  unit,
+}: NumberControlProps) {
   const t = useMessages();
   const id = useId();
-  const [draft, setDraft] = useState(String(value));
+  const shown = fieldText(value, decimals);
+  const [draft, setDraft] = useState(shown);
   const [error, setError] = useState<string | null>(null);
   const focused = useRef(false);
   const label = t.fieldLabels[field];
@@ -32,10 +63,10 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
   useEffect(() => {
     // Follow outside changes (slider, preset, animation) unless the person is typing a different value.
     if (!focused.current) {
-      setDraft(String(value));
+      setDraft(shown);
       setError(null);
     }
-  }, [value]);
+  }, [shown]);
 
   const onText = (text: string) => {
     setDraft(text);
@@ -46,18 +77,23 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
     } else {
       const e = r.error;
       setError(
-        `${t.fieldError(e, { raw: text.trim() === '' ? '' : text.trim(), min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
+        `${t.fieldError(e, { raw: truncateText(text.trim(), ECHO_MAX_CHARS), min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
       );
     }
   };
 
   const sliderValue = Math.min(max, Math.max(min, value));
   return (
-    <div className={`numctl${error ? ' numctl-invalid' : ''}`}>
+    <div className={`numctl${error ? ' numctl-invalid' : ''}${locked ? ' is-locked' : ''}`}>
       <div className="numctl-row">
-        <label className="numctl-label" htmlFor={`${id}-field`}>
+        <label className="numctl-label" htmlFor={`${id}-field`} title={locked ? `${label} (${t.locked})` : undefined}>
           {label}
-          {disabled ? <span className="locked"> ({t.locked})</span> : null}
+          {locked ? (
+            <>
+              <span className="sr-only"> ({t.locked})</span>
+              <LockMark />
+            </>
+          ) : null}
         </label>
         <span className="numctl-field-wrap">
           <input
@@ -69,6 +105,9 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
             spellCheck={false}
             value={draft}
             disabled={disabled}
+            readOnly={locked}
+            aria-readonly={locked ? true : undefined}
+            aria-disabled={locked ? true : undefined}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${id}-error` : undefined}
             onFocus={() => {
@@ -76,12 +115,14 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
             }}
             onBlur={() => {
               focused.current = false;
-              if (!error) setDraft(String(value));
+              if (!error) setDraft(shown);
             }}
-            onChange={(e) => onText(e.target.value)}
+            onChange={(e) => {
+              if (!locked) onText(e.target.value);
+            }}
             onKeyDown={(e) => {
               if (e.key === 'Escape') {
-                setDraft(String(value));
+                setDraft(shown);
                 setError(null);
               }
             }}
@@ -101,7 +142,7 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
         max={max}
         step={step}
         value={sliderValue}
-        disabled={disabled}
+        disabled={disabled || locked}
         onChange={(e) => {
           const v = Number(e.target.value);
           if (Number.isFinite(v)) {

@@ -1,4 +1,5 @@
 import { useId } from 'react';
+import { useMessages } from './MessagesContext';
 
 /** One choice of a Segmented control. */
 export interface SegmentedOption<T extends string> {
@@ -13,6 +14,8 @@ export interface SegmentedProps<T extends string> {
   options: readonly SegmentedOption<T>[];
   onChange: (value: T) => void;
   disabled?: boolean;
+  /** Locked by an embed: disabled, marked with class is-locked and '(locked)' after the legend. */
+  locked?: boolean;
   /** Hide the legend visually (it stays the group's accessible name). */
   hideLegend?: boolean;
 }
@@ -24,12 +27,17 @@ export function Segmented<T extends string>({
   options,
   onChange,
   disabled,
+  locked,
   hideLegend,
 }: SegmentedProps<T>) {
   const name = useId();
+  const t = useMessages();
   return (
-    <fieldset className="segmented" disabled={disabled}>
-      <legend className={hideLegend ? 'sr-only' : 'segmented-legend'}>{legend}</legend>
+    <fieldset className={`segmented${locked ? ' is-locked' : ''}`} disabled={disabled || locked}>
+      <legend className={hideLegend ? 'sr-only' : 'segmented-legend'}>
+        {legend}
+        {locked ? <span className="locked"> ({t.locked})</span> : null}
+      </legend>
       <div className="segmented-row">
         {options.map((o) => (
           <label key={o.value} className={`segmented-item${o.value === value ? ' is-on' : ''}`}>

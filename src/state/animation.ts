@@ -1,6 +1,6 @@
 import { radToDeg } from '../solver/angles';
 import type { AngleInterval, Branch } from '../solver/types';
-import type { Direction } from './appState';
+import type { AppState, Direction } from './appState';
 import { NOMINAL_FPS, normalizeTheta2Deg } from './appState';
 
 /** The next animation state: input angle in degrees [0, 360), direction and branch. */
@@ -25,6 +25,20 @@ export function rangeToDeg(range: { full: boolean; intervals: readonly AngleInte
     full: range.full,
     intervals: range.intervals.map((iv) => ({ lo: radToDeg(iv.lo), hi: radToDeg(iv.hi) })),
   };
+}
+
+/**
+ * Whether the input is a full-turn crank: it turns through every angle (Grashof with the input shortest or
+ * the ground shortest, and every change point whose classification says so: parallelograms, kites on their
+ * crank). The only place the UI decides it; the solver's classification is the source (inputRange.full).
+ */
+export function inputTurnsFully(range: { full: boolean }): boolean {
+  return range.full;
+}
+
+/** Whether the animation rocks: the input is limited and can move at all (a linkage that never assembles stays). */
+export function isRocking(range: { full: boolean; intervals: readonly unknown[] }): boolean {
+  return !inputTurnsFully(range) && range.intervals.length > 0;
 }
 
 /** Degrees the input turns in dtSeconds at speedDegPerFrame (time based: frames are nominal 60 FPS ones). */
@@ -112,4 +126,25 @@ export function advanceTheta2(
   }
   next = Math.min(current.hi, Math.max(current.lo, next));
   return { theta2Deg: normalizeTheta2Deg(next), direction: dir, branch: br };
+}
+
+/** The state a Step button reads: input angle, samples per turn (one step is 360 / samples degrees), direction, branch. */
+export type StepState = Pick<AppState, 'theta2Deg' | 'samples' | 'direction' | 'branch'>;
+
+/**
+ * One press of Step forward (sign +1) or Step back (-1): 360 / samples degrees along the animation's direction
+ * (Clockwise steps forward to smaller angles), or against it. A rocking input reverses at a limit and switches
+ * branch as in Play, and the direction follows, so Step back undoes Step forward everywhere. A null range (the
+ * cycle is not solved yet) steps as a full turn.
+ */
+export function stepTheta2(state: StepState, range: InputRangeDeg | null, sign: 1 | -1): AnimationStep {
+  const moving = (sign * state.direction) as Direction;
+  const next = advanceTheta2(
+    state.theta2Deg,
+    360 / state.samples,
+    moving,
+    state.branch,
+    range ?? { full: true, intervals: [] },
+  );
+  return { theta2Deg: next.theta2Deg, branch: next.branch, direction: (sign * next.direction) as Direction };
 }

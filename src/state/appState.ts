@@ -57,6 +57,14 @@ export interface AppState {
   page: Page;
   /** Input step of the solver lab's cycle, degrees. */
   labStepDeg: number;
+  /** Input crank angular velocity for the rate analysis, rad/s, counter-clockwise positive (default 10). */
+  omega2RadPerS: number;
+  /** Input crank angular acceleration for the rate analysis, rad/s², counter-clockwise positive (default 0). */
+  alpha2RadPerS2: number;
+  /** Lower edge of the usable transmission-angle band, degrees in [0, 180), below muBandHiDeg (default 40). */
+  muBandLoDeg: number;
+  /** Upper edge of the usable transmission-angle band, degrees in (0, 180], above muBandLoDeg (default 140). */
+  muBandHiDeg: number;
 }
 
 /** Nominal frame rate (frames per second) that converts degrees per frame into degrees per second. */
@@ -65,6 +73,8 @@ export const NOMINAL_FPS = 60;
 /** Slowest and fastest animation speeds, degrees per frame. */
 export const SPEED_MIN = 0.5;
 export const SPEED_MAX = 10;
+/** Step of the speed slider, degrees per frame: fine enough that typed speeds such as 0.75 sit on it. */
+export const SPEED_STEP = 0.05;
 
 /** Smallest and largest sample counts per cycle accepted from the UI or the URL. */
 export const SAMPLES_MIN = 12;
@@ -73,7 +83,10 @@ export const SAMPLES_MAX = 36000;
 /** Sample counts offered in the settings (intervals per cycle). */
 export const SAMPLE_CHOICES: readonly number[] = [360, 720, 1800, 3600];
 
-/** The report's linkage: r1 = 6, r2 = 2, r3 = 5, r4 = 5, theta2 = 45 deg, open branch, P at 2.5 and 30 deg. */
+/**
+ * The report's linkage: r1 = 6, r2 = 2, r3 = 5, r4 = 5, theta2 = 45 deg, open branch, P at 2.5 and 30 deg;
+ * input motion 10 rad/s without acceleration; transmission band 40 to 140 deg.
+ */
 export const DEFAULT_STATE: AppState = {
   linkage: { r1: 6, r2: 2, r3: 5, r4: 5 },
   theta2Deg: 45,
@@ -95,6 +108,10 @@ export const DEFAULT_STATE: AppState = {
   tol: null,
   page: 'simulator',
   labStepDeg: 1,
+  omega2RadPerS: 10,
+  alpha2RadPerS2: 0,
+  muBandLoDeg: 40,
+  muBandHiDeg: 140,
 };
 
 /** Wraps degrees into [0, 360); non-finite input gives 0. Kept as the state's name for the units module's wrap. */
@@ -127,6 +144,8 @@ export type Action =
   | { type: 'setMethod'; method: SweepMethod; tol: number | null }
   | { type: 'setPage'; page: Page }
   | { type: 'setLabStep'; stepDeg: number }
+  | { type: 'setInputMotion'; omega2RadPerS?: number; alpha2RadPerS2?: number }
+  | { type: 'setMuBand'; loDeg: number; hiDeg: number }
   | { type: 'replace'; state: AppState };
 
 /** The app's reducer: pure, returns the same object when nothing changes. Assumes values were validated at the edge. */
@@ -187,6 +206,17 @@ export function reducer(state: AppState, action: Action): AppState {
       return action.page === state.page ? state : { ...state, page: action.page, playing: false };
     case 'setLabStep':
       return action.stepDeg === state.labStepDeg ? state : { ...state, labStepDeg: action.stepDeg };
+    case 'setInputMotion': {
+      const omega2RadPerS = action.omega2RadPerS ?? state.omega2RadPerS;
+      const alpha2RadPerS2 = action.alpha2RadPerS2 ?? state.alpha2RadPerS2;
+      if (omega2RadPerS === state.omega2RadPerS && alpha2RadPerS2 === state.alpha2RadPerS2) return state;
+      return { ...state, omega2RadPerS, alpha2RadPerS2 };
+    }
+    case 'setMuBand':
+      // A band whose edges cross is refused (the state keeps lo < hi); the controls validate before dispatching.
+      if (!(action.loDeg < action.hiDeg)) return state;
+      if (action.loDeg === state.muBandLoDeg && action.hiDeg === state.muBandHiDeg) return state;
+      return { ...state, muBandLoDeg: action.loDeg, muBandHiDeg: action.hiDeg };
     case 'replace':
       return action.state;
   }

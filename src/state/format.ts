@@ -3,9 +3,19 @@ import type { AngleInterval } from '../solver/types';
 
 const MINUS = '\u2212';
 
+/** Decimals of θ2 wherever it is shown: the field, the analysis panel, the canvas description. */
+export const THETA2_DECIMALS = 2;
+
 function trimZeros(s: string): string {
   // "1.2300" -> "1.23", "2.000e-7" -> "2e-7"; leaves integers alone.
   return s.replace(/(\.\d*?)0+(?=$|e)/, '$1').replace(/\.(?=$|e)/, '');
+}
+
+/** Text of a field's value: exact (String) without decimals, else rounded to that many decimals with trailing zeros dropped. */
+export function fieldText(x: number, decimals?: number): string {
+  if (decimals === undefined) return String(x);
+  const s = trimZeros(x.toFixed(decimals));
+  return s === '-0' ? '0' : s;
 }
 
 /** Formats a number for display with sig significant digits (default 6), exponent form outside [1e-4, 1e6); '—' when not finite. */
@@ -32,7 +42,10 @@ export function formatSci(x: number, digits = 2): string {
   return x.toExponential(digits).replace('e+', 'e').replace(/-/g, MINUS);
 }
 
-/** Formats the input's reachable intervals (radians) as degree ranges joined by a separator. */
+/**
+ * Formats the input's reachable intervals (radians) as degree ranges in (−180°, 180°] joined by a separator.
+ * @deprecated The θ2 slider runs 0°–360°: use formatInputRange (state/inputRange.ts), which says it that way.
+ */
 export function formatIntervalsDeg(
   intervals: readonly AngleInterval[],
   interval: (lo: string, hi: string) => string,
@@ -49,4 +62,10 @@ export function fileNumber(x: number): string {
       ? trimZeros(x.toPrecision(6))
       : trimZeros(x.toExponential(4)).replace('e+', 'e');
   return s.replace(/^-/, 'm');
+}
+
+/** Shortens text to at most maxChars characters (default 24; code points, not UTF-16 units), ending in '…' when cut. */
+export function truncateText(s: string, maxChars = 24): string {
+  const chars = Array.from(s);
+  return chars.length <= maxChars ? s : `${chars.slice(0, Math.max(1, maxChars - 1)).join('')}…`;
 }

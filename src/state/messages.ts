@@ -63,6 +63,8 @@ export interface Messages {
   fullTurn: string;
   noRange: string;
   rangeInterval: (lo: string, hi: string) => string;
+  /** An input range that passes through 0°, in the slider's [0, 360) convention: from lo up through 360°/0° to hi. */
+  rangeWrapped: (lo: string, hi: string) => string;
   atTheta2: (theta2: string) => string;
   nrIterations: string;
   residual: string;
@@ -131,6 +133,15 @@ export interface Messages {
   errorTitle: string;
   errorBody: string;
   errorReset: string;
+  /** Notice for a shared link with values that were ignored; list is already joined, count is how many. */
+  urlIgnored: (list: string, count: number) => string;
+  /** One ignored parameter in that list (key and value already shortened). */
+  urlIgnoredParam: (key: string, value: string) => string;
+  /** Separator between ignored parameters in the list. */
+  urlIgnoredSeparator: string;
+  /** Tail of a long list: how many more were ignored. */
+  urlIgnoredMore: (count: string) => string;
+  urlNoticeDismiss: string;
 
   /** Short names of the hard cases (lab presets). */
   hardCaseNames: Record<HardCaseId, string>;
@@ -146,6 +157,16 @@ export interface Messages {
   /** Progress line; percent is a formatted number without the % sign. */
   labProgress: (stage: string, percent: string) => string;
   labCancelled: string;
+  /** Stages of the lab's study as the progress line names them (see state/labStage.ts). */
+  labStageReference: string;
+  labStageSolve: (method: string, tol: string | null) => string;
+  labStageTiming: (pass: string, passes: string, what: string) => string;
+  labStageDone: string;
+  /** Short states of the lab's progress bar (its accessible value text). */
+  labStatusIdle: string;
+  labStatusDone: string;
+  labStatusCancelled: string;
+  labStatusFailed: string;
   labStep: string;
   labMethod: string;
   labTolerance: string;

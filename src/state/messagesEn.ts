@@ -27,6 +27,10 @@ export const messagesEn: Messages = {
     couplerDistance: 'P distance from A',
     couplerAngle: 'P angle from AB (°)',
     speed: 'Speed (°/frame)',
+    omega2: 'ω2 input angular velocity',
+    alpha2: 'α2 input angular acceleration (rad/s²)',
+    muBandLo: 'μ band, lower edge (°)',
+    muBandHi: 'μ band, upper edge (°)',
   },
   sliderSuffix: 'slider',
   fieldShortNames: {
@@ -38,6 +42,10 @@ export const messagesEn: Messages = {
     couplerDistance: 'P distance',
     couplerAngle: 'P angle',
     speed: 'Speed',
+    omega2: 'ω2',
+    alpha2: 'α2',
+    muBandLo: 'μ lower edge',
+    muBandHi: 'μ upper edge',
   },
   fieldError: (e, f) => {
     const name = messagesEn.fieldShortNames[e.field];
@@ -108,6 +116,7 @@ export const messagesEn: Messages = {
   fullTurn: 'full turn',
   noRange: 'none',
   rangeInterval: (lo, hi) => `${lo}° to ${hi}°`,
+  rangeWrapped: (lo, hi) => `${lo}° through 0° to ${hi}°`,
   atTheta2: (t) => `At θ2 = ${t}°`,
   nrIterations: 'NR iterations',
   residual: 'Residual |f|',
@@ -177,6 +186,14 @@ export const messagesEn: Messages = {
   errorTitle: 'Something went wrong',
   errorBody: 'The simulator hit an unexpected error. Your last settings are in the address bar.',
   errorReset: 'Reset to the default linkage',
+  urlIgnored: (list, count) =>
+    count === 1
+      ? `This link has a value the simulator cannot use, so the default is shown instead: ${list}.`
+      : `This link has ${count} values the simulator cannot use, so the defaults are shown instead: ${list}.`,
+  urlIgnoredParam: (key, value) => `${key} = “${value}”`,
+  urlIgnoredSeparator: ', ',
+  urlIgnoredMore: (count) => `and ${count} more`,
+  urlNoticeDismiss: 'Dismiss',
 
   hardCaseNames: {
     reportCase: 'Report’s crank-rocker',
@@ -261,6 +278,14 @@ export const messagesEn: Messages = {
   labCancel: 'Cancel',
   labProgress: (stage, percent) => `Running: ${stage} (${percent}%)`,
   labCancelled: 'Cancelled. The last finished result stays on screen.',
+  labStageReference: '40-digit reference solution',
+  labStageSolve: (method, tol) => (tol === null ? method : `${method}, tolerance ${tol}`),
+  labStageTiming: (pass, passes, what) => `timing pass ${pass} of ${passes}: ${what}`,
+  labStageDone: 'finishing',
+  labStatusIdle: 'Not run yet',
+  labStatusDone: 'Finished (100%)',
+  labStatusCancelled: 'Cancelled',
+  labStatusFailed: 'Failed',
   labStep: 'Input step (°)',
   labMethod: 'Method',
   labTolerance: 'Tolerance',

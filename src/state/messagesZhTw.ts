@@ -27,6 +27,10 @@ export const messagesZhTw: Messages = {
     couplerDistance: 'P 與 A 的距離',
     couplerAngle: 'P 相對 AB 的角度（°）',
     speed: '速度（°/幀）',
+    omega2: 'ω2 輸入角速度',
+    alpha2: 'α2 輸入角加速度（rad/s²）',
+    muBandLo: 'μ 傳動角範圍下限（°）',
+    muBandHi: 'μ 傳動角範圍上限（°）',
   },
   sliderSuffix: '滑桿',
   fieldShortNames: {
@@ -38,6 +42,10 @@ export const messagesZhTw: Messages = {
     couplerDistance: 'P 距離',
     couplerAngle: 'P 角度',
     speed: '速度',
+    omega2: 'ω2',
+    alpha2: 'α2',
+    muBandLo: 'μ 下限',
+    muBandHi: 'μ 上限',
   },
   fieldError: (e, f) => {
     const name = messagesZhTw.fieldShortNames[e.field];
@@ -108,6 +116,7 @@ export const messagesZhTw: Messages = {
   fullTurn: '整圈',
   noRange: '無',
   rangeInterval: (lo, hi) => `${lo}° 至 ${hi}°`,
+  rangeWrapped: (lo, hi) => `${lo}° 經 0° 至 ${hi}°`,
   atTheta2: (t) => `θ2 = ${t}° 時`,
   nrIterations: 'NR 迭代次數',
   residual: '殘差 |f|',
@@ -177,6 +186,14 @@ export const messagesZhTw: Messages = {
   errorTitle: '發生錯誤',
   errorBody: '模擬器遇到非預期的錯誤。最後的設定保留在網址列中。',
   errorReset: '重設為預設機構',
+  urlIgnored: (list, count) =>
+    count === 1
+      ? `此連結有一個模擬器無法使用的值，已改用預設值：${list}。`
+      : `此連結有 ${count} 個模擬器無法使用的值，已改用預設值：${list}。`,
+  urlIgnoredParam: (key, value) => `${key} =「${value}」`,
+  urlIgnoredSeparator: '、',
+  urlIgnoredMore: (count) => `另有 ${count} 個`,
+  urlNoticeDismiss: '關閉',
 
   hardCaseNames: {
     reportCase: '報告的曲柄搖桿',
@@ -247,6 +264,14 @@ export const messagesZhTw: Messages = {
   labCancel: '取消',
   labProgress: (stage, percent) => `執行中：${stage}（${percent}%）`,
   labCancelled: '已取消。畫面上保留最後一次完成的結果。',
+  labStageReference: '40 位數參考解',
+  labStageSolve: (method, tol) => (tol === null ? method : `${method}，容許誤差 ${tol}`),
+  labStageTiming: (pass, passes, what) => `第 ${pass}/${passes} 輪計時：${what}`,
+  labStageDone: '收尾中',
+  labStatusIdle: '尚未執行',
+  labStatusDone: '已完成（100%）',
+  labStatusCancelled: '已取消',
+  labStatusFailed: '失敗',
   labStep: '輸入角步距（°）',
   labMethod: '方法',
   labTolerance: '容許誤差',

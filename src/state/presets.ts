@@ -94,21 +94,22 @@ export function getPreset(id: PresetId): Preset {
   return p;
 }
 
-/** The preset whose linkage, branch and coupler point match exactly, or null. */
+/**
+ * The preset whose linkage and coupler point match exactly, or null. The branch picks between presets that
+ * differ only by it (Hoeckens and Chebyshev's lambda); otherwise it does not matter, so choosing Crossed on a
+ * preset keeps its name in the menu.
+ */
 export function matchPreset(linkage: Linkage, branch: Branch, coupler: CouplerPoint): PresetId | null {
-  for (const p of PRESETS) {
+  const same = PRESETS.filter((p) => {
     const l = p.linkage;
-    if (
+    return (
       l.r1 === linkage.r1 &&
       l.r2 === linkage.r2 &&
       l.r3 === linkage.r3 &&
       l.r4 === linkage.r4 &&
-      p.branch === branch &&
       p.coupler.distance === coupler.distance &&
       p.coupler.angleDeg === coupler.angleDeg
-    ) {
-      return p.id;
-    }
-  }
-  return null;
+    );
+  });
+  return (same.find((p) => p.branch === branch) ?? same[0])?.id ?? null;
 }

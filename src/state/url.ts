@@ -1,74 +1,40 @@
-import type { AppState, Direction, NrStart, PlotLayout } from './appState';
-import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
-import { SWEEP_METHODS } from '../solver/methods';
-import { wrapDeg180 } from '../solver/angles';
-import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg } from './appState';
-import { parseLocale } from './i18n';
-import type { FieldName } from './validate';
-import { checkValue, parseDecimal } from './validate';
+import type { AppState } from './appState';
+import { DEFAULT_STATE } from './appState';
+import type { EmbedOptions } from './embedOptions';
+import { DEFAULT_EMBED } from './embedOptions';
+import { truncateText } from './format';
+import type { UrlTarget } from './urlKeys';
+import { URL_CONSTRAINTS, URL_KEYS } from './urlKeys';
 
-/** Panels an embed can show besides the canvas. */
-export type EmbedPanel = 'controls' | 'info' | 'plots' | 'export';
+export type { EmbedOptions, EmbedPanel, LockableParam } from './embedOptions';
+export { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
 
-/** Parameters an embed can lock (shown, not editable). */
-export type LockableParam = 'r1' | 'r2' | 'r3' | 'r4' | 'theta2' | 'branch' | 'coupler' | 'play';
+/** Longest key or value, in characters, that a message about an ignored parameter echoes. */
+export const IGNORED_ECHO_CHARS = 24;
 
-/** Embed-only options: which panels show and which parameters are locked. */
-export interface EmbedOptions {
-  panels: EmbedPanel[];
-  locked: LockableParam[];
+/** A URL parameter that was ignored: raw key and value, the same shortened for display, and why (English). */
+export interface IgnoredParam {
+  key: string;
+  value: string;
+  /** key and value cut to IGNORED_ECHO_CHARS characters with an ellipsis, for notices and the console. */
+  shownKey: string;
+  shownValue: string;
+  why: string;
 }
 
-/** All embed panels in display order. */
-export const EMBED_PANELS: readonly EmbedPanel[] = ['controls', 'info', 'plots', 'export'];
-/** All lockable parameters. */
-export const LOCKABLE_PARAMS: readonly LockableParam[] = [
-  'r1',
-  'r2',
-  'r3',
-  'r4',
-  'theta2',
-  'branch',
-  'coupler',
-  'play',
-];
-/** An embed shows the controls and the plots, with nothing locked, unless the URL says otherwise. */
-export const DEFAULT_EMBED: EmbedOptions = { panels: ['controls', 'plots'], locked: [] };
-
-/** Result of parsing a query string: the state, the embed options and one warning per ignored parameter. */
+/** Result of parsing a query string: the state, the embed options, and every parameter that was ignored. */
 export interface ParsedUrl {
   state: AppState;
   embed: EmbedOptions;
+  /** One English console line per ignored parameter (kept for logs; the UI reads `ignored`). */
   warnings: string[];
-}
-
-const ZOOM_MIN = 1e-3;
-const ZOOM_MAX = 1e3;
-const PAN_MAX = 100;
-
-function parseBool(v: string): boolean | null {
-  const s = v.trim().toLowerCase();
-  if (s === '1' || s === 'true' || s === 'yes' || s === 'on') return true;
-  if (s === '0' || s === 'false' || s === 'no' || s === 'off') return false;
-  return null;
-}
-
-function parseList<T extends string>(v: string, allowed: readonly T[]): T[] | null {
-  const s = v.trim();
-  if (s === '' || s.toLowerCase() === 'none') return [];
-  const items = s.split(',').map((x) => x.trim());
-  const out: T[] = [];
-  for (const item of items) {
-    const hit = allowed.find((a) => a.toLowerCase() === item.toLowerCase());
-    if (!hit) return null;
-    if (!out.includes(hit)) out.push(hit);
-  }
-  return out;
+  ignored: IgnoredParam[];
 }
 
 /**
- * Parses a query string (with or without '?') into the app state on top of base; every bad parameter is
- * ignored with a warning (passed to warn, console.warn by default) and base's value kept. Never throws.
+ * Parses a query string (with or without '?') into the app state on top of base, walking URL_KEYS. A bad
+ * or unknown parameter is ignored and base's value kept; each is listed in `ignored` and passed to warn
+ * (console.warn by default). Rules between keys (URL_CONSTRAINTS) revert the keys that break them. Never throws.
  */
 export function parseUrl(
   search: string,
@@ -76,202 +42,60 @@ export function parseUrl(
   warn: (message: string) => void = (m) => console.warn(m),
 ): ParsedUrl {
   const params = new URLSearchParams(search.startsWith('?') ? search.slice(1) : search);
-  const state: AppState = {
-    ...base,
-    linkage: { ...base.linkage },
-    coupler: { ...base.coupler },
-    view: { ...base.view },
-  };
-  const embed: EmbedOptions = { panels: [...DEFAULT_EMBED.panels], locked: [...DEFAULT_EMBED.locked] };
+  const start: UrlTarget = { state: base, embed: DEFAULT_EMBED };
+  let target = start;
+  const ignored: IgnoredParam[] = [];
   const warnings: string[] = [];
   const bad = (key: string, value: string, why: string): void => {
-    const msg = `Ignoring URL parameter ${key}=${JSON.stringify(value)}: ${why}; using the default.`;
-    warnings.push(msg);
-    warn(msg);
+    const p: IgnoredParam = {
+      key,
+      value,
+      shownKey: truncateText(key, IGNORED_ECHO_CHARS),
+      shownValue: truncateText(value, IGNORED_ECHO_CHARS),
+      why,
+    };
+    const message = `Ignoring URL parameter ${p.shownKey}=${JSON.stringify(p.shownValue)}: ${why}; using the default.`;
+    ignored.push(p);
+    warnings.push(message);
+    warn(message);
   };
-  const num = (key: string, field: FieldName, value: string): number | null => {
-    const x = parseDecimal(value);
-    const r = checkValue(field, x, value);
-    if (!r.ok) {
-      bad(
-        key,
-        value,
-        r.error.kind === 'notNumber' ? 'not a number' : `${r.error.kind} (allowed ${r.error.min} to ${r.error.max})`,
-      );
-      return null;
+  const given = new Map<string, string>();
+  for (const [name, value] of params) {
+    const k = URL_KEYS.find((x) => x.name === name);
+    if (!k) {
+      bad(name, value, 'unknown parameter');
+      continue;
     }
-    return r.value;
-  };
-
-  for (const [key, value] of params) {
-    switch (key) {
-      case 'r1':
-      case 'r2':
-      case 'r3':
-      case 'r4': {
-        const x = num(key, key, value);
-        if (x !== null) state.linkage[key] = x;
-        break;
-      }
-      case 't2': {
-        const x = num(key, 'theta2', value);
-        if (x !== null) state.theta2Deg = normalizeTheta2Deg(x);
-        break;
-      }
-      case 'br':
-        if (value === 'open' || value === 'crossed') state.branch = value;
-        else bad(key, value, 'expected open or crossed');
-        break;
-      case 'pd': {
-        const x = num(key, 'couplerDistance', value);
-        if (x !== null) state.coupler.distance = x;
-        break;
-      }
-      case 'pa': {
-        const x = num(key, 'couplerAngle', value);
-        if (x !== null) state.coupler.angleDeg = wrapDeg180(x);
-        break;
-      }
-      case 'play': {
-        const b = parseBool(value);
-        if (b === null) bad(key, value, 'expected 0 or 1');
-        else state.playing = b;
-        break;
-      }
-      case 'spd': {
-        const x = num(key, 'speed', value);
-        if (x !== null) state.speedDegPerFrame = x;
-        break;
-      }
-      case 'dir':
-        if (value === 'ccw' || value === 'cw') state.direction = (value === 'ccw' ? 1 : -1) as Direction;
-        else bad(key, value, 'expected ccw or cw');
-        break;
-      case 'grid':
-      case 'ang':
-      case 'ghost':
-      case 'trace': {
-        const b = parseBool(value);
-        const flag = ({ grid: 'showGrid', ang: 'showAngles', ghost: 'showGhost', trace: 'showTrace' } as const)[key];
-        if (b === null) bad(key, value, 'expected 0 or 1');
-        else state[flag] = b;
-        break;
-      }
-      case 'nr':
-        if (value === 'cont' || value === 'cold')
-          state.nrStart = (value === 'cont' ? 'continuation' : 'cold') as NrStart;
-        else bad(key, value, 'expected cont or cold');
-        break;
-      case 'plots':
-        if (value === 'separate' || value === 'together') state.plotLayout = value as PlotLayout;
-        else bad(key, value, 'expected separate or together');
-        break;
-      case 'n': {
-        const x = Number(value.trim());
-        if (/^\d+$/.test(value.trim()) && x >= SAMPLES_MIN && x <= SAMPLES_MAX) state.samples = x;
-        else bad(key, value, `expected a whole number from ${SAMPLES_MIN} to ${SAMPLES_MAX}`);
-        break;
-      }
-      case 'lang': {
-        const l = parseLocale(value);
-        if (l) state.locale = l;
-        else bad(key, value, 'expected en or zh-TW');
-        break;
-      }
-      case 'z': {
-        const x = parseDecimal(value);
-        if (Number.isFinite(x) && x >= ZOOM_MIN && x <= ZOOM_MAX) state.view.zoom = x;
-        else bad(key, value, `expected a zoom factor from ${ZOOM_MIN} to ${ZOOM_MAX}`);
-        break;
-      }
-      case 'px':
-      case 'py': {
-        const x = parseDecimal(value);
-        if (Number.isFinite(x) && Math.abs(x) <= PAN_MAX) state.view[key === 'px' ? 'panX' : 'panY'] = x;
-        else bad(key, value, `expected a pan fraction from -${PAN_MAX} to ${PAN_MAX}`);
-        break;
-      }
-      case 'm': {
-        const m = SWEEP_METHODS.find((x) => x === value);
-        if (m) state.method = m;
-        else bad(key, value, `expected one of ${SWEEP_METHODS.join(', ')}`);
-        break;
-      }
-      case 'tol': {
-        if (value === 'default') {
-          state.tol = null;
-          break;
-        }
-        const x = Number(value.trim());
-        const t = LAB_TOLERANCES.find((v) => v === x);
-        if (t !== undefined) state.tol = t;
-        else bad(key, value, `expected default or one of ${LAB_TOLERANCES.join(', ')}`);
-        break;
-      }
-      case 'page':
-        if (value === 'sim' || value === 'lab') state.page = value === 'lab' ? 'lab' : 'simulator';
-        else bad(key, value, 'expected sim or lab');
-        break;
-      case 'lstep': {
-        const x = Number(value.trim());
-        const st = LAB_STEPS_DEG.find((v) => v === x);
-        if (st !== undefined) state.labStepDeg = st;
-        else bad(key, value, `expected one of ${LAB_STEPS_DEG.join(', ')}`);
-        break;
-      }
-      case 'panels': {
-        const list = parseList(value, EMBED_PANELS);
-        if (list) embed.panels = list;
-        else bad(key, value, `expected a comma-separated list of ${EMBED_PANELS.join(', ')}`);
-        break;
-      }
-      case 'lock': {
-        const list = parseList(value, LOCKABLE_PARAMS);
-        if (list) embed.locked = list;
-        else bad(key, value, `expected a comma-separated list of ${LOCKABLE_PARAMS.join(', ')}`);
-        break;
-      }
-      default:
-        bad(key, value, 'unknown parameter');
+    const r = k.parse(value);
+    if (r.ok) {
+      target = k.set(target, r.value);
+      given.set(name, value);
+    } else bad(name, value, r.why);
+  }
+  for (const c of URL_CONSTRAINTS) {
+    if (c.holds(target.state)) continue;
+    for (const name of c.keys) {
+      const k = URL_KEYS.find((x) => x.name === name);
+      const value = given.get(name);
+      if (!k || value === undefined) continue;
+      target = k.set(target, k.get(start));
+      bad(name, value, c.why);
     }
   }
-  return { state, embed, warnings };
+  return { state: target.state, embed: target.embed, warnings, ignored };
 }
 
-/** Serialises the whole state (and embed options when given) to a query string without '?'; parseUrl restores it exactly. */
+/**
+ * Serialises the state (and the embed options when given) to a query string without '?', walking URL_KEYS;
+ * parseUrl gives the state back (angles to 1e-9 degree, view to 6 digits, everything else exactly).
+ */
 export function serializeState(state: AppState, embed?: EmbedOptions): string {
+  const target: UrlTarget = { state, embed: embed ?? DEFAULT_EMBED };
   const p = new URLSearchParams();
-  p.set('r1', String(state.linkage.r1));
-  p.set('r2', String(state.linkage.r2));
-  p.set('r3', String(state.linkage.r3));
-  p.set('r4', String(state.linkage.r4));
-  p.set('t2', String(state.theta2Deg));
-  p.set('br', state.branch);
-  p.set('pd', String(state.coupler.distance));
-  p.set('pa', String(state.coupler.angleDeg));
-  p.set('play', state.playing ? '1' : '0');
-  p.set('spd', String(state.speedDegPerFrame));
-  p.set('dir', state.direction === 1 ? 'ccw' : 'cw');
-  p.set('grid', state.showGrid ? '1' : '0');
-  p.set('ang', state.showAngles ? '1' : '0');
-  p.set('ghost', state.showGhost ? '1' : '0');
-  p.set('trace', state.showTrace ? '1' : '0');
-  p.set('nr', state.nrStart === 'continuation' ? 'cont' : 'cold');
-  p.set('plots', state.plotLayout);
-  p.set('n', String(state.samples));
-  p.set('lang', state.locale);
-  p.set('m', state.method);
-  p.set('tol', state.tol === null ? 'default' : String(state.tol));
-  if (state.page === 'lab') p.set('page', 'lab');
-  if (state.labStepDeg !== DEFAULT_STATE.labStepDeg) p.set('lstep', String(state.labStepDeg));
-  if (state.view.zoom !== 1 || state.view.panX !== 0 || state.view.panY !== 0) {
-    p.set('z', String(state.view.zoom));
-    p.set('px', String(state.view.panX));
-    p.set('py', String(state.view.panY));
-  }
-  if (embed) {
-    p.set('panels', embed.panels.length ? embed.panels.join(',') : 'none');
-    if (embed.locked.length) p.set('lock', embed.locked.join(','));
+  for (const k of URL_KEYS) {
+    if (k.scope === 'embed' && !embed) continue;
+    if (k.include && !k.include(target)) continue;
+    p.set(k.name, k.format(k.get(target)));
   }
   return p.toString();
 }

@@ -1,5 +1,17 @@
 /** Which numeric field a value belongs to; names the field in messages. */
-export type FieldName = 'r1' | 'r2' | 'r3' | 'r4' | 'theta2' | 'couplerDistance' | 'couplerAngle' | 'speed';
+export type FieldName =
+  | 'r1'
+  | 'r2'
+  | 'r3'
+  | 'r4'
+  | 'theta2'
+  | 'couplerDistance'
+  | 'couplerAngle'
+  | 'speed'
+  | 'omega2'
+  | 'alpha2'
+  | 'muBandLo'
+  | 'muBandHi';
 
 /** Why a typed value was rejected. */
 export type FieldErrorKind = 'empty' | 'notNumber' | 'notPositive' | 'negative' | 'tooSmall' | 'tooLarge';
@@ -32,6 +44,11 @@ export const LENGTH_MAX = 1e300;
 /** Largest angle magnitude accepted in a field, degrees (larger values are reduced modulo 360 without meaning). */
 export const ANGLE_ABS_MAX = 1e6;
 
+/** Largest input angular velocity magnitude accepted, rad/s (about 9.5 million rpm). */
+export const OMEGA_ABS_MAX = 1e6;
+/** Largest input angular acceleration magnitude accepted, rad/s². */
+export const ALPHA_ABS_MAX = 1e9;
+
 /** Ranges of every numeric field. */
 export const FIELD_SPECS: Record<FieldName, FieldSpec> = {
   r1: { min: LENGTH_MIN, max: LENGTH_MAX, allowZero: false, signed: false },
@@ -42,6 +59,11 @@ export const FIELD_SPECS: Record<FieldName, FieldSpec> = {
   couplerDistance: { min: 0, max: LENGTH_MAX, allowZero: true, signed: false },
   couplerAngle: { min: -ANGLE_ABS_MAX, max: ANGLE_ABS_MAX, allowZero: true, signed: true },
   speed: { min: 0.5, max: 10, allowZero: false, signed: false },
+  omega2: { min: -OMEGA_ABS_MAX, max: OMEGA_ABS_MAX, allowZero: true, signed: true },
+  alpha2: { min: -ALPHA_ABS_MAX, max: ALPHA_ABS_MAX, allowZero: true, signed: true },
+  // Transmission angle band edges, degrees; lo < hi is checked where both are known (URL, controls).
+  muBandLo: { min: 0, max: 180, allowZero: true, signed: false },
+  muBandHi: { min: 0, max: 180, allowZero: true, signed: false },
 };
 
 const FULL_WIDTH = /[\uFF10-\uFF19\uFF0E\uFF0D\uFF0B\uFF45\uFF25]/g;

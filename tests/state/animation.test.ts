@@ -1,7 +1,28 @@
 import { describe, expect, it } from 'vitest';
-import { advanceTheta2, degreesForElapsed, rangeToDeg } from '../../src/state/animation';
+import { classify } from '../../src/solver';
+import type { Linkage } from '../../src/solver';
+import {
+  advanceTheta2,
+  degreesForElapsed,
+  inputTurnsFully,
+  isRocking,
+  rangeToDeg,
+  stepTheta2,
+} from '../../src/state/animation';
+import type { StepState } from '../../src/state/animation';
+import { formatInputRange } from '../../src/state/inputRange';
+import { messagesEn } from '../../src/state/messagesEn';
+import { getPreset } from '../../src/state/presets';
 
 const FULL = { full: true, intervals: [{ lo: -180, hi: 180 }] };
+/** The triple rocker 4-3-3.5-3 of the hard-case table: the input rocks within ±135.95°. */
+const ROCKING = { full: false, intervals: [{ lo: -135.95, hi: 135.95 }] };
+
+/** Angles compared on the circle, degrees. */
+function gapDeg(a: number, b: number): number {
+  const d = Math.abs(a - b) % 360;
+  return Math.min(d, 360 - d);
+}
 
 describe('degreesForElapsed', () => {
   it('is time based: the same degrees per second at any frame rate', () => {
@@ -19,8 +40,7 @@ describe('advanceTheta2', () => {
   });
 
   it('rocks a limited input: reverses at the limit and switches branch', () => {
-    const range = { full: false, intervals: [{ lo: -135.95, hi: 135.95 }] };
-    const s = advanceTheta2(135, 2, 1, 'open', range);
+    const s = advanceTheta2(135, 2, 1, 'open', ROCKING);
     expect(s.direction).toBe(-1);
     expect(s.branch).toBe('crossed');
     expect(s.theta2Deg).toBeCloseTo(135.95 - 1.05, 4);
@@ -65,5 +85,88 @@ describe('advanceTheta2', () => {
       lo: -90,
       hi: 90,
     });
+  });
+});
+
+describe('full-turn cranks: change points and parallelograms', () => {
+  // Change points (S + L = P + Q) whose input still turns fully, by the classification's own limit analysis:
+  // the parallelogram 4-2-4-2, its ground-shortest inversion 2-4-2-4, the kite 4-2-2-4 and a crank-rocker-like 6-2-5-3.
+  const FULL_TURN: ReadonlyArray<[string, Linkage]> = [
+    ['parallelogram 4-2-4-2', { r1: 4, r2: 2, r3: 4, r4: 2 }],
+    ['parallelogram 2-4-2-4', { r1: 2, r2: 4, r3: 2, r4: 4 }],
+    ['kite 4-2-2-4', { r1: 4, r2: 2, r3: 2, r4: 4 }],
+    ['change point 6-2-5-3', { r1: 6, r2: 2, r3: 5, r4: 3 }],
+    ['the parallelogram preset', getPreset('parallelogram').linkage],
+  ];
+
+  it.each(FULL_TURN)('%s is a change point and a full-turn crank', (_name, l) => {
+    const c = classify(l);
+    expect(c.type).toBe('change-point');
+    // Independent check: a crank turns fully when every input angle closes the loop, i.e. the distance
+    // from A to O4 always lies within [|r3 - r4|, r3 + r4].
+    for (let k = 0; k < 720; k++) {
+      const t = (k / 720) * 2 * Math.PI;
+      const d = Math.hypot(l.r2 * Math.cos(t) - l.r1, l.r2 * Math.sin(t));
+      expect(d).toBeLessThanOrEqual(l.r3 + l.r4 + 1e-12);
+      expect(d).toBeGreaterThanOrEqual(Math.abs(l.r3 - l.r4) - 1e-12);
+    }
+    const range = rangeToDeg(c.inputRange);
+    expect(inputTurnsFully(range)).toBe(true);
+    expect(isRocking(c.inputRange)).toBe(false);
+    expect(formatInputRange(c.inputRange, messagesEn)).toBe(messagesEn.fullTurn);
+    // Play wraps through 0° instead of reversing, and keeps the branch.
+    expect(advanceTheta2(359, 2, 1, 'open', range)).toEqual({ theta2Deg: 1, direction: 1, branch: 'open' });
+  });
+
+  it('a change point whose input is not the crank rocks (4-4-2-2)', () => {
+    const c = classify({ r1: 4, r2: 4, r3: 2, r4: 2 });
+    expect(c.type).toBe('change-point');
+    expect(isRocking(c.inputRange)).toBe(true);
+  });
+});
+
+describe('stepTheta2', () => {
+  const at = (theta2Deg: number, direction: 1 | -1): StepState => ({
+    theta2Deg,
+    samples: 360,
+    direction,
+    branch: 'open',
+  });
+
+  it('steps forward along Counter-clockwise and Clockwise alike', () => {
+    expect(stepTheta2(at(45, 1), FULL, 1)).toEqual({ theta2Deg: 46, direction: 1, branch: 'open' });
+    expect(stepTheta2(at(45, -1), FULL, 1)).toEqual({ theta2Deg: 44, direction: -1, branch: 'open' });
+    expect(stepTheta2(at(45, -1), FULL, -1)).toEqual({ theta2Deg: 46, direction: -1, branch: 'open' });
+    expect(stepTheta2(at(0, -1), FULL, 1).theta2Deg).toBe(359);
+  });
+
+  it('steps one sample (360 / samples degrees) before the cycle is known', () => {
+    expect(stepTheta2({ ...at(10, 1), samples: 720 }, null, 1).theta2Deg).toBe(10.5);
+  });
+
+  it('follows a rocking input past its limit: branch and direction switch as in Play', () => {
+    const s = stepTheta2(at(135.5, 1), ROCKING, 1);
+    expect(s.branch).toBe('crossed');
+    expect(s.direction).toBe(-1);
+    expect(s.theta2Deg).toBeCloseTo(135.95 - 0.55, 5);
+    // The next forward step keeps going the same way along the motion, not back over the limit.
+    const s2 = stepTheta2({ ...at(s.theta2Deg, s.direction), branch: s.branch }, ROCKING, 1);
+    expect(s2).toMatchObject({ branch: 'crossed', direction: -1 });
+    expect(s2.theta2Deg).toBeCloseTo(s.theta2Deg - 1, 9);
+  });
+
+  it('is undone by Step back, across limits too', () => {
+    // Every start lies inside the reachable ±135.95° (225° is −135°), some within a step of a limit.
+    for (const range of [FULL, ROCKING])
+      for (const direction of [1, -1] as const)
+        for (const start of [0, 45, 135.2, 135.5, 224.5, 225, 359.5]) {
+          const s0 = at(start, direction);
+          const s1 = stepTheta2(s0, range, 1);
+          const s2 = stepTheta2({ ...s0, ...s1 }, range, -1);
+          // Reflections are exact up to rounding of a few additions of numbers below 360.
+          expect(gapDeg(s2.theta2Deg, start), `${start} ${direction}`).toBeLessThan(1e-9);
+          expect(s2.branch).toBe('open');
+          expect(s2.direction).toBe(direction);
+        }
   });
 });

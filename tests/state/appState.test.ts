@@ -41,6 +41,23 @@ describe('reducer', () => {
     const s = reducer(DEFAULT_STATE, { type: 'animate', theta2Deg: 370, direction: -1, branch: 'crossed' });
     expect(s).toMatchObject({ theta2Deg: 10, direction: -1, branch: 'crossed' });
   });
+  it('starts the rates at 10 rad/s and 0 rad/s², and the transmission band at 40° to 140°', () => {
+    expect(DEFAULT_STATE).toMatchObject({ omega2RadPerS: 10, alpha2RadPerS2: 0, muBandLoDeg: 40, muBandHiDeg: 140 });
+  });
+  it('sets the input motion, one rate at a time', () => {
+    const s = reducer(DEFAULT_STATE, { type: 'setInputMotion', omega2RadPerS: -3 });
+    expect([s.omega2RadPerS, s.alpha2RadPerS2]).toEqual([-3, 0]);
+    expect(reducer(s, { type: 'setInputMotion', alpha2RadPerS2: 2 }).alpha2RadPerS2).toBe(2);
+    expect(reducer(DEFAULT_STATE, { type: 'setInputMotion', omega2RadPerS: 10 })).toBe(DEFAULT_STATE);
+  });
+  it('sets the transmission band and refuses one whose edges cross', () => {
+    expect(reducer(DEFAULT_STATE, { type: 'setMuBand', loDeg: 30, hiDeg: 150 })).toMatchObject({
+      muBandLoDeg: 30,
+      muBandHiDeg: 150,
+    });
+    expect(reducer(DEFAULT_STATE, { type: 'setMuBand', loDeg: 90, hiDeg: 90 })).toBe(DEFAULT_STATE);
+    expect(reducer(DEFAULT_STATE, { type: 'setMuBand', loDeg: 100, hiDeg: 60 })).toBe(DEFAULT_STATE);
+  });
   it('rounds and clamps the sample count', () => {
     expect(reducer(DEFAULT_STATE, { type: 'setSamples', samples: 3600.4 }).samples).toBe(3600);
     expect(reducer(DEFAULT_STATE, { type: 'setSamples', samples: 1 }).samples).toBe(12);

@@ -1,7 +1,18 @@
 import { describe, expect, it } from 'vitest';
 import { csvFileName, pngFileName } from '../../src/state/fileNames';
-import { fileNumber, formatDeg, formatIntervalsDeg, formatNumber, formatSci } from '../../src/state/format';
-import { lengthSliderRange, needsNewRange, niceCeil } from '../../src/state/sliderRange';
+import { SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../src/state/appState';
+import {
+  THETA2_DECIMALS,
+  fieldText,
+  fileNumber,
+  formatDeg,
+  formatIntervalsDeg,
+  formatNumber,
+  formatSci,
+  truncateText,
+} from '../../src/state/format';
+import { lengthSliderRange, needsNewRange, niceCeil, sliderShows } from '../../src/state/sliderRange';
+import { parseField } from '../../src/state/validate';
 
 describe('formatNumber', () => {
   it('shows six significant digits, exponent form for extreme scales, a dash for non-finite', () => {
@@ -59,5 +70,49 @@ describe('slider ranges', () => {
     expect(needsNewRange(r, [6, 2, 5, 5])).toBe(false);
     expect(needsNewRange(r, [60, 2, 5, 5])).toBe(true);
     expect(needsNewRange(r, [1e-7, 1e-7, 1e-7, 1e-7])).toBe(true);
+  });
+});
+
+describe('fieldText', () => {
+  it('shows θ2 after Play to the field precision, without float noise', () => {
+    expect(fieldText(255.045227, THETA2_DECIMALS)).toBe('255.05');
+    expect(fieldText(248.98895999999954, THETA2_DECIMALS)).toBe('248.99');
+    expect(fieldText(45, THETA2_DECIMALS)).toBe('45');
+    expect(fieldText(120.25, THETA2_DECIMALS)).toBe('120.25');
+    expect(fieldText(-0.001, THETA2_DECIMALS)).toBe('0');
+  });
+  it('shows other fields exactly', () => {
+    expect(fieldText(2.000000001)).toBe('2.000000001');
+    expect(fieldText(1e-7)).toBe('1e-7');
+  });
+});
+
+describe('truncateText', () => {
+  it('cuts long text to the limit with an ellipsis and leaves short text alone', () => {
+    expect(truncateText('abc')).toBe('abc');
+    const long = '1'.repeat(400);
+    expect(truncateText(long)).toBe('1'.repeat(23) + '…');
+    expect(Array.from(truncateText(long, 10))).toHaveLength(10);
+    expect(truncateText('x'.repeat(24))).toBe('x'.repeat(24));
+  });
+  it('never splits a character outside the BMP', () => {
+    expect(truncateText('𝜃'.repeat(30), 5)).toBe('𝜃𝜃𝜃𝜃…');
+  });
+});
+
+describe('sliderShows', () => {
+  const speed = { min: SPEED_MIN, max: SPEED_MAX, step: SPEED_STEP };
+  it('shows every typed speed on the speed slider as stored (0,75 is 0.75, not 1)', () => {
+    for (const typed of ['0,75', '0.5', '1.25', '2.5', '9.95', '10', '3.15']) {
+      const r = parseField('speed', typed);
+      if (!r.ok) throw new Error(`${typed} rejected`);
+      // The step grid is k * 0.05 from 0.5; a shown value equal to the stored one to 1e-12 is the same on screen.
+      expect(Math.abs(sliderShows(r.value, speed) - r.value), typed).toBeLessThan(1e-12);
+    }
+  });
+  it('follows the HTML step rule: nearest step from min, ties up, clamped', () => {
+    expect(sliderShows(0.75, { min: 0.5, max: 10, step: 0.5 })).toBe(1);
+    expect(sliderShows(0.7, { min: 0.5, max: 10, step: 0.5 })).toBe(0.5);
+    expect(sliderShows(50, { min: 0.5, max: 10, step: 0.5 })).toBe(10);
   });
 });

@@ -31,4 +31,28 @@ describe('PRESETS', () => {
     expect(matchPreset({ r1: 1, r2: 1, r3: 1, r4: 1 }, 'open', { distance: 0, angleDeg: 0 })).toBeNull();
     expect(() => getPreset('nope' as PresetId)).toThrow(/nope/);
   });
+
+  it('keeps the preset named when only the branch changes (choosing Crossed)', () => {
+    for (const p of PRESETS) {
+      const other = p.branch === 'open' ? 'crossed' : 'open';
+      const twin = PRESETS.find(
+        (q) =>
+          q.id !== p.id &&
+          q.branch === other &&
+          JSON.stringify([q.linkage, q.coupler]) === JSON.stringify([p.linkage, p.coupler]),
+      );
+      // Hoeckens and Chebyshev's lambda are one linkage on its two branches: the branch names which.
+      expect(matchPreset(p.linkage, other, p.coupler), p.id).toBe(twin ? twin.id : p.id);
+    }
+    expect(matchPreset(getPreset('hoeckens').linkage, 'crossed', getPreset('hoeckens').coupler)).toBe(
+      'chebyshevLambda',
+    );
+    expect(matchPreset(getPreset('report').linkage, 'crossed', getPreset('report').coupler)).toBe('report');
+  });
+
+  it('is custom once a length or the coupler point changes', () => {
+    const p = getPreset('report');
+    expect(matchPreset({ ...p.linkage, r3: 5.01 }, p.branch, p.coupler)).toBeNull();
+    expect(matchPreset(p.linkage, p.branch, { ...p.coupler, angleDeg: 31 })).toBeNull();
+  });
 });

@@ -67,3 +67,19 @@ describe('checkValue', () => {
     expect(checkValue('r1', Infinity).ok).toBe(false);
   });
 });
+
+describe('the rate and band fields', () => {
+  it('take signed input rates within ±1e6 rad/s and ±1e9 rad/s², zero included', () => {
+    expect(parseField('omega2', '-3.5')).toEqual({ ok: true, value: -3.5 });
+    expect(parseField('omega2', '0')).toEqual({ ok: true, value: 0 });
+    expect(parseField('omega2', '1000001').ok).toBe(false);
+    expect(parseField('alpha2', '-1e9').ok).toBe(true);
+    expect(parseField('alpha2', '2e9').ok).toBe(false);
+  });
+  it('keep the transmission band edges within 0° to 180°', () => {
+    expect(parseField('muBandLo', '0').ok).toBe(true);
+    expect(parseField('muBandHi', '180').ok).toBe(true);
+    expect(parseField('muBandLo', '-1').ok).toBe(false);
+    expect(parseField('muBandHi', '180.1').ok).toBe(false);
+  });
+});

@@ -1,0 +1,33 @@
+import { useState } from 'react';
+import type { IgnoredParam } from '../state/url';
+import { ignoredNoticeText } from '../state/ignoredNotice';
+import { useMessages } from './MessagesContext';
+
+/** Props of UrlNotice: the parameters the URL parser ignored (ParsedUrl.ignored). */
+export interface UrlNoticeProps {
+  ignored: readonly IgnoredParam[];
+}
+
+/**
+ * A dismissible notice naming the shared link's parameters that were ignored (bad or unknown values), so a
+ * student knows the defaults are shown instead. Renders nothing when none was ignored or once dismissed.
+ */
+export function UrlNotice({ ignored }: UrlNoticeProps) {
+  const t = useMessages();
+  const [dismissed, setDismissed] = useState(false);
+  if (dismissed || ignored.length === 0) return null;
+  return (
+    <div className="url-notice" role="status" data-testid="url-notice">
+      <p className="url-notice-text">{ignoredNoticeText(ignored, t)}</p>
+      <button
+        type="button"
+        className="icon-btn url-notice-dismiss"
+        aria-label={t.urlNoticeDismiss}
+        title={t.urlNoticeDismiss}
+        onClick={() => setDismissed(true)}
+      >
+        <span aria-hidden="true">×</span>
+      </button>
+    </div>
+  );
+}
