@@ -200,9 +200,33 @@ describe('linkRates', () => {
     }
   });
 
-  it('keeps the relative rate of coupler and rocker exact as mu -> 0 with r3 = r4 (case 8, crank pin near O4)', () => {
-    // 2-2-4-4: at theta2 = 0 the crank pin sits on O4; close to it mu is small and omega3, omega4 ~ 1 / sin mu
-    // while omega3 - omega4 stays O(1). The textbook acceleration form loses that difference.
+  it('keeps alpha exact at a toggle where coupler and rocker are nearly equal (mu -> 0, r4 = r3 + 1e-3)', () => {
+    // |r1 - r2| = 1e-3 < |r4 - r3| = 2e-3: the crank stops where A is 2e-3 from O4, coupler and rocker
+    // folded onto each other (mu -> 0). There omega3 and omega4 grow like 1 / sin mu but omega3 - omega4
+    // is a thousand times smaller, and the textbook form of the acceleration equations (r3 omega3^2 against
+    // r4 omega4^2) would lose those three digits to cancellation.
+    const l = { r1: 4, r2: 3.999, r3: 2, r4: 2.002 };
+    const lim = referenceLimits(l);
+    expect(lim.hasLower).toBe(true);
+    let checked = 0;
+    for (const d of [1e-3, 1e-5, 1e-7, 1e-9, 1e-11]) {
+      for (const sign of [1, -1]) {
+        const t2 = sign * (lim.lowerAbs + d);
+        for (const branch of BRANCHES) {
+          const pose = solvedPose(l, t2, branch);
+          expect(Math.cos(pose.theta4 - pose.theta3)).toBeGreaterThan(0.9);
+          expectRatesAtPose(l, t2, pose, INPUT, `nearly equal links ${branch}, ${d} from the toggle`);
+          if (d >= 1e-5) expectTrueMotion(l, t2, branch, INPUT, 'nearly equal links');
+          checked++;
+        }
+      }
+    }
+    expect(checked).toBe(20);
+  });
+
+  it('is exact to rounding through the change point of 2-2-4-4 (crank pin passing over O4)', () => {
+    // r1 = r2 and r3 = r4: at theta2 = 0 the crank pin sits on O4 and sin mu -> 0 while the rates stay
+    // bounded on the open branch (numerator and sin mu vanish together).
     const l = CASES[8];
     for (const t2 of [1e-3, -1e-5, 1e-7, -1e-9]) {
       for (const branch of BRANCHES) {
@@ -210,6 +234,8 @@ describe('linkRates', () => {
         expectRatesAtPose(l, t2, pose, INPUT, `case 8 ${branch}`);
         if (Math.abs(t2) >= 1e-5) expectTrueMotion(l, t2, branch, INPUT, 'case 8');
       }
+      const open = linkRates(l, t2, solvedPose(l, t2, 'open'), INPUT);
+      expect(Math.abs(open.omega3) + Math.abs(open.omega4)).toBeLessThan(2 * INPUT.omega2);
     }
   });
 
@@ -395,6 +421,17 @@ describe('sweepRates', () => {
       }
       expect(solved).toBeGreaterThan(50);
       for (const k of RATES) expect(r[k]).toHaveLength(grid.length);
+    }
+  });
+
+  it('leaves points that ok() rejects NaN even where their angles are finite', () => {
+    const l = CASES[1];
+    const res = sweep(l, theta2Grid(0, 360, 5), { branch: 'open' });
+    const ok = (i: number) => i % 3 !== 0;
+    const r = sweepRates(l, res.theta2, res.theta3, res.theta4, ok, INPUT);
+    for (let i = 0; i < res.theta2.length; i++) {
+      expect(Number.isFinite(res.theta3[i])).toBe(true);
+      for (const k of RATES) expect(Number.isNaN(r[k][i]), `${k}[${i}]`).toBe(!ok(i));
     }
   });
 });
