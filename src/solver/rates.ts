@@ -14,7 +14,7 @@
  * The acceleration numerators are the textbook ones (r4 omega4^2 - r3 omega3^2 c - ...) with the
  * velocity relations r3 omega3 - r4 omega4 c = -r2 omega2 cos a and r4 omega4 - r3 omega3 c = r2 omega2 cos b
  * substituted: the textbook form adds two terms of size 1 / s^2 whose difference can be far smaller
- * (near a toggle with r3 close to r4 it is of size 1 / s), and loses that difference to rounding. Here
+ * (at a toggle with mu -> 0 it is smaller by about |r4 - r3| / r + |mu|), and loses it to rounding. Here
  * the large factors meet only in the product omega * (omega3 - omega4), and the relative angular
  * velocity of coupler and rocker is formed without cancellation:
  *
@@ -23,9 +23,11 @@
  * (r4 sin b - r3 sin a = (r4 - r3) sin b + r3 (sin b - sin a), and sin b - sin a = -2 cos(a - mu/2) sin(mu/2)).
  * Only length ratios appear, so links of any scale neither overflow nor underflow.
  *
- * Angle differences are formed exactly (TwoSum) and their sines corrected by the rounding error of the
- * difference, so sin mu keeps full relative accuracy even where mu is close to pi: a pose's angles are
- * taken as exact, and the rates are exact to rounding for them. Velocities then carry about
+ * The differences a and mu are formed exactly (TwoSum) and their sines and cosines corrected by the
+ * rounding error of the difference, so sin mu keeps full relative accuracy even where mu is close to pi
+ * (b = a - mu then follows from the difference formula: its few eps of absolute error only ever multiply
+ * bounded terms). A pose's angles are taken as exact, and the rates are exact to rounding for them:
+ * no check that the pose closes the loop is made. Velocities then carry about
  * eps |omega2| (r2 / r) / |sin mu| of error, accelerations one more factor 1 / |sin mu| where the
  * relative angular velocity omega3 - omega4 is bounded (see tests/oracle/rates.ts for the bounds tested).
  */
