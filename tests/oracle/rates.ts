@@ -1,14 +1,15 @@
 /**
  * High-precision oracles for velocity and acceleration analysis, and the tolerances derived from
- * conditioning. Independent of src: two derivations that share nothing with the solver's formulas.
+ * conditioning. Nothing here imports src: the first oracle solves the same equations as the solver in
+ * another form (Cartesian vectors, Cramer's rule), the second uses no velocity equations at all.
  *
  * 1. referenceRatesAtPose: the differentiated loop equations as a 2x2 linear system in Cartesian
  *    vectors, solved by Cramer's rule at 60 digits, with the given double angles taken as exact. This
  *    is what "exact to rounding for the given pose" means, and what the tight tolerances test.
  * 2. referenceMotion: no velocity equations at all. The position problem is solved at 80 digits (more
  *    for a tiny crank, see differentiator) with the law-of-cosines construction of reference.ts at
- *    theta2 - h, theta2 and theta2 + h with
- *    h = 1e-26, and the angles and the coupler point are differentiated by central differences:
+ *    theta2 - h, theta2 and theta2 + h with h = 1e-26, and the angles and the coupler point are
+ *    differentiated by central differences:
  *    theta' = (u x u') / r^2 and theta'' = (u x u'') / r^2 for the link vector u of length r (no atan2
  *    branch cuts), then d/dt = omega2 d/dtheta2 and d2/dt2 = omega2^2 d2/dtheta2^2 + alpha2 d/dtheta2.
  *    Truncation is (h / d)^2 relative for a distance d (in theta2) to a limit, rounding 1e-80 / h^2 =
@@ -358,7 +359,7 @@ export interface RatesForTolerance extends ReferenceRates {
  * referenceRatesAtPose). With s = |sin mu|, q3 = r2 / r3, q4 = r2 / r4:
  *
  * - omega_j = omega2 q_j sin(.) / sin mu: every factor is correct to a few eps relative, so the error is
- *   K eps q_j |omega2| / s (the brief's "u |omega2| (r2 / r) / |sin mu|", per link).
+ *   K eps q_j |omega2| / s (eps |omega2| (r2 / r) / |sin mu|, per link).
  * - alpha_j is a sum of terms divided by sin mu: q_j (|alpha2| + |omega2| (|omega2| + |omega_k|)) from the
  *   crank, and |omega_j| R from the relative motion of coupler and rocker, where
  *   R = |omega2| (q3 |r4 - r3| / r4 + 2 q4 |sin(mu/2)|) / s bounds |omega3 - omega4| before any
