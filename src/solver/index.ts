@@ -31,3 +31,5 @@ export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid 
 export { validateLinkage } from './validate';
 export { adaptiveGrid, adaptiveSweep } from './sampling';
 export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
+export { LIMIT_SIN_MU, couplerPointMotion, linkRates, sweepRates } from './rates';
+export type { InputMotion, LinkRates, PointMotion, SweepRates } from './rates';
