@@ -31,7 +31,7 @@ export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid 
 export { validateLinkage } from './validate';
 export { adaptiveGrid, adaptiveSweep } from './sampling';
 export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
-export { designMetrics, transmissionExtremes } from './metrics';
+export { designMetrics } from './metrics';
 export type { DeadCentre, DesignMetrics, TransmissionExtremes } from './metrics';
 export { PARALLEL_SIN, instantCenters } from './instantCenters';
 export type { InstantCenters } from './instantCenters';

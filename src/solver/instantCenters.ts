@@ -25,7 +25,10 @@ export interface InstantCenters {
  */
 export const PARALLEL_SIN = 8 * Number.EPSILON;
 
-/** sin(a - b) to full relative accuracy for double a, b: the difference is kept exactly as hi + lo. */
+/**
+ * sin(a - b) for double a, b with the difference kept exactly as hi + lo: relatively accurate down to
+ * |sin| ~ ulp(a - b), and absolutely to eps^2 |a - b| below (plain sin(a - b) would be off by eps |a - b|).
+ */
 function sinOfDifference(a: number, b: number): number {
   const d = twoSum(a, -b);
   return Math.sin(d.hi) + d.lo * Math.cos(d.hi);

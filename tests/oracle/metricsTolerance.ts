@@ -9,8 +9,11 @@
  * needle-thin the triangle: conditioning with respect to the factors is at most 1. Allowed: 16 eps |g|.
  * Differences (swing, quick-return angle) come from x = (exact ratio) / sin(half-sum) and 2 asin(x) with
  * |x| <= sin(pi / 4), where asin's condition is <= 1.2: allowed 32 eps times the value.
- * Instant centres: every factor (sin, cos, the exactly kept difference of two angles) is relatively
- * accurate for the double inputs, so each coordinate is relatively accurate: allowed 16 eps |coordinate|.
+ * Instant centres: every factor (sin, cos, the exactly kept difference hi + lo of two angles) is
+ * relatively accurate for the double inputs, so each coordinate is: allowed 16 eps |coordinate|. The one
+ * exception is sin(hi + lo) = sin(hi) + lo cos(hi) when it is far below ulp(hi) (I24 next to O2, at a
+ * dead centre): sin(hi) ~ lo is rounded to eps |lo| <= eps^2 |hi|, an absolute error that
+ * sinDifferenceFloor carries (a plain sin(a - b) would be off by eps |hi| instead).
  */
 import { EPS } from './tolerance';
 
@@ -42,9 +45,17 @@ export function timeRatioTol(ref: number): number {
   return 2 * DIFFERENCE_K * EPS * Math.abs(ref - 1) + 2 * EPS * ref;
 }
 
-/** Tolerance (length unit) for one coordinate of an instant centre. */
-export function centerTol(ref: number): number {
-  return CENTER_K * EPS * Math.abs(ref) + FLOOR;
+/** Tolerance (length unit) for one coordinate of an instant centre, plus an absolute floor if given. */
+export function centerTol(ref: number, floor = 0): number {
+  return CENTER_K * EPS * Math.abs(ref) + floor + FLOOR;
+}
+
+/**
+ * Absolute floor (length unit) for r sin(a - b) / sinBetween where sin(a - b) is tiny: the rounding of
+ * sin at the exactly kept difference, eps^2 (|a| + |b|), scaled by r / |sinBetween|.
+ */
+export function sinDifferenceFloor(r: number, a: number, b: number, sinBetween: number): number {
+  return (CENTER_K * EPS * EPS * r * (Math.abs(a) + Math.abs(b))) / Math.abs(sinBetween);
 }
 
 /**
