@@ -69,6 +69,21 @@ describe('designMetrics', () => {
     }
   });
 
+  it('is exact to rounding with both dead centres next to the ground line beyond a pivot', () => {
+    // A tiny crank and a coupler of nearly r1 + r4 (or r4 - r1): B sits just beyond O4 (or behind O2) at
+    // both dead centres, so the two angles at O4 (or O2) are both near 180 deg and their half-sum's sine
+    // must come from the supplements.
+    const r2 = 1e-6;
+    const beyondO4: Linkage = { r1: 1, r2, r3: 2 - 2 * r2, r4: 1 };
+    const behindO2: Linkage = { r1: 1, r2, r3: 2 + 2 * r2, r4: 3 };
+    for (const l of [beyondO4, behindO2]) {
+      for (const b of BRANCHES) {
+        const m = expectMatchesOracle(l, b);
+        expectDeadCentrePoses(l, b, m);
+      }
+    }
+  });
+
   it('is exact to rounding with the coupler and rocker nearly folded at theta2 = 0 (mu near 0)', () => {
     const l = CASES[3]; // 5, 1, 6, 2 + 1e-9
     for (const b of BRANCHES) {
