@@ -56,6 +56,8 @@ function accurateDifference(x: number, y: number, sinHalf: number): number {
  * Whether the input is a crank driving a rocking output: it turns fully (inputTurnsFully, from
  * inputRange) and is the strictly shortest link, so it is a Grashof crank-rocker (I-2) or its
  * change-point limit (III-2). A double crank, a parallelogram or a kite (shortest link shared) is not.
+ * In III-2 one dead centre is the flat pose where the branches cross: the rocker turns back there at a
+ * corner of the branch (its velocity changes sign) rather than with w4 = 0.
  */
 export function isCrankRocker(l: Linkage, inputTurnsFully: boolean): boolean {
   return inputTurnsFully && l.r2 < l.r1 && l.r2 < l.r3 && l.r2 < l.r4;
@@ -79,7 +81,7 @@ export function crankRockerStroke(l: Linkage, sigma: number): CrankRockerStroke 
 
   // cos(alphaE) - cos(alphaF) = -r2 G / (r1 (r3^2 - r2^2)) with G = r1^2 + r2^2 - r3^2 - r4^2 (law of
   // cosines in both triangles), and = -2 sin((alphaE + alphaF) / 2) sin(delta / 2): delta = alphaE - alphaF
-  // is then as accurate as G, which is summed exactly. delta = 0 iff G = 0 (no quick return).
+  // is then as accurate as G, summed in double-double from exact squares. delta = 0 iff G = 0 (no quick return).
   const g = sumOfProducts([
     [r1, r1],
     [r2, r2],
