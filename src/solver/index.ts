@@ -33,3 +33,7 @@ export { adaptiveGrid, adaptiveSweep } from './sampling';
 export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
 export { LIMIT_SIN_MU, couplerPointMotion, linkRates, sweepRates } from './rates';
 export type { InputMotion, LinkRates, PointMotion, SweepRates } from './rates';
+export { designMetrics } from './metrics';
+export type { DeadCentre, DesignMetrics, TransmissionExtremes } from './metrics';
+export { PARALLEL_SIN, instantCenters } from './instantCenters';
+export type { InstantCenters } from './instantCenters';
