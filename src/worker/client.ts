@@ -1,5 +1,7 @@
 import type { LabResult } from '../lab/workPrecision';
 import { createMainThreadWorker } from './mainThread';
+import type { WatchdogOptions } from './watchdog';
+import { DEFAULT_WATCHDOG, armTimer, budgetMs } from './watchdog';
 import type {
   CycleParams,
   CycleResponse,
@@ -29,19 +31,6 @@ export type SolverMode = 'starting' | 'worker' | 'restarted' | 'main-thread';
 /** Why the client left a worker: none ever answered or could start ('unavailable'), or one stopped ('stopped'). */
 export type SolverModeReason = 'unavailable' | 'stopped';
 
-/** Watchdog budgets (ms): a call must be answered within base + perPoint x its points (a lab: per stage). */
-export interface WatchdogOptions {
-  /** Extra time for a worker that has not answered yet (loading its script). */
-  startMs: number;
-  baseMs: number;
-  perPointMs: number;
-  /** Time allowed between a lab's progress messages. */
-  labStageMs: number;
-}
-
-/** Default budgets: generous, so a busy laptop never trips them; a dead worker is noticed within seconds. */
-export const DEFAULT_WATCHDOG: WatchdogOptions = { startMs: 5000, baseMs: 1500, perPointMs: 0.02, labStageMs: 20_000 };
-
 /** Options of SolverClient: worker factories (default: the module worker, then the main thread) and the watchdog. */
 export interface SolverClientOptions {
   createWorker?: () => WorkerLike;
@@ -70,16 +59,6 @@ export function createSolverWorker(): WorkerLike {
   return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' }) as unknown as WorkerLike;
 }
 
-/** Watchdog budget of a call (ms), from an upper bound of the points it solves (the plot grid refines up to 8x). */
-export function budgetMs(type: SolverMethod, params: unknown, w: WatchdogOptions): number {
-  if (type === 'lab') return w.labStageMs;
-  const p = params as Partial<CycleParams & TableParams>;
-  const samples = Number(p.samples) || 0;
-  const points =
-    type === 'cycle' ? 2 * (samples + 1) + 16 * (Number(p.plotPixels) || 0) : type === 'table' ? samples : 8;
-  return w.baseMs + w.perPointMs * points;
-}
-
 interface Call {
   id: number;
   type: SolverMethod;
@@ -92,9 +71,6 @@ interface Call {
   onProgress?: (fraction: number, stage: string) => void;
   stale: boolean;
 }
-
-/** A watchdog timer that fires this late (ms) means the main thread was busy: the answer may be queued behind it. */
-const LATE_MS = 100;
 
 /**
  * Main-thread side of the solver API. Each channel (cycle, point, table, lab) has at most one call in
@@ -113,7 +89,7 @@ export class SolverClient {
   private restarts = 0;
   private heard = false;
   private everHeard = false;
-  private timer: ReturnType<typeof setTimeout> | undefined;
+  private disarm = (): void => undefined;
   private disposed = false;
   private modeValue: SolverMode = 'starting';
   private reasonValue: SolverModeReason | null = null;
@@ -157,7 +133,7 @@ export class SolverClient {
   /** Stops the worker; every pending call resolves to null. */
   dispose(): void {
     this.disposed = true;
-    clearTimeout(this.timer);
+    this.disarm();
     this.worker?.terminate();
     this.worker = null;
     for (const c of [...this.inFlight.values(), ...this.queued.values()]) c.resolve(null);
@@ -217,15 +193,11 @@ export class SolverClient {
   }
 
   private arm(): void {
-    clearTimeout(this.timer);
+    this.disarm();
     if (this.modeValue === 'main-thread' || this.inFlight.size === 0) return;
     let ms = this.heard ? 0 : this.watchdog.startMs;
     for (const c of this.inFlight.values()) ms += c.budgetMs;
-    const due = Date.now() + ms;
-    this.timer = setTimeout(() => {
-      if (Date.now() - due > LATE_MS) this.arm();
-      else this.fail(`no answer within ${Math.round(ms)} ms`);
-    }, ms);
+    this.disarm = armTimer(ms, () => this.fail(`no answer within ${Math.round(ms)} ms`));
   }
 
   private fail(detail: string): void {
@@ -248,15 +220,16 @@ export class SolverClient {
     } catch {
       // A worker that never started may refuse to terminate; it is dropped either way.
     }
+    this.worker = null;
     this.heard = false;
+    if (mode !== 'starting') this.setMode(mode, reason, detail);
     let w: WorkerLike;
     try {
       w = create();
     } catch (e) {
-      this.restarts = 1;
-      this.worker = null;
-      this.fail(`worker could not start: ${e instanceof Error ? e.message : String(e)}`);
-      return;
+      if (mode === 'main-thread') throw e;
+      this.restarts = 1; // It would not start again either: straight to the main thread.
+      return this.fail(`worker could not start: ${e instanceof Error ? e.message : String(e)}`);
     }
     this.worker = w;
     w.addEventListener('message', (e) => this.onMessage(w, (e as MessageEvent<SolverResponse>).data));
@@ -265,7 +238,6 @@ export class SolverClient {
       if (w === this.worker) this.fail(`worker error: ${(e as ErrorEvent).message || 'the script did not load'}`);
     });
     w.addEventListener('messageerror', () => w === this.worker && this.fail('a worker message could not be decoded'));
-    if (mode !== 'starting') this.setMode(mode, reason, detail);
   }
 
   private setMode(mode: SolverMode, reason: SolverModeReason | null, detail: string): void {

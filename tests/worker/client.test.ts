@@ -1,6 +1,7 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { solverApi } from '../../src/worker/api';
-import { DEFAULT_WATCHDOG, SolverClient, SolverError, budgetMs } from '../../src/worker/client';
+import { SolverClient, SolverError } from '../../src/worker/client';
+import { DEFAULT_WATCHDOG, budgetMs } from '../../src/worker/watchdog';
 import type { SolverMode, SolverModeReason, WorkerLike } from '../../src/worker/client';
 import { expose } from '../../src/worker/expose';
 import type { CallRequest, SolverApi, SolverRequest, SolverResponse } from '../../src/worker/protocol';
