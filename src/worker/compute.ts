@@ -148,7 +148,8 @@ export function computeCycle(req: CycleParams): CycleResponse {
   const crossed = want('crossed')
     ? branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler, req.solver)
     : skippedCycle(n + 1);
-  const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, open, crossed, n) : [];
+  // The curves follow the screen, not the samples the user chose: always VIEW_SAMPLES_MAX per turn.
+  const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, VIEW_SAMPLES_MAX) : [];
   const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
   const plot = req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver) : null;
   let points = 0;
@@ -157,7 +158,7 @@ export function computeCycle(req: CycleParams): CycleResponse {
     if (!b.skipped) points += n + 1;
     iterations += b.totalIterations;
   }
-  for (const c of curves) if (c.rocking) points += c.x.length;
+  for (const c of curves) points += c.x.length;
   if (plot) points += plot.theta2Deg.length * branches.length;
   return {
     linkage: { ...req.linkage },

@@ -286,6 +286,9 @@ describe('SolverClient watchdog', () => {
     const a = client.point(point(0.1));
     const b = client.point(point(0.2));
     first.error('boom');
+    // At once, not after the watchdog's budget.
+    expect(first.terminated).toBe(true);
+    expect(second.calls()).toHaveLength(1);
     expect(await a).toBeNull();
     expect((await b)?.theta2Rad).toBe(0.2);
     expect(second.calls().map((r) => r.type === 'point' && r.params.theta2Rad)).toEqual([0.2]);

@@ -112,7 +112,8 @@ describe('computeCycle at view resolution', () => {
     expect(r.theta2Deg[720]).toBe(360);
     // Hard case 1 at theta2 = 90 deg (60-digit reference), grid index 180 of 720.
     expect(r.open.theta3[180] / D).toBeCloseTo(32.3335306935, 7);
-    expect(r.work.points).toBe(2 * 721);
+    // Both branches on the view grid, and the two coupler curves at VIEW_SAMPLES_MAX per turn.
+    expect(r.work.points).toBe(2 * 721 + 2 * 721);
   });
 
   it('keeps the samples grid itself when it is coarser than the view cap', () => {

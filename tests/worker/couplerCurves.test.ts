@@ -94,3 +94,27 @@ describe('couplerCurves of a full-turn input', () => {
     }
   });
 });
+
+describe('couplerCurves resolution', () => {
+  /** Longest step between consecutive curve points, over the diagonal of the curve's bounding box. */
+  function longestChord(x: Float64Array, y: Float64Array): number {
+    let chord = 0;
+    for (let i = 1; i < x.length; i++) chord = Math.max(chord, Math.hypot(x[i] - x[i - 1], y[i] - y[i - 1]));
+    const span = (a: Float64Array) => Math.max(...a) - Math.min(...a);
+    return chord / Math.hypot(span(x), span(y));
+  }
+
+  it('follows the screen, not the samples chosen: no step longer than 3% of the curve, even at 36 samples', () => {
+    for (const l of [
+      { r1: 6, r2: 2, r3: 5, r4: 5 },
+      { r1: 4, r2: 3, r3: 3.5, r4: 3 },
+      { r1: 4, r2: 3, r3: 1, r4: 3.5 },
+    ]) {
+      for (const samples of [36, 360, 3600]) {
+        const r = computeCycle({ linkage: l, samples, coupler: C, ...NEEDS });
+        expect(r.curves.length).toBeGreaterThan(0);
+        for (const c of r.curves) expect(longestChord(c.x, c.y)).toBeLessThan(0.03);
+      }
+    }
+  });
+});
