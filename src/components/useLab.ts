@@ -46,7 +46,7 @@ export function useLab(
     setState((s) => ({ ...s, running: true, progress: { fraction: 0, stage: '' }, cancelled: false, error: null }));
     const token = { cancel: () => undefined as void };
     jobRef.current = token;
-    const job = client.runLab({ linkage: { r1, r2, r3, r4 }, branch, stepDeg }, (fraction, stage) => {
+    const job = client.lab({ linkage: { r1, r2, r3, r4 }, branch, stepDeg }, (fraction, stage) => {
       if (jobRef.current === token) setState((s) => ({ ...s, progress: { fraction, stage } }));
     });
     token.cancel = job.cancel;

@@ -3,26 +3,42 @@ import { useEffect, useLayoutEffect, useState } from 'react';
 import { degToRad } from '../solver/angles';
 import type { Branch, Linkage } from '../solver/types';
 import type { CouplerPoint } from '../state/appState';
-import type { SolverMode } from '../worker/client';
+import type { Messages } from '../state/messages';
+import { benchMark } from '../worker/benchMarks';
+import type { SolverMode, SolverModeReason } from '../worker/client';
 import { SolverClient } from '../worker/client';
-import type { CycleResponse, MethodChoice, PointResponse, WorkCount } from '../worker/protocol';
+import type { CycleResponse, MethodChoice, PointResponse, TableResponse, WorkCount } from '../worker/protocol';
 
-/** The app's solver client (worker, or main-thread fallback) and where it solves; null until mounted. */
-export function useSolverClient(): { client: SolverClient | null; mode: SolverMode } {
+/** The app's solver client, where it solves (worker, restarted worker or main thread) and why; client null until mounted. */
+export function useSolverClient(): { client: SolverClient | null; mode: SolverMode; reason: SolverModeReason | null } {
   const [client, setClient] = useState<SolverClient | null>(null);
-  const [mode, setMode] = useState<SolverMode>('starting');
+  const [status, setStatus] = useState<{ mode: SolverMode; reason: SolverModeReason | null }>({
+    mode: 'starting',
+    reason: null,
+  });
   useEffect(() => {
     const c = new SolverClient({
-      onModeChange: (m, reason) => {
-        setMode(m);
-        if (m === 'main-thread') console.warn(`Solver: ${reason ?? 'no worker'}; solving on the main thread.`);
+      onModeChange: (mode, reason, detail) => {
+        setStatus({ mode, reason });
+        if (mode === 'restarted' || mode === 'main-thread') console.warn(`Solver: ${detail}; now ${mode}.`);
       },
     });
     setClient(c);
-    setMode(c.mode);
+    setStatus({ mode: c.mode, reason: c.reason });
     return () => c.dispose();
   }, []);
-  return { client, mode };
+  return { client, ...status };
+}
+
+/** The status line for a solver mode, or null when the first worker is (or is about to be) solving. */
+export function solverStatusText(
+  mode: SolverMode,
+  reason: SolverModeReason | null,
+  t: Pick<Messages, 'solvingOnMainThread' | 'solverRestarted' | 'solverStoppedTwice'>,
+): string | null {
+  if (mode === 'restarted') return t.solverRestarted;
+  if (mode === 'main-thread') return reason === 'stopped' ? t.solverStoppedTwice : t.solvingOnMainThread;
+  return null;
 }
 
 /** What the visible views need from a cycle solve (anything not shown is not computed). */
@@ -37,7 +53,7 @@ export interface CycleNeeds {
   plotPixels: number;
 }
 
-/** The latest solved cycle for these inputs (latest wins while they change), and the last error message. */
+/** The latest solved cycle (view resolution) for these inputs (latest wins while they change), and the last error. */
 export function useCycle(
   client: SolverClient | null,
   linkage: Linkage,
@@ -57,7 +73,7 @@ export function useCycle(
   useLayoutEffect(() => {
     if (!client) return;
     client
-      .requestCycle({
+      .cycle({
         linkage: { r1, r2, r3, r4 },
         samples,
         coupler: { distance, angleRad: degToRad(angleDeg) },
@@ -107,7 +123,7 @@ export function usePoint(
   useLayoutEffect(() => {
     if (!client) return;
     client
-      .requestPoint({
+      .point({
         linkage: { r1, r2, r3, r4 },
         branch,
         theta2Rad: degToRad(theta2Deg),
@@ -129,8 +145,42 @@ export function usePoint(
   return point;
 }
 
-/** Records the solver work of a response as a performance mark (read by npm run bench:ui). */
-function markWork(kind: 'cycle' | 'point', work: WorkCount, elapsedMs?: number): void {
-  if (typeof performance.mark === 'function')
-    performance.mark(`fourbar:work:${kind}`, { detail: { ...work, elapsedMs } });
+/** Wait after the last input change before the table is solved (ms): a drag solves only the view grid. */
+const TABLE_DELAY_MS = 150;
+
+/**
+ * The whole samples + 1 table of a branch (the cycle summary's counts), solved once the inputs rest
+ * and only while enabled; the last table stays meanwhile (check its linkage and samples). Latest wins.
+ */
+export function useCycleTable(
+  client: SolverClient | null,
+  linkage: Linkage,
+  samples: number,
+  branch: Branch,
+  solver: MethodChoice,
+  enabled: boolean,
+): TableResponse | null {
+  const [table, setTable] = useState<TableResponse | null>(null);
+  const { r1, r2, r3, r4 } = linkage;
+  const { method, tol } = solver;
+  useEffect(() => {
+    if (!client || !enabled) return;
+    const id = setTimeout(() => {
+      client.table({ linkage: { r1, r2, r3, r4 }, samples, branch, solver: { method, tol } }).then(
+        (r) => {
+          if (!r) return;
+          setTable(r);
+          markWork('table', r.work);
+        },
+        (e: unknown) => console.warn(`Table solve failed: ${e instanceof Error ? e.message : String(e)}`),
+      );
+    }, TABLE_DELAY_MS);
+    return () => clearTimeout(id);
+  }, [client, enabled, r1, r2, r3, r4, samples, branch, method, tol]);
+  return table;
+}
+
+/** Records the solver work of an answer as a benchmark mark (read by npm run bench:ui; off in normal use). */
+function markWork(kind: 'cycle' | 'point' | 'table', work: WorkCount, elapsedMs?: number): void {
+  benchMark(`fourbar:work:${kind}`, { ...work, elapsedMs });
 }

@@ -203,4 +203,8 @@ export interface Messages {
   exportLabPng: string;
   exportLabCsv: string;
   labWhatItMeans: string;
+  /** Status line: the solver worker stopped (missed its deadline or died) and was restarted. */
+  solverRestarted: string;
+  /** Status line: the worker stopped a second time, so the solver runs on the main thread. */
+  solverStoppedTwice: string;
 }

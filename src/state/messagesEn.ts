@@ -326,4 +326,6 @@ export const messagesEn: Messages = {
   exportLabCsv: 'Export diagram CSV',
   labWhatItMeans:
     'How to read it: lower is more accurate and further left is faster, so the closed form, at the bottom left, wins on both. Loose NR tolerances look fast, but their angle error is about the tolerance divided by |sin μ|, which grows without bound near a toggle position. The report’s absolute 1e-9 test stops at about 1e-10 rad and can jump to the other branch.',
+  solverRestarted: 'The solver worker stopped; restarted it.',
+  solverStoppedTwice: 'Solving on the main thread: the worker stopped twice.',
 };

@@ -312,4 +312,6 @@ export const messagesZhTw: Messages = {
   exportLabCsv: '匯出計算量–精度圖 CSV',
   labWhatItMeans:
     '閱讀方式：越下方越準確、越左方越快，因此位於左下角的封閉解兩者兼得。寬鬆的牛頓法容許誤差看似很快，但角度誤差約為容許誤差除以 |sin μ|，接近肘節（死點）位置時會無限放大。報告採用的絕對判準 1e-9 最多只能準到約 1e-10 rad，而且可能跳到另一個分支。',
+  solverRestarted: '求解用的背景執行緒（Worker）停止了，已重新啟動。',
+  solverStoppedTwice: '改在主執行緒求解：背景執行緒（Worker）已停止兩次。',
 };

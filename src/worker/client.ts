@@ -1,74 +1,52 @@
-import type { ComputeResult } from './compute';
 import type { LabResult } from '../lab/workPrecision';
+import { createMainThreadWorker } from './mainThread';
+import type { WatchdogOptions } from './watchdog';
+import { DEFAULT_WATCHDOG, armTimer, budgetMs } from './watchdog';
 import type {
-  CycleRequest,
+  CycleParams,
   CycleResponse,
   ErrorResponse,
-  LabRequest,
-  PointRequest,
+  LabParams,
+  ParamsOf,
+  PointParams,
   PointResponse,
+  ResultOf,
+  SolverMethod,
   SolverRequest,
   SolverResponse,
+  TableParams,
+  TableResponse,
 } from './protocol';
 
-/** What a cycle or point request carries besides its type and id. */
-export type CycleParams = Omit<CycleRequest, 'type' | 'id'>;
-export type PointParams = Omit<PointRequest, 'type' | 'id'>;
-export type LabParams = Omit<LabRequest, 'type' | 'id'>;
-
-/** A running lab study: its result (null when cancelled) and a way to cancel it. */
-export interface LabRun {
-  result: Promise<LabResult | null>;
-  cancel: () => void;
-}
-
-interface LabPending {
-  request: LabRequest;
-  resolve: (r: LabResult | null) => void;
-  reject: (e: Error) => void;
-  onProgress: (fraction: number, stage: string) => void;
-  cancelled: boolean;
-}
-
-/** The part of a Worker the client uses (a real Worker, or a fake in tests). */
+/** The part of a Worker the client uses (a real Worker, the main-thread stand-in, or a fake in tests). */
 export interface WorkerLike {
   postMessage(message: SolverRequest, transfer?: Transferable[]): void;
   addEventListener(type: 'message' | 'error' | 'messageerror', listener: (event: Event) => void): void;
   terminate(): void;
 }
 
-/** Where requests are solved: a Web Worker, or the main thread when no worker could start. */
-export type SolverMode = 'starting' | 'worker' | 'main-thread';
+/** Where requests are solved: the first worker, a restarted one, or the main thread. */
+export type SolverMode = 'starting' | 'worker' | 'restarted' | 'main-thread';
 
-/** Options of SolverClient: a worker factory (default: the module worker) and timing. */
+/** Why the client left a worker: none ever answered or could start ('unavailable'), or one stopped ('stopped'). */
+export type SolverModeReason = 'unavailable' | 'stopped';
+
+/** Options of SolverClient: worker factories (default: the module worker, then the main thread) and the watchdog. */
 export interface SolverClientOptions {
-  /** Makes the worker; may throw (sandboxed iframes, no Worker). Default: createSolverWorker. */
   createWorker?: () => WorkerLike;
-  /** Milliseconds to wait for the worker's first answer before solving on the main thread; default 4000. */
-  startTimeoutMs?: number;
-  /** Called once when the client falls back to the main thread, with the reason. */
-  onModeChange?: (mode: SolverMode, reason?: string) => void;
+  createFallback?: () => WorkerLike;
+  watchdog?: Partial<WatchdogOptions>;
+  /** Called when the mode changes after the first answer (worker) or a failure, with why and a detail for the console. */
+  onModeChange?: (mode: SolverMode, reason: SolverModeReason | null, detail: string) => void;
 }
 
-type Channel = 'cycle' | 'point';
-type ResponseOf<C extends Channel> = C extends 'cycle' ? CycleResponse : PointResponse;
-
-interface Pending {
-  request: SolverRequest;
-  resolve: (r: SolverResponse | null) => void;
+/** A running lab study: its result (null when cancelled or superseded) and a way to cancel it. */
+export interface LabRun {
+  result: Promise<LabResult | null>;
+  cancel: () => void;
 }
 
-interface ChannelState {
-  inFlight: Pending | null;
-  queued: Pending | null;
-}
-
-/** Makes the module worker that owns every solve. */
-export function createSolverWorker(): WorkerLike {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' }) as unknown as WorkerLike;
-}
-
-/** Thrown into a promise when the worker answered a request with an ErrorResponse. */
+/** Thrown into a call's promise when the API answered with an error. */
 export class SolverError extends Error {
   constructor(readonly response: ErrorResponse) {
     super(response.message);
@@ -76,238 +54,195 @@ export class SolverError extends Error {
   }
 }
 
+/** Makes the module worker that serves the API object. */
+export function createSolverWorker(): WorkerLike {
+  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' }) as unknown as WorkerLike;
+}
+
+interface Call {
+  id: number;
+  type: SolverMethod;
+  params: unknown;
+  channel: string;
+  budgetMs: number;
+  promise: Promise<unknown>;
+  resolve: (value: unknown) => void;
+  reject: (error: Error) => void;
+  onProgress?: (fraction: number, stage: string) => void;
+  stale: boolean;
+}
+
 /**
- * Main-thread side of the solver worker. Each channel (cycle, point) keeps at most one request in
- * flight and one queued: a new request replaces the queued one, whose promise resolves to null, so
- * dragging a slider never builds a backlog and the last value is always solved. Answers to anything
- * but the newest request of a channel resolve to null. When the worker cannot start, requests are
- * solved on the main thread by the same code (loaded on demand).
+ * Main-thread side of the solver API. Each channel (cycle, point, table, lab) has at most one call in
+ * flight and one queued; a newer call supersedes both (they resolve to null at once, a superseded lab
+ * is cancelled), so a dragged slider builds no backlog and the last value is always solved. A watchdog
+ * gives the worker the summed budgets of what it holds, restarted at every message: when it misses
+ * that, errors or cannot be decoded, the client restarts it once, then serves the same API on the
+ * main thread, resending what was in flight.
  */
 export class SolverClient {
   private worker: WorkerLike | null = null;
+  private readonly inFlight = new Map<string, Call>();
+  private readonly queued = new Map<string, Call>();
+  private readonly watchdog: WatchdogOptions;
   private nextId = 1;
-  private latest: Record<Channel, number> = { cycle: 0, point: 0 };
-  private channels: Record<Channel, ChannelState> = {
-    cycle: { inFlight: null, queued: null },
-    point: { inFlight: null, queued: null },
-  };
-  private modeValue: SolverMode = 'starting';
-  private startTimer: ReturnType<typeof setTimeout> | null = null;
-  private compute: Promise<(req: SolverRequest) => ComputeResult> | null = null;
-  private labs = new Map<number, LabPending>();
+  private restarts = 0;
+  private heard = false;
+  private everHeard = false;
+  private disarm = (): void => undefined;
   private disposed = false;
-  private readonly options: SolverClientOptions;
+  private modeValue: SolverMode = 'starting';
+  private reasonValue: SolverModeReason | null = null;
 
-  constructor(options: SolverClientOptions = {}) {
-    this.options = options;
-    const create = options.createWorker ?? createSolverWorker;
-    try {
-      const w = create();
-      w.addEventListener('message', (e) => this.onMessage((e as MessageEvent<SolverResponse>).data));
-      w.addEventListener('error', (e) => {
-        (e as ErrorEvent).preventDefault?.();
-        this.fallBack(`worker error: ${(e as ErrorEvent).message || 'could not load the worker script'}`);
-      });
-      w.addEventListener('messageerror', () => this.fallBack('worker message could not be decoded'));
-      this.worker = w;
-    } catch (e) {
-      this.fallBack(`worker could not start: ${e instanceof Error ? e.message : String(e)}`);
-    }
+  constructor(private readonly options: SolverClientOptions = {}) {
+    this.watchdog = { ...DEFAULT_WATCHDOG, ...options.watchdog };
+    this.start(options.createWorker ?? createSolverWorker, 'starting', null, '');
   }
 
-  /** Where requests are being solved now. */
+  /** Where calls are solved now. */
   get mode(): SolverMode {
     return this.modeValue;
   }
 
-  /** Solves the cycle; resolves to null when a newer cycle request superseded this one. Rejects with SolverError. */
-  requestCycle(params: CycleParams): Promise<CycleResponse | null> {
-    return this.request('cycle', params);
+  /** Why the client is not on its first worker (null while it is). */
+  get reason(): SolverModeReason | null {
+    return this.reasonValue;
   }
 
-  /** Solves one pose; resolves to null when a newer point request superseded this one. Rejects with SolverError. */
-  requestPoint(params: PointParams): Promise<PointResponse | null> {
-    return this.request('point', params);
+  /** The cycle at view resolution; null when superseded. Rejects with SolverError. */
+  cycle(params: CycleParams): Promise<CycleResponse | null> {
+    return this.call('cycle', params, 'cycle').promise as Promise<CycleResponse | null>;
   }
 
-  /**
-   * Starts the solver lab's study (in the worker, or here when there is none); onProgress gets the
-   * fraction done and the stage. cancel() makes the result resolve to null. Rejects with SolverError.
-   */
-  runLab(params: LabParams, onProgress: (fraction: number, stage: string) => void): LabRun {
-    const id = this.nextId++;
-    const request: LabRequest = { ...params, type: 'lab', id };
-    let pending: LabPending | null = null;
-    const result = new Promise<LabResult | null>((resolve, reject) => {
-      pending = { request, resolve, reject, onProgress, cancelled: false };
-    });
-    const p = pending as unknown as LabPending;
-    this.labs.set(id, p);
-    if (this.disposed) p.resolve(null);
-    else if (this.modeValue === 'main-thread' || !this.worker) this.labHere(p);
-    else this.worker.postMessage(request);
-    const cancel = () => {
-      if (p.cancelled) return;
-      p.cancelled = true;
-      if (this.worker && this.modeValue !== 'main-thread') this.worker.postMessage({ type: 'cancel', id });
-    };
-    return { result, cancel };
+  /** One pose and its NR runs; null when superseded. Rejects with SolverError. */
+  point(params: PointParams): Promise<PointResponse | null> {
+    return this.call('point', params, 'point').promise as Promise<PointResponse | null>;
   }
 
-  /** Stops the worker; pending requests resolve to null. */
+  /** The whole samples + 1 table of one branch; latest wins per channel (use one per consumer). */
+  table(params: TableParams, channel = 'table'): Promise<TableResponse | null> {
+    return this.call('table', params, channel).promise as Promise<TableResponse | null>;
+  }
+
+  /** Starts the lab study; onProgress gets the fraction done and the stage; a newer study or cancel() supersedes it. */
+  lab(params: LabParams, onProgress: (fraction: number, stage: string) => void): LabRun {
+    const call = this.call('lab', params, 'lab', onProgress);
+    return { result: call.promise as Promise<ResultOf<'lab'>>, cancel: () => this.supersede(call) };
+  }
+
+  /** Stops the worker; every pending call resolves to null. */
   dispose(): void {
     this.disposed = true;
-    if (this.startTimer) clearTimeout(this.startTimer);
+    this.disarm();
     this.worker?.terminate();
     this.worker = null;
-    for (const lab of this.labs.values()) lab.resolve(null);
-    this.labs.clear();
-    for (const ch of Object.values(this.channels)) {
-      ch.inFlight?.resolve(null);
-      ch.queued?.resolve(null);
-      ch.inFlight = null;
-      ch.queued = null;
-    }
+    for (const c of [...this.inFlight.values(), ...this.queued.values()]) c.resolve(null);
+    this.inFlight.clear();
+    this.queued.clear();
   }
 
-  private request<C extends Channel>(
-    channel: C,
-    params: C extends 'cycle' ? CycleParams : PointParams,
-  ): Promise<ResponseOf<C> | null> {
-    const id = this.nextId++;
-    this.latest[channel] = id;
-    const request = { ...params, type: channel, id } as SolverRequest;
-    return new Promise<ResponseOf<C> | null>((resolve, reject) => {
-      if (this.disposed) {
-        resolve(null);
-        return;
-      }
-      const pending: Pending = {
-        request,
-        resolve: (r) => {
-          if (r && r.type === 'error') reject(new SolverError(r));
-          else resolve(r as ResponseOf<C> | null);
-        },
-      };
-      const ch = this.channels[channel];
-      if (ch.inFlight) {
-        ch.queued?.resolve(null);
-        ch.queued = pending;
-      } else {
-        this.dispatch(channel, pending);
-      }
-    });
+  private call<M extends SolverMethod>(type: M, params: ParamsOf<M>, channel: string, onProgress?: Call['onProgress']) {
+    const call = { id: this.nextId++, type, params, channel, onProgress, stale: false } as Call;
+    call.budgetMs = budgetMs(type, params, this.watchdog);
+    call.promise = new Promise((resolve, reject) => Object.assign(call, { resolve, reject }));
+    const busy = this.inFlight.get(channel);
+    if (this.disposed) call.resolve(null);
+    else if (!busy) this.send(call);
+    else {
+      const old = this.queued.get(channel);
+      if (old) this.supersede(old);
+      this.supersede(busy);
+      this.queued.set(channel, call);
+    }
+    return call;
   }
 
-  private dispatch(channel: Channel, pending: Pending): void {
-    const ch = this.channels[channel];
-    ch.inFlight = pending;
-    if (this.modeValue === 'main-thread' || !this.worker) {
-      this.solveHere(pending.request);
-      return;
-    }
-    if (this.modeValue === 'starting' && !this.startTimer) {
-      this.startTimer = setTimeout(
-        () => this.fallBack('worker did not answer in time'),
-        this.options.startTimeoutMs ?? 4000,
-      );
-    }
-    try {
-      this.worker.postMessage(pending.request);
-    } catch (e) {
-      this.fallBack(`postMessage failed: ${e instanceof Error ? e.message : String(e)}`);
-    }
+  private supersede(call: Call): void {
+    if (call.stale) return;
+    call.stale = true;
+    call.resolve(null);
+    if (this.queued.get(call.channel) === call) this.queued.delete(call.channel);
+    else if (call.type === 'lab' && this.inFlight.get(call.channel) === call)
+      this.worker?.postMessage({ type: 'cancel', id: call.id });
   }
 
-  private onMessage(response: SolverResponse): void {
-    if (this.disposed) return;
-    if (this.modeValue === 'starting' && this.worker) {
-      if (this.startTimer) clearTimeout(this.startTimer);
-      this.startTimer = null;
-      this.setMode('worker');
-    }
-    if (
-      response.type === 'lab' ||
-      response.type === 'lab-progress' ||
-      (response.type === 'error' && response.requestType === 'lab')
-    ) {
-      this.onLabMessage(response);
-      return;
-    }
-    if (response.type === 'error' && response.requestType === 'cancel') return;
-    const channel = (response.type === 'error' ? response.requestType : response.type) as Channel;
-    const ch = this.channels[channel];
-    if (!ch.inFlight || ch.inFlight.request.id !== response.id) return;
-    const done = ch.inFlight;
-    ch.inFlight = null;
-    done.resolve(response.id === this.latest[channel] ? response : null);
-    const next = ch.queued;
-    ch.queued = null;
-    if (next) this.dispatch(channel, next);
+  private send(call: Call): void {
+    this.inFlight.set(call.channel, call);
+    this.worker?.postMessage({ type: call.type, id: call.id, params: call.params } as SolverRequest);
+    this.arm();
   }
 
-  private onLabMessage(response: SolverResponse): void {
-    const lab = this.labs.get(response.id);
-    if (!lab) return;
-    if (response.type === 'lab-progress') {
-      if (!lab.cancelled) lab.onProgress(response.fraction, response.stage);
-      return;
+  private onMessage(from: WorkerLike, m: SolverResponse): void {
+    if (from !== this.worker || this.disposed) return;
+    this.heard = this.everHeard = true;
+    if (this.modeValue === 'starting') this.setMode('worker', null, '');
+    const call = [...this.inFlight.values()].find((c) => c.id === m.id);
+    if (!call) {
+      // An answer to a call this worker no longer holds (resent after a restart): nothing to do.
+    } else if (m.type === 'progress') {
+      if (!call.stale) call.onProgress?.(m.fraction, m.stage);
+    } else {
+      this.inFlight.delete(call.channel);
+      if (m.type === 'error') call.reject(new SolverError(m));
+      else call.resolve(m.value);
+      const next = this.queued.get(call.channel);
+      this.queued.delete(call.channel);
+      if (next) this.send(next);
     }
-    this.labs.delete(response.id);
-    if (response.type === 'error') lab.reject(new SolverError(response));
-    else if (response.type === 'lab') lab.resolve(lab.cancelled ? null : response.result);
+    this.arm();
   }
 
-  private labHere(lab: LabPending): void {
-    void import('./labRunner').then(
-      (m) =>
-        m.runLabRequest(
-          lab.request,
-          (r) => this.onLabMessage(r),
-          () => lab.cancelled,
-        ),
-      (e: unknown) => lab.reject(new Error(`lab failed to load: ${e instanceof Error ? e.message : String(e)}`)),
-    );
+  private arm(): void {
+    this.disarm();
+    if (this.modeValue === 'main-thread' || this.inFlight.size === 0) return;
+    let ms = this.heard ? 0 : this.watchdog.startMs;
+    for (const c of this.inFlight.values()) ms += c.budgetMs;
+    this.disarm = armTimer(ms, () => this.fail(`no answer within ${Math.round(ms)} ms`));
   }
 
-  private fallBack(reason: string): void {
+  private fail(detail: string): void {
     if (this.disposed || this.modeValue === 'main-thread') return;
-    if (this.startTimer) clearTimeout(this.startTimer);
-    this.startTimer = null;
+    const reason = this.everHeard ? 'stopped' : 'unavailable';
+    if (this.restarts++ === 0) this.start(this.options.createWorker ?? createSolverWorker, 'restarted', reason, detail);
+    else this.start(this.options.createFallback ?? createMainThreadWorker, 'main-thread', reason, detail);
+    // Resend what the lost worker held: the call itself, or what superseded it.
+    for (const call of [...this.inFlight.values()]) {
+      this.inFlight.delete(call.channel);
+      const next = call.stale ? this.queued.get(call.channel) : call;
+      this.queued.delete(call.channel);
+      if (next) this.send(next);
+    }
+  }
+
+  private start(create: () => WorkerLike, mode: SolverMode, reason: SolverModeReason | null, detail: string): void {
     try {
       this.worker?.terminate();
     } catch {
       // A worker that never started may refuse to terminate; it is dropped either way.
     }
     this.worker = null;
-    this.setMode('main-thread', reason);
-    for (const ch of Object.values(this.channels)) {
-      if (ch.inFlight) this.solveHere(ch.inFlight.request);
+    this.heard = false;
+    if (mode !== 'starting') this.setMode(mode, reason, detail);
+    let w: WorkerLike;
+    try {
+      w = create();
+    } catch (e) {
+      if (mode === 'main-thread') throw e;
+      this.restarts = 1; // It would not start again either: straight to the main thread.
+      return this.fail(`worker could not start: ${e instanceof Error ? e.message : String(e)}`);
     }
-    for (const lab of this.labs.values()) this.labHere(lab);
+    this.worker = w;
+    w.addEventListener('message', (e) => this.onMessage(w, (e as MessageEvent<SolverResponse>).data));
+    w.addEventListener('error', (e) => {
+      (e as ErrorEvent).preventDefault?.();
+      if (w === this.worker) this.fail(`worker error: ${(e as ErrorEvent).message || 'the script did not load'}`);
+    });
+    w.addEventListener('messageerror', () => w === this.worker && this.fail('a worker message could not be decoded'));
   }
 
-  private setMode(mode: SolverMode, reason?: string): void {
+  private setMode(mode: SolverMode, reason: SolverModeReason | null, detail: string): void {
     this.modeValue = mode;
-    this.options.onModeChange?.(mode, reason);
-  }
-
-  private solveHere(request: SolverRequest): void {
-    this.compute ??= import('./compute').then((m) => m.handleRequest);
-    void this.compute.then(
-      (handle) => {
-        // Answer asynchronously, as the worker would, so latest-wins behaves the same.
-        setTimeout(() => {
-          if (this.disposed) return;
-          const channel = request.type as Channel;
-          if (this.channels[channel].inFlight?.request.id !== request.id) return;
-          this.onMessage(handle(request).response);
-        }, 0);
-      },
-      (e: unknown) => {
-        const message = `main-thread solver failed to load: ${e instanceof Error ? e.message : String(e)}`;
-        this.onMessage({ type: 'error', id: request.id, requestType: request.type, message });
-      },
-    );
+    this.reasonValue = reason;
+    this.options.onModeChange?.(mode, reason, detail);
   }
 }

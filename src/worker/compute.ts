@@ -11,6 +11,7 @@ import {
   solveNewton,
   sweep,
   transmissionAngle,
+  validateLinkage,
   velocityRatios,
 } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
@@ -18,22 +19,40 @@ import { couplerCurves } from './couplerCurves';
 import { encodeStatuses } from './statusCodes';
 import type {
   BranchCycle,
-  CycleRequest,
+  CycleParams,
   CycleResponse,
   MethodChoice,
   NewtonSummary,
   PlotSeries,
-  PointRequest,
+  PointParams,
   PointResponse,
   PoseAngles,
-  SolverRequest,
-  SolverResponse,
+  TableParams,
+  TableResponse,
 } from './protocol';
 
-/** A response and the buffers to transfer with it. */
-export interface ComputeResult {
-  response: SolverResponse;
-  transfer: ArrayBuffer[];
+/** Most intervals of the cycle's view grid (half a degree): enough for bounds and a smooth coupler curve on screen. */
+export const VIEW_SAMPLES_MAX = 720;
+
+/** Largest samples accepted (intervals per cycle); the UI allows 36 000. */
+const SAMPLES_LIMIT = 1_000_000;
+
+/** Throws unless samples is a whole number of intervals in [1, SAMPLES_LIMIT]. */
+function checkSamples(samples: unknown): asserts samples is number {
+  if (typeof samples !== 'number' || !Number.isInteger(samples) || samples < 1 || samples > SAMPLES_LIMIT) {
+    throw new Error(`samples must be a whole number from 1 to ${SAMPLES_LIMIT}, got ${String(samples)}`);
+  }
+}
+
+/** The uniform grid of n intervals from 0 to 360 degrees, in degrees and radians. */
+function uniformGrid(n: number): { deg: Float64Array; rad: Float64Array } {
+  const deg = new Float64Array(n + 1);
+  const rad = new Float64Array(n + 1);
+  for (let k = 0; k <= n; k++) {
+    deg[k] = (360 * k) / n;
+    rad[k] = degToRad(deg[k]);
+  }
+  return { deg, rad };
 }
 
 function sigmaOf(a: Angles): number {
@@ -66,7 +85,7 @@ function branchCycle(
   l: Linkage,
   theta2Rad: Float64Array,
   branch: Branch,
-  coupler: CycleRequest['coupler'],
+  coupler: CycleParams['coupler'],
   solver: MethodChoice,
 ): BranchCycle {
   const r = sweep(l, theta2Rad, sweepOptions(branch, solver));
@@ -106,17 +125,20 @@ function plotSeries(l: Linkage, pixels: number, branches: Branch[], solver: Meth
   return { theta2Deg: grid.map(radToDeg), open: one('open'), crossed: one('crossed') };
 }
 
-/** Solves the whole cycle of a request (both branches, NR continuation sweeps) and its coupler curves. */
-export function computeCycle(req: CycleRequest): ComputeResult {
+/**
+ * Solves the cycle the view draws: the classification, the chosen branch (and the other when shown or
+ * when the input rocks) on a uniform grid of min(samples, VIEW_SAMPLES_MAX) intervals, the coupler
+ * curves and the plot samples. The whole samples + 1 table is computeTable's. Throws for bad params.
+ */
+export function computeCycle(req: CycleParams): CycleResponse {
   const t0 = performance.now();
   const classification = classify(req.linkage);
-  const n = req.samples;
-  const theta2Deg = new Float64Array(n + 1);
-  const theta2Rad = new Float64Array(n + 1);
-  for (let k = 0; k <= n; k++) {
-    theta2Deg[k] = (360 * k) / n;
-    theta2Rad[k] = degToRad(theta2Deg[k]);
+  checkSamples(req.samples);
+  if (!(req.plotPixels >= 0 && req.plotPixels <= 100_000)) {
+    throw new Error(`plotPixels must be a pixel count from 0 to 100000, got ${String(req.plotPixels)}`);
   }
+  const n = Math.min(req.samples, VIEW_SAMPLES_MAX);
+  const { deg: theta2Deg, rad: theta2Rad } = uniformGrid(n);
   // The other branch only when something shows it; a rocking input needs both (it changes branch at its limits).
   const rocking = !classification.inputRange.full;
   const want = (b: Branch) => b === req.branch || req.otherBranch || rocking;
@@ -126,7 +148,8 @@ export function computeCycle(req: CycleRequest): ComputeResult {
   const crossed = want('crossed')
     ? branchCycle(req.linkage, theta2Rad, 'crossed', req.coupler, req.solver)
     : skippedCycle(n + 1);
-  const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, open, crossed, n) : [];
+  // The curves follow the screen, not the samples the user chose: always VIEW_SAMPLES_MAX per turn.
+  const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, VIEW_SAMPLES_MAX) : [];
   const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
   const plot = req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver) : null;
   let points = 0;
@@ -135,15 +158,13 @@ export function computeCycle(req: CycleRequest): ComputeResult {
     if (!b.skipped) points += n + 1;
     iterations += b.totalIterations;
   }
-  for (const c of curves) if (c.rocking) points += c.x.length;
+  for (const c of curves) points += c.x.length;
   if (plot) points += plot.theta2Deg.length * branches.length;
-  const response: CycleResponse = {
-    type: 'cycle',
-    id: req.id,
+  return {
     linkage: { ...req.linkage },
     coupler: { ...req.coupler },
     classification,
-    samples: n,
+    samples: req.samples,
     theta2Deg,
     open,
     crossed,
@@ -153,26 +174,31 @@ export function computeCycle(req: CycleRequest): ComputeResult {
     work: { points, iterations },
     elapsedMs: performance.now() - t0,
   };
-  const buffers: ArrayBufferLike[] = [theta2Deg.buffer];
-  for (const b of [open, crossed]) {
-    buffers.push(
-      b.theta3.buffer,
-      b.theta4.buffer,
-      b.iterations.buffer,
-      b.residual.buffer,
-      b.statusCodes.buffer,
-      b.px.buffer,
-      b.py.buffer,
-    );
-  }
-  for (const c of curves) buffers.push(c.x.buffer, c.y.buffer);
-  if (plot) {
-    buffers.push(plot.theta2Deg.buffer);
-    for (const b of [plot.open, plot.crossed]) if (b) buffers.push(b.theta3.buffer, b.theta4.buffer);
-  }
-  // Shared buffers cannot be transferred (and the sweep never makes one); each buffer may appear once.
-  const transfer = [...new Set(buffers)].filter((b): b is ArrayBuffer => b instanceof ArrayBuffer);
-  return { response, transfer };
+}
+
+/** The whole samples + 1 point sweep of one branch with the chosen method: the cycle CSV's columns. Throws for bad params. */
+export function computeTable(req: TableParams): TableResponse {
+  checkSamples(req.samples);
+  const { deg, rad } = uniformGrid(req.samples);
+  const r = sweep(req.linkage, rad, sweepOptions(req.branch, req.solver));
+  let okCount = 0;
+  for (const s of r.status) if (s === 'ok') okCount++;
+  return {
+    linkage: { ...req.linkage },
+    branch: req.branch,
+    samples: req.samples,
+    solver: { ...req.solver },
+    theta2Deg: deg,
+    theta3Rad: r.theta3,
+    theta4Rad: r.theta4,
+    statusCodes: encodeStatuses(r.status),
+    iterations: r.iterations,
+    residual: r.residual,
+    okCount,
+    totalIterations: r.totalIterations,
+    branchCorrections: r.branchCorrections,
+    work: { points: req.samples + 1, iterations: r.totalIterations },
+  };
 }
 
 function pose(theta2: number, a: Angles | null): PoseAngles | null {
@@ -222,8 +248,10 @@ function summary(
  * when a panel shows them, NR with the chosen method from the continuation start (the solution one
  * cycle step back, plus the velocity-ratio predictor for 'newton') and from the report's cold first guess.
  */
-export function computePoint(req: PointRequest): ComputeResult {
+export function computePoint(req: PointParams): PointResponse {
   const { linkage: l, branch, theta2Rad, solver } = req;
+  validateLinkage(l);
+  if (!Number.isFinite(theta2Rad)) throw new Error(`theta2Rad must be a finite angle, got ${String(theta2Rad)}`);
   const other: Branch = branch === 'open' ? 'crossed' : 'open';
   const sigma = branch === 'open' ? 1 : -1;
   const main = solveClosedForm(l, theta2Rad, branch);
@@ -256,9 +284,7 @@ export function computePoint(req: PointRequest): ComputeResult {
     points += 1;
     iterations += rc.iterations;
   }
-  const response: PointResponse = {
-    type: 'point',
-    id: req.id,
+  return {
     linkage: { r1: l.r1, r2: l.r2, r3: l.r3, r4: l.r4 },
     coupler: { distance: req.coupler.distance, angleRad: req.coupler.angleRad },
     theta2Rad,
@@ -270,28 +296,4 @@ export function computePoint(req: PointRequest): ComputeResult {
     solver: { ...solver },
     work: { points, iterations },
   };
-  return { response, transfer: [] };
-}
-
-/** Answers any request; never throws: a failure becomes an ErrorResponse naming what went wrong. */
-export function handleRequest(req: SolverRequest): ComputeResult {
-  try {
-    switch (req.type) {
-      case 'cycle':
-        return computeCycle(req);
-      case 'point':
-        return computePoint(req);
-      case 'lab':
-      case 'cancel':
-        throw new Error(`${req.type} requests are handled by the worker's lab runner`);
-      default: {
-        const unknown = req as { type?: unknown; id?: unknown };
-        throw new Error(`unknown request type ${JSON.stringify(unknown.type)}`);
-      }
-    }
-  } catch (e) {
-    const message = e instanceof Error ? e.message : String(e);
-    const id = typeof req?.id === 'number' ? req.id : -1;
-    return { response: { type: 'error', id, requestType: req?.type ?? 'point', message }, transfer: [] };
-  }
 }

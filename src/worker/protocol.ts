@@ -15,7 +15,7 @@ export interface MethodChoice {
   tol: number | null;
 }
 
-/** Solver work one response cost: points solved (closed form or NR) and NR iterations. */
+/** Solver work one answer cost: points solved (closed form or NR) and NR iterations. */
 export interface WorkCount {
   points: number;
   iterations: number;
@@ -27,11 +27,10 @@ export interface CouplerSpec {
   angleRad: number;
 }
 
-/** Ask for the whole cycle: classification and a sweep of both branches at samples + 1 points from 0 to 360 degrees. */
-export interface CycleRequest {
-  type: 'cycle';
-  id: number;
+/** The cycle the view draws: classification, both branches on the view grid, coupler curves, plot samples. */
+export interface CycleParams {
   linkage: Linkage;
+  /** Intervals per cycle the user chose; the view grid has min(samples, VIEW_SAMPLES_MAX) of them. */
   samples: number;
   coupler: CouplerSpec;
   solver: MethodChoice;
@@ -44,10 +43,8 @@ export interface CycleRequest {
   plotPixels: number;
 }
 
-/** Ask for one pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
-export interface PointRequest {
-  type: 'point';
-  id: number;
+/** One pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
+export interface PointParams {
   linkage: Linkage;
   branch: Branch;
   theta2Rad: number;
@@ -60,25 +57,22 @@ export interface PointRequest {
   newton: boolean;
 }
 
-/** Ask for the solver lab's work-precision study of a linkage (long: progress messages, cancellable). */
-export interface LabRequest {
-  type: 'lab';
-  id: number;
+/** The full samples + 1 point table of one branch (the cycle CSV's columns and the cycle summary). */
+export interface TableParams {
+  linkage: Linkage;
+  samples: number;
+  branch: Branch;
+  solver: MethodChoice;
+}
+
+/** The solver lab's work-precision study of a linkage (long: progress messages, cancellable). */
+export interface LabParams {
   linkage: Linkage;
   branch: Branch;
   stepDeg: number;
 }
 
-/** Cancel the lab request with this id (it answers with result null). */
-export interface CancelRequest {
-  type: 'cancel';
-  id: number;
-}
-
-/** Every request the main thread can send. */
-export type SolverRequest = CycleRequest | PointRequest | LabRequest | CancelRequest;
-
-/** One branch of the swept cycle; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
+/** One branch of the swept view grid; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
 export interface BranchCycle {
   theta3: Float64Array;
   theta4: Float64Array;
@@ -117,15 +111,18 @@ export interface CouplerCurve {
   hiRad: number;
 }
 
-/** The cycle answer: classification, input angles in degrees, both branches and the coupler curves. */
+/**
+ * The cycle answer, at view resolution: theta2Deg and both branches on a uniform grid of
+ * min(samples, VIEW_SAMPLES_MAX) intervals (the whole samples + 1 table is the separate table request).
+ */
 export interface CycleResponse {
-  type: 'cycle';
-  id: number;
   /** The request's linkage and coupler point, so the cycle is always labelled with what it was solved for. */
   linkage: Linkage;
   coupler: CouplerSpec;
   classification: Classification;
+  /** Intervals per cycle the user chose (the table's size), not the view grid's. */
   samples: number;
+  /** The view grid, degrees 0..360: theta2Deg.length - 1 = min(samples, VIEW_SAMPLES_MAX) intervals. */
   theta2Deg: Float64Array;
   open: BranchCycle;
   crossed: BranchCycle;
@@ -164,8 +161,6 @@ export interface PoseAngles {
 
 /** The point answer: the pose on the requested branch (null when it cannot assemble), the other branch, two NR runs. */
 export interface PointResponse {
-  type: 'point';
-  id: number;
   /** The request's linkage and coupler point, so a pose is always drawn with the lengths it was solved for. */
   linkage: Linkage;
   coupler: CouplerSpec;
@@ -181,28 +176,82 @@ export interface PointResponse {
   work: WorkCount;
 }
 
-/** Progress of a lab request: fraction in [0, 1] and the stage being computed. */
-export interface LabProgressResponse {
-  type: 'lab-progress';
+/** The table answer: samples + 1 rows of one branch (theta2 degrees, theta3/theta4 radians wrapped, NaN when not ok). */
+export interface TableResponse {
+  linkage: Linkage;
+  branch: Branch;
+  samples: number;
+  solver: MethodChoice;
+  theta2Deg: Float64Array;
+  theta3Rad: Float64Array;
+  theta4Rad: Float64Array;
+  /** Status of each row as a code: an index into POINT_STATUSES. */
+  statusCodes: Uint8Array;
+  iterations: Int32Array;
+  /** Loop-closure residual of each row (length unit). */
+  residual: Float64Array;
+  okCount: number;
+  totalIterations: number;
+  branchCorrections: number;
+  work: WorkCount;
+}
+
+/** What a long call can do besides answering: report progress (fraction in [0, 1], stage) and see a cancel. */
+export interface TaskContext {
+  progress(fraction: number, stage: string): void;
+  cancelled(): boolean;
+}
+
+/** The solver's one API object: the worker exposes it, and the main-thread fallback runs the same object. */
+export interface SolverApi {
+  cycle(params: CycleParams): CycleResponse;
+  point(params: PointParams): PointResponse;
+  table(params: TableParams): TableResponse;
+  /** Resolves to null when cancelled. */
+  lab(params: LabParams, task: TaskContext): Promise<LabResult | null>;
+}
+
+/** The API's method names: every request type but 'cancel'. */
+export type SolverMethod = keyof SolverApi;
+
+/** Parameters of a method. */
+export type ParamsOf<M extends SolverMethod> = Parameters<SolverApi[M]>[0];
+
+/** What a method answers (awaited). */
+export type ResultOf<M extends SolverMethod> = Awaited<ReturnType<SolverApi[M]>>;
+
+/** A call of one method: type is the method, params its only argument. */
+export type CallRequest = { [M in SolverMethod]: { type: M; id: number; params: ParamsOf<M> } }[SolverMethod];
+
+/** Cancel the call with this id (a running lab answers null at its next stage; others are ignored). */
+export interface CancelRequest {
+  type: 'cancel';
+  id: number;
+}
+
+/** Every request the main thread can send. */
+export type SolverRequest = CallRequest | CancelRequest;
+
+/** A method's answer: type is the method, value what it returned (its buffers transferred). */
+export type AnswerResponse = { [M in SolverMethod]: { type: M; id: number; value: ResultOf<M> } }[SolverMethod];
+
+/** Progress of a long call: fraction in [0, 1] and the stage being computed. */
+export interface ProgressResponse {
+  type: 'progress';
   id: number;
   fraction: number;
   stage: string;
 }
 
-/** The lab's answer; result null when it was cancelled. */
-export interface LabResponse {
-  type: 'lab';
-  id: number;
-  result: LabResult | null;
-}
-
-/** The worker could not answer a request: the message names what was wrong. */
+/** A call failed: the message names what was wrong; requestType is the request's own type as received. */
 export interface ErrorResponse {
   type: 'error';
+  /** The request's id, or -1 when it had none. */
   id: number;
-  requestType: SolverRequest['type'];
+  /** The request's type ('unknown' when it had none), never a guess. */
+  requestType: string;
   message: string;
 }
 
-/** Every answer the worker can send. */
-export type SolverResponse = CycleResponse | PointResponse | LabResponse | LabProgressResponse | ErrorResponse;
+/** Every message the worker can send. */
+export type SolverResponse = AnswerResponse | ProgressResponse | ErrorResponse;

@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { computeCycle, computePoint, handleRequest } from '../../src/worker/compute';
-import type { SolverRequest } from '../../src/worker/protocol';
+import { VIEW_SAMPLES_MAX, computeCycle, computePoint, computeTable } from '../../src/worker/compute';
 import { decodeStatuses } from '../../src/worker/statusCodes';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
@@ -18,8 +17,7 @@ const POINT_NEEDS = { solver: { method: 'newton' as const, tol: null }, ghost: t
 
 describe('computeCycle', () => {
   it('sweeps 361 points from 0 to 360 degrees on both branches of the report case', () => {
-    const r = computeCycle({ type: 'cycle', id: 1, linkage: L, samples: 360, coupler: C, ...NEEDS }).response;
-    if (r.type !== 'cycle') throw new Error(r.type);
+    const r = computeCycle({ linkage: L, samples: 360, coupler: C, ...NEEDS });
     expect(r.theta2Deg.length).toBe(361);
     expect(r.theta2Deg[0]).toBe(0);
     expect(r.theta2Deg[360]).toBe(360);
@@ -33,34 +31,19 @@ describe('computeCycle', () => {
     expect(r.curves.map((c) => c.branch)).toEqual(['open', 'crossed']);
   });
 
-  it('gives a closed rocking coupler curve per circuit for a triple rocker', () => {
-    const r = computeCycle({
-      type: 'cycle',
-      id: 1,
-      linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
-      samples: 360,
-      coupler: C,
-      ...NEEDS,
-    }).response;
-    if (r.type !== 'cycle') throw new Error(r.type);
-    expect(r.curves).toHaveLength(1);
-    const c = r.curves[0];
-    expect(c.rocking).toBe(true);
-    expect(c.x[0]).toBe(c.x[c.x.length - 1]);
+  it('marks the unreachable inputs of a triple rocker with a status and NaN angles', () => {
+    const r = computeCycle({ linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 }, samples: 360, coupler: C, ...NEEDS });
     expect(decodeStatuses(r.open.statusCodes)[180]).toBe('unreachable');
     expect(Number.isNaN(r.open.theta3[180])).toBe(true);
   });
 
   it('reports a linkage that cannot assemble anywhere without throwing', () => {
     const r = computeCycle({
-      type: 'cycle',
-      id: 1,
       linkage: { r1: 10, r2: 1, r3: 2, r4: 3 },
       samples: 36,
       coupler: C,
       ...NEEDS,
-    }).response;
-    if (r.type !== 'cycle') throw new Error(r.type);
+    });
     expect(r.open.okCount).toBe(0);
     expect(r.classification.type).toBe('cannot-assemble');
     expect(r.curves).toHaveLength(0);
@@ -70,16 +53,13 @@ describe('computeCycle', () => {
 describe('computePoint', () => {
   it('solves the pose, the ghost and both NR runs', () => {
     const r = computePoint({
-      type: 'point',
-      id: 2,
       linkage: L,
       branch: 'open',
       theta2Rad: 90 * D,
       stepRad: D,
       coupler: C,
       ...POINT_NEEDS,
-    }).response;
-    if (r.type !== 'point') throw new Error(r.type);
+    });
     expect(r.pose?.theta3).toBeCloseTo(32.3335306935 * D, 9);
     expect(r.ghost?.theta4).toBeCloseTo(-147.6664693065 * D, 9);
     expect(r.continuation?.status).toBe('converged');
@@ -91,61 +71,111 @@ describe('computePoint', () => {
 
   it('says when the linkage cannot assemble at theta2 (no pose, no NR)', () => {
     const r = computePoint({
-      type: 'point',
-      id: 3,
       linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
       branch: 'open',
       theta2Rad: Math.PI,
       stepRad: D,
       coupler: C,
       ...POINT_NEEDS,
-    }).response;
-    if (r.type !== 'point') throw new Error(r.type);
+    });
     expect(r.pose).toBeNull();
     expect(r.ghost).toBeNull();
     expect(r.continuation).toBeNull();
   });
 });
 
-describe('handleRequest', () => {
-  it('answers a bad request with an error naming the value instead of throwing', () => {
-    const r = handleRequest({
-      type: 'cycle',
-      id: 7,
-      linkage: { r1: 0, r2: 2, r3: 5, r4: 5 },
-      samples: 36,
-      coupler: C,
-      ...NEEDS,
-    }).response;
-    expect(r).toMatchObject({ type: 'error', id: 7, requestType: 'cycle' });
-    if (r.type === 'error') expect(r.message).toMatch(/r1 .*got 0/);
-    const u = handleRequest({ type: 'nope', id: 8 } as unknown as SolverRequest).response;
-    expect(u.type).toBe('error');
+describe('bad params', () => {
+  it('throws an error naming the field and value (expose turns it into an error answer)', () => {
+    expect(() => computeCycle({ linkage: { r1: 0, r2: 2, r3: 5, r4: 5 }, samples: 36, coupler: C, ...NEEDS })).toThrow(
+      /r1 .*got 0/,
+    );
+    expect(() => computeCycle({ linkage: L, samples: 2.5, coupler: C, ...NEEDS })).toThrow(/samples .*got 2\.5/);
+    expect(() => computeCycle({ linkage: L, samples: 36, coupler: C, ...NEEDS, plotPixels: -1 })).toThrow(
+      /plotPixels .*got -1/,
+    );
+    expect(() => computeTable({ linkage: L, samples: 0, branch: 'open', solver: NEEDS.solver })).toThrow(
+      /samples .*got 0/,
+    );
+    expect(() =>
+      computePoint({ linkage: L, branch: 'open', theta2Rad: NaN, stepRad: D, coupler: C, ...POINT_NEEDS }),
+    ).toThrow(/theta2Rad .*got NaN/);
+  });
+});
+
+describe('computeCycle at view resolution', () => {
+  it('solves at most VIEW_SAMPLES_MAX intervals whatever the samples, and says how many were asked', () => {
+    const r = computeCycle({ linkage: L, samples: 3600, coupler: C, ...NEEDS });
+    expect(VIEW_SAMPLES_MAX).toBe(720);
+    expect(r.samples).toBe(3600);
+    expect(r.theta2Deg.length).toBe(721);
+    expect(r.open.theta3.length).toBe(721);
+    expect(r.theta2Deg[720]).toBe(360);
+    // Hard case 1 at theta2 = 90 deg (60-digit reference), grid index 180 of 720.
+    expect(r.open.theta3[180] / D).toBeCloseTo(32.3335306935, 7);
+    // Both branches on the view grid, and the two coupler curves at VIEW_SAMPLES_MAX per turn.
+    expect(r.work.points).toBe(2 * 721 + 2 * 721);
+  });
+
+  it('keeps the samples grid itself when it is coarser than the view cap', () => {
+    const r = computeCycle({ linkage: L, samples: 180, coupler: C, ...NEEDS });
+    expect(r.theta2Deg.length).toBe(181);
+    expect(r.theta2Deg[1]).toBe(2);
+  });
+});
+
+describe('computeTable', () => {
+  it('gives the CSV columns of all samples + 1 rows of one branch, agreeing with the view grid', () => {
+    const solver = { method: 'newton' as const, tol: null };
+    const t = computeTable({ linkage: L, samples: 3600, branch: 'crossed', solver });
+    const view = computeCycle({ linkage: L, samples: 3600, coupler: C, ...NEEDS });
+    for (const a of [t.theta2Deg, t.theta3Rad, t.theta4Rad, t.statusCodes, t.iterations, t.residual]) {
+      expect(a.length).toBe(3601);
+    }
+    expect(t.theta2Deg[900]).toBe(90);
+    // Hard case 1, crossed branch at 90 deg (60-digit reference).
+    expect(t.theta3Rad[900] / D).toBeCloseTo(-69.2034283393, 7);
+    expect(t.okCount).toBe(3601);
+    expect(decodeStatuses(t.statusCodes).every((s) => s === 'ok')).toBe(true);
+    expect(t.totalIterations).toBe(Array.from(t.iterations).reduce((a, b) => a + b, 0));
+    // Polished NR on a benign crank-rocker is at full precision on both grids: 1e-12 rad is far above its error.
+    for (let k = 0; k <= 720; k++) {
+      expect(view.theta2Deg[k]).toBe(t.theta2Deg[5 * k]);
+      expect(Math.abs(view.crossed.theta3[k] - t.theta3Rad[5 * k])).toBeLessThan(1e-12);
+    }
+    expect(t.residual[900]).toBeLessThan(1e-12);
+    expect([t.linkage, t.branch, t.samples]).toEqual([L, 'crossed', 3600]);
+  });
+
+  it('counts the assembled rows of a triple rocker', () => {
+    const t = computeTable({
+      linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
+      samples: 360,
+      branch: 'open',
+      solver: { method: 'closed-form', tol: null },
+    });
+    // Hard case 10: reachable for |theta2| <= 135.9513743259 deg, so 136 + 1 + 135 whole degrees.
+    expect(t.okCount).toBe(272);
+    expect(decodeStatuses(t.statusCodes)[180]).toBe('unreachable');
   });
 });
 
 describe('computeCycle computes only what the view shows', () => {
   it('skips the other branch, the coupler curves and the plot samples when nothing shows them', () => {
     const lean = computeCycle({
-      type: 'cycle',
-      id: 1,
       linkage: L,
       samples: 360,
       coupler: C,
       ...NEEDS,
       otherBranch: false,
       curves: false,
-    }).response;
+    });
     const full = computeCycle({
-      type: 'cycle',
-      id: 2,
       linkage: L,
       samples: 360,
       coupler: C,
       ...NEEDS,
       plotPixels: 600,
-    }).response;
-    if (lean.type !== 'cycle' || full.type !== 'cycle') throw new Error('not a cycle');
+    });
     expect(lean.crossed.skipped).toBe(true);
     expect(lean.crossed.okCount).toBe(0);
     expect(lean.curves).toEqual([]);
@@ -160,15 +190,12 @@ describe('computeCycle computes only what the view shows', () => {
 
   it('still sweeps both branches of a rocking input, which changes branch at its limits', () => {
     const r = computeCycle({
-      type: 'cycle',
-      id: 1,
       linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 },
       samples: 360,
       coupler: C,
       ...NEEDS,
       otherBranch: false,
-    }).response;
-    if (r.type !== 'cycle') throw new Error(r.type);
+    });
     expect(r.open.skipped).toBe(false);
     expect(r.crossed.skipped).toBe(false);
   });
@@ -176,15 +203,12 @@ describe('computeCycle computes only what the view shows', () => {
   it('puts the exact input limits of a triple rocker into the plot samples', () => {
     const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
     const r = computeCycle({
-      type: 'cycle',
-      id: 1,
       linkage: l,
       samples: 360,
       coupler: C,
       ...NEEDS,
       plotPixels: 400,
-    }).response;
-    if (r.type !== 'cycle') throw new Error(r.type);
+    });
     const limitDeg = 135.9513743259; // hard case 10
     const nearest = Math.min(...Array.from(r.plot!.theta2Deg, (d) => Math.abs(d - limitDeg)));
     expect(nearest).toBeLessThan(1e-8);
@@ -193,15 +217,12 @@ describe('computeCycle computes only what the view shows', () => {
   it('sweeps with the chosen method: the report’s NR costs more iterations than the polished continuation', () => {
     const run = (method: 'seed' | 'newton' | 'closed-form') => {
       const r = computeCycle({
-        type: 'cycle',
-        id: 1,
         linkage: L,
         samples: 360,
         coupler: C,
         ...NEEDS,
         solver: { method, tol: null },
-      }).response;
-      if (r.type !== 'cycle') throw new Error(r.type);
+      });
       return r.open.totalIterations;
     };
     expect(run('closed-form')).toBe(0);
@@ -213,8 +234,6 @@ describe('computeCycle computes only what the view shows', () => {
 describe('computePoint computes only what the view shows', () => {
   it('skips the ghost and the NR runs when no panel shows them', () => {
     const r = computePoint({
-      type: 'point',
-      id: 1,
       linkage: L,
       branch: 'open',
       theta2Rad: 45 * D,
@@ -223,8 +242,7 @@ describe('computePoint computes only what the view shows', () => {
       ...POINT_NEEDS,
       ghost: false,
       newton: false,
-    }).response;
-    if (r.type !== 'point') throw new Error(r.type);
+    });
     expect(r.pose).not.toBeNull();
     expect(r.ghost).toBeNull();
     expect(r.continuation).toBeNull();
@@ -234,8 +252,6 @@ describe('computePoint computes only what the view shows', () => {
 
   it('runs NR with the chosen method and tolerance', () => {
     const seed = computePoint({
-      type: 'point',
-      id: 1,
       linkage: L,
       branch: 'open',
       theta2Rad: 45 * D,
@@ -243,10 +259,8 @@ describe('computePoint computes only what the view shows', () => {
       coupler: C,
       ...POINT_NEEDS,
       solver: { method: 'seed', tol: null },
-    }).response;
+    });
     const loose = computePoint({
-      type: 'point',
-      id: 2,
       linkage: L,
       branch: 'open',
       theta2Rad: 45 * D,
@@ -254,8 +268,7 @@ describe('computePoint computes only what the view shows', () => {
       coupler: C,
       ...POINT_NEEDS,
       solver: { method: 'newton', tol: 1e-3 },
-    }).response;
-    if (seed.type !== 'point' || loose.type !== 'point') throw new Error('not a point');
+    });
     expect(seed.cold!.tolerance).toBe(1e-9);
     expect(loose.cold!.tolerance).toBeCloseTo(1e-3 * 18, 15);
     expect(loose.cold!.iterations).toBeLessThan(seed.cold!.iterations);

@@ -1,0 +1,71 @@
+import { expect, test } from '@playwright/test';
+import type { Page, Worker } from '@playwright/test';
+import { chartPath, waitReady } from './helpers';
+
+/**
+ * Kills the solver worker the hardest way to notice: close() inside it, so it stops without an error
+ * event and every later request just vanishes. Uses Playwright's handle on the worker, so the app
+ * ships no test hook. Resolves once the worker is gone.
+ */
+async function killWorker(worker: Worker): Promise<void> {
+  const gone = new Promise<void>((resolve) => worker.once('close', () => resolve()));
+  // The evaluation may or may not report back before the worker goes: either way it is closing.
+  await worker.evaluate(() => (globalThis as unknown as { close(): void }).close()).catch(() => undefined);
+  await gone;
+}
+
+/** The one solver worker the page runs now. */
+function onlyWorker(page: Page): Worker {
+  const workers = page.workers();
+  expect(workers).toHaveLength(1);
+  return workers[0];
+}
+
+// The watchdog needs a call's budget (a few seconds) to notice a silent worker: allow for it.
+const RECOVERY = { timeout: 20_000 };
+
+test.describe('a dying solver worker', () => {
+  test('is restarted once, then replaced by the main thread, and the views keep updating', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const grashof = page.getByTestId('grashof-sums');
+    await expect(grashof).toContainText('S + L = 8 < P + Q = 10');
+    const plotBefore = await chartPath(page, 0);
+
+    await killWorker(onlyWorker(page));
+    const restarted = page.waitForEvent('worker');
+    await page.getByRole('textbox', { name: /^r3/ }).fill('5.5');
+    await expect(page.getByRole('status').filter({ hasText: 'The solver worker stopped; restarted it.' })).toHaveCount(
+      1,
+      RECOVERY,
+    );
+    await expect(grashof).toContainText('P + Q = 10.5', RECOVERY);
+    await expect.poll(() => chartPath(page, 0)).not.toBe(plotBefore);
+    await page.getByRole('textbox', { name: /^θ2/ }).fill('120');
+    await expect(page.getByRole('heading', { name: 'At θ2 = 120.00°' })).toBeVisible();
+
+    const second = await restarted;
+    const plotRestarted = await chartPath(page, 0);
+    await killWorker(second);
+    await page.getByRole('textbox', { name: /^θ2/ }).fill('200');
+    await page.getByRole('textbox', { name: /^r3/ }).fill('4.5');
+    await expect(
+      page.getByRole('status').filter({ hasText: 'Solving on the main thread: the worker stopped twice.' }),
+    ).toHaveCount(1, RECOVERY);
+    await expect(page.getByRole('heading', { name: 'At θ2 = 200.00°' })).toBeVisible(RECOVERY);
+    await expect(grashof).toContainText('S + L = 8 < P + Q = 9.5', RECOVERY);
+    await expect.poll(() => chartPath(page, 0)).not.toBe(plotRestarted);
+    expect(page.workers()).toHaveLength(0);
+  });
+
+  test('says so in Traditional Chinese too', async ({ page }) => {
+    await page.goto('./?lang=zh-TW');
+    await waitReady(page);
+    await killWorker(onlyWorker(page));
+    await page.getByRole('textbox', { name: /^r3/ }).fill('5.5');
+    await expect(
+      page.getByRole('status').filter({ hasText: '求解用的背景執行緒（Worker）停止了，已重新啟動。' }),
+    ).toHaveCount(1, RECOVERY);
+    await expect(page.getByTestId('grashof-sums')).toContainText('P + Q = 10.5', RECOVERY);
+  });
+});

@@ -1,0 +1,27 @@
+import { runWorkPrecision } from '../lab/workPrecision';
+import { computeCycle, computePoint, computeTable } from './compute';
+import type { SolverApi } from './protocol';
+
+/**
+ * The solver's one API object. The worker exposes it (solver.worker.ts), and when no worker can run
+ * the client serves the same object on the main thread (mainThread.ts). Methods throw for bad input;
+ * expose() turns that into an error answer labelled with the request's type.
+ */
+export const solverApi: SolverApi = {
+  cycle: computeCycle,
+  point: computePoint,
+  table: computeTable,
+  /** The work-precision study; yields between stages so a cancel can arrive. Loads the 40-digit reference only now. */
+  async lab(params, task) {
+    const { referencePose } = await import('../lab/reference');
+    return runWorkPrecision(params.linkage, {
+      branch: params.branch,
+      stepDeg: params.stepDeg,
+      now: () => performance.now(),
+      reference: referencePose,
+      onProgress: task.progress,
+      pause: () => new Promise((resolve) => setTimeout(resolve, 0)),
+      isCancelled: task.cancelled,
+    });
+  },
+};
