@@ -1,5 +1,5 @@
 import type { Px, ScreenRect } from './rect';
-import { inflateRect, rectAround, rectInside, rectsOverlap, segmentHitsRect } from './rect';
+import { rectAround, segmentHitsBox } from './rect';
 
 /**
  * Something a label had better not cover, with a weight: a box (a joint, a pivot) or a thick segment (a link).
@@ -34,15 +34,36 @@ export interface PlacementResult<Id extends string> {
   dropped: Id[];
 }
 
-function obstacleCost(id: string, box: ScreenRect, obstacles: readonly Obstacle[]): number {
+/** Obstacle weight under the box (x0, y0)-(x1, y1), not counting the label's own obstacles; stops at limit. */
+function obstacleCost(
+  id: string,
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+  obstacles: readonly Obstacle[],
+  limit: number,
+): number {
   let cost = 0;
   for (const o of obstacles) {
     if (o.owner === id) continue;
-    const hit =
-      o.kind === 'rect' ? rectsOverlap(box, o.rect) : segmentHitsRect(o.a, o.b, inflateRect(box, o.halfWidth));
-    if (hit) cost += o.weight;
+    let hit: boolean;
+    if (o.kind === 'rect') hit = boxOverlaps(x0, y0, x1, y1, o.rect);
+    else {
+      const d = o.halfWidth;
+      hit = segmentHitsBox(o.a.x, o.a.y, o.b.x, o.b.y, x0 - d, y0 - d, x1 + d, y1 + d);
+    }
+    if (hit) {
+      cost += o.weight;
+      if (cost >= limit) return cost;
+    }
   }
   return cost;
+}
+
+/** True when the box (x0, y0)-(x1, y1) shares interior area with r. */
+function boxOverlaps(x0: number, y0: number, x1: number, y1: number, r: ScreenRect): boolean {
+  return x0 < r.x + r.width && r.x < x1 && y0 < r.y + r.height && r.y < y1;
 }
 
 /**
@@ -62,21 +83,31 @@ export function placeLabels<Id extends string>(
   const dropped: Id[] = [];
   for (const req of requests) {
     let best: Placement<Id> | null = null;
+    const hw = req.width / 2;
+    const hh = req.height / 2;
     for (let i = 0; i < req.candidates.length; i++) {
       const centre = req.candidates[i];
-      if (!Number.isFinite(centre.x) || !Number.isFinite(centre.y)) continue;
-      const box = rectAround(centre, req.width, req.height);
-      if (!rectInside(box, bounds)) continue;
-      if (exclusions.some((e) => rectsOverlap(box, e))) continue;
-      if (placed.some((p) => rectsOverlap(box, p.box))) continue;
-      const cost = obstacleCost(req.id, box, obstacles);
-      if (!best || cost < best.cost) best = { id: req.id, box, centre, candidateIndex: i, cost };
+      const x0 = centre.x - hw;
+      const y0 = centre.y - hh;
+      const x1 = centre.x + hw;
+      const y1 = centre.y + hh;
+      // Inside the bounds (this also rejects NaN centres), clear of exclusions and of placed labels.
+      if (!(x0 >= bounds.x && y0 >= bounds.y && x1 <= bounds.x + bounds.width && y1 <= bounds.y + bounds.height))
+        continue;
+      let blocked = false;
+      for (const e of exclusions) if (boxOverlaps(x0, y0, x1, y1, e)) blocked = true;
+      for (const p of placed) if (boxOverlaps(x0, y0, x1, y1, p.box)) blocked = true;
+      if (blocked) continue;
+      const cost = obstacleCost(req.id, x0, y0, x1, y1, obstacles, best ? best.cost : Infinity);
+      if (!best || cost < best.cost)
+        best = { id: req.id, box: rectAround(centre, req.width, req.height), centre, candidateIndex: i, cost };
       if (cost === 0) break;
     }
     if (!best && req.required && req.candidates.length > 0) {
       const centre = req.candidates[0];
       const box = rectAround(centre, req.width, req.height);
-      best = { id: req.id, box, centre, candidateIndex: 0, cost: obstacleCost(req.id, box, obstacles) };
+      const cost = obstacleCost(req.id, box.x, box.y, box.x + box.width, box.y + box.height, obstacles, Infinity);
+      best = { id: req.id, box, centre, candidateIndex: 0, cost };
     }
     if (best) placed.push(best);
     else dropped.push(req.id);

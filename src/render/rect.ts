@@ -12,47 +12,37 @@ export interface ScreenRect {
   height: number;
 }
 
-/** True when a and b share interior area (touching edges do not count). */
-export function rectsOverlap(a: ScreenRect, b: ScreenRect): boolean {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
-
-/** True when inner lies entirely within outer (edges may touch). */
-export function rectInside(inner: ScreenRect, outer: ScreenRect): boolean {
-  return (
-    inner.x >= outer.x &&
-    inner.y >= outer.y &&
-    inner.x + inner.width <= outer.x + outer.width &&
-    inner.y + inner.height <= outer.y + outer.height
-  );
-}
-
 /** The rectangle of width x height centred on c. */
 export function rectAround(c: Px, width: number, height: number): ScreenRect {
   return { x: c.x - width / 2, y: c.y - height / 2, width, height };
 }
 
-/** r grown by d on every side (shrunk for negative d). */
-export function inflateRect(r: ScreenRect, d: number): ScreenRect {
-  return { x: r.x - d, y: r.y - d, width: r.width + 2 * d, height: r.height + 2 * d };
-}
-
 /**
- * True when the segment a-b passes through the interior of r (Liang-Barsky clipping of the segment's
- * parameter interval against the four slabs).
+ * True when the segment (ax, ay)-(bx, by) passes through the interior of the box with corners (x0, y0) and
+ * (x1, y1): Liang-Barsky clipping of the segment's parameter interval against the four slabs.
  */
-export function segmentHitsRect(a: Px, b: Px, r: ScreenRect): boolean {
+export function segmentHitsBox(
+  ax: number,
+  ay: number,
+  bx: number,
+  by: number,
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+): boolean {
+  // Quick rejection by the segment's own bounding box.
+  if ((ax > bx ? ax : bx) <= x0 || (ax < bx ? ax : bx) >= x1 || (ay > by ? ay : by) <= y0 || (ay < by ? ay : by) >= y1)
+    return false;
+  const dx = bx - ax;
+  const dy = by - ay;
   let t0 = 0;
   let t1 = 1;
-  const dx = b.x - a.x;
-  const dy = b.y - a.y;
-  const slabs: [number, number][] = [
-    [-dx, a.x - r.x],
-    [dx, r.x + r.width - a.x],
-    [-dy, a.y - r.y],
-    [dy, r.y + r.height - a.y],
-  ];
-  for (const [p, q] of slabs) {
+  const ps = [-dx, dx, -dy, dy];
+  const qs = [ax - x0, x1 - ax, ay - y0, y1 - ay];
+  for (let k = 0; k < 4; k++) {
+    const p = ps[k];
+    const q = qs[k];
     if (p === 0) {
       if (q <= 0) return false;
       continue;
