@@ -47,7 +47,7 @@ const BACKGROUND = over(THEME.background, [255, 255, 255]);
 const WARNING_BG = over(THEME.warningFill, BACKGROUND);
 
 /** Lines exempt from 3:1, with the reason: the grid and its axes are a faint backdrop, not content. */
-const DECORATIVE_LINES = new Set([THEME.grid, THEME.gridAxis]);
+const DECORATIVE_LINES = new Set<string>([THEME.grid, THEME.gridAxis]);
 
 function recordAll(): { ctx: RecordingContext; warningTexts: Set<string> } {
   const ctx = new RecordingContext();
