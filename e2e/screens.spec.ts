@@ -58,6 +58,19 @@ async function expectToolsWhereLabelsAvoid(target: Page | Frame): Promise<void> 
   expect(t.height).toBeCloseTo(r.height, 0);
 }
 
+/** Texts of visible labels, titles, tabs and buttons whose content does not fit their box (cut off). */
+async function clippedLabels(target: Page | Frame): Promise<string[]> {
+  return target.evaluate(() =>
+    [
+      ...document.querySelectorAll<HTMLElement>(
+        'label, legend, .section-title, .segmented-item span, .btn, .page-tab, .fact dt, .fact dd',
+      ),
+    ]
+      .filter((el) => el.offsetParent !== null && el.scrollWidth > el.clientWidth + 1)
+      .map((el) => el.textContent ?? ''),
+  );
+}
+
 const PHONE = { width: 390, height: 844 };
 
 for (const lang of ['en', 'zh-TW'] as const) {
@@ -75,6 +88,8 @@ for (const lang of ['en', 'zh-TW'] as const) {
     expect(canvas.right - canvas.left).toBeGreaterThanOrEqual(v.innerWidth - 20);
     expect(canvas.left).toBeGreaterThanOrEqual(0);
     expect(canvas.right).toBeLessThanOrEqual(v.innerWidth);
+    // Tall enough to show the linkage, not a strip: at least two thirds as tall as wide.
+    expect(canvas.bottom - canvas.top).toBeGreaterThanOrEqual((2 / 3) * (canvas.right - canvas.left));
     // One column: the controls sit below the canvas, not beside it.
     const theta2 = page.getByRole('textbox', { name: /^θ2/ });
     expect((await boxOf(theta2)).top).toBeGreaterThan(canvas.bottom);
@@ -95,6 +110,7 @@ for (const lang of ['en', 'zh-TW'] as const) {
       });
       expect(lines, await tab.innerText()).toBe(1);
     }
+    expect(await clippedLabels(page)).toEqual([]);
     await expectToolsWhereLabelsAvoid(page);
     await page.screenshot({ path: artifact(`screen-phone-${lang}.png`) });
     await page.screenshot({ path: artifact(`screen-phone-${lang}-full.png`), fullPage: true });
@@ -114,16 +130,7 @@ for (const size of [
     const v = await viewportOf(page);
     expect(v.scrollWidth).toBeLessThanOrEqual(v.innerWidth);
     // No visible label, title, tab or button text is clipped: its content fits its box.
-    const clipped = await page.evaluate(() =>
-      [
-        ...document.querySelectorAll<HTMLElement>(
-          'label, legend, .section-title, .segmented-item span, .btn, .page-tab, .fact dt, .fact dd',
-        ),
-      ]
-        .filter((el) => el.offsetParent !== null && el.scrollWidth > el.clientWidth + 1)
-        .map((el) => el.textContent),
-    );
-    expect(clipped).toEqual([]);
+    expect(await clippedLabels(page)).toEqual([]);
     await expectToolsWhereLabelsAvoid(page);
     await page.screenshot({ path: artifact(`screen-${size.name}.png`), fullPage: true });
     await context.close();
@@ -131,8 +138,8 @@ for (const size of [
 }
 
 const HOST = `${ORIGIN}/e2e-course/screens.html`;
-// The default embed (controls and plots), as the app's "Copy embed code" makes it.
-const EMBED_SRC = `${ORIGIN}/embed.html?r1=6&r2=2&r3=5&r4=5&t2=45&panels=controls,plots`;
+// The default embed (controls and plots), as the app's "Copy embed code" makes it, with two lengths locked.
+const EMBED_SRC = `${ORIGIN}/embed.html?r1=6&r2=2&r3=5&r4=5&t2=45&panels=controls,plots&lock=r1,r4`;
 
 for (const frame of [
   { width: 760, height: 520 },
@@ -171,6 +178,8 @@ for (const frame of [
     // The linkage gets a real share of the frame, not a sliver.
     const c = await boxOf(need.canvas);
     expect((c.right - c.left) * (c.bottom - c.top)).toBeGreaterThan(0.25 * v.innerWidth * v.innerHeight);
+    // The controls' labels (including "(locked)") wrap rather than being cut off.
+    expect(await clippedLabels(f)).toEqual([]);
     await expectToolsWhereLabelsAvoid(f);
     await page.screenshot({ path: artifact(`screen-embed-${frame.width}x${frame.height}.png`) });
   });
