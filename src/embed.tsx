@@ -1,4 +1,7 @@
-import './styles.css';
+import './components/base.css';
+import './components/embedLayout.css';
 import { mount } from './mount';
+import { applyTokens } from './theme/applyTokens';
 
+applyTokens(document.documentElement.style);
 mount('embed');

@@ -1,3 +1,4 @@
+import './AnalysisPanel.css';
 import { memo } from 'react';
 import type { Branch } from '../solver/types';
 import type { NrStart } from '../state/appState';

@@ -1,3 +1,4 @@
+import './SvgChartView.css';
 import { useLayoutEffect, useRef } from 'react';
 import { drawAngleChart, updateAngleMarker } from '../charts/angleChart';
 import type { AngleMarker } from '../charts/angleChart';

@@ -1,3 +1,4 @@
+import './AnglePlotsPanel.css';
 import type { Dispatch } from 'react';
 import { memo, useMemo } from 'react';
 import type { Branch } from '../solver/types';

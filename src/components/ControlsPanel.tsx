@@ -1,3 +1,4 @@
+import './ControlsPanel.css';
 import { memo, useEffect, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Linkage } from '../solver/types';

@@ -1,3 +1,4 @@
+import './ConvergencePanel.css';
 import type { Dispatch } from 'react';
 import { memo, useMemo } from 'react';
 import type { Action, NrStart } from '../state/appState';

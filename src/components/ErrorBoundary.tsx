@@ -1,3 +1,4 @@
+import './ErrorBoundary.css';
 import { Component } from 'react';
 import type { ErrorInfo, ReactNode } from 'react';
 import type { Messages } from '../state/messages';

@@ -1,3 +1,4 @@
+import './LabPanel.css';
 import { useCallback, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
 import { drawCycleChart } from '../charts/cycleChart';

@@ -1,4 +1,6 @@
+import './LinkageCanvas.css';
 import { memo, useEffect, useLayoutEffect, useRef } from 'react';
+import { canvasToolsRect } from '../render/canvasTools';
 import { drawLinkage } from '../render/drawLinkage';
 import type { LinkageScene } from '../render/scene';
 import { fitView, zoomAbout } from '../render/view';
@@ -44,7 +46,7 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
     const ctx = canvas.getContext('2d');
     if (!ctx) return;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
+    drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view), [canvasToolsRect(width)]);
     if (typeof performance !== 'undefined' && typeof performance.mark === 'function') {
       performance.mark('fourbar:canvas');
     }

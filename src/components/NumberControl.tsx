@@ -1,3 +1,4 @@
+import './NumberControl.css';
 import { useEffect, useId, useRef, useState } from 'react';
 import type { FieldName } from '../state/validate';
 import { parseField } from '../state/validate';

@@ -1,3 +1,4 @@
+import './SharePanel.css';
 import { memo, useState } from 'react';
 import type { AppState } from '../state/appState';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../state/url';

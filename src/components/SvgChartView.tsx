@@ -1,3 +1,4 @@
+import './SvgChartView.css';
 import { useLayoutEffect, useRef } from 'react';
 import { useElementSize } from './useElementSize';
 

@@ -1,3 +1,4 @@
+import './Toggle.css';
 /** Props of Toggle: a labelled checkbox. */
 export interface ToggleProps {
   label: string;

@@ -1,3 +1,4 @@
+import { COLORS } from '../theme/tokens';
 import { canvasToPngBytes } from './download';
 
 /** Serialises an SVG element to standalone SVG text (with its namespace). */
@@ -16,7 +17,7 @@ function loadImage(src: string): Promise<HTMLImageElement> {
   });
 }
 
-/** Renders an SVG of width x height CSS pixels to PNG bytes at scale pixels per CSS pixel, on a white background. */
+/** Renders an SVG of width x height CSS pixels to PNG bytes at scale pixels per CSS pixel, on the surface colour (white). */
 export async function svgToPngBytes(
   svg: SVGSVGElement,
   width: number,
@@ -30,7 +31,7 @@ export async function svgToPngBytes(
   canvas.height = Math.round(height * scale);
   const ctx = canvas.getContext('2d');
   if (!ctx) throw new Error('no 2D canvas context');
-  ctx.fillStyle = '#ffffff';
+  ctx.fillStyle = COLORS.surface;
   ctx.fillRect(0, 0, canvas.width, canvas.height);
   ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
   return canvasToPngBytes(canvas);

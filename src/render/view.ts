@@ -42,10 +42,14 @@ export function extendBoundsCircle(b: Bounds, x: number, y: number, r: number): 
   extendBounds(b, x + r, y + r);
 }
 
+/** Least margin (CSS pixels) fitView leaves around the bounds: room for the widest angle arc (34 px) at a pivot. */
+export const FIT_MIN_PAD_PX = 40;
+
 /**
  * Fits bounds into a width x height view (CSS pixels) with a margin (fraction of the smaller side,
- * default 0.08) and applies the user's zoom and pan. Works at any scale: lengths of 1e-7 or 1e7 give
- * the same picture. Degenerate bounds (a point, or nothing) get a unit box around them.
+ * default 0.08, but at least FIT_MIN_PAD_PX, or a quarter of the smaller side in a tiny view) and applies
+ * the user's zoom and pan. Works at any scale: lengths of 1e-7 or 1e7 give the same picture. Degenerate
+ * bounds (a point, or nothing) get a unit box around them.
  */
 export function fitView(
   bounds: Bounds,
@@ -70,7 +74,7 @@ export function fitView(
   spanY = Math.max(spanY, minSpan);
   const w = Math.max(1, width);
   const h = Math.max(1, height);
-  const pad = Math.min(w, h) * margin;
+  const pad = Math.max(Math.min(w, h) * margin, Math.min(FIT_MIN_PAD_PX, Math.min(w, h) / 4));
   const fit = Math.min((w - 2 * pad) / spanX, (h - 2 * pad) / spanY);
   const scale = (Number.isFinite(fit) && fit > 0 ? fit : 1) * offset.zoom;
   return {
@@ -130,4 +134,29 @@ export function niceStep(scale: number, targetPx = 60): number {
   const m = raw / p;
   const k = m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10;
   return k * p;
+}
+
+/** The grid drawn under the linkage: its spacing (length unit) and the index range of lines in view. */
+export interface GridLines {
+  step: number;
+  i0: number;
+  i1: number;
+  j0: number;
+  j1: number;
+}
+
+/** Grid lines about targetPx apart (default 64) covering the view; null when there would be over 400 in a direction. */
+export function gridLines(v: ViewTransform, targetPx = 64): GridLines | null {
+  const step = niceStep(v.scale, targetPx);
+  const tl = toWorld(v, 0, 0);
+  const br = toWorld(v, v.width, v.height);
+  const g = {
+    step,
+    i0: Math.ceil(tl.x / step),
+    i1: Math.floor(br.x / step),
+    j0: Math.ceil(br.y / step),
+    j1: Math.floor(tl.y / step),
+  };
+  if (g.i1 - g.i0 > 400 || g.j1 - g.j0 > 400) return null;
+  return g;
 }

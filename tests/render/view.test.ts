@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitView, niceStep, toScreenX, toScreenY, toWorld, zoomAbout } from '../../src/render/view';
+import { FIT_MIN_PAD_PX, fitView, niceStep, toScreenX, toScreenY, toWorld, zoomAbout } from '../../src/render/view';
 
 const NO_OFFSET = { zoom: 1, panX: 0, panY: 0 };
 
@@ -23,6 +23,21 @@ describe('fitView', () => {
       expect(toScreenX(v, x)).toBeLessThan(400);
       expect(toScreenY(v, y)).toBeGreaterThanOrEqual(200 * 0.08 - 1e-9);
       expect(toScreenY(v, y)).toBeLessThanOrEqual(200 * 0.92 + 1e-9);
+    }
+  });
+
+  it('leaves at least FIT_MIN_PAD_PX around the bounds for the angle arcs, a quarter side in a tiny view', () => {
+    for (const [w, h, pad] of [
+      [342, 392, FIT_MIN_PAD_PX],
+      [1000, 300, FIT_MIN_PAD_PX],
+      [100, 80, 20],
+    ]) {
+      const v = fitView({ minX: -2, minY: -2, maxX: 9, maxY: 7 }, w, h, NO_OFFSET);
+      const xs = [toScreenX(v, -2), toScreenX(v, 9)];
+      const ys = [toScreenY(v, 7), toScreenY(v, -2)];
+      // One axis is tight (touches the pad within rounding), the other has room to spare.
+      const gaps = [xs[0], w - xs[1], ys[0], h - ys[1]];
+      expect(Math.min(...gaps)).toBeCloseTo(pad, 9);
     }
   });
 
