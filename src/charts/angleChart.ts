@@ -15,7 +15,8 @@ import {
   prepareSvg,
   styleAxis,
 } from './chartFrame';
-import { angleTicks, niceAngleDomain, tickCount } from './ticks';
+import type { AngleAxis } from './ticks';
+import { angleAxis, angleTicks, tickCount } from './ticks';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -132,10 +133,10 @@ export function plotIndices(yDeg: ArrayLike<number>, maxPoints: number): number[
 }
 
 /**
- * y domain in degrees: the data's range padded by 8 % (at least 5 degrees) and widened by d3's nice to
- * the tick step of about count ticks (niceAngleDomain), within [-180, 180]; the full range when empty.
+ * y axis in degrees: the data's range padded by 8 % (at least 5 degrees) and widened by d3's nice to the
+ * tick step of about count ticks (angleAxis), within [-180, 180], with its ticks; the full range when empty.
  */
-export function angleDomain(series: readonly AngleSeries[], count = 6): [number, number] {
+export function angleYAxis(series: readonly AngleSeries[], count = 6): AngleAxis {
   let lo = Infinity;
   let hi = -Infinity;
   for (const s of series) {
@@ -146,9 +147,14 @@ export function angleDomain(series: readonly AngleSeries[], count = 6): [number,
       if (v > hi) hi = v;
     }
   }
-  if (!(lo <= hi)) return [-180, 180];
+  if (!(lo <= hi)) return angleAxis(-180, 180, count);
   const pad = Math.max(5, (hi - lo) * 0.08);
-  return niceAngleDomain(lo - pad, hi + pad, count);
+  return angleAxis(lo - pad, hi + pad, count);
+}
+
+/** The y domain of angleYAxis in degrees. */
+export function angleDomain(series: readonly AngleSeries[], count = 6): [number, number] {
+  return angleYAxis(series, count).domain;
 }
 
 /** Size options of an angle chart with every default filled in (CSS pixels). */
@@ -187,11 +193,10 @@ export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize)
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const xCount = tickCount(iw, size.xTickSpacing);
-  const yCount = tickCount(ih, size.yTickSpacing);
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
-  const [y0, y1] = angleDomain(series, yCount);
-  const y = scaleLinear().domain([y0, y1]).range([ih, 0]);
-  return { iw, ih, x, y, xTicks: angleTicks(0, 360, xCount), yTicks: angleTicks(y0, y1, yCount) };
+  const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
+  const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);
+  return { iw, ih, x, y, xTicks: angleTicks(0, 360, xCount), yTicks: yAxis.ticks };
 }
 
 /** SVG path data of one curve in plot pixels: gaps where NaN, breaks at wraps, at most two samples per pixel. */

@@ -39,12 +39,22 @@ export function angleTicks(loDeg: number, hiDeg: number, count: number): number[
   return ticks(loDeg / ANGLE_UNIT_DEG, hiDeg / ANGLE_UNIT_DEG, count).map((v) => clean(v * ANGLE_UNIT_DEG));
 }
 
-/** [loDeg, hiDeg] widened by d3's nice to the step angleTicks would use for about count ticks, within [-180, 180]. */
-export function niceAngleDomain(loDeg: number, hiDeg: number, count: number): [number, number] {
-  const [a, b] = onAngleLattice(loDeg, hiDeg, count)
-    ? nice(loDeg / ANGLE_UNIT_DEG, hiDeg / ANGLE_UNIT_DEG, count).map((v) => clean(v * ANGLE_UNIT_DEG))
-    : nice(loDeg, hiDeg, count);
-  return [Math.max(-180, a), Math.min(180, b)];
+/** The nice domain of an angle axis and its ticks (degrees). */
+export interface AngleAxis {
+  domain: [number, number];
+  ticks: number[];
+}
+
+/**
+ * An angle axis over at least [loDeg, hiDeg]: the range widened by d3's nice to the step angleTicks would
+ * use for about count ticks, within [-180, 180], and its ticks. Domain and ticks are computed in the same
+ * unit (30 degrees or 1 degree), so the end ticks sit on the domain ends unless clamped at +-180.
+ */
+export function angleAxis(loDeg: number, hiDeg: number, count: number): AngleAxis {
+  const unit = onAngleLattice(loDeg, hiDeg, count) ? ANGLE_UNIT_DEG : 1;
+  const [a, b] = nice(loDeg / unit, hiDeg / unit, count).map((v) => clean(v * unit));
+  const domain: [number, number] = [Math.max(-180, a), Math.min(180, b)];
+  return { domain, ticks: ticks(domain[0] / unit, domain[1] / unit, count).map((v) => clean(v * unit)) };
 }
 
 /** About count whole-number ticks in [lo, hi] (d3 ticks with a step of at least 1); [lo] when hi <= lo. */
