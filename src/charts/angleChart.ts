@@ -11,12 +11,13 @@ import {
   drawGridX,
   drawGridY,
   drawLegend,
+  estimateTextWidth,
   minus,
   prepareSvg,
   styleAxis,
 } from './chartFrame';
 import type { AngleAxis } from './ticks';
-import { angleAxis, angleTicks, tickCount } from './ticks';
+import { angleAxis, angleTicks, fittedTicks, tickCount } from './ticks';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -196,7 +197,13 @@ export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize)
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
   const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
   const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);
-  return { iw, ih, x, y, xTicks: angleTicks(0, 360, xCount), yTicks: yAxis.ticks };
+  const xTicks = fittedTicks(
+    (c) => angleTicks(0, 360, c),
+    x,
+    (t) => estimateTextWidth(`${t}`),
+    xCount,
+  );
+  return { iw, ih, x, y, xTicks, yTicks: yAxis.ticks };
 }
 
 /** SVG path data of one curve in plot pixels: gaps where NaN, breaks at wraps, at most two samples per pixel. */

@@ -4,8 +4,18 @@ import { scaleLinear, scaleLog } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, drawChartText, drawGridY, drawLegend, minus, prepareSvg, styleAxis } from './chartFrame';
-import { dec, decadeTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
+import {
+  CHART_STYLE,
+  child,
+  drawChartText,
+  drawGridY,
+  drawLegend,
+  estimateTextWidth,
+  minus,
+  prepareSvg,
+  styleAxis,
+} from './chartFrame';
+import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -127,7 +137,12 @@ export function convergenceFrame(data: ConvergenceChartData, size: ConvergenceSi
     ih,
     x,
     y,
-    xTicks: integerTicks(0, maxIt, tickCount(iw, size.xTickSpacing)),
+    xTicks: fittedTicks(
+      (c) => integerTicks(0, maxIt, c),
+      x,
+      (t) => estimateTextWidth(`${t}`),
+      tickCount(iw, size.xTickSpacing),
+    ),
     yTicks: decadeTicks(d0, d1, tickCount(ih, size.yTickSpacing)),
   };
 }

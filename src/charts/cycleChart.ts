@@ -5,9 +5,19 @@ import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../solver/types';
 import { CHART_COLORS } from '../theme/tokens';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
+import {
+  CHART_STYLE,
+  child,
+  estimateTextWidth,
+  minus,
+  prepareSvg,
+  styleAxis,
+  drawGridLines,
+  drawChartText,
+} from './chartFrame';
 import {
   angleTicks,
+  fittedTicks,
   dec,
   decadeTicks,
   integerTicks,
@@ -179,7 +189,12 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   const hBot = Math.max(10, ihAll - gapPx - hTop);
   const yBot0 = hTop + gapPx;
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
-  const xTicks = angleTicks(0, 360, tickCount(iw, 60));
+  const xTicks = fittedTicks(
+    (c) => angleTicks(0, 360, c),
+    x,
+    (t) => estimateTextWidth(`${t}`),
+    tickCount(iw, 60),
+  );
   const n = data.theta2Deg.length;
 
   const itMax = maxIterations(data.iterations);

@@ -20,6 +20,29 @@ export function tickCount(lengthPx: number, spacingPx: number): number {
   return Math.max(2, Math.floor(lengthPx / spacingPx));
 }
 
+/**
+ * The ticks of the largest count from start down to 1 whose centred labels keep gapPx apart along the
+ * axis (positions from toPx, label widths from labelWidth, both in pixels); a single tick when even
+ * count 1 collides. makeTicks is one of the d3-based tick functions here, at a given count.
+ */
+export function fittedTicks(
+  makeTicks: (count: number) => number[],
+  toPx: (v: number) => number,
+  labelWidth: (v: number) => number,
+  start: number,
+  gapPx = 6,
+): number[] {
+  const fits = (t: number[]) =>
+    t.every(
+      (v, i) => i === 0 || Math.abs(toPx(v) - toPx(t[i - 1])) - (labelWidth(v) + labelWidth(t[i - 1])) / 2 >= gapPx,
+    );
+  for (let count = Math.max(1, start); count >= 1; count--) {
+    const t = makeTicks(count);
+    if (fits(t)) return t;
+  }
+  return makeTicks(1).slice(0, 1);
+}
+
 /** Removes the binary noise a unit change leaves (0.2 * 30 = 6.000000000000001 would print as such). */
 function clean(v: number): number {
   return Number(v.toPrecision(12));

@@ -51,12 +51,15 @@ describe('angleDomain', () => {
 describe('angleFrame', () => {
   const full = [{ label: '', color: '', valuesDeg: [-179, 179] }];
   it('gives tick labels room at every width, phones included: no label runs into the next', () => {
-    for (let width = 160; width <= 1600; width += 7) {
+    for (let width = 70; width <= 1600; width += 7) {
       const f = angleFrame(full, angleChartSize({ width, height: 300 }));
       const px = f.xTicks.map((t) => f.x(t));
-      const widest = Math.max(...f.xTicks.map((t) => estimateTextWidth(minus(`${t}`))));
-      for (let i = 1; i < px.length; i++) expect(px[i] - px[i - 1], `width ${width}`).toBeGreaterThan(widest + 8);
-      expect(f.xTicks.length, `width ${width}`).toBeGreaterThanOrEqual(3);
+      const w = f.xTicks.map((t) => estimateTextWidth(minus(`${t}`)));
+      // Labels are centred on their ticks: the space between neighbours' edges must stay visible (4 px).
+      for (let i = 1; i < px.length; i++) {
+        expect(px[i] - px[i - 1] - (w[i] + w[i - 1]) / 2, `width ${width}`).toBeGreaterThan(4);
+      }
+      expect(f.xTicks.length, `width ${width}`).toBeGreaterThanOrEqual(width >= 160 ? 3 : 1);
     }
     for (let height = 120; height <= 900; height += 11) {
       const f = angleFrame(full, angleChartSize({ width: 500, height }));

@@ -5,6 +5,7 @@ import {
   integerTicks,
   logTicks,
   angleAxis,
+  fittedTicks,
   niceCountDomain,
   niceLogDomain,
   niceOneTwoFiveDomain,
@@ -172,5 +173,28 @@ describe('niceOneTwoFiveDomain', () => {
       const expectB = all.find((v) => v >= hi * (1 - 1e-12));
       expect([a, b]).toEqual([expectA, expectB]);
     }
+  });
+});
+
+describe('fittedTicks', () => {
+  const labelWidth = () => 20;
+  it('keeps the starting count when its labels fit', () => {
+    const x = (v: number) => v;
+    expect(fittedTicks((c) => integerTicks(0, 400, c), x, labelWidth, 4)).toEqual(integerTicks(0, 400, 4));
+  });
+  it('lowers the count until labels keep the gap, down to a single label', () => {
+    const squeezed = (v: number) => v / 10; // 400 units in 40 px
+    const t = fittedTicks((c) => integerTicks(0, 400, c), squeezed, labelWidth, 10);
+    for (let i = 1; i < t.length; i++) expect(squeezed(t[i]) - squeezed(t[i - 1]) - 20).toBeGreaterThanOrEqual(6);
+    expect(t.length).toBeGreaterThanOrEqual(1);
+    expect(t.length).toBeLessThan(integerTicks(0, 400, 10).length);
+    expect(
+      fittedTicks(
+        (c) => integerTicks(0, 400, c),
+        (v) => v / 100,
+        labelWidth,
+        10,
+      ),
+    ).toHaveLength(1);
   });
 });
