@@ -33,30 +33,36 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
   });
 }
 
-/** Starts counting DOM mutations inside each group selector of a chart; read them back with mutationCounts. */
+/** Mutation counts of one watched group: batches of changes, and batches that left its markup as it was (a redundant redraw). */
+interface MutationCount {
+  batches: number;
+  redundant: number;
+}
+
+/** Starts counting DOM mutation batches inside each group selector of a chart; read them back with mutationCounts. */
 async function watchMutations(chart: Locator, selectors: string[]): Promise<void> {
   await chart.evaluate((svg: SVGSVGElement, sels: string[]) => {
-    const w = window as unknown as { __mut?: Map<Element, Record<string, number>> };
+    const w = window as unknown as { __mut?: Map<Element, Record<string, MutationCount>> };
     w.__mut ??= new Map();
-    const counts: Record<string, number> = {};
+    const counts: Record<string, MutationCount> = {};
     w.__mut.set(svg, counts);
     for (const sel of sels) {
-      counts[sel] = 0;
       const el = svg.querySelector(sel);
       if (!el) throw new Error(`no ${sel}`);
-      new MutationObserver((records) => (counts[sel] += records.length)).observe(el, {
-        subtree: true,
-        childList: true,
-        attributes: true,
-        characterData: true,
-      });
+      const c = (counts[sel] = { batches: 0, redundant: 0 });
+      let markup = el.innerHTML;
+      new MutationObserver(() => {
+        c.batches++;
+        if (el.innerHTML === markup) c.redundant++;
+        markup = el.innerHTML;
+      }).observe(el, { subtree: true, childList: true, attributes: true, characterData: true });
     }
   }, selectors);
 }
 
-async function mutationCounts(chart: Locator): Promise<Record<string, number>> {
+async function mutationCounts(chart: Locator): Promise<Record<string, MutationCount>> {
   return chart.evaluate((svg: SVGSVGElement) => {
-    const w = window as unknown as { __mut: Map<Element, Record<string, number>> };
+    const w = window as unknown as { __mut: Map<Element, Record<string, MutationCount>> };
     return { ...w.__mut.get(svg)! };
   });
 }
@@ -106,24 +112,22 @@ test.describe('the angle and convergence charts', () => {
     await page.goto('./');
     await waitReady(page);
     const t4 = page.getByRole('img', { name: 'θ4 against θ2' });
-    await watchMutations(t4, ['g.axis-x', 'g.grid-x', 'g.lines']);
+    await watchMutations(t4, ['g.axis-x', 'g.grid-x', 'g.axis-y', 'g.lines']);
     const before = await t4.locator('g.lines path').first().getAttribute('d');
     await stepSlider(page, /^r3/, 'ArrowRight', 5);
     await expect(page.getByRole('textbox', { name: /^r3/ })).toHaveValue('5.05');
     await expect.poll(() => t4.locator('g.lines path').first().getAttribute('d')).not.toBe(before);
     const counts = await mutationCounts(t4);
-    expect(counts['g.lines']).toBeGreaterThan(0);
-    expect(counts['g.axis-x']).toBe(0);
-    expect(counts['g.grid-x']).toBe(0);
+    expect(counts['g.lines'].batches).toBeGreaterThan(0);
+    expect(counts['g.axis-x'].batches).toBe(0);
+    expect(counts['g.grid-x'].batches).toBe(0);
+    expect(counts['g.axis-y'].redundant).toBe(0);
   });
 
-  test('theta2 steps redraw the convergence runs, and its axes only when their ticks change', async ({ page }) => {
+  test('theta2 steps redraw the convergence runs, and its axes only when their domain changes', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);
     const conv = page.getByRole('img', { name: /^NR convergence at θ2/ });
-    const yTicks = () => conv.locator('g.axis-y .tick text').allTextContents();
-    const xTicks = () => conv.locator('g.axis-x .tick text').allTextContents();
-    const ticksBefore = [await xTicks(), await yTicks()];
     await watchMutations(conv, ['g.axis-x', 'g.axis-y', 'g.runs']);
     const runBefore = await conv.locator('g.runs path').last().getAttribute('d');
     await stepSlider(page, /^θ2/, 'ArrowRight', 6);
@@ -131,10 +135,10 @@ test.describe('the angle and convergence charts', () => {
     await expect(conv).toHaveAttribute('aria-label', /48/);
     await expect.poll(() => conv.locator('g.runs path').last().getAttribute('d')).not.toBe(runBefore);
     const counts = await mutationCounts(conv);
-    expect(counts['g.runs']).toBeGreaterThan(0);
-    const ticksAfter = [await xTicks(), await yTicks()];
-    if (ticksAfter[0].join() === ticksBefore[0].join()) expect(counts['g.axis-x']).toBe(0);
-    if (ticksAfter[1].join() === ticksBefore[1].join()) expect(counts['g.axis-y']).toBe(0);
+    expect(counts['g.runs'].batches).toBeGreaterThan(0);
+    // An axis may change with the residual range, but is never rewritten with what it already shows.
+    expect(counts['g.axis-x'].redundant).toBe(0);
+    expect(counts['g.axis-y'].redundant).toBe(0);
   });
 
   for (const [w, h] of [
@@ -153,7 +157,7 @@ test.describe('the angle and convergence charts', () => {
       for (const chart of charts) {
         await chart.scrollIntoViewIfNeeded();
         const boxes = await tickBoxes(chart, 'g.axis-x');
-        expect(boxes.length).toBeGreaterThanOrEqual(3);
+        expect(boxes.length).toBeGreaterThanOrEqual(2);
         for (let i = 1; i < boxes.length; i++) expect(boxes[i].left - boxes[i - 1].right).toBeGreaterThan(4);
       }
       await page
