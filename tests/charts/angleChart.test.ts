@@ -5,6 +5,7 @@ import {
   angleFrame,
   markerGeometry,
   plotIndices,
+  seriesPath,
   wrappedSegments,
 } from '../../src/charts/angleChart';
 import { estimateTextWidth, minus } from '../../src/charts/chartFrame';
@@ -77,6 +78,23 @@ describe('angleFrame', () => {
     const f = angleFrame([{ label: '', color: '', valuesDeg: [31, 79] }], angleChartSize({ width: 500, height: 300 }));
     expect(f.yTicks[0]).toBe(f.y.domain()[0]);
     expect(f.yTicks[f.yTicks.length - 1]).toBe(f.y.domain()[1]);
+  });
+});
+
+describe('seriesPath', () => {
+  it('leaves a gap where the linkage cannot assemble and never writes NaN', () => {
+    const f = angleFrame(
+      [{ label: '', color: '', valuesDeg: [-179, 179] }],
+      angleChartSize({ width: 400, height: 300 }),
+    );
+    const theta2 = [0, 60, 120, 180, 240, 300, 360];
+    const d = seriesPath(theta2, [10, 20, Number.NaN, Number.NaN, 40, 50, 60], f);
+    expect(d).not.toContain('NaN');
+    expect(d.match(/M/g)).toHaveLength(2);
+    // The path starts at the first sample on the chart's scales (the path is rounded to 0.001 px).
+    const [x0, y0] = d.slice(1).split(/[ML]/)[0].split(',').map(Number);
+    expect(Math.abs(x0 - f.x(0))).toBeLessThan(1e-3);
+    expect(Math.abs(y0 - f.y(10))).toBeLessThan(1e-3);
   });
 });
 
