@@ -49,9 +49,9 @@ export interface AngleChartOptions extends AngleChartText {
   height: number;
   /** Default { top: 46, right: 14, bottom: 40, left: 50 }. */
   margins?: Margins;
-  /** Pixels of plot width per x tick; default 60 (60 degree steps from 240 px of plot width up, 150 below). */
+  /** Pixels of plot width per x tick; default 70: 60 degree steps at plot widths of 280 to 629 px, 30 above, 150 below. */
   xTickSpacing?: number;
-  /** Pixels of plot height per y tick; default 28. */
+  /** Pixels of plot height per y tick; default 34. */
   yTickSpacing?: number;
 }
 
@@ -79,8 +79,8 @@ export interface AngleChart {
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
-const DEFAULT_X_TICK_SPACING = 60;
-const DEFAULT_Y_TICK_SPACING = 28;
+const DEFAULT_X_TICK_SPACING = 70;
+const DEFAULT_Y_TICK_SPACING = 34;
 
 /**
  * Points of a wrapped angle curve ready for d3's line with defined(): NaN samples become gaps, and where
