@@ -49,8 +49,10 @@ export interface AngleChartOptions extends AngleChartText {
   height: number;
   /** Default { top: 46, right: 14, bottom: 40, left: 50 }. */
   margins?: Margins;
-  /** Pixels of plot width per x tick; default 70: 60 degree steps at plot widths of 280 to 629 px, 30 above, 150 below. */
+  /** Pixels of plot width per x tick, at most xMaxTicks; default 40 (60 degree steps from 160 px of plot width up). */
   xTickSpacing?: number;
+  /** Most x ticks asked of d3, so a wide chart keeps 60 degree steps; default 8. */
+  xMaxTicks?: number;
   /** Pixels of plot height per y tick; default 34. */
   yTickSpacing?: number;
 }
@@ -79,7 +81,8 @@ export interface AngleChart {
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
-const DEFAULT_X_TICK_SPACING = 70;
+const DEFAULT_X_TICK_SPACING = 40;
+const DEFAULT_X_MAX_TICKS = 8;
 const DEFAULT_Y_TICK_SPACING = 34;
 
 /**
@@ -164,6 +167,7 @@ export interface AngleChartSize {
   height: number;
   margins: Margins;
   xTickSpacing: number;
+  xMaxTicks: number;
   yTickSpacing: number;
 }
 
@@ -174,6 +178,7 @@ export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChart
     height: Math.max(0, options.height),
     margins: options.margins ?? DEFAULT_MARGINS,
     xTickSpacing: options.xTickSpacing ?? DEFAULT_X_TICK_SPACING,
+    xMaxTicks: options.xMaxTicks ?? DEFAULT_X_MAX_TICKS,
     yTickSpacing: options.yTickSpacing ?? DEFAULT_Y_TICK_SPACING,
   };
 }
@@ -193,7 +198,7 @@ export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize)
   const m = size.margins;
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
-  const xCount = tickCount(iw, size.xTickSpacing);
+  const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
   const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
   const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);

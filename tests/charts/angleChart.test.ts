@@ -69,8 +69,9 @@ describe('angleFrame', () => {
         expect(py[i - 1] - py[i], `height ${height}`).toBeGreaterThan(FONT_SIZES.chart + 3);
     }
   });
-  it('steps 60 degrees along theta2 on a phone (390 px) and on a desktop', () => {
-    for (const width of [358, 560]) {
+  it('steps 60 degrees along theta2 from a phone-sized chart up to a wide export', () => {
+    // Plot width = chart width - 64 px of margins: 60 degree steps from 160 px of plot width up.
+    for (let width = 224; width <= 1600; width += 9) {
       expect(angleFrame(full, angleChartSize({ width, height: 260 })).xTicks).toEqual([0, 60, 120, 180, 240, 300, 360]);
     }
   });
