@@ -1,4 +1,5 @@
 import { axisBottom, axisLeft } from 'd3-axis';
+import type { ScaleLinear } from 'd3-scale';
 import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
@@ -6,13 +7,17 @@ import type { Margins } from './chartFrame';
 import {
   CHART_STYLE,
   child,
+  drawChartText,
+  drawGridX,
+  drawGridY,
   drawLegend,
+  estimateTextWidth,
   minus,
   prepareSvg,
   styleAxis,
-  drawGridLines,
-  drawChartText,
 } from './chartFrame';
+import type { AngleAxis } from './ticks';
+import { angleAxis, angleTicks, fittedTicks, tickCount } from './ticks';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -29,24 +34,56 @@ export interface AngleChartData {
   series: AngleSeries[];
 }
 
-/** Options of drawAngleChart; sizes in CSS pixels. */
-export interface AngleChartOptions {
-  width: number;
-  height: number;
+/** Texts of an angle chart. */
+export interface AngleChartText {
   title: string;
   xLabel: string;
   yLabel: string;
-  /** Default { top: 46, right: 14, bottom: 40, left: 50 }. */
-  margins?: Margins;
 }
 
-/** The marker: current theta2 (degrees) and the current value of each series (degrees, NaN when not assembled). */
+/** Options of createAngleChart; sizes in CSS pixels. */
+export interface AngleChartOptions extends AngleChartText {
+  /** Chart width; 0 (not laid out yet) draws nothing until resize. */
+  width: number;
+  /** Chart height; 0 (not laid out yet) draws nothing until resize. */
+  height: number;
+  /** Default { top: 46, right: 14, bottom: 40, left: 50 }. */
+  margins?: Margins;
+  /** Pixels of plot width per x tick, at most xMaxTicks; default 40 (60 degree steps from 160 px of plot width up). */
+  xTickSpacing?: number;
+  /** Most x ticks asked of d3, so a wide chart keeps 60 degree steps; default 8. */
+  xMaxTicks?: number;
+  /** Pixels of plot height per y tick; default 34. */
+  yTickSpacing?: number;
+}
+
+/**
+ * The marker: current theta2 (degrees) and, for each solid (not faint) series in order, its current
+ * value (degrees, NaN when not assembled); the dot takes that series' colour.
+ */
 export interface AngleMarker {
   theta2Deg: number;
   valuesDeg: number[];
 }
 
+/** A live angle chart made by createAngleChart; every method redraws only what its change touches. */
+export interface AngleChart {
+  /** Replaces the curves; the axes are redrawn only when the y domain changes. */
+  update(data: AngleChartData): void;
+  /** Moves the current-theta2 marker (null hides it); nothing else is redrawn. */
+  setMarker(marker: AngleMarker | null): void;
+  /** Sets the chart size in CSS pixels; a no-op when unchanged. */
+  resize(width: number, height: number): void;
+  /** Sets the title and axis labels; a no-op when unchanged. */
+  setText(text: AngleChartText): void;
+  /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (angle degrees to plot pixels). */
+  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
+}
+
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
+const DEFAULT_X_TICK_SPACING = 40;
+const DEFAULT_X_MAX_TICKS = 8;
+const DEFAULT_Y_TICK_SPACING = 34;
 
 /**
  * Points of a wrapped angle curve ready for d3's line with defined(): NaN samples become gaps, and where
@@ -99,8 +136,11 @@ export function plotIndices(yDeg: ArrayLike<number>, maxPoints: number): number[
   return out;
 }
 
-/** y domain in degrees: the data's range padded and rounded to 30 degrees, within [-180, 180]; full range when empty. */
-export function angleDomain(series: readonly AngleSeries[]): [number, number] {
+/**
+ * y axis in degrees: the data's range padded by 8 % (at least 5 degrees) and widened by d3's nice to the
+ * tick step of about count ticks (angleAxis), within [-180, 180], with its ticks; the full range when empty.
+ */
+export function angleYAxis(series: readonly AngleSeries[], count = 6): AngleAxis {
   let lo = Infinity;
   let hi = -Infinity;
   for (const s of series) {
@@ -111,123 +151,268 @@ export function angleDomain(series: readonly AngleSeries[]): [number, number] {
       if (v > hi) hi = v;
     }
   }
-  if (!(lo <= hi)) return [-180, 180];
+  if (!(lo <= hi)) return angleAxis(-180, 180, count);
   const pad = Math.max(5, (hi - lo) * 0.08);
-  return [Math.max(-180, Math.floor((lo - pad) / 30) * 30), Math.min(180, Math.ceil((hi + pad) / 30) * 30)];
+  return angleAxis(lo - pad, hi + pad, count);
 }
 
-/**
- * Draws (or redraws in place) an angle chart into svg: axes with units, light grid, one path per series
- * with gaps where the linkage cannot assemble, and a legend. Call updateAngleMarker to move the marker.
- */
-export function drawAngleChart(svg: SVGSVGElement, data: AngleChartData, options: AngleChartOptions): void {
-  const m = options.margins ?? DEFAULT_MARGINS;
-  const { width, height } = options;
-  const s = prepareSvg(svg, width, height);
-  const iw = Math.max(10, width - m.left - m.right);
-  const ih = Math.max(10, height - m.top - m.bottom);
+/** The y domain of angleYAxis in degrees. */
+export function angleDomain(series: readonly AngleSeries[], count = 6): [number, number] {
+  return angleYAxis(series, count).domain;
+}
+
+/** Size options of an angle chart with every default filled in (CSS pixels). */
+export interface AngleChartSize {
+  width: number;
+  height: number;
+  margins: Margins;
+  xTickSpacing: number;
+  xMaxTicks: number;
+  yTickSpacing: number;
+}
+
+/** Fills in the documented defaults of the size options. */
+export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChartText>): AngleChartSize {
+  return {
+    width: Math.max(0, options.width),
+    height: Math.max(0, options.height),
+    margins: options.margins ?? DEFAULT_MARGINS,
+    xTickSpacing: options.xTickSpacing ?? DEFAULT_X_TICK_SPACING,
+    xMaxTicks: options.xMaxTicks ?? DEFAULT_X_MAX_TICKS,
+    yTickSpacing: options.yTickSpacing ?? DEFAULT_Y_TICK_SPACING,
+  };
+}
+
+/** The plot area (pixels inside the margins), the scales and the ticks of an angle chart. */
+export interface AngleFrame {
+  iw: number;
+  ih: number;
+  x: ScaleLinear<number, number>;
+  y: ScaleLinear<number, number>;
+  xTicks: number[];
+  yTicks: number[];
+}
+
+/** Scales and ticks for these curves at this size: x 0..360 degrees, y angleDomain; tick counts follow the pixel size. */
+export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize): AngleFrame {
+  const m = size.margins;
+  const iw = Math.max(10, size.width - m.left - m.right);
+  const ih = Math.max(10, size.height - m.top - m.bottom);
+  const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
-  const y = scaleLinear().domain(angleDomain(data.series)).range([ih, 0]);
-  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
-
-  const span = y.domain()[1] - y.domain()[0];
-  const yStep = span > 180 ? 60 : span > 90 ? 30 : 15;
-  const yTicks: number[] = [];
-  for (let v = Math.ceil(y.domain()[0] / yStep) * yStep; v <= y.domain()[1]; v += yStep) yTicks.push(v);
-  const xTicks = [0, 60, 120, 180, 240, 300, 360];
-
-  const grid = child(plot, 'g', 'grid');
-  drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
-
-  const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
-  ax.call(
-    axisBottom(x)
-      .tickValues(xTicks)
-      .tickFormat((d) => `${d}`)
-      .tickSizeOuter(0),
+  const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
+  const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);
+  const xTicks = fittedTicks(
+    (c) => angleTicks(0, 360, c),
+    x,
+    (t) => estimateTextWidth(`${t}`),
+    xCount,
   );
-  styleAxis(ax);
-  const ay = child(plot, 'g', 'axis-y');
-  ay.call(
-    axisLeft(y)
-      .tickValues(yTicks)
-      .tickFormat((d) => minus(`${d}`))
-      .tickSizeOuter(0),
-  );
-  styleAxis(ay);
+  return { iw, ih, x, y, xTicks, yTicks: yAxis.ticks };
+}
 
+/** SVG path data of one curve in plot pixels: gaps where NaN, breaks at wraps, at most two samples per pixel. */
+export function seriesPath(theta2Deg: ArrayLike<number>, valuesDeg: ArrayLike<number>, frame: AngleFrame): string {
+  const { x, y } = frame;
+  // At most two samples per horizontal pixel: n = 3600 on a 300 px chart would only cost time.
+  const idx = plotIndices(valuesDeg, Math.max(64, Math.round(2 * frame.iw)));
+  const xs = idx.map((i) => theta2Deg[i]);
+  const ys = idx.map((i) => valuesDeg[i]);
   const gen = line<[number, number]>()
     .defined((d) => Number.isFinite(d[1]))
     .x((d) => x(d[0]))
     .y((d) => y(d[1]));
-  const lines = child(plot, 'g', 'lines');
-  lines
-    .selectAll<SVGPathElement, AngleSeries>('path')
-    .data(data.series)
-    .join('path')
-    .attr('fill', 'none')
-    .attr('stroke', (d) => d.color)
-    .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
-    .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
-    .attr('stroke-opacity', (d) => (d.faint ? 0.55 : 1))
-    .attr('stroke-linejoin', 'round')
-    .attr('d', (d) => {
-      // At most two samples per horizontal pixel: n = 3600 on a 300 px chart would only cost time.
-      const idx = plotIndices(d.valuesDeg, Math.max(64, Math.round(2 * iw)));
-      const xs = idx.map((i) => data.theta2Deg[i]);
-      const ys = idx.map((i) => d.valuesDeg[i]);
-      return gen(wrappedSegments(xs, ys)) ?? '';
-    });
-
-  drawChartText(
-    s,
-    { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] },
-    m.left,
-    iw,
-    width,
-    height,
-  );
-
-  drawLegend(s, data.series, 14, 33);
-
-  const marker = child(plot, 'g', 'marker');
-  child(marker, 'line', 'mline')
-    .attr('y1', 0)
-    .attr('y2', ih)
-    .attr('stroke', CHART_STYLE.marker)
-    .attr('stroke-width', 1.25);
-  svg.dataset.iw = String(iw);
-  svg.dataset.ih = String(ih);
-  svg.dataset.y0 = String(y.domain()[0]);
-  svg.dataset.y1 = String(y.domain()[1]);
+  return gen(wrappedSegments(xs, ys)) ?? '';
 }
 
-/** Moves the current-theta2 marker of a chart drawn by drawAngleChart; dots only where the value is finite. */
-export function updateAngleMarker(svg: SVGSVGElement, marker: AngleMarker, colors: readonly string[]): void {
-  const iw = Number(svg.dataset.iw);
-  const ih = Number(svg.dataset.ih);
-  const y0 = Number(svg.dataset.y0);
-  const y1 = Number(svg.dataset.y1);
-  if (!(iw > 0) || !(ih > 0)) return;
-  const plot = svg.querySelector<SVGGElement>(':scope > g.plot');
-  const g = plot?.querySelector<SVGGElement>(':scope > g.marker');
-  if (!g) return;
-  const m = select(g);
-  const visible = Number.isFinite(marker.theta2Deg);
-  m.attr('display', visible ? null : 'none');
-  if (!visible) return;
-  const sx = (Math.min(360, Math.max(0, marker.theta2Deg)) / 360) * iw;
-  m.select('line.mline').attr('x1', sx).attr('x2', sx);
-  const pts = marker.valuesDeg
-    .map((v, i) => ({ v, c: colors[i] ?? CHART_STYLE.marker }))
-    .filter((p) => Number.isFinite(p.v) && p.v >= y0 && p.v <= y1);
-  m.selectAll<SVGCircleElement, { v: number; c: string }>('circle')
-    .data(pts)
-    .join('circle')
-    .attr('cx', sx)
-    .attr('cy', (d) => ih - ((d.v - y0) / (y1 - y0)) * ih)
-    .attr('r', 4)
-    .attr('fill', (d) => d.c)
-    .attr('stroke', '#ffffff')
-    .attr('stroke-width', 1.5);
+/** One marker dot in plot pixels. */
+export interface MarkerDot {
+  cx: number;
+  cy: number;
+  color: string;
+}
+
+/** Where the marker goes: its line's x (null when hidden) and a dot on each solid series whose value is finite and in the y domain. */
+export function markerGeometry(
+  marker: AngleMarker | null,
+  series: readonly AngleSeries[],
+  frame: AngleFrame,
+): { x: number | null; dots: MarkerDot[] } {
+  if (!marker || !Number.isFinite(marker.theta2Deg)) return { x: null, dots: [] };
+  const cx = frame.x(Math.min(360, Math.max(0, marker.theta2Deg)));
+  const [y0, y1] = frame.y.domain();
+  const solid = series.filter((s) => !s.faint);
+  const dots: MarkerDot[] = [];
+  marker.valuesDeg.forEach((v, i) => {
+    if (i < solid.length && Number.isFinite(v) && v >= y0 && v <= y1) {
+      dots.push({ cx, cy: frame.y(v), color: solid[i].color });
+    }
+  });
+  return { x: cx, dots };
+}
+
+const EMPTY_DATA: AngleChartData = { theta2Deg: [], series: [] };
+
+/**
+ * Creates an angle chart in svg (curves of output angle against theta2 with axes, grid, legend and a
+ * current-theta2 marker) and returns its handle; the scales live in the handle. Options are read once
+ * here; resize and setText change size and texts later. Draws nothing while width or height is 0.
+ */
+export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions): AngleChart {
+  let size = angleChartSize(options);
+  let text: AngleChartText = { title: options.title, xLabel: options.xLabel, yLabel: options.yLabel };
+  let data = EMPTY_DATA;
+  let marker: AngleMarker | null = null;
+  let frame = angleFrame(data.series, size);
+  // What the axes and legend were last drawn for: they are redrawn only when this changes.
+  let xAxisKey = '';
+  let yAxisKey = '';
+  let legendKey = '';
+  const laidOut = () => size.width > 0 && size.height > 0;
+
+  const s = select(svg);
+  child(s, 'rect', 'bg'); // first child, so the background stays under the plot
+  const plot = child(s, 'g', 'plot');
+  const gridX = child(plot, 'g', 'grid-x');
+  const gridY = child(plot, 'g', 'grid-y');
+  const ax = child(plot, 'g', 'axis-x');
+  const ay = child(plot, 'g', 'axis-y');
+  const lines = child(plot, 'g', 'lines');
+  const mark = child(plot, 'g', 'marker');
+  const mline = child(mark, 'line', 'mline')
+    .attr('y1', 0)
+    .attr('stroke', CHART_STYLE.marker)
+    .attr('stroke-width', 1.25);
+
+  const drawAxes = () => {
+    const { iw, ih, x, y, xTicks, yTicks } = frame;
+    const xKey = `${iw} ${ih} ${xTicks.join(',')}`;
+    if (xKey !== xAxisKey) {
+      xAxisKey = xKey;
+      drawGridX(gridX, ih, xTicks, x);
+      ax.attr('transform', `translate(0,${ih})`).call(
+        axisBottom(x)
+          .tickValues(xTicks)
+          .tickFormat((d) => `${d}`)
+          .tickSizeOuter(0),
+      );
+      styleAxis(ax);
+    }
+    const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
+    if (yKey !== yAxisKey) {
+      yAxisKey = yKey;
+      drawGridY(gridY, iw, yTicks, y);
+      ay.call(
+        axisLeft(y)
+          .tickValues(yTicks)
+          .tickFormat((d) => minus(`${d}`))
+          .tickSizeOuter(0),
+      );
+      styleAxis(ay);
+    }
+  };
+
+  const drawLines = () => {
+    lines
+      .selectAll<SVGPathElement, AngleSeries>('path')
+      .data(data.series)
+      .join('path')
+      .attr('fill', 'none')
+      .attr('stroke', (d) => d.color)
+      .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
+      .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
+      .attr('stroke-opacity', (d) => (d.faint ? 0.55 : 1))
+      .attr('stroke-linejoin', 'round')
+      .attr('d', (d) => seriesPath(data.theta2Deg, d.valuesDeg, frame));
+    const key = data.series.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
+    if (key !== legendKey) {
+      legendKey = key;
+      drawLegend(s, data.series, 14, 33);
+    }
+  };
+
+  const drawMarker = () => {
+    const g = markerGeometry(marker, data.series, frame);
+    mark.attr('display', g.x === null ? 'none' : null);
+    if (g.x === null) return;
+    mline.attr('x1', g.x).attr('x2', g.x).attr('y2', frame.ih);
+    mark
+      .selectAll<SVGCircleElement, MarkerDot>('circle')
+      .data(g.dots)
+      .join('circle')
+      .attr('cx', (d) => d.cx)
+      .attr('cy', (d) => d.cy)
+      .attr('r', 4)
+      .attr('fill', (d) => d.color)
+      .attr('stroke', CHART_STYLE.background)
+      .attr('stroke-width', 1.5);
+  };
+
+  const drawText = () => {
+    const m = size.margins;
+    drawChartText(
+      s,
+      { title: text.title, xLabel: text.xLabel, yLabels: [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }] },
+      m.left,
+      frame.iw,
+      size.width,
+      size.height,
+    );
+  };
+
+  const drawAll = () => {
+    if (!laidOut()) return;
+    prepareSvg(svg, size.width, size.height);
+    plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
+    drawAxes();
+    drawLines();
+    drawText();
+    drawMarker();
+  };
+
+  drawAll();
+  return {
+    update(next) {
+      data = next;
+      frame = angleFrame(data.series, size);
+      if (!laidOut()) return;
+      drawAxes();
+      drawLines();
+      drawMarker();
+    },
+    setMarker(next) {
+      marker = next;
+      if (laidOut()) drawMarker();
+    },
+    resize(width, height) {
+      if (width === size.width && height === size.height) return;
+      size = angleChartSize({ ...size, width, height });
+      frame = angleFrame(data.series, size);
+      drawAll();
+    },
+    setText(next) {
+      if (next.title === text.title && next.xLabel === text.xLabel && next.yLabel === text.yLabel) return;
+      text = { ...next };
+      if (laidOut()) drawText();
+    },
+    scale(name) {
+      return (name === 'x' ? frame.x : frame.y).copy();
+    },
+  };
+}
+
+/**
+ * Draws a complete angle chart into svg in one call (the off-screen path of PNG export) and returns
+ * its handle: createAngleChart, update(data), setMarker(marker).
+ */
+export function drawAngleChart(
+  svg: SVGSVGElement,
+  data: AngleChartData,
+  marker: AngleMarker | null,
+  options: AngleChartOptions,
+): AngleChart {
+  const chart = createAngleChart(svg, options);
+  chart.update(data);
+  chart.setMarker(marker);
+  return chart;
 }

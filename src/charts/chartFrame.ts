@@ -118,6 +118,42 @@ export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y
     .text((d) => d.label);
 }
 
+/** Horizontal grid lines (class gy) at yTicks across width pixels, in group g. */
+export function drawGridY(
+  g: Selection<SVGGElement, unknown, null, undefined>,
+  width: number,
+  yTicks: readonly number[],
+  y: (v: number) => number,
+): void {
+  g.selectAll<SVGLineElement, number>('line.gy')
+    .data(yTicks)
+    .join('line')
+    .attr('class', 'gy')
+    .attr('x1', 0)
+    .attr('x2', width)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+}
+
+/** Vertical grid lines (class gx) at xTicks down height pixels, in group g. */
+export function drawGridX(
+  g: Selection<SVGGElement, unknown, null, undefined>,
+  height: number,
+  xTicks: readonly number[],
+  x: (v: number) => number,
+): void {
+  g.selectAll<SVGLineElement, number>('line.gx')
+    .data(xTicks)
+    .join('line')
+    .attr('class', 'gx')
+    .attr('y1', 0)
+    .attr('y2', height)
+    .attr('x1', (d) => x(d))
+    .attr('x2', (d) => x(d))
+    .attr('stroke', CHART_STYLE.gridColor);
+}
+
 /** Grid lines: horizontal at yTicks (class gy) across width, vertical at xTicks (class gx) down height; pixels. */
 export function drawGridLines(
   grid: Selection<SVGGElement, unknown, null, undefined>,
@@ -128,27 +164,8 @@ export function drawGridLines(
   xTicks?: readonly number[],
   x?: (v: number) => number,
 ): void {
-  grid
-    .selectAll<SVGLineElement, number>('line.gy')
-    .data(yTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', width)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.gridColor);
-  if (!xTicks || !x) return;
-  grid
-    .selectAll<SVGLineElement, number>('line.gx')
-    .data(xTicks)
-    .join('line')
-    .attr('class', 'gx')
-    .attr('y1', 0)
-    .attr('y2', height)
-    .attr('x1', (d) => x(d))
-    .attr('x2', (d) => x(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawGridY(grid, width, yTicks, y);
+  if (xTicks && x) drawGridX(grid, height, xTicks, x);
 }
 
 /** A rotated y-axis label and the vertical centre of the panel it names (pixels from the SVG top). */

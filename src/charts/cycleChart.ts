@@ -3,9 +3,30 @@ import type { ScaleContinuousNumeric } from 'd3-scale';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../solver/types';
+import { CHART_COLORS } from '../theme/tokens';
 import type { Margins } from './chartFrame';
-import { CHART_STYLE, child, minus, prepareSvg, styleAxis, drawGridLines, drawChartText } from './chartFrame';
-import { LEGEND_ROW, METHOD_COLORS, dec, drawMethodLegend } from './workPrecisionChart';
+import {
+  CHART_STYLE,
+  child,
+  estimateTextWidth,
+  minus,
+  prepareSvg,
+  styleAxis,
+  drawGridLines,
+  drawChartText,
+} from './chartFrame';
+import {
+  angleTicks,
+  fittedTicks,
+  dec,
+  decadeTicks,
+  integerTicks,
+  logTicks,
+  niceCountDomain,
+  niceLogDomain,
+  tickCount,
+} from './ticks';
+import { LEGEND_ROW, METHOD_COLORS, drawMethodLegend } from './workPrecisionChart';
 
 /** NR iterations at each theta2 sample of one method. */
 export interface CycleIterations {
@@ -53,8 +74,8 @@ export function toAxisDeg(deg: number): number {
 }
 
 /**
- * Log-scale domain of |det J| (length unit squared): whole decades around the finite positive values,
- * at least two decades wide; zeros are drawn at the floor. Without positive values: [1e-3, 1e1].
+ * Log-scale domain of |det J| (length unit squared): the finite positive values widened to whole decades
+ * by d3's nice, at least two decades wide; zeros are drawn at the floor. Without positive values: [1e-3, 1e1].
  */
 export function detJDomain(detJ: ArrayLike<number>): [number, number] {
   let lo = Infinity;
@@ -66,13 +87,12 @@ export function detJDomain(detJ: ArrayLike<number>): [number, number] {
     if (v > hi) hi = v;
   }
   if (!(hi > 0)) return [1e-3, 1e1];
-  let e0 = Math.floor(Math.log10(lo));
-  let e1 = Math.ceil(Math.log10(hi));
-  if (e1 === Math.log10(hi) && e1 === e0) e1++;
-  if (e1 - e0 < 2) {
-    // A nearly constant |det J| would fill the panel with noise; show it against two decades.
-    e0 = e1 - 2;
-  }
+  const [a, b] = niceLogDomain(lo, hi);
+  let e0 = Math.round(Math.log10(a));
+  let e1 = Math.round(Math.log10(b));
+  if (e1 === e0) e1++;
+  // A nearly constant |det J| would fill the panel with noise; show it against two decades.
+  if (e1 - e0 < 2) e0 = e1 - 2;
   return [dec(1, e0), dec(1, e1)];
 }
 
@@ -84,26 +104,19 @@ export function maxIterations(iterations: readonly CycleIterations[]): number {
 }
 
 /**
- * Integer tick values for an iteration axis from 0 to at least max (the last tick is the axis top):
- * every integer up to 5, then steps of 2, 5 or 10 so there are at most six; for max > 20 (a symlog
- * axis) 0, 1, 2, 5, 10, 20, 50, ... up to max itself.
+ * Integer tick values for an iteration axis from 0 to at least max, the last tick being the axis top:
+ * d3's nice and ticks for about count ticks; for max > 20 (a symlog axis) 0 and the log ticks from 1
+ * (1, 2, 5, 10, 20, 50, ... under three decades), ending at max itself.
  */
-export function iterationTicks(max: number): number[] {
+export function iterationTicks(max: number, count = 4): number[] {
   const top = Math.max(1, Math.ceil(max));
-  const out: number[] = [];
   if (top > 20) {
-    out.push(0);
-    for (let e = 0; dec(1, e) <= top; e++) for (const m of [1, 2, 5]) if (dec(m, e) <= top) out.push(dec(m, e));
+    const out = [0, ...logTicks([1, top], count).filter((v) => v <= top)];
     if (out[out.length - 1] !== top) out.push(top);
     return out;
   }
-  let step = 1;
-  for (const s of [1, 2, 5, 10]) {
-    step = s;
-    if (top / s <= 5) break;
-  }
-  for (let v = 0; v < top + step; v += step) out.push(v);
-  return out;
+  const [, niceTop] = niceCountDomain(top, count);
+  return integerTicks(0, niceTop, count);
 }
 
 /** Keeps the ticks (in order) whose pixel position is at least minGapPx from the last kept one, always keeping the last tick. */
@@ -130,16 +143,6 @@ export function unassembledRuns(theta2Deg: ArrayLike<number>, detJ: ArrayLike<nu
       start = -1;
     }
   }
-  return out;
-}
-
-/** Powers of ten inside [lo, hi], every k-th so there are at most maxTicks. */
-function decadeTicks(lo: number, hi: number, maxTicks: number): number[] {
-  const e0 = Math.round(Math.log10(lo));
-  const e1 = Math.round(Math.log10(hi));
-  const every = Math.max(1, Math.ceil((e1 - e0 + 1) / Math.max(2, maxTicks)));
-  const out: number[] = [];
-  for (let e = e1; e >= e0; e -= every) out.unshift(dec(1, e));
   return out;
 }
 
@@ -186,11 +189,16 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   const hBot = Math.max(10, ihAll - gapPx - hTop);
   const yBot0 = hTop + gapPx;
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
-  const xTicks = [0, 60, 120, 180, 240, 300, 360];
+  const xTicks = fittedTicks(
+    (c) => angleTicks(0, 360, c),
+    x,
+    (t) => estimateTextWidth(`${t}`),
+    tickCount(iw, 60),
+  );
   const n = data.theta2Deg.length;
 
   const itMax = maxIterations(data.iterations);
-  const itAll = iterationTicks(itMax);
+  const itAll = iterationTicks(itMax, tickCount(hTop, 24));
   const itTop = itAll[itAll.length - 1];
   // Symlog when one method needs dozens of iterations somewhere: 1, 2 and 3 must stay apart from 100.
   const yIt: ScaleContinuousNumeric<number, number> = (itMax > 20 ? scaleSymlog() : scaleLinear())
@@ -199,7 +207,7 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   const itTicks = spacedTicks(itAll, yIt, 13);
   const [d0, d1] = detJDomain(data.detJ);
   const yDet = scaleLog().domain([d0, d1]).range([hBot, 0]).clamp(true);
-  const detTicks = decadeTicks(d0, d1, Math.max(2, Math.floor(hBot / 18)));
+  const detTicks = decadeTicks(d0, d1, tickCount(hBot, 18));
 
   const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
   const top = child(plot, 'g', 'panel-top');
@@ -219,7 +227,7 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
       .attr('width', (r) => Math.max(1, x(r[1]) - x(r[0])))
       .attr('y', 0)
       .attr('height', h)
-      .attr('fill', '#f3f4f6');
+      .attr('fill', CHART_COLORS.unassembledBand);
   }
 
   const gridTop = child(top, 'g', 'grid');

@@ -3,6 +3,7 @@ import { scaleLog } from 'd3-scale';
 import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
+import { CHART_COLORS } from '../theme/tokens';
 import type { Margins, SvgSel } from './chartFrame';
 import {
   CHART_STYLE,
@@ -14,18 +15,19 @@ import {
   drawGridLines,
   drawChartText,
 } from './chartFrame';
+import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from './ticks';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
-  'closed-form': '#0f9d76',
-  'closed-form-polish': '#2563eb',
-  newton: '#9333ea',
-  'newton-no-predictor': '#a16207',
-  seed: '#475569',
+  'closed-form': CHART_COLORS.methodClosedForm,
+  'closed-form-polish': CHART_COLORS.methodClosedFormPolish,
+  newton: CHART_COLORS.methodNewton,
+  'newton-no-predictor': CHART_COLORS.methodNewtonNoPredictor,
+  seed: CHART_COLORS.methodSeed,
 };
 
 /** Outline of a marker whose configuration failed, jumped branch or falsely converged somewhere on the cycle. */
-export const FAILURE_COLOR = '#dc2626';
+export const FAILURE_COLOR: string = CHART_COLORS.failure;
 
 /** Errors below this (rad), exact zeros included, are drawn at this floor of the log scale. */
 export const ERROR_FLOOR = 1e-17;
@@ -113,29 +115,11 @@ export function orderedCurvePoints(series: LabSeries): CurvePoints {
   return { traced, defaultPoint: d && isDrawable(d) ? d : null };
 }
 
-/** m times 10^e, correctly rounded (10 ** -4 is not the double nearest 1e-4). */
-export function dec(m: number, e: number): number {
-  return Number(`${m}e${e}`);
-}
-
-/** Largest of 1, 2, 5 times a power of ten at or below v (v > 0). */
-function niceBelow(v: number): number {
-  const e = Math.floor(Math.log10(v));
-  for (const m of [5, 2, 1]) if (dec(m, e) <= v * (1 + 1e-12)) return dec(m, e);
-  return dec(1, e);
-}
-
-/** Smallest of 1, 2, 5 times a power of ten at or above v (v > 0). */
-function niceAbove(v: number): number {
-  const e = Math.floor(Math.log10(v));
-  for (const m of [1, 2, 5, 10]) if (dec(m, e) >= v * (1 - 1e-12)) return dec(m, e);
-  return dec(1, e + 1);
-}
-
 /**
  * Log-scale domains of the diagram from the drawable points: x (ns per point) padded by 15 % and
- * widened to 1-2-5 bounds, y (rad, floored at ERROR_FLOOR) padded by a quarter decade and widened to
- * whole decades. Without points: x [10, 10000], y [1e-17, 1].
+ * widened to 1-2-5 bounds (niceOneTwoFiveDomain), at least a decade; y (rad, floored at ERROR_FLOOR)
+ * padded by a quarter decade and widened to whole decades by d3's nice, at least two decades.
+ * Without points: x [10, 10000], y [1e-17, 1].
  */
 export function workPrecisionDomains(series: readonly LabSeries[]): { x: [number, number]; y: [number, number] } {
   let x0 = Infinity;
@@ -153,39 +137,16 @@ export function workPrecisionDomains(series: readonly LabSeries[]): { x: [number
     }
   }
   if (!(x1 > 0)) return { x: [10, 10000], y: [ERROR_FLOOR, 1] };
-  let xlo = niceBelow(x0 / 1.15);
-  let xhi = niceAbove(x1 * 1.15);
+  let [xlo, xhi] = niceOneTwoFiveDomain(x0 / 1.15, x1 * 1.15);
   if (xhi / xlo < 10) {
     // Less than a decade of spread: centre a full decade on the data so the axis has ticks to read.
     const mid = Math.sqrt(x0 * x1);
-    xlo = niceBelow(mid / Math.sqrt(10));
-    xhi = niceAbove(mid * Math.sqrt(10));
+    [xlo, xhi] = niceOneTwoFiveDomain(mid / Math.sqrt(10), mid * Math.sqrt(10));
   }
-  const ylo = dec(1, Math.floor(Math.log10(y0) - 0.25));
-  let yhi = dec(1, Math.ceil(Math.log10(y1) + 0.25));
-  if (yhi / ylo < 100) yhi = ylo * 100;
+  const quarterDecade = 10 ** 0.25;
+  const [ylo, yhiNice] = niceLogDomain(y0 / quarterDecade, y1 * quarterDecade);
+  const yhi = yhiNice / ylo < 100 ? dec(1, Math.round(Math.log10(ylo)) + 2) : yhiNice;
   return { x: [xlo, xhi], y: [ylo, yhi] };
-}
-
-/**
- * Tick values of a log axis over [lo, hi]: powers of ten, thinned to every k-th decade (counted from
- * 10^anchorExponent, default 10^0) so there are at most maxTicks, plus 2 and 5 times each power when
- * the domain spans under three decades.
- */
-export function logTicks(domain: readonly [number, number], maxTicks: number, anchorExponent = 0): number[] {
-  const [lo, hi] = domain;
-  const e0 = Math.ceil(Math.log10(lo) - 1e-9);
-  const e1 = Math.floor(Math.log10(hi) + 1e-9);
-  const inside = (v: number) => v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9);
-  const out: number[] = [];
-  if (Math.log10(hi / lo) < 3) {
-    for (let e = e0 - 1; e <= e1; e++) for (const m of [1, 2, 5]) if (inside(dec(m, e))) out.push(dec(m, e));
-    return out;
-  }
-  const every = Math.max(1, Math.ceil((e1 - e0 + 1) / Math.max(2, maxTicks)));
-  // Thin on a fixed lattice (1e-16, 1e-14, ... for every = 2) so the ticks do not shift as the data moves.
-  for (let e = e0; e <= e1; e++) if ((((e - anchorExponent) % every) + every) % every === 0) out.push(dec(1, e));
-  return out;
 }
 
 /** Formats a positive time tick (ns): plain digits from 0.01 to 99999, otherwise like formatTol ('1e6'). */
@@ -325,8 +286,10 @@ export function drawMethodLegend(
     .select('path')
     .attr('transform', 'translate(8,0)')
     .attr('d', (d) => (d.kind === 'default' || d.kind === 'defaultKey' ? symbol(symbolDiamond, 70)() : '') ?? '')
-    .attr('fill', (d) => (d.kind === 'default' ? d.color : '#ffffff'))
-    .attr('stroke', (d) => (d.kind === 'default' ? '#ffffff' : d.kind === 'defaultKey' ? CHART_STYLE.muted : 'none'))
+    .attr('fill', (d) => (d.kind === 'default' ? d.color : CHART_STYLE.background))
+    .attr('stroke', (d) =>
+      d.kind === 'default' ? CHART_STYLE.background : d.kind === 'defaultKey' ? CHART_STYLE.muted : 'none',
+    )
     .attr('stroke-width', (d) => (d.kind === 'defaultKey' ? 1.25 : 1));
   item
     .selectAll<SVGCircleElement, MethodLegendItem>('circle')
@@ -335,8 +298,8 @@ export function drawMethodLegend(
     .attr('cx', 8)
     .attr('cy', 0)
     .attr('r', (d) => (d.kind === 'curve' ? 3 : 3.5))
-    .attr('fill', (d) => (d.kind === 'curve' ? d.color : '#ffffff'))
-    .attr('stroke', (d) => (d.kind === 'curve' ? '#ffffff' : FAILURE_COLOR))
+    .attr('fill', (d) => (d.kind === 'curve' ? d.color : CHART_STYLE.background))
+    .attr('stroke', (d) => (d.kind === 'curve' ? CHART_STYLE.background : FAILURE_COLOR))
     .attr('stroke-width', (d) => (d.kind === 'curve' ? 1 : 2));
   item
     .select('text')
@@ -407,13 +370,9 @@ export function drawWorkPrecisionChart(
   const y = scaleLog().domain(dom.y).range([ih, 0]).clamp(true);
   const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
 
-  const xTicks = logTicks(dom.x, Math.max(2, Math.floor(iw / 60)));
+  const xTicks = logTicks(dom.x, tickCount(iw, 60));
   const anyFloored = series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
-  const yTicks = logTicks(
-    dom.y,
-    Math.max(2, Math.floor(ih / 24)),
-    anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0,
-  );
+  const yTicks = logTicks(dom.y, tickCount(ih, 24), anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0);
 
   const grid = child(plot, 'g', 'grid');
   drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
@@ -510,7 +469,7 @@ export function drawWorkPrecisionChart(
     .attr('data-tol', (mk) => formatTol(mk.point.tol))
     .attr('d', (mk) => (mk.isDefault ? symbol(symbolDiamond, 110)() : symbol(symbolCircle, 34)()) ?? '')
     .attr('fill', (mk) => mk.color)
-    .attr('stroke', (mk) => (hasTrouble(mk.point) ? FAILURE_COLOR : '#ffffff'))
+    .attr('stroke', (mk) => (hasTrouble(mk.point) ? FAILURE_COLOR : CHART_STYLE.background))
     .attr('stroke-width', (mk) => (hasTrouble(mk.point) ? 2 : 1));
   marks.select('title').text(tip);
 

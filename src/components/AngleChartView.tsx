@@ -1,7 +1,7 @@
 import './SvgChartView.css';
-import { useLayoutEffect, useRef } from 'react';
-import { drawAngleChart, updateAngleMarker } from '../charts/angleChart';
-import type { AngleMarker } from '../charts/angleChart';
+import { useCallback, useLayoutEffect, useRef, useState } from 'react';
+import { createAngleChart } from '../charts/angleChart';
+import type { AngleChart, AngleMarker } from '../charts/angleChart';
 import type { AngleChartInputs } from './chartInputs';
 import { useElementSize } from './useElementSize';
 
@@ -13,27 +13,31 @@ export interface AngleChartViewProps {
   label: string;
 }
 
-/** A live angle chart: redraws the curves when the data change and only moves the marker when theta2 does. */
+/**
+ * A live angle chart: the chart is created once per SVG element; new data redraw the curves (the axes
+ * only when their domain changes), a new marker only moves the marker, a new size redraws everything.
+ */
 export function AngleChartView({ inputs, marker, label }: AngleChartViewProps) {
   const boxRef = useRef<HTMLDivElement>(null);
-  const svgRef = useRef<SVGSVGElement>(null);
+  const [chart, setChart] = useState<AngleChart | null>(null);
+  const svgRef = useCallback((svg: SVGSVGElement | null) => {
+    setChart(svg ? createAngleChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' }) : null);
+  }, []);
   const { width, height } = useElementSize(boxRef);
-  const { data, title, xLabel, yLabel, markerColors } = inputs;
+  const { data, title, xLabel, yLabel } = inputs;
 
   useLayoutEffect(() => {
-    const svg = svgRef.current;
-    if (!svg || width <= 0 || height <= 0) return;
-    drawAngleChart(svg, data, { width, height, title, xLabel, yLabel });
-    if (typeof performance !== 'undefined' && typeof performance.mark === 'function') {
-      performance.mark('fourbar:chart');
-    }
-  }, [data, title, xLabel, yLabel, width, height]);
-
+    chart?.setText({ title, xLabel, yLabel });
+  }, [chart, title, xLabel, yLabel]);
   useLayoutEffect(() => {
-    const svg = svgRef.current;
-    if (!svg || width <= 0 || height <= 0) return;
-    updateAngleMarker(svg, marker, markerColors);
-  }, [marker, markerColors, data, width, height]);
+    chart?.update(data);
+  }, [chart, data]);
+  useLayoutEffect(() => {
+    chart?.setMarker(marker);
+  }, [chart, marker]);
+  useLayoutEffect(() => {
+    if (width > 0 && height > 0) chart?.resize(width, height);
+  }, [chart, width, height]);
 
   return (
     <div className="chart-box" ref={boxRef}>

@@ -1,7 +1,8 @@
-import { useCallback } from 'react';
-import { drawConvergenceChart } from '../charts/convergenceChart';
+import { useCallback, useLayoutEffect, useRef, useState } from 'react';
+import { createConvergenceChart } from '../charts/convergenceChart';
+import type { ConvergenceChart } from '../charts/convergenceChart';
 import type { ConvergenceInputs } from './chartInputs';
-import { SvgChartView } from './SvgChartView';
+import { useElementSize } from './useElementSize';
 
 /** Props of ConvergenceChartView: the runs and labels; it sizes itself to its box. */
 export interface ConvergenceChartViewProps {
@@ -9,14 +10,32 @@ export interface ConvergenceChartViewProps {
   label: string;
 }
 
-/** The live NR convergence chart (residual against iteration, log scale). */
+/**
+ * The live NR convergence chart (residual against iteration, log scale), created once per SVG element:
+ * a new pose redraws the runs and the title (the axes only when their domain changes).
+ */
 export function ConvergenceChartView({ inputs, label }: ConvergenceChartViewProps) {
-  const draw = useCallback(
-    (svg: SVGSVGElement, width: number, height: number) => {
-      const { runs, ...opts } = inputs;
-      drawConvergenceChart(svg, runs, { ...opts, width, height });
-    },
-    [inputs],
+  const boxRef = useRef<HTMLDivElement>(null);
+  const [chart, setChart] = useState<ConvergenceChart | null>(null);
+  const svgRef = useCallback((svg: SVGSVGElement | null) => {
+    setChart(svg ? createConvergenceChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' }) : null);
+  }, []);
+  const { width, height } = useElementSize(boxRef);
+  const { runs, tolerance, title, xLabel, yLabel, toleranceLabel, emptyText } = inputs;
+
+  useLayoutEffect(() => {
+    chart?.setText({ title, xLabel, yLabel, toleranceLabel, emptyText });
+  }, [chart, title, xLabel, yLabel, toleranceLabel, emptyText]);
+  useLayoutEffect(() => {
+    chart?.update({ runs, tolerance });
+  }, [chart, runs, tolerance]);
+  useLayoutEffect(() => {
+    if (width > 0 && height > 0) chart?.resize(width, height);
+  }, [chart, width, height]);
+
+  return (
+    <div className="chart-box" ref={boxRef}>
+      <svg ref={svgRef} role="img" aria-label={label} className="chart-svg" />
+    </div>
   );
-  return <SvgChartView draw={draw} label={label} />;
 }

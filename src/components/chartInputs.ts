@@ -20,8 +20,6 @@ export interface AngleChartInputs {
   title: string;
   xLabel: string;
   yLabel: string;
-  /** Colour of the marker dot of each plotted quantity, in marker order. */
-  markerColors: string[];
 }
 
 /** Text and data of the convergence chart, without its size. */
@@ -78,11 +76,9 @@ export function angleChartInputs(
   const oth = deg ? deg[branch === 'open' ? 'crossed' : 'open'] : null;
   const other = ` (${t.legendOtherBranch})`;
   const series: AngleChartData['series'] = [];
-  const markerColors: string[] = [];
   const add = (key: 'theta3' | 'theta4', color: string, label: string) => {
     if (showOther) series.push({ label: label + other, valuesDeg: oth ? oth[key] : EMPTY, color, faint: true });
     series.push({ label, valuesDeg: cur ? cur[key] : EMPTY, color });
-    markerColors.push(color);
   };
   if (kind === 'theta3' || kind === 'both') add('theta3', CHART_STYLE.theta3, 'θ3');
   if (kind === 'theta4' || kind === 'both') add('theta4', CHART_STYLE.theta4, 'θ4');
@@ -93,11 +89,10 @@ export function angleChartInputs(
     title,
     xLabel: t.axisTheta2,
     yLabel,
-    markerColors,
   };
 }
 
-/** The marker of an angle chart: the solved pose's theta2 and angles (degrees); NaN values when not assembled. */
+/** The marker of an angle chart: the solved pose's theta2 and its angles (degrees) in the order of the chart's solid series; NaN when not assembled. */
 export function angleMarker(kind: AngleChartKind, point: PointResponse | null): AngleMarker {
   const pose = point ? point.pose : null;
   const values: number[] = [];

@@ -1,4 +1,4 @@
-import { drawAngleChart, updateAngleMarker } from '../charts/angleChart';
+import { drawAngleChart } from '../charts/angleChart';
 import type { AngleMarker } from '../charts/angleChart';
 import { drawConvergenceChart } from '../charts/convergenceChart';
 import { canvasToPngBytes, downloadBlob } from '../render/download';
@@ -47,14 +47,13 @@ export async function angleChartPng(
   size: PngSize,
 ): Promise<Uint8Array> {
   const svg = detachedSvg();
-  drawAngleChart(svg, inputs.data, {
+  drawAngleChart(svg, inputs.data, marker, {
     width,
     height,
     title: inputs.title,
     xLabel: inputs.xLabel,
     yLabel: inputs.yLabel,
   });
-  updateAngleMarker(svg, marker, inputs.markerColors);
   return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
 }
 
@@ -66,8 +65,8 @@ export async function convergencePng(
   size: PngSize,
 ): Promise<Uint8Array> {
   const svg = detachedSvg();
-  const { runs, ...opts } = inputs;
-  drawConvergenceChart(svg, runs, { ...opts, width, height });
+  const { runs, tolerance, ...text } = inputs;
+  drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height });
   return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
 }
 

@@ -171,3 +171,16 @@ export function cssVariables(): Record<string, string> {
     '--canvas-tools-gap': `${CANVAS_TOOLS.gapPx}px`,
   };
 }
+
+/** Chart-only colours: one per lab method (work-precision and cycle charts), failure outlines, bands of unassembled stretches. */
+export const CHART_COLORS = {
+  methodClosedForm: '#0f9d76',
+  methodClosedFormPolish: '#2563eb',
+  methodNewton: '#9333ea',
+  methodNewtonNoPredictor: '#a16207',
+  methodSeed: '#475569',
+  /** Outline of a lab marker whose configuration failed, jumped branch or falsely converged. */
+  failure: '#dc2626',
+  /** Background band where the linkage cannot assemble. */
+  unassembledBand: '#f3f4f6',
+} as const;

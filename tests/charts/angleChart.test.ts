@@ -1,5 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { angleDomain, plotIndices, wrappedSegments } from '../../src/charts/angleChart';
+import {
+  angleChartSize,
+  angleDomain,
+  angleFrame,
+  markerGeometry,
+  plotIndices,
+  seriesPath,
+  wrappedSegments,
+} from '../../src/charts/angleChart';
+import { estimateTextWidth, minus } from '../../src/charts/chartFrame';
+import { FONT_SIZES } from '../../src/theme/tokens';
 
 describe('wrappedSegments', () => {
   it('turns NaN samples into gaps', () => {
@@ -25,12 +35,87 @@ describe('wrappedSegments', () => {
 });
 
 describe('angleDomain', () => {
-  it('pads the data to 30 degree steps within [-180, 180]', () => {
-    expect(angleDomain([{ label: '', color: '', valuesDeg: [31, 79] }])).toEqual([0, 90]);
+  it('holds the data with 5 degrees of padding and ends on nice angles within [-180, 180]', () => {
+    const [a, b] = angleDomain([{ label: '', color: '', valuesDeg: [31, 79] }]);
+    expect(a).toBeLessThanOrEqual(26);
+    expect(b).toBeGreaterThanOrEqual(84);
+    expect(b - a).toBeLessThanOrEqual(90);
+    expect(a % 15).toBe(0);
+    expect(b % 15).toBe(0);
     expect(angleDomain([{ label: '', color: '', valuesDeg: [-179, 179] }])).toEqual([-180, 180]);
   });
   it('shows the full range when there is no data', () => {
     expect(angleDomain([{ label: '', color: '', valuesDeg: [Number.NaN] }])).toEqual([-180, 180]);
+  });
+});
+
+describe('angleFrame', () => {
+  const full = [{ label: '', color: '', valuesDeg: [-179, 179] }];
+  it('gives tick labels room at every width, phones included: no label runs into the next', () => {
+    for (let width = 70; width <= 1600; width += 7) {
+      const f = angleFrame(full, angleChartSize({ width, height: 300 }));
+      const px = f.xTicks.map((t) => f.x(t));
+      const w = f.xTicks.map((t) => estimateTextWidth(minus(`${t}`)));
+      // Labels are centred on their ticks: the space between neighbours' edges must stay visible (4 px).
+      for (let i = 1; i < px.length; i++) {
+        expect(px[i] - px[i - 1] - (w[i] + w[i - 1]) / 2, `width ${width}`).toBeGreaterThan(4);
+      }
+      expect(f.xTicks.length, `width ${width}`).toBeGreaterThanOrEqual(width >= 160 ? 3 : 1);
+    }
+    for (let height = 120; height <= 900; height += 11) {
+      const f = angleFrame(full, angleChartSize({ width: 500, height }));
+      const py = f.yTicks.map((t) => f.y(t));
+      for (let i = 1; i < py.length; i++)
+        expect(py[i - 1] - py[i], `height ${height}`).toBeGreaterThan(FONT_SIZES.chart + 3);
+    }
+  });
+  it('steps 60 degrees along theta2 from a phone-sized chart up to a wide export', () => {
+    // Plot width = chart width - 64 px of margins: 60 degree steps from 160 px of plot width up.
+    for (let width = 224; width <= 1600; width += 9) {
+      expect(angleFrame(full, angleChartSize({ width, height: 260 })).xTicks).toEqual([0, 60, 120, 180, 240, 300, 360]);
+    }
+  });
+  it('keeps the y ticks inside the domain, at its ends', () => {
+    const f = angleFrame([{ label: '', color: '', valuesDeg: [31, 79] }], angleChartSize({ width: 500, height: 300 }));
+    expect(f.yTicks[0]).toBe(f.y.domain()[0]);
+    expect(f.yTicks[f.yTicks.length - 1]).toBe(f.y.domain()[1]);
+  });
+});
+
+describe('seriesPath', () => {
+  it('leaves a gap where the linkage cannot assemble and never writes NaN', () => {
+    const f = angleFrame(
+      [{ label: '', color: '', valuesDeg: [-179, 179] }],
+      angleChartSize({ width: 400, height: 300 }),
+    );
+    const theta2 = [0, 60, 120, 180, 240, 300, 360];
+    const d = seriesPath(theta2, [10, 20, Number.NaN, Number.NaN, 40, 50, 60], f);
+    expect(d).not.toContain('NaN');
+    expect(d.match(/M/g)).toHaveLength(2);
+    // The path starts at the first sample on the chart's scales (the path is rounded to 0.001 px).
+    const [x0, y0] = d.slice(1).split(/[ML]/)[0].split(',').map(Number);
+    expect(Math.abs(x0 - f.x(0))).toBeLessThan(1e-3);
+    expect(Math.abs(y0 - f.y(10))).toBeLessThan(1e-3);
+  });
+});
+
+describe('markerGeometry', () => {
+  const series = [
+    { label: 'a', color: 'faint', valuesDeg: [0], faint: true },
+    { label: 'b', color: 'solid', valuesDeg: [0] },
+  ];
+  const f = angleFrame([{ label: '', color: '', valuesDeg: [-179, 179] }], angleChartSize({ width: 400, height: 300 }));
+  it('puts a dot on each solid series at the scales of theta2 and its value', () => {
+    const g = markerGeometry({ theta2Deg: 90, valuesDeg: [45] }, series, f);
+    expect(g.x).toBe(f.x(90));
+    expect(g.dots).toEqual([{ cx: f.x(90), cy: f.y(45), color: 'solid' }]);
+  });
+  it('hides the marker without theta2 and drops values that are gaps or outside the plot', () => {
+    expect(markerGeometry({ theta2Deg: Number.NaN, valuesDeg: [1] }, series, f)).toEqual({ x: null, dots: [] });
+    expect(markerGeometry(null, series, f).x).toBeNull();
+    expect(markerGeometry({ theta2Deg: 10, valuesDeg: [Number.NaN] }, series, f).dots).toEqual([]);
+    const narrow = angleFrame([series[1]], angleChartSize({ width: 400, height: 300 }));
+    expect(markerGeometry({ theta2Deg: 10, valuesDeg: [170] }, series, narrow).dots).toEqual([]);
   });
 });
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { formatPowerOfTen, residualDomain } from '../../src/charts/convergenceChart';
+import { convergenceFrame, formatPowerOfTen, residualDomain } from '../../src/charts/convergenceChart';
 
 describe('residualDomain', () => {
   it('spans whole decades with room for exact zeros below the smallest residual', () => {
@@ -21,5 +21,38 @@ describe('formatPowerOfTen', () => {
     expect(formatPowerOfTen(1e-3)).toBe('1e\u22123');
     expect(formatPowerOfTen(1)).toBe('1e0');
     expect(formatPowerOfTen(3e-3)).toBe('');
+  });
+});
+
+describe('convergenceFrame', () => {
+  const size = (width: number, height: number) => ({
+    width,
+    height,
+    margins: { top: 46, right: 14, bottom: 40, left: 64 },
+    xTickSpacing: 40,
+    yTickSpacing: 22,
+  });
+  const runs = [
+    {
+      label: '',
+      color: '',
+      iterations: [0, 1, 2, 3, 4, 5, 6, 7],
+      residuals: [1, 0.1, 1e-3, 1e-6, 1e-9, 1e-12, 1e-15, 0],
+    },
+  ];
+  it('labels whole iterations only, spaced for the width', () => {
+    for (const width of [200, 320, 560, 900]) {
+      const f = convergenceFrame({ runs }, size(width, 300));
+      expect(f.xTicks.every((t) => Number.isInteger(t) && t >= 0 && t <= 7)).toBe(true);
+      const px = f.xTicks.map((t) => f.x(t));
+      for (let i = 1; i < px.length; i++) expect(px[i] - px[i - 1]).toBeGreaterThanOrEqual(20);
+    }
+  });
+  it('labels powers of ten on the residual axis, the floor decade included', () => {
+    const f = convergenceFrame({ runs, tolerance: 1e-12 }, size(560, 300));
+    expect(f.y.domain()).toEqual([1e-16, 1]);
+    expect(f.yTicks.every((t) => formatPowerOfTen(t) !== '')).toBe(true);
+    const py = f.yTicks.map((t) => f.y(t));
+    for (let i = 1; i < py.length; i++) expect(py[i - 1] - py[i]).toBeGreaterThanOrEqual(14);
   });
 });

@@ -8,7 +8,6 @@ import {
   formatTol,
   hasTrouble,
   legendLayout,
-  logTicks,
   orderedCurvePoints,
   placeLabels,
   plottedError,
@@ -125,20 +124,6 @@ describe('workPrecisionDomains', () => {
 
   it('falls back to fixed ranges without data', () => {
     expect(workPrecisionDomains([])).toEqual({ x: [10, 10000], y: [ERROR_FLOOR, 1] });
-  });
-});
-
-describe('logTicks', () => {
-  it('adds 2 and 5 multiples on a short axis', () => {
-    expect(logTicks([100, 2000], 10)).toEqual([100, 200, 500, 1000, 2000]);
-  });
-
-  it('thins long axes on a fixed lattice of decades', () => {
-    const t = logTicks([1e-18, 1], 10);
-    expect(t.length).toBeLessThanOrEqual(10);
-    expect(t.map((v) => Math.round(Math.log10(v)))).toEqual([-18, -16, -14, -12, -10, -8, -6, -4, -2, 0]);
-    // Anchored at the floor's exponent, 1e-17 is a tick so it can be labelled.
-    expect(logTicks([1e-18, 1], 9, -17).map((v) => Math.round(Math.log10(v)))).toContain(-17);
   });
 });
 

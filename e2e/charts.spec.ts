@@ -1,0 +1,169 @@
+import type { Locator, Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
+import { artifact, waitReady } from './helpers';
+
+/** For each marker dot of a chart: its distance (px) to the solid path of its own colour at the dot's x, and to the nearest other path. */
+async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other: number }>> {
+  return chart.evaluate((svg: SVGSVGElement) => {
+    const paths = [...svg.querySelectorAll<SVGPathElement>('g.lines path')];
+    // y of a path at x: the path's own geometry, bisected along its length within each monotone-in-x piece.
+    const yAt = (p: SVGPathElement, x: number): number[] => {
+      const n = 2000;
+      const len = p.getTotalLength();
+      const ys: number[] = [];
+      let prev = p.getPointAtLength(0);
+      for (let i = 1; i <= n; i++) {
+        const q = p.getPointAtLength((len * i) / n);
+        if ((prev.x - x) * (q.x - x) <= 0 && q.x !== prev.x && Math.abs(q.x - prev.x) < 5) {
+          ys.push(prev.y + ((x - prev.x) / (q.x - prev.x)) * (q.y - prev.y));
+        }
+        prev = q;
+      }
+      return ys;
+    };
+    return [...svg.querySelectorAll<SVGCircleElement>('g.marker circle')].map((c) => {
+      const cx = Number(c.getAttribute('cx'));
+      const cy = Number(c.getAttribute('cy'));
+      const fill = c.getAttribute('fill');
+      const dist = (p: SVGPathElement) => Math.min(Infinity, ...yAt(p, cx).map((y) => Math.abs(y - cy)));
+      const own = paths.filter((p) => p.getAttribute('stroke') === fill && !p.getAttribute('stroke-dasharray'));
+      const others = paths.filter((p) => !own.includes(p));
+      return { own: own.length === 1 ? dist(own[0]) : Infinity, other: Math.min(Infinity, ...others.map(dist)) };
+    });
+  });
+}
+
+/** Mutation counts of one watched group: batches of changes, and batches that left its markup as it was (a redundant redraw). */
+interface MutationCount {
+  batches: number;
+  redundant: number;
+}
+
+/** Starts counting DOM mutation batches inside each group selector of a chart; read them back with mutationCounts. */
+async function watchMutations(chart: Locator, selectors: string[]): Promise<void> {
+  await chart.evaluate((svg: SVGSVGElement, sels: string[]) => {
+    const w = window as unknown as { __mut?: Map<Element, Record<string, MutationCount>> };
+    w.__mut ??= new Map();
+    const counts: Record<string, MutationCount> = {};
+    w.__mut.set(svg, counts);
+    for (const sel of sels) {
+      const el = svg.querySelector(sel);
+      if (!el) throw new Error(`no ${sel}`);
+      const c = (counts[sel] = { batches: 0, redundant: 0 });
+      let markup = el.innerHTML;
+      new MutationObserver(() => {
+        c.batches++;
+        if (el.innerHTML === markup) c.redundant++;
+        markup = el.innerHTML;
+      }).observe(el, { subtree: true, childList: true, attributes: true, characterData: true });
+    }
+  }, selectors);
+}
+
+async function mutationCounts(chart: Locator): Promise<Record<string, MutationCount>> {
+  return chart.evaluate((svg: SVGSVGElement) => {
+    const w = window as unknown as { __mut: Map<Element, Record<string, MutationCount>> };
+    return { ...w.__mut.get(svg)! };
+  });
+}
+
+/** Tick label boxes of one axis group, in page pixels. */
+async function tickBoxes(chart: Locator, axis: string): Promise<Array<{ left: number; right: number }>> {
+  return chart.evaluate((svg: SVGSVGElement, sel: string) => {
+    return [...svg.querySelectorAll<SVGTextElement>(`${sel} .tick text`)]
+      .filter((t) => t.textContent)
+      .map((t) => {
+        const r = t.getBoundingClientRect();
+        return { left: r.left, right: r.right };
+      });
+  }, axis);
+}
+
+async function stepSlider(page: Page, name: RegExp, key: string, times: number): Promise<void> {
+  await page.getByRole('slider', { name }).focus();
+  for (let i = 0; i < times; i++) await page.keyboard.press(key);
+}
+
+test.describe('the angle and convergence charts', () => {
+  test('each marker dot lies on its own curve, in separate and combined plots', async ({ page }) => {
+    await page.goto('./?ghost=1');
+    await waitReady(page);
+    const t3 = page.getByRole('img', { name: 'θ3 against θ2' });
+    const t4 = page.getByRole('img', { name: 'θ4 against θ2' });
+    for (const chart of [t3, t4]) {
+      await expect(chart.locator('g.marker circle')).toHaveCount(1);
+      for (const d of await markerOffsets(chart)) {
+        expect(d.own).toBeLessThan(1.5);
+        expect(d.other).toBeGreaterThan(5);
+      }
+    }
+    await page.getByRole('radio', { name: 'Together' }).check();
+    const both = page.getByRole('img', { name: 'θ3 and θ4 against θ2' });
+    await expect(both.locator('g.marker circle')).toHaveCount(2);
+    const offsets = await markerOffsets(both);
+    expect(offsets).toHaveLength(2);
+    for (const d of offsets) {
+      expect(d.own).toBeLessThan(1.5);
+      expect(d.other).toBeGreaterThan(5);
+    }
+  });
+
+  test('r3 steps redraw the curves but not the theta2 axis', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const t4 = page.getByRole('img', { name: 'θ4 against θ2' });
+    await watchMutations(t4, ['g.axis-x', 'g.grid-x', 'g.axis-y', 'g.lines']);
+    const before = await t4.locator('g.lines path').first().getAttribute('d');
+    await stepSlider(page, /^r3/, 'ArrowRight', 5);
+    await expect(page.getByRole('textbox', { name: /^r3/ })).toHaveValue('5.05');
+    await expect.poll(() => t4.locator('g.lines path').first().getAttribute('d')).not.toBe(before);
+    const counts = await mutationCounts(t4);
+    expect(counts['g.lines'].batches).toBeGreaterThan(0);
+    expect(counts['g.axis-x'].batches).toBe(0);
+    expect(counts['g.grid-x'].batches).toBe(0);
+    expect(counts['g.axis-y'].redundant).toBe(0);
+  });
+
+  test('theta2 steps redraw the convergence runs, and its axes only when their domain changes', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const conv = page.getByRole('img', { name: /^NR convergence at θ2/ });
+    await watchMutations(conv, ['g.axis-x', 'g.axis-y', 'g.runs']);
+    const runBefore = await conv.locator('g.runs path').last().getAttribute('d');
+    await stepSlider(page, /^θ2/, 'ArrowRight', 6);
+    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('48');
+    await expect(conv).toHaveAttribute('aria-label', /48/);
+    await expect.poll(() => conv.locator('g.runs path').last().getAttribute('d')).not.toBe(runBefore);
+    const counts = await mutationCounts(conv);
+    expect(counts['g.runs'].batches).toBeGreaterThan(0);
+    // An axis may change with the residual range, but is never rewritten with what it already shows.
+    expect(counts['g.axis-x'].redundant).toBe(0);
+    expect(counts['g.axis-y'].redundant).toBe(0);
+  });
+
+  for (const [w, h] of [
+    [1280, 800],
+    [390, 844],
+  ] as const) {
+    test(`tick labels never run together at ${w}x${h}`, async ({ page }) => {
+      await page.setViewportSize({ width: w, height: h });
+      await page.goto('./');
+      await waitReady(page);
+      const charts = [
+        page.getByRole('img', { name: 'θ3 against θ2' }),
+        page.getByRole('img', { name: 'θ4 against θ2' }),
+        page.getByRole('img', { name: /^NR convergence at θ2/ }),
+      ];
+      for (const chart of charts) {
+        await chart.scrollIntoViewIfNeeded();
+        const boxes = await tickBoxes(chart, 'g.axis-x');
+        expect(boxes.length).toBeGreaterThanOrEqual(2);
+        for (let i = 1; i < boxes.length; i++) expect(boxes[i].left - boxes[i - 1].right).toBeGreaterThan(4);
+      }
+      await page
+        .locator('section.plots, .plots-panel')
+        .first()
+        .screenshot({ path: artifact(`plots-${w}x${h}.png`) });
+    });
+  }
+});
