@@ -4,9 +4,6 @@ import { GIFEncoder, applyPalette, quantize } from 'gifenc';
 /** Colours the global palette may hold: 255, since one of the 256 GIF slots marks "unchanged from the last frame". */
 export const GIF_MAX_COLORS = 255;
 
-/** Shortest frame delay written, centiseconds: browsers play 0 or 1 cs as 10 cs, so faster rates are capped at 50 FPS. */
-export const GIF_MIN_DELAY_CS = 2;
-
 /** Largest width or height a GIF can say (16-bit fields), pixels. */
 export const GIF_MAX_SIDE_PX = 65535;
 
@@ -30,20 +27,6 @@ export interface GifWriter {
   readonly frameCount: number;
   /** Colours in the global palette (without the "unchanged" slot). */
   readonly colorCount: number;
-}
-
-/**
- * Per-frame delays (centiseconds) for frameCount frames at fps frames per second. Rounded on the running
- * total, so the cycle lasts frameCount / fps seconds to within 1 cs however the single delays round
- * (30 FPS gives 3, 4, 3, 3, 4, 3, …); never below GIF_MIN_DELAY_CS. Throws for a count or rate that is not positive.
- */
-export function gifFrameDelaysCs(frameCount: number, fps: number): number[] {
-  if (!Number.isInteger(frameCount) || frameCount < 1) {
-    throw new Error(`frameCount must be a positive integer, got ${frameCount}`);
-  }
-  if (!(fps > 0) || !Number.isFinite(fps)) throw new Error(`fps must be a positive finite rate, got ${fps}`);
-  const at = (k: number) => Math.round((k * 100) / fps);
-  return Array.from({ length: frameCount }, (_, k) => Math.max(GIF_MIN_DELAY_CS, at(k + 1) - at(k)));
 }
 
 function checkSide(name: string, v: number): void {

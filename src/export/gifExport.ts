@@ -1,6 +1,6 @@
 import type { GifWorkerLike } from './gifClient';
 import { GifChannelError, GifClient } from './gifClient';
-import { gifFrameDelaysCs } from './gifEncoder';
+import { gifFrameDelaysCs } from './gifTiming';
 import type { GifWorkerResponse } from './gifProtocol';
 import type { FrameSurface } from './frameSurface';
 import { createFrameSurface, drawFrame } from './frameSurface';

@@ -112,13 +112,16 @@ export async function recordWebm(o: WebmExportOptions): Promise<AnimationExportR
     recorder.start();
     // A recorder that fails to start goes straight to stop (after an error event).
     await Promise.race([started, stopped]);
-    const t0 = performance.now();
+    let t0 = performance.now();
     for (let k = 0; k < n && !signal?.aborted && failure === null && recorder.state === 'recording'; k++) {
       if (k > 0) await drawFrame(surface, frames[k], o);
       track.requestFrame();
       recorded = k + 1;
       o.onProgress?.({ framesDone: k + 1, frameCount: n, fraction: (k + 1) / n });
-      // Frame k is shown until frame k + 1 arrives; the last one until the recording stops.
+      // Frame k is shown until frame k + 1 arrives; the last one until the recording stops. A page that fell
+      // behind (a busy machine) moves the timeline instead of sending frames in a burst the encoder would drop.
+      const now = performance.now();
+      if (t0 + (k + 1) * frameMs < now) t0 = now - (k + 0.5) * frameMs;
       await sleepUntil(t0 + (k + 1) * frameMs, signal);
     }
   } finally {

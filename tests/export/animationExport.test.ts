@@ -4,7 +4,7 @@ import { exportAnimation } from '../../src/export/animationExport';
 import type { AnimationFrame } from '../../src/export/animationFrames';
 import { planAnimationFrames } from '../../src/export/animationFrames';
 import type { GifWorkerLike } from '../../src/export/gifClient';
-import { gifFrameDelaysCs } from '../../src/export/gifEncoder';
+import { gifFrameDelaysCs } from '../../src/export/gifTiming';
 import type { GifWorkerRequest, GifWorkerResponse } from '../../src/export/gifProtocol';
 import { createGifSession } from '../../src/export/gifSession';
 import type { AnimationExportOptions, ExportProgress, RenderFrame } from '../../src/export/types';
