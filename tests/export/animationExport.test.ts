@@ -4,6 +4,7 @@ import { exportAnimation } from '../../src/export/animationExport';
 import type { AnimationFrame } from '../../src/export/animationFrames';
 import { planAnimationFrames } from '../../src/export/animationFrames';
 import type { GifWorkerLike } from '../../src/export/gifClient';
+import { FRAMES_IN_FLIGHT, PALETTE_SAMPLE_FRAMES } from '../../src/export/gifExport';
 import { gifFrameDelaysCs } from '../../src/export/gifTiming';
 import type { GifWorkerRequest, GifWorkerResponse } from '../../src/export/gifProtocol';
 import { createGifSession } from '../../src/export/gifSession';
@@ -30,8 +31,10 @@ function markerX(f: AnimationFrame): number {
   return Math.round((f.theta2Rad / (2 * Math.PI)) * 80);
 }
 
-/** Grey view, and a 10 x 10 blue marker whose x follows θ2. */
+/** Grey view, a 10 x 10 blue marker whose x follows θ2, and a red band past the view's left edge (clipped). */
 const drawMarker: RenderFrame = (ctx, f, w, h) => {
+  ctx.fillStyle = '#c02020';
+  ctx.fillRect(-50, 0, 50, h);
   ctx.fillStyle = '#dddddd';
   ctx.fillRect(0, 0, w, h);
   ctx.fillStyle = '#1030c0';
@@ -153,8 +156,9 @@ describe('exportAnimation (GIF)', () => {
       noWorker,
     );
     expect(r).toEqual({ status: 'cancelled' });
-    // 6 palette samples, 5 encoded frames and at most the few in flight: far from all 36.
-    expect(drawn).toBeLessThan(6 + 5 + 4);
+    // The palette samples, 5 encoded frames and the FRAMES_IN_FLIGHT - 1 still waiting in the encoder when the
+    // fifth came back; not one frame drawn after the abort.
+    expect(drawn).toBeLessThanOrEqual(PALETTE_SAMPLE_FRAMES + 5 + FRAMES_IN_FLIGHT - 1);
   });
 
   it('resolves cancelled at once for a signal aborted before the start', async () => {

@@ -112,6 +112,8 @@ describe('planAnimationFrames', () => {
     const range = rangeOf(TRIPLE_ROCKER);
     const n = 720;
     const plan = planAnimationFrames({ theta2Deg: 60, direction: -1, branch: 'crossed', range, framesPerCycle: n });
+    // Clockwise: the first step decreases θ2.
+    expect(turnDeg(frameDeg(plan.frames[0]), frameDeg(plan.frames[1]))).toBeCloseTo(-plan.travelDeg / n, 9);
     let worst = 0;
     for (let k = 0; k < n; k++) {
       const a = pinB(TRIPLE_ROCKER, plan.frames[k]);
