@@ -106,6 +106,8 @@ async function main() {
       if (r.reason) row.reason = r.reason;
       if (r.base64) {
         const bytes = new Uint8Array(Buffer.from(r.base64, 'base64'));
+        // Kept outside the repository to look at: the last file of each format.
+        writeFileSync(join(tmpdir(), `fourbar-animation-sample.${req.format}`), bytes);
         row.bytes = bytes.length;
         row.mb = +(bytes.length / (1024 * 1024)).toFixed(2);
         if (req.format === 'gif') {
