@@ -1,0 +1,13 @@
+/// <reference lib="webworker" />
+import type { GifWorkerRequest } from './gifProtocol';
+import { createGifSession } from './gifSession';
+
+declare const self: DedicatedWorkerGlobalScope;
+
+const session = createGifSession();
+
+// A thin switch: the session answers every request exactly once, in order.
+self.onmessage = (event: MessageEvent<GifWorkerRequest>) => {
+  const { response, transfer } = session.handle(event.data);
+  self.postMessage(response, transfer);
+};
