@@ -1,4 +1,5 @@
 import './styles.css';
+import { EmbedLayout } from './components/EmbedLayout';
 import { mount } from './mount';
 
-mount('embed');
+mount(EmbedLayout);

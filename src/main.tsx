@@ -1,4 +1,5 @@
 import './styles.css';
+import { AppLayout } from './components/AppLayout';
 import { mount } from './mount';
 
-mount('app');
+mount(AppLayout);

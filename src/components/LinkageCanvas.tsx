@@ -1,10 +1,11 @@
-import { memo, useEffect, useLayoutEffect, useRef } from 'react';
+import { memo, useEffect, useEffectEvent, useLayoutEffect, useRef } from 'react';
 import { drawLinkage } from '../render/drawLinkage';
 import type { LinkageScene } from '../render/scene';
 import { fitView, zoomAbout } from '../render/view';
 import type { ViewOffset } from '../state/appState';
 import { useMessages } from './MessagesContext';
 import { Icon } from './Icon';
+import { benchMark } from './benchMark';
 import { useElementSize } from './useElementSize';
 
 /** Props of LinkageCanvas: the scene to draw, the user's pan and zoom, and a size report for exports. */
@@ -23,8 +24,6 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
   const wrapRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const { width, height } = useElementSize(wrapRef);
-  const viewRef = useRef(view);
-  viewRef.current = view;
   const drag = useRef<{ id: number; x: number; y: number; panX: number; panY: number } | null>(null);
 
   useEffect(() => {
@@ -45,23 +44,23 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
     if (!ctx) return;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
-    if (typeof performance !== 'undefined' && typeof performance.mark === 'function') {
-      performance.mark('fourbar:canvas');
-    }
+    benchMark('fourbar:canvas', { theta2Rad: scene.theta2 });
   }, [scene, view, width, height]);
 
+  // A native listener: React's wheel listener is passive, and the page must not scroll while zooming.
+  const onWheel = useEffectEvent((e: WheelEvent, canvas: HTMLCanvasElement) => {
+    e.preventDefault();
+    const r = canvas.getBoundingClientRect();
+    const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
+    onViewChange(zoomAbout(view, factor, e.clientX - r.left, e.clientY - r.top, r.width, r.height));
+  });
   useEffect(() => {
     const canvas = canvasRef.current;
     if (!canvas) return;
-    const onWheel = (e: WheelEvent) => {
-      e.preventDefault();
-      const r = canvas.getBoundingClientRect();
-      const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
-      onViewChange(zoomAbout(viewRef.current, factor, e.clientX - r.left, e.clientY - r.top, r.width, r.height));
-    };
-    canvas.addEventListener('wheel', onWheel, { passive: false });
-    return () => canvas.removeEventListener('wheel', onWheel);
-  }, [onViewChange]);
+    const listener = (e: WheelEvent) => onWheel(e, canvas);
+    canvas.addEventListener('wheel', listener, { passive: false });
+    return () => canvas.removeEventListener('wheel', listener);
+  }, []);
 
   const zoomBy = (f: number) => onViewChange(zoomAbout(view, f, width / 2, height / 2, width, height));
 
