@@ -1,4 +1,4 @@
-import { useEffect, useId, useRef, useState } from 'react';
+import { useId, useState } from 'react';
 import type { FieldName } from '../state/validate';
 import { parseField } from '../state/validate';
 import { formatNumber } from '../state/format';
@@ -26,16 +26,20 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
   const id = useId();
   const [draft, setDraft] = useState(String(value));
   const [error, setError] = useState<string | null>(null);
-  const focused = useRef(false);
+  const [focused, setFocused] = useState(false);
+  const [shownValue, setShownValue] = useState(value);
   const label = t.fieldLabels[field];
 
-  useEffect(() => {
+  if (value !== shownValue) {
     // Follow outside changes (slider, preset, animation) unless the person is typing a different value.
-    if (!focused.current) {
+    // Adjusted while rendering, not in an effect: an effect's update would outlive each input of a burst
+    // and React would count them as nested updates (error #185).
+    setShownValue(value);
+    if (!focused) {
       setDraft(String(value));
       setError(null);
     }
-  }, [value]);
+  }
 
   const onText = (text: string) => {
     setDraft(text);
@@ -71,11 +75,9 @@ export function NumberControl({ field, value, min, max, step, onCommit, disabled
             disabled={disabled}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${id}-error` : undefined}
-            onFocus={() => {
-              focused.current = true;
-            }}
+            onFocus={() => setFocused(true)}
             onBlur={() => {
-              focused.current = false;
+              setFocused(false);
               if (!error) setDraft(String(value));
             }}
             onChange={(e) => onText(e.target.value)}
