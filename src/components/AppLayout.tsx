@@ -18,9 +18,11 @@ import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
+import { useLinkagePose } from './useLinkagePose';
 import { useLinkageScene } from './useLinkageScene';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
+import { useStableCallback } from './useStableCallback';
 import { useUrlSync } from './useUrlSync';
 
 // The solver lab (its charts and tables) loads only when it is opened.
@@ -47,9 +49,11 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const t = getMessages(state.locale);
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
-  const { scene, description } = useLinkageScene(state, point, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, cycle, deg, scene, t });
+  const { local, marker } = useLinkagePose(state, !onLab);
+  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
+  const getState = useStableCallback(() => state);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
@@ -91,7 +95,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
               <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
                 <AnglePlotsPanel
                   deg={deg}
-                  point={point}
+                  point={marker}
                   branch={state.branch}
                   showOther={state.showGhost}
                   layout={state.plotLayout}
@@ -126,7 +130,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <h2 id="sec-share" className="section-title">
               {t.sectionShare}
             </h2>
-            <SharePanel state={state} pageHref={window.location.href} />
+            <SharePanel getState={getState} />
           </section>
           {solverNote}
         </aside>

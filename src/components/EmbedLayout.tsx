@@ -15,6 +15,7 @@ import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
+import { useLinkagePose } from './useLinkagePose';
 import { useLinkageScene } from './useLinkageScene';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
@@ -51,8 +52,9 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const { state, dispatch, solverMode, cycle, cycleError, point } = useSimulator(initial.state, shownFor);
   const t = getMessages(state.locale);
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
-  const { scene, description } = useLinkageScene(state, point, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, cycle, deg, scene, t });
+  const { local, marker } = useLinkagePose(state, true);
+  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   useDocumentMeta(t.htmlLang, t.embedTitle);
@@ -106,7 +108,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
           <section className="card embed-card embed-plots" ref={plotsRef}>
             <AnglePlotsPanel
               deg={deg}
-              point={point}
+              point={marker}
               branch={state.branch}
               showOther={state.showGhost}
               layout={state.plotLayout}

@@ -8,7 +8,6 @@ import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { decodeStatuses } from '../worker/statusCodes';
 import type { CycleDegrees } from './chartInputs';
 import { angleChartInputs, angleMarker, convergenceInputs } from './chartInputs';
-import { angleChartPng, convergencePng, downloadCsv, downloadPng, linkagePng } from './exporters';
 import { useStableCallback } from './useStableCallback';
 
 /** Logical (CSS pixel) size of exported angle plots. */
@@ -16,10 +15,13 @@ export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
 /** Logical (CSS pixel) size of the exported convergence plot. */
 export const CONVERGENCE_EXPORT_SIZE = { width: 560, height: 340 } as const;
 
-/** What the exports draw: the state, the latest answers, the cycle in degrees, the scene and the strings. */
+/** What the exports draw: the state, the latest answers, the drawn pose, the cycle in degrees, the scene and the strings. */
 export interface ExportSources {
   state: AppState;
+  /** The worker's point answer (NR runs for the convergence plot). */
   point: PointResponse | null;
+  /** The pose on screen as a point (the plots' marker). */
+  marker: PointResponse;
   cycle: CycleResponse | null;
   deg: CycleDegrees | null;
   scene: LinkageScene;
@@ -41,7 +43,9 @@ export function useExports(sources: ExportSources): Exports {
     canvasSize.current = { width, height };
   }, []);
   const onPng = useStableCallback(async (subject: ExportSubject, size: PngSize) => {
-    const { state: s, point: p, deg: d, scene, t } = sources;
+    const { state: s, point: p, marker, deg: d, scene, t } = sources;
+    // The PNG and CSV writers load on the first export: they are not part of the first load.
+    const { angleChartPng, convergencePng, downloadPng, linkagePng } = await import('./exporters');
     const name = pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size);
     let bytes: Uint8Array;
     if (subject === 'linkage') {
@@ -54,7 +58,7 @@ export function useExports(sources: ExportSources): Exports {
       const { width, height } = ANGLE_EXPORT_SIZE;
       bytes = await angleChartPng(
         angleChartInputs(subject, d, s.branch, s.showGhost, t),
-        angleMarker(subject, p),
+        angleMarker(subject, marker),
         width,
         height,
         size,
@@ -65,6 +69,7 @@ export function useExports(sources: ExportSources): Exports {
   const onCsv = useStableCallback(async () => {
     const { state: s, cycle: c } = sources;
     if (!c) throw new Error('the cycle is still being solved');
+    const { downloadCsv } = await import('./exporters');
     const b = c[s.branch];
     downloadCsv(
       {

@@ -4,7 +4,11 @@ import type { Action, AppState } from '../state/appState';
 import { reducer } from '../state/appState';
 import type { SolverClient, SolverMode } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
+import { usePacedValue } from './usePacedValue';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
+
+/** How often the worker's pose (numbers, NR runs) follows the input while playing, ms: about 8 times a second. */
+const PLAY_POINT_INTERVAL_MS = 125;
 
 /** Which views a layout shows for a state: only what shows is solved for. */
 export interface ShownViews {
@@ -46,16 +50,19 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
     }),
     [solver, state.branch, state.showGhost, state.showTrace, stage, plotPixels],
   );
-  const pointNeeds = useMemo(
-    () => ({ solver, ghost: state.showGhost && stage, newton }),
-    [solver, state.showGhost, stage, newton],
-  );
+  // The worker's pose answer feeds the numbers and the NR runs only: the canvas draws a pose solved on the
+  // main thread (useLinkagePose), ghost included, so the worker need not solve the ghost.
+  const pointNeeds = useMemo(() => ({ solver, ghost: false, newton }), [solver, newton]);
   const { cycle, error } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
+  // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
+  // numbers and the NR plot, which need not follow every frame of Play.
+  const at = useMemo(() => ({ theta2Deg: state.theta2Deg, branch: state.branch }), [state.theta2Deg, state.branch]);
+  const pointAt = usePacedValue(at, state.playing, PLAY_POINT_INTERVAL_MS);
   const point = usePoint(
     client,
     state.linkage,
-    state.branch,
-    state.theta2Deg,
+    pointAt.branch,
+    pointAt.theta2Deg,
     state.samples,
     state.coupler,
     pointNeeds,
