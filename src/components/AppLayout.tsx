@@ -1,3 +1,4 @@
+import './AppLayout.css';
 import { Suspense, lazy, useCallback } from 'react';
 import type { AppState } from '../state/appState';
 import { getMessages } from '../state/i18n';
@@ -13,7 +14,10 @@ import { LinkageCanvas } from './LinkageCanvas';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
 import { SharePanel } from './SharePanel';
+import { shellMessages } from './shellMessages';
+import { SkipLink } from './SkipLink';
 import { useAnimation } from './useAnimation';
+import { useCanvasEdits } from './useCanvasEdits';
 import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
@@ -33,7 +37,9 @@ export interface AppLayoutProps {
   initial: ParsedUrl;
 }
 
-const MAIN_ID = 'page-main';
+/** Ids of the main landmark (the skip link's target) and of the page tab panel inside it. */
+const MAIN_ID = 'main-content';
+const PANEL_ID = 'page-panel';
 
 /**
  * The full app: top bar (title, Simulator / Solver lab tabs, language), controls on the left, the linkage
@@ -54,6 +60,8 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
+  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
+  const shell = shellMessages(state.locale);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
@@ -62,50 +70,56 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const solverNote = solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null;
   return (
     <MessagesContext.Provider value={t}>
+      <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
       <div className="app" data-ready={cycle && point ? 'true' : 'false'}>
         <header className="topbar">
           <Brand />
-          <PageTabs page={state.page} dispatch={dispatch} panelId={MAIN_ID} />
+          <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
           <LanguageSelect locale={state.locale} dispatch={dispatch} />
         </header>
-        <aside className="sidebar" aria-label={t.sectionLinks}>
+        <aside className="sidebar" aria-label={shell.controlsLabel}>
           <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
         </aside>
-        <main
-          className={`main${onLab ? ' main-lab' : ''}`}
-          id={MAIN_ID}
-          role="tabpanel"
-          aria-labelledby={pageTabId(state.page)}
-        >
-          {onLab ? (
-            <Suspense fallback={<p className="note">{t.labRun}…</p>}>
-              <LabPanel client={client} state={state} dispatch={dispatch} />
-            </Suspense>
-          ) : (
-            <>
-              <section className="card stage">
-                <LinkageCanvas
-                  scene={scene}
-                  view={state.view}
-                  onViewChange={onViewChange}
-                  onSize={onCanvasSize}
-                  description={description}
-                />
-              </section>
-              <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
-                <AnglePlotsPanel
-                  deg={deg}
-                  point={marker}
-                  branch={state.branch}
-                  showOther={state.showGhost}
-                  layout={state.plotLayout}
-                  dispatch={dispatch}
-                />
-              </section>
-            </>
-          )}
+        <main className="app-main" id={MAIN_ID} tabIndex={-1}>
+          <div
+            className={`main${onLab ? ' main-lab' : ''}`}
+            id={PANEL_ID}
+            role="tabpanel"
+            aria-labelledby={pageTabId(state.page)}
+          >
+            {onLab ? (
+              <Suspense fallback={<p className="note">{t.labRun}…</p>}>
+                <LabPanel client={client} state={state} dispatch={dispatch} />
+              </Suspense>
+            ) : (
+              <>
+                <section className="card stage">
+                  <LinkageCanvas
+                    scene={scene}
+                    view={state.view}
+                    onViewChange={onViewChange}
+                    onTheta2={onTheta2}
+                    onCoupler={onCoupler}
+                    onSize={onCanvasSize}
+                    description={description}
+                    hint={shell.canvasHint({ crank: true, coupler: true })}
+                  />
+                </section>
+                <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
+                  <AnglePlotsPanel
+                    deg={deg}
+                    point={marker}
+                    branch={state.branch}
+                    showOther={state.showGhost}
+                    layout={state.plotLayout}
+                    dispatch={dispatch}
+                  />
+                </section>
+              </>
+            )}
+          </div>
         </main>
-        <aside className="rightbar">
+        <aside className="rightbar" aria-label={shell.resultsLabel}>
           <section className="card" aria-labelledby="sec-analysis">
             <h2 id="sec-analysis" className="section-title">
               {t.sectionAnalysis}

@@ -1,3 +1,4 @@
+import './EmbedLayout.css';
 import { useCallback } from 'react';
 import type { AppState } from '../state/appState';
 import { getMessages } from '../state/i18n';
@@ -10,7 +11,9 @@ import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
 import { MessagesContext } from './MessagesContext';
+import { shellMessages } from './shellMessages';
 import { useAnimation } from './useAnimation';
+import { useCanvasEdits } from './useCanvasEdits';
 import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
@@ -57,6 +60,10 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
+  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
+  const crankMovable = !embed.locked.includes('theta2');
+  const couplerMovable = !embed.locked.includes('coupler');
+  const shell = shellMessages(state.locale);
   useDocumentMeta(t.htmlLang, t.embedTitle);
   useUrlSync(state, embed);
   useCycleDrawnMark(cycle);
@@ -76,57 +83,62 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
             ) : null}
           </div>
         </header>
-        <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
-          <div className="embed-stage">
-            <LinkageCanvas
-              scene={scene}
-              view={state.view}
-              onViewChange={onViewChange}
-              onSize={onCanvasSize}
-              description={description}
-            />
-          </div>
-          {show('controls') ? (
-            <aside className="embed-controls">
-              <ControlsPanel
-                state={state}
-                dispatch={dispatch}
-                locked={embed.locked}
-                compact
-                rocking={rocking}
-                onStep={onStep}
+        <main className="embed-main">
+          <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
+            <div className="embed-stage">
+              <LinkageCanvas
+                scene={scene}
+                view={state.view}
+                onViewChange={onViewChange}
+                onTheta2={crankMovable ? onTheta2 : undefined}
+                onCoupler={couplerMovable ? onCoupler : undefined}
+                onSize={onCanvasSize}
+                description={description}
+                hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
               />
-            </aside>
+            </div>
+            {show('controls') ? (
+              <div className="embed-controls">
+                <ControlsPanel
+                  state={state}
+                  dispatch={dispatch}
+                  locked={embed.locked}
+                  compact
+                  rocking={rocking}
+                  onStep={onStep}
+                />
+              </div>
+            ) : null}
+          </div>
+          {show('info') ? (
+            <section className="card embed-card">
+              <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
+            </section>
           ) : null}
-        </div>
-        {show('info') ? (
-          <section className="card embed-card">
-            <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
-          </section>
-        ) : null}
-        {show('plots') ? (
-          <section className="card embed-card embed-plots" ref={plotsRef}>
-            <AnglePlotsPanel
-              deg={deg}
-              point={marker}
-              branch={state.branch}
-              showOther={state.showGhost}
-              layout={state.plotLayout}
-              dispatch={dispatch}
-            />
-          </section>
-        ) : null}
-        {show('export') ? (
-          <section className="card embed-card">
-            <ExportPanel onPng={onPng} onCsv={onCsv} compact />
-          </section>
-        ) : null}
-        {solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null}
-        {cycleError ? (
-          <p className="note note-error" role="alert">
-            {cycleError}
-          </p>
-        ) : null}
+          {show('plots') ? (
+            <section className="card embed-card embed-plots" ref={plotsRef}>
+              <AnglePlotsPanel
+                deg={deg}
+                point={marker}
+                branch={state.branch}
+                showOther={state.showGhost}
+                layout={state.plotLayout}
+                dispatch={dispatch}
+              />
+            </section>
+          ) : null}
+          {show('export') ? (
+            <section className="card embed-card">
+              <ExportPanel onPng={onPng} onCsv={onCsv} compact />
+            </section>
+          ) : null}
+          {solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null}
+          {cycleError ? (
+            <p className="note note-error" role="alert">
+              {cycleError}
+            </p>
+          ) : null}
+        </main>
       </div>
     </MessagesContext.Provider>
   );
