@@ -14,9 +14,16 @@ export default tseslint.config(
     },
   },
   {
+    // The React Compiler-era hooks rules (eslint-plugin-react-hooks v7 flat config): refs not touched in render,
+    // no setState straight inside an effect, pure render, effect events only called from effects.
     files: ['src/**/*.tsx', 'src/**/use*.ts'],
-    plugins: { 'react-hooks': reactHooks },
-    rules: { 'react-hooks/rules-of-hooks': 'error', 'react-hooks/exhaustive-deps': 'warn' },
+    ...reactHooks.configs.flat['recommended-latest'],
+  },
+  {
+    // Temporary, until its owner's rewrite lands (see the app-shell report): useSolverClient stores the
+    // client it creates in an effect.
+    files: ['src/components/useSolver.ts'],
+    rules: { 'react-hooks/set-state-in-effect': 'off' },
   },
   {
     // Units in one place (src/solver/angles.ts): no hand-written degree conversions or pi arithmetic elsewhere.

@@ -59,6 +59,46 @@ test.describe('the simulator', () => {
     await expect(theta2).toHaveValue(stopped);
   });
 
+  test('Step forward turns the crank in the chosen direction, Step back the other way', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const theta2 = page.getByRole('textbox', { name: /^θ2/ });
+    // 360 samples per turn: one step is 1°.
+    await page.getByRole('button', { name: 'Step forward' }).click();
+    await expect(theta2).toHaveValue('46');
+    await page.getByRole('radio', { name: 'Clockwise', exact: true }).check();
+    await page.getByRole('button', { name: 'Step forward' }).click();
+    await expect(theta2).toHaveValue('45');
+    await page.getByRole('button', { name: 'Step forward' }).click();
+    await expect(theta2).toHaveValue('44');
+    await page.getByRole('button', { name: 'Step back' }).click();
+    await expect(theta2).toHaveValue('45');
+    await expect(page.getByRole('img', { name: /^Linkage view\. θ2 45\.00°/ })).toBeVisible();
+  });
+
+  test('draws a new pose in every animation frame while playing', async ({ page }) => {
+    await page.goto('./');
+    await waitReady(page);
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(page.getByRole('button', { name: 'Pause' })).toBeVisible();
+    // Over 30 frames, the canvas's pose (its label names θ2) changes in each one: no frame waits on the worker.
+    const labels = await page.locator('canvas.linkage-canvas').evaluate(
+      (c) =>
+        new Promise<string[]>((resolve) => {
+          const seen: string[] = [];
+          const tick = () => {
+            seen.push(c.getAttribute('aria-label') ?? '');
+            if (seen.length < 30) requestAnimationFrame(tick);
+            else resolve(seen);
+          };
+          requestAnimationFrame(tick);
+        }),
+    );
+    await page.getByRole('button', { name: 'Pause' }).click();
+    const changes = labels.slice(1).filter((l, i) => l !== labels[i]).length;
+    expect(changes).toBe(labels.length - 1);
+  });
+
   test('switches to Traditional Chinese and back', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

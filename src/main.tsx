@@ -1,7 +1,8 @@
 import './components/base.css';
 import './components/layout.css';
+import { AppLayout } from './components/AppLayout';
 import { mount } from './mount';
 import { applyTokens } from './theme/applyTokens';
 
 applyTokens(document.documentElement.style);
-mount('app');
+mount(AppLayout);

@@ -1,14 +1,19 @@
 import { StrictMode } from 'react';
+import type { ComponentType } from 'react';
 import { createRoot } from 'react-dom/client';
-import type { AppMode } from './components/App';
-import { App } from './components/App';
 import { ErrorBoundary } from './components/ErrorBoundary';
 import { getMessages } from './state/i18n';
 import { initialState } from './state/initial';
 import { LOCALE_STORAGE_KEY, readStorage } from './state/storage';
+import type { ParsedUrl } from './state/url';
 
-/** Mounts the app (or the embed widget) into #root with the state from the URL, inside an error boundary. */
-export function mount(mode: AppMode): void {
+/** Props every top-level layout takes: the state and embed options parsed from the URL. */
+export interface LayoutProps {
+  initial: ParsedUrl;
+}
+
+/** Mounts a layout (the app or the embed widget) into #root with the state from the URL, inside an error boundary. */
+export function mount(Layout: ComponentType<LayoutProps>): void {
   const root = document.getElementById('root');
   if (!root) throw new Error('index.html must have an element with id "root"');
   const languages = typeof navigator !== 'undefined' ? (navigator.languages ?? [navigator.language]) : [];
@@ -23,7 +28,7 @@ export function mount(mode: AppMode): void {
   createRoot(root).render(
     <StrictMode>
       <ErrorBoundary messages={getMessages(initial.state.locale)} onReset={reset}>
-        <App mode={mode} initial={initial} />
+        <Layout initial={initial} />
       </ErrorBoundary>
     </StrictMode>,
   );

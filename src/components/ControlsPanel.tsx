@@ -1,5 +1,5 @@
 import './ControlsPanel.css';
-import { memo, useEffect, useState } from 'react';
+import { memo, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Linkage } from '../solver/types';
 import type { Action, AppState, Direction } from '../state/appState';
@@ -34,11 +34,10 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
   const l = state.linkage;
   const values = [l.r1, l.r2, l.r3, l.r4];
   const [range, setRange] = useState(() => lengthSliderRange(Math.max(...values)));
-  useEffect(() => {
-    // Re-range only when a value left the sliders' range (typed, preset, URL), never while dragging.
-    const v = [l.r1, l.r2, l.r3, l.r4];
-    setRange((r) => (needsNewRange(r, v) ? lengthSliderRange(Math.max(...v)) : r));
-  }, [l.r1, l.r2, l.r3, l.r4]);
+  // Re-range only when a value left the sliders' range (typed, preset, URL), never while dragging. Adjusted
+  // while rendering, not in an effect: an effect's update would outlive each input of a burst (React #185).
+  const wanted = needsNewRange(range, values) ? lengthSliderRange(Math.max(...values)) : range;
+  if (wanted.min !== range.min || wanted.max !== range.max || wanted.step !== range.step) setRange(wanted);
   const isLocked = (p: LockableParam) => locked.includes(p);
   const presetId = matchPreset(l, state.branch, state.coupler);
   const lengthsLocked = LENGTH_FIELDS.some((f) => isLocked(f));

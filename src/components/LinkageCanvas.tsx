@@ -1,33 +1,69 @@
 import './LinkageCanvas.css';
-import { memo, useEffect, useLayoutEffect, useRef } from 'react';
+import { memo, useEffect, useEffectEvent, useId, useLayoutEffect, useRef, useState } from 'react';
+import type { PointerEvent as ReactPointerEvent } from 'react';
+import { flushSync } from 'react-dom';
+import { radToDeg360, wrapDeg360 } from '../solver/angles';
 import { canvasToolsRect } from '../render/canvasTools';
 import { drawLinkage } from '../render/drawLinkage';
 import type { LinkageScene } from '../render/scene';
-import { fitView, zoomAbout } from '../render/view';
-import type { ViewOffset } from '../state/appState';
-import { useMessages } from './MessagesContext';
+import type { Bounds } from '../render/view';
+import { fitView, toScreenX, toScreenY, zoomAbout } from '../render/view';
+import type { CouplerPoint, ViewOffset } from '../state/appState';
+import { benchMark } from './benchMark';
+import type { ScreenPoint } from './canvasGestures';
+import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from './canvasGestures';
 import { Icon } from './Icon';
+import { useMessages } from './MessagesContext';
 import { useElementSize } from './useElementSize';
 
-/** Props of LinkageCanvas: the scene to draw, the user's pan and zoom, and a size report for exports. */
+/** Props of LinkageCanvas: the scene, the user's pan and zoom, what can be dragged, and a size report for exports. */
 export interface LinkageCanvasProps {
   scene: LinkageScene;
   view: ViewOffset;
   onViewChange: (view: ViewOffset) => void;
+  /** Sets theta2 (degrees) when the crank pin A is dragged or turned with the arrow keys; omit when locked. */
+  onTheta2?: (theta2Deg: number) => void;
+  /** Moves the coupler point P (distance from A, angle from AB in degrees) when it is dragged; omit when locked. */
+  onCoupler?: (coupler: CouplerPoint) => void;
   /** Called with the canvas size in CSS pixels whenever it changes. */
   onSize?: (width: number, height: number) => void;
   /** Accessible description of the pose, e.g. the angles. */
   description: string;
+  /** The visible hint for the pointer and keyboard controls (shown while the canvas has focus). */
+  hint: string;
 }
 
-function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: LinkageCanvasProps) {
+/** What the pointers on the canvas are doing. */
+type Gesture =
+  | { kind: 'pan'; id: number; from: ScreenPoint; panX: number; panY: number }
+  | { kind: 'A' | 'P'; id: number }
+  | { kind: 'pinch'; ids: [number, number]; from: [ScreenPoint, ScreenPoint]; view: ViewOffset };
+
+/** Degrees the arrow keys turn the crank (with Shift: ten times as far). */
+const KEY_STEP_DEG = 1;
+
+function LinkageCanvasImpl({
+  scene,
+  view,
+  onViewChange,
+  onTheta2,
+  onCoupler,
+  onSize,
+  description,
+  hint,
+}: LinkageCanvasProps) {
   const t = useMessages();
+  const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const { width, height } = useElementSize(wrapRef);
-  const viewRef = useRef(view);
-  viewRef.current = view;
-  const drag = useRef<{ id: number; x: number; y: number; panX: number; panY: number } | null>(null);
+  // Pointers down on the canvas (CSS pixels from its corner) and the gesture they make; touched in handlers only.
+  const pointers = useRef(new Map<number, ScreenPoint>());
+  const gesture = useRef<Gesture | null>(null);
+  // While A or P is dragged the fit stays put: a new cycle (P moved) would otherwise rescale the view under
+  // the pointer and the joint would drift away from it.
+  const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
+  const bounds = heldBounds ?? scene.bounds;
 
   useEffect(() => {
     if (width > 0 && height > 0) onSize?.(width, height);
@@ -46,26 +82,55 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
     const ctx = canvas.getContext('2d');
     if (!ctx) return;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view), [canvasToolsRect(width)]);
-    if (typeof performance !== 'undefined' && typeof performance.mark === 'function') {
-      performance.mark('fourbar:canvas');
-    }
-  }, [scene, view, width, height]);
+    const transform = fitView(bounds, width, height, view);
+    drawLinkage(ctx, scene, transform, [canvasToolsRect(width)]);
+    // Where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas.
+    const at = (p: { x: number; y: number } | undefined) =>
+      p ? `${toScreenX(transform, p.x).toFixed(1)},${toScreenY(transform, p.y).toFixed(1)}` : '';
+    canvas.dataset.o2 = at({ x: 0, y: 0 });
+    canvas.dataset.a = at(scene.pose?.A);
+    canvas.dataset.p = at(scene.pose?.P);
+    benchMark('fourbar:canvas', { theta2Rad: scene.theta2 });
+  }, [scene, bounds, view, width, height]);
 
+  // A native listener: React's wheel listener is passive, and the page must not scroll while zooming.
+  const onWheel = useEffectEvent((e: WheelEvent, canvas: HTMLCanvasElement) => {
+    e.preventDefault();
+    const r = canvas.getBoundingClientRect();
+    const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
+    onViewChange(zoomAbout(view, factor, e.clientX - r.left, e.clientY - r.top, r.width, r.height));
+  });
   useEffect(() => {
     const canvas = canvasRef.current;
     if (!canvas) return;
-    const onWheel = (e: WheelEvent) => {
-      e.preventDefault();
-      const r = canvas.getBoundingClientRect();
-      const factor = Math.exp(-e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015));
-      onViewChange(zoomAbout(viewRef.current, factor, e.clientX - r.left, e.clientY - r.top, r.width, r.height));
-    };
-    canvas.addEventListener('wheel', onWheel, { passive: false });
-    return () => canvas.removeEventListener('wheel', onWheel);
-  }, [onViewChange]);
+    const listener = (e: WheelEvent) => onWheel(e, canvas);
+    canvas.addEventListener('wheel', listener, { passive: false });
+    return () => canvas.removeEventListener('wheel', listener);
+  }, []);
 
+  const transform = () => fitView(bounds, width, height, view);
+  const at = (e: ReactPointerEvent<HTMLCanvasElement>): ScreenPoint => {
+    const r = e.currentTarget.getBoundingClientRect();
+    return { x: e.clientX - r.left, y: e.clientY - r.top };
+  };
+  const movable = { A: Boolean(onTheta2), P: Boolean(onCoupler) };
+  // Drags commit synchronously: the pose under the finger is drawn in the same frame as the move.
+  const dragTo = (kind: 'A' | 'P', p: ScreenPoint) => {
+    if (kind === 'A') {
+      const deg = crankAngleAt(transform(), p);
+      if (deg !== null && onTheta2) flushSync(() => onTheta2(deg));
+    } else {
+      const c = couplerAt(scene, transform(), p);
+      if (c && onCoupler) flushSync(() => onCoupler(c));
+    }
+  };
   const zoomBy = (f: number) => onViewChange(zoomAbout(view, f, width / 2, height / 2, width, height));
+  const resetView = () => onViewChange({ zoom: 1, panX: 0, panY: 0 });
+  const turnBy = (deltaDeg: number) => {
+    if (!onTheta2) return;
+    const next = wrapDeg360(Math.round((radToDeg360(scene.theta2) + deltaDeg) * 100) / 100);
+    onTheta2(next);
+  };
 
   return (
     <div className="canvas-wrap" ref={wrapRef}>
@@ -74,32 +139,75 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
         className="linkage-canvas"
         role="img"
         aria-label={`${t.canvasLabel}. ${description}`}
+        aria-describedby={hintId}
+        title={hint}
+        aria-keyshortcuts={onTheta2 ? 'ArrowLeft ArrowRight + - 0' : '+ - 0'}
         tabIndex={0}
         onPointerDown={(e) => {
-          if (e.button !== 0) return;
+          if (e.pointerType === 'mouse' && e.button !== 0) return;
           e.currentTarget.setPointerCapture(e.pointerId);
-          drag.current = { id: e.pointerId, x: e.clientX, y: e.clientY, panX: view.panX, panY: view.panY };
+          const p = at(e);
+          pointers.current.set(e.pointerId, p);
+          if (pointers.current.size >= 2) {
+            // A second finger turns any drag into a pinch.
+            const [[ia, a], [ib, b]] = [...pointers.current.entries()];
+            gesture.current = { kind: 'pinch', ids: [ia, ib], from: [a, b], view };
+            return;
+          }
+          const handle = hitHandle(scene, transform(), p, grabRadiusPx(e.pointerType), movable);
+          gesture.current = handle
+            ? { kind: handle, id: e.pointerId }
+            : { kind: 'pan', id: e.pointerId, from: p, panX: view.panX, panY: view.panY };
+          if (handle) setHeldBounds(scene.bounds);
         }}
         onPointerMove={(e) => {
-          const d = drag.current;
-          if (!d || d.id !== e.pointerId || width <= 0 || height <= 0) return;
-          onViewChange({
-            zoom: view.zoom,
-            panX: d.panX + (e.clientX - d.x) / width,
-            panY: d.panY + (e.clientY - d.y) / height,
-          });
+          const p = at(e);
+          const g = gesture.current;
+          if (!g) {
+            // Hovering: show that A and P can be grabbed.
+            const over = hitHandle(scene, transform(), p, grabRadiusPx(e.pointerType), movable) !== null;
+            e.currentTarget.classList.toggle('over-handle', over);
+            return;
+          }
+          if (!pointers.current.has(e.pointerId)) return;
+          pointers.current.set(e.pointerId, p);
+          if (g.kind === 'pinch') {
+            const a = pointers.current.get(g.ids[0]);
+            const b = pointers.current.get(g.ids[1]);
+            if (a && b) onViewChange(pinchView(g.view, g.from[0], g.from[1], a, b, width, height));
+          } else if (g.id !== e.pointerId) {
+            return;
+          } else if (g.kind === 'pan') {
+            if (width <= 0 || height <= 0) return;
+            onViewChange({
+              zoom: view.zoom,
+              panX: g.panX + (p.x - g.from.x) / width,
+              panY: g.panY + (p.y - g.from.y) / height,
+            });
+          } else {
+            dragTo(g.kind, p);
+          }
         }}
-        onPointerUp={() => {
-          drag.current = null;
+        onPointerUp={(e) => {
+          pointers.current.delete(e.pointerId);
+          gesture.current = null;
+          setHeldBounds(null);
         }}
-        onPointerCancel={() => {
-          drag.current = null;
+        onPointerCancel={(e) => {
+          pointers.current.delete(e.pointerId);
+          gesture.current = null;
+          setHeldBounds(null);
         }}
-        onDoubleClick={() => onViewChange({ zoom: 1, panX: 0, panY: 0 })}
+        onDoubleClick={resetView}
         onKeyDown={(e) => {
+          const step = e.shiftKey ? 10 * KEY_STEP_DEG : KEY_STEP_DEG;
           if (e.key === '+' || e.key === '=') zoomBy(1.25);
           else if (e.key === '-') zoomBy(0.8);
-          else if (e.key === '0') onViewChange({ zoom: 1, panX: 0, panY: 0 });
+          else if (e.key === '0') resetView();
+          else if (onTheta2 && (e.key === 'ArrowRight' || e.key === 'ArrowUp')) turnBy(step);
+          else if (onTheta2 && (e.key === 'ArrowLeft' || e.key === 'ArrowDown')) turnBy(-step);
+          else return;
+          e.preventDefault();
         }}
       />
       <div className="canvas-tools">
@@ -109,16 +217,13 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
         <button type="button" className="icon-btn" aria-label={t.zoomOut} title={t.zoomOut} onClick={() => zoomBy(0.8)}>
           <Icon name="minus" />
         </button>
-        <button
-          type="button"
-          className="icon-btn"
-          aria-label={t.resetView}
-          title={t.resetView}
-          onClick={() => onViewChange({ zoom: 1, panX: 0, panY: 0 })}
-        >
+        <button type="button" className="icon-btn" aria-label={t.resetView} title={t.resetView} onClick={resetView}>
           <Icon name="fit" />
         </button>
       </div>
+      <p id={hintId} className="canvas-hint">
+        {hint}
+      </p>
       {scene.text.warning ? (
         <p className="sr-only" role="status">
           {scene.text.warning}
@@ -130,7 +235,8 @@ function LinkageCanvasImpl({ scene, view, onViewChange, onSize, description }: L
 }
 
 /**
- * The linkage view: a canvas sized for devicePixelRatio (sharp on HiDPI screens) that calls drawLinkage
- * whenever the scene, size or view changes. Drag to pan, wheel or the buttons to zoom, double-click to fit.
+ * The linkage view: a canvas sized for devicePixelRatio that calls drawLinkage whenever the scene, size or
+ * view changes. Drag the crank pin A to turn the crank and P to move the coupler point (mouse, pen or
+ * touch); drag elsewhere to pan; wheel, pinch or the buttons zoom; double-click fits; arrow keys turn.
  */
 export const LinkageCanvas = memo(LinkageCanvasImpl);

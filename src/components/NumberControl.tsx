@@ -1,5 +1,5 @@
 import './NumberControl.css';
-import { useEffect, useId, useRef, useState } from 'react';
+import { useId, useState } from 'react';
 import type { FieldName } from '../state/validate';
 import { parseField } from '../state/validate';
 import { fieldText, formatNumber, truncateText } from '../state/format';
@@ -58,16 +58,20 @@ export function NumberControl({
   const shown = fieldText(value, decimals);
   const [draft, setDraft] = useState(shown);
   const [error, setError] = useState<string | null>(null);
-  const focused = useRef(false);
+  const [focused, setFocused] = useState(false);
+  const [shownValue, setShownValue] = useState(value);
   const label = t.fieldLabels[field];
 
-  useEffect(() => {
+  if (value !== shownValue) {
     // Follow outside changes (slider, preset, animation) unless the person is typing a different value.
-    if (!focused.current) {
+    // Adjusted while rendering, not in an effect: an effect's update would outlive each input of a burst
+    // and React would count them as nested updates (error #185).
+    setShownValue(value);
+    if (!focused) {
       setDraft(shown);
       setError(null);
     }
-  }, [shown]);
+  }
 
   const onText = (text: string) => {
     setDraft(text);
@@ -111,11 +115,9 @@ export function NumberControl({
             aria-disabled={locked ? true : undefined}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${id}-error` : undefined}
-            onFocus={() => {
-              focused.current = true;
-            }}
+            onFocus={() => setFocused(true)}
             onBlur={() => {
-              focused.current = false;
+              setFocused(false);
               if (!error) setDraft(shown);
             }}
             onChange={(e) => {

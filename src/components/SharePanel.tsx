@@ -7,27 +7,27 @@ import { copyText } from './clipboard';
 import { useMessages } from './MessagesContext';
 import { Toggle } from './Toggle';
 
-/** Props of SharePanel: the state to share and the page URL it is relative to. */
+/** Props of SharePanel: how to read the state to share when a copy button is pressed. */
 export interface SharePanelProps {
-  state: AppState;
-  pageHref: string;
+  /** Returns the current state; read on click, so the panel does not re-render while the state changes. */
+  getState: () => AppState;
 }
 
 const LENGTHS: LockableParam[] = ['r1', 'r2', 'r3', 'r4'];
 
-function SharePanelImpl({ state, pageHref }: SharePanelProps) {
+function SharePanelImpl({ getState }: SharePanelProps) {
   const t = useMessages();
   const [embed, setEmbed] = useState<EmbedOptions>({ panels: ['controls', 'plots'], locked: [] });
   const [status, setStatus] = useState('');
   const [shown, setShown] = useState<string | null>(null);
 
   const linkHref = () => {
-    const u = new URL(pageHref);
-    u.search = `?${serializeState({ ...state, playing: false })}`;
+    const u = new URL(window.location.href);
+    u.search = `?${serializeState({ ...getState(), playing: false })}`;
     u.hash = '';
     return u.toString();
   };
-  const code = () => embedCode(embedUrl(pageHref, { ...state, playing: false }, embed), t.embedTitle);
+  const code = () => embedCode(embedUrl(window.location.href, { ...getState(), playing: false }, embed), t.embedTitle);
   const copy = async (text: string) => {
     const ok = await copyText(text);
     setStatus(ok ? t.copied : t.copyFailed);

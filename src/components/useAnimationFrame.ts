@@ -1,21 +1,23 @@
-import { useEffect, useRef } from 'react';
+import { useEffect, useEffectEvent } from 'react';
+
+/** Longest frame step passed on, seconds: a backgrounded tab does not jump on return. */
+const MAX_DT_SECONDS = 0.1;
 
 /**
- * Runs onFrame(dtSeconds) on every animation frame while active: one requestAnimationFrame loop,
- * cancelled in the effect's cleanup. dt is the time since the previous frame in seconds, capped at
- * 0.1 s so a backgrounded tab does not jump on return.
+ * Runs onFrame(dtSeconds) on every animation frame while active: one requestAnimationFrame loop, cancelled
+ * in the effect's cleanup. dt is the time since the previous frame in seconds, capped at 0.1 s; onFrame is
+ * an effect event, so it always sees the latest render's values without restarting the loop.
  */
 export function useAnimationFrame(active: boolean, onFrame: (dtSeconds: number) => void): void {
-  const cb = useRef(onFrame);
-  cb.current = onFrame;
+  const frame = useEffectEvent(onFrame);
   useEffect(() => {
     if (!active) return;
     let handle = 0;
     let last: number | null = null;
     const tick = (now: number) => {
-      const dt = last === null ? 0 : Math.min(0.1, (now - last) / 1000);
+      const dt = last === null ? 0 : Math.min(MAX_DT_SECONDS, (now - last) / 1000);
       last = now;
-      if (dt > 0) cb.current(dt);
+      if (dt > 0) frame(dt);
       handle = requestAnimationFrame(tick);
     };
     handle = requestAnimationFrame(tick);

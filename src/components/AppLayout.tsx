@@ -1,0 +1,154 @@
+import './AppLayout.css';
+import { Suspense, lazy, useCallback } from 'react';
+import type { AppState } from '../state/appState';
+import { getMessages } from '../state/i18n';
+import type { ParsedUrl } from '../state/url';
+import { AnalysisPanel } from './AnalysisPanel';
+import { AnglePlotsPanel } from './AnglePlotsPanel';
+import { Brand } from './Brand';
+import { ControlsPanel } from './ControlsPanel';
+import { ConvergencePanel } from './ConvergencePanel';
+import { ExportPanel } from './ExportPanel';
+import { LanguageSelect } from './LanguageSelect';
+import { LinkageCanvas } from './LinkageCanvas';
+import { MessagesContext } from './MessagesContext';
+import { PageTabs, pageTabId } from './PageTabs';
+import { SharePanel } from './SharePanel';
+import { shellMessages } from './shellMessages';
+import { SkipLink } from './SkipLink';
+import { useAnimation } from './useAnimation';
+import { useCanvasEdits } from './useCanvasEdits';
+import { useCycleDrawnMark } from './useCycleDrawnMark';
+import { useCycleFacts } from './useCycleFacts';
+import { useDocumentMeta } from './useDocumentMeta';
+import { useExports } from './useExports';
+import { useLinkagePose } from './useLinkagePose';
+import { useLinkageScene } from './useLinkageScene';
+import { usePlotPixels } from './usePlotPixels';
+import { useSimulator } from './useSimulator';
+import { useStableCallback } from './useStableCallback';
+import { useUrlSync } from './useUrlSync';
+
+// The solver lab (its charts and tables) loads only when it is opened.
+const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
+
+/** Props of AppLayout: the state parsed from the URL. */
+export interface AppLayoutProps {
+  initial: ParsedUrl;
+}
+
+/** Ids of the main landmark (the skip link's target) and of the page tab panel inside it. */
+const MAIN_ID = 'main-content';
+const PANEL_ID = 'page-panel';
+
+/**
+ * The full app: top bar (title, Simulator / Solver lab tabs, language), controls on the left, the linkage
+ * and its plots (or the lab) in the middle, numbers, convergence, export and share on the right.
+ */
+export function AppLayout({ initial }: AppLayoutProps) {
+  const { plotsRef, plotPixels } = usePlotPixels();
+  const shownFor = useCallback(
+    (s: AppState) => ({ stage: s.page !== 'lab', plotPixels: s.page !== 'lab' ? plotPixels : 0, newton: true }),
+    [plotPixels],
+  );
+  const { state, dispatch, client, solverMode, cycle, cycleError, point } = useSimulator(initial.state, shownFor);
+  const t = getMessages(state.locale);
+  const onLab = state.page === 'lab';
+  const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
+  const { local, marker } = useLinkagePose(state, !onLab);
+  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
+  const onStep = useAnimation(state, dispatch, rangeDeg);
+  const getState = useStableCallback(() => state);
+  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
+  const shell = shellMessages(state.locale);
+  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
+  useDocumentMeta(t.htmlLang, t.appTitle);
+  useUrlSync(state);
+  useCycleDrawnMark(cycle);
+
+  const solverNote = solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null;
+  return (
+    <MessagesContext.Provider value={t}>
+      <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
+      <div className="app" data-ready={cycle && point ? 'true' : 'false'}>
+        <header className="topbar">
+          <Brand />
+          <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
+          <LanguageSelect locale={state.locale} dispatch={dispatch} />
+        </header>
+        <aside className="sidebar" aria-label={shell.controlsLabel}>
+          <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
+        </aside>
+        <main className="app-main" id={MAIN_ID} tabIndex={-1}>
+          <div
+            className={`main${onLab ? ' main-lab' : ''}`}
+            id={PANEL_ID}
+            role="tabpanel"
+            aria-labelledby={pageTabId(state.page)}
+          >
+            {onLab ? (
+              <Suspense fallback={<p className="note">{t.labRun}…</p>}>
+                <LabPanel client={client} state={state} dispatch={dispatch} />
+              </Suspense>
+            ) : (
+              <>
+                <section className="card stage">
+                  <LinkageCanvas
+                    scene={scene}
+                    view={state.view}
+                    onViewChange={onViewChange}
+                    onTheta2={onTheta2}
+                    onCoupler={onCoupler}
+                    onSize={onCanvasSize}
+                    description={description}
+                    hint={shell.canvasHint({ crank: true, coupler: true })}
+                  />
+                </section>
+                <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
+                  <AnglePlotsPanel
+                    deg={deg}
+                    point={marker}
+                    branch={state.branch}
+                    showOther={state.showGhost}
+                    layout={state.plotLayout}
+                    dispatch={dispatch}
+                  />
+                </section>
+              </>
+            )}
+          </div>
+        </main>
+        <aside className="rightbar" aria-label={shell.resultsLabel}>
+          <section className="card" aria-labelledby="sec-analysis">
+            <h2 id="sec-analysis" className="section-title">
+              {t.sectionAnalysis}
+            </h2>
+            <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
+            {cycleError ? (
+              <p className="note note-error" role="alert">
+                {cycleError}
+              </p>
+            ) : null}
+          </section>
+          <section className="card convergence-card">
+            <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />
+          </section>
+          <section className="card" aria-labelledby="sec-export">
+            <h2 id="sec-export" className="section-title">
+              {t.sectionExport}
+            </h2>
+            <ExportPanel onPng={onPng} onCsv={onCsv} />
+          </section>
+          <section className="card" aria-labelledby="sec-share">
+            <h2 id="sec-share" className="section-title">
+              {t.sectionShare}
+            </h2>
+            <SharePanel getState={getState} />
+          </section>
+          {solverNote}
+        </aside>
+      </div>
+    </MessagesContext.Provider>
+  );
+}

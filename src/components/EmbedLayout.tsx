@@ -1,0 +1,145 @@
+import './EmbedLayout.css';
+import { useCallback } from 'react';
+import type { AppState } from '../state/appState';
+import { getMessages } from '../state/i18n';
+import type { EmbedPanel, ParsedUrl } from '../state/url';
+import { appUrl } from '../state/url';
+import { AnalysisPanel } from './AnalysisPanel';
+import { AnglePlotsPanel } from './AnglePlotsPanel';
+import { ControlsPanel } from './ControlsPanel';
+import { ExportPanel } from './ExportPanel';
+import { LanguageSelect } from './LanguageSelect';
+import { LinkageCanvas } from './LinkageCanvas';
+import { MessagesContext } from './MessagesContext';
+import { shellMessages } from './shellMessages';
+import { useAnimation } from './useAnimation';
+import { useCanvasEdits } from './useCanvasEdits';
+import { useCycleDrawnMark } from './useCycleDrawnMark';
+import { useCycleFacts } from './useCycleFacts';
+import { useDocumentMeta } from './useDocumentMeta';
+import { useExports } from './useExports';
+import { useLinkagePose } from './useLinkagePose';
+import { useLinkageScene } from './useLinkageScene';
+import { usePlotPixels } from './usePlotPixels';
+import { useSimulator } from './useSimulator';
+import { useUrlSync } from './useUrlSync';
+
+/** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
+export interface EmbedLayoutProps {
+  initial: ParsedUrl;
+}
+
+/** The link to the full simulator with this state, or '' where the frame's address cannot be read. */
+function fullAppHref(state: AppState): string {
+  try {
+    return appUrl(window.location.href, state);
+  } catch {
+    return '';
+  }
+}
+
+/**
+ * The compact widget for an iframe: title bar with language and a link to the full simulator, the linkage
+ * with the controls beside it, then the panels the URL asks for (numbers, plots, export).
+ */
+export function EmbedLayout({ initial }: EmbedLayoutProps) {
+  const embed = initial.embed;
+  const show = (p: EmbedPanel) => embed.panels.includes(p);
+  const { plotsRef, plotPixels } = usePlotPixels();
+  const plotsShown = embed.panels.includes('plots');
+  const numbersShown = embed.panels.includes('info');
+  const shownFor = useCallback(
+    () => ({ stage: true, plotPixels: plotsShown ? plotPixels : 0, newton: numbersShown }),
+    [plotsShown, plotPixels, numbersShown],
+  );
+  const { state, dispatch, solverMode, cycle, cycleError, point } = useSimulator(initial.state, shownFor);
+  const t = getMessages(state.locale);
+  const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
+  const { local, marker } = useLinkagePose(state, true);
+  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
+  const onStep = useAnimation(state, dispatch, rangeDeg);
+  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
+  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
+  const crankMovable = !embed.locked.includes('theta2');
+  const couplerMovable = !embed.locked.includes('coupler');
+  const shell = shellMessages(state.locale);
+  useDocumentMeta(t.htmlLang, t.embedTitle);
+  useUrlSync(state, embed);
+  useCycleDrawnMark(cycle);
+
+  const fullHref = fullAppHref(state);
+  return (
+    <MessagesContext.Provider value={t}>
+      <div className="embed" data-ready={cycle && point ? 'true' : 'false'}>
+        <header className="embed-bar">
+          <h1 className="embed-title">{t.embedTitle}</h1>
+          <div className="embed-bar-right">
+            <LanguageSelect locale={state.locale} dispatch={dispatch} />
+            {fullHref ? (
+              <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
+                {t.openFull} ↗
+              </a>
+            ) : null}
+          </div>
+        </header>
+        <main className="embed-main">
+          <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
+            <div className="embed-stage">
+              <LinkageCanvas
+                scene={scene}
+                view={state.view}
+                onViewChange={onViewChange}
+                onTheta2={crankMovable ? onTheta2 : undefined}
+                onCoupler={couplerMovable ? onCoupler : undefined}
+                onSize={onCanvasSize}
+                description={description}
+                hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
+              />
+            </div>
+            {show('controls') ? (
+              <div className="embed-controls">
+                <ControlsPanel
+                  state={state}
+                  dispatch={dispatch}
+                  locked={embed.locked}
+                  compact
+                  rocking={rocking}
+                  onStep={onStep}
+                />
+              </div>
+            ) : null}
+          </div>
+          {show('info') ? (
+            <section className="card embed-card">
+              <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
+            </section>
+          ) : null}
+          {show('plots') ? (
+            <section className="card embed-card embed-plots" ref={plotsRef}>
+              <AnglePlotsPanel
+                deg={deg}
+                point={marker}
+                branch={state.branch}
+                showOther={state.showGhost}
+                layout={state.plotLayout}
+                dispatch={dispatch}
+              />
+            </section>
+          ) : null}
+          {show('export') ? (
+            <section className="card embed-card">
+              <ExportPanel onPng={onPng} onCsv={onCsv} compact />
+            </section>
+          ) : null}
+          {solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null}
+          {cycleError ? (
+            <p className="note note-error" role="alert">
+              {cycleError}
+            </p>
+          ) : null}
+        </main>
+      </div>
+    </MessagesContext.Provider>
+  );
+}

@@ -1,0 +1,44 @@
+import { memo } from 'react';
+import type { Dispatch } from 'react';
+import type { Action, Locale } from '../state/appState';
+import { LOCALES } from '../state/i18n';
+import { LOCALE_STORAGE_KEY, writeStorage } from '../state/storage';
+import { Icon } from './Icon';
+import { useMessages } from './MessagesContext';
+
+/** Props of LanguageSelect: the current language and the dispatcher that changes it. */
+export interface LanguageSelectProps {
+  locale: Locale;
+  dispatch: Dispatch<Action>;
+}
+
+function LanguageSelectImpl({ locale, dispatch }: LanguageSelectProps) {
+  const t = useMessages();
+  return (
+    <label className="lang-select">
+      <span className="sr-only">{t.language}</span>
+      <span className="lang-icon">
+        <Icon name="language" />
+      </span>
+      <select
+        className="select select-small"
+        aria-label={t.language}
+        value={locale}
+        onChange={(e) => {
+          const l = e.target.value as Locale;
+          writeStorage(LOCALE_STORAGE_KEY, l);
+          dispatch({ type: 'setLocale', locale: l });
+        }}
+      >
+        {LOCALES.map((l) => (
+          <option key={l} value={l}>
+            {t.languageNames[l]}
+          </option>
+        ))}
+      </select>
+    </label>
+  );
+}
+
+/** The language menu (each language named in its own words); the choice is remembered in local storage. */
+export const LanguageSelect = memo(LanguageSelectImpl);

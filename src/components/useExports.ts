@@ -1,0 +1,87 @@
+import { useCallback, useRef } from 'react';
+import type { LinkageScene } from '../render/scene';
+import type { AppState } from '../state/appState';
+import type { ExportSubject, PngSize } from '../state/fileNames';
+import { csvFileName, pngFileName } from '../state/fileNames';
+import type { Messages } from '../state/messages';
+import type { CycleResponse, PointResponse } from '../worker/protocol';
+import { decodeStatuses } from '../worker/statusCodes';
+import type { CycleDegrees } from './chartInputs';
+import { angleChartInputs, angleMarker, convergenceInputs } from './chartInputs';
+import { useStableCallback } from './useStableCallback';
+
+/** Logical (CSS pixel) size of exported angle plots. */
+export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
+/** Logical (CSS pixel) size of the exported convergence plot. */
+export const CONVERGENCE_EXPORT_SIZE = { width: 560, height: 340 } as const;
+
+/** What the exports draw: the state, the latest answers, the drawn pose, the cycle in degrees, the scene and the strings. */
+export interface ExportSources {
+  state: AppState;
+  /** The worker's point answer (NR runs for the convergence plot). */
+  point: PointResponse | null;
+  /** The pose on screen as a point (the plots' marker). */
+  marker: PointResponse;
+  cycle: CycleResponse | null;
+  deg: CycleDegrees | null;
+  scene: LinkageScene;
+  t: Messages;
+}
+
+/** Stable export handlers (PNG of the linkage or a plot, CSV of the cycle) and the canvas size report they use. */
+export interface Exports {
+  onPng: (subject: ExportSubject, size: PngSize) => Promise<void>;
+  onCsv: () => Promise<void>;
+  /** Give to LinkageCanvas: the linkage PNG is drawn at the on-screen canvas size. */
+  onCanvasSize: (width: number, height: number) => void;
+}
+
+/** The export callbacks: stable identities (the export panel does not re-render), always reading the latest sources. */
+export function useExports(sources: ExportSources): Exports {
+  const canvasSize = useRef({ width: 640, height: 420 });
+  const onCanvasSize = useCallback((width: number, height: number) => {
+    canvasSize.current = { width, height };
+  }, []);
+  const onPng = useStableCallback(async (subject: ExportSubject, size: PngSize) => {
+    const { state: s, point: p, marker, deg: d, scene, t } = sources;
+    // The PNG and CSV writers load on the first export: they are not part of the first load.
+    const { angleChartPng, convergencePng, downloadPng, linkagePng } = await import('./exporters');
+    const name = pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size);
+    let bytes: Uint8Array;
+    if (subject === 'linkage') {
+      const { width, height } = canvasSize.current;
+      bytes = await linkagePng(scene, s.view, width, height, size);
+    } else if (subject === 'convergence') {
+      const { width, height } = CONVERGENCE_EXPORT_SIZE;
+      bytes = await convergencePng(convergenceInputs(p, s.nrStart, t), width, height, size);
+    } else {
+      const { width, height } = ANGLE_EXPORT_SIZE;
+      bytes = await angleChartPng(
+        angleChartInputs(subject, d, s.branch, s.showGhost, t),
+        angleMarker(subject, marker),
+        width,
+        height,
+        size,
+      );
+    }
+    downloadPng(bytes, name);
+  });
+  const onCsv = useStableCallback(async () => {
+    const { state: s, cycle: c } = sources;
+    if (!c) throw new Error('the cycle is still being solved');
+    const { downloadCsv } = await import('./exporters');
+    const b = c[s.branch];
+    downloadCsv(
+      {
+        theta2Deg: c.theta2Deg,
+        theta3Rad: b.theta3,
+        theta4Rad: b.theta4,
+        status: decodeStatuses(b.statusCodes),
+        iterations: b.iterations,
+        residual: b.residual,
+      },
+      csvFileName(c.linkage, s.branch, c.samples),
+    );
+  });
+  return { onPng, onCsv, onCanvasSize };
+}

@@ -1,0 +1,27 @@
+import { useMemo } from 'react';
+import type { AppState } from '../state/appState';
+import type { PointResponse } from '../worker/protocol';
+import type { LocalPose } from './localPose';
+import { localPose, poseAsPoint } from './localPose';
+
+/** This render's pose, and the same pose as a point answer for the plots' marker. */
+export interface FramePose {
+  local: LocalPose;
+  marker: PointResponse;
+}
+
+/**
+ * The pose to draw for this render, solved on the main thread from the state (closed form, the worker's
+ * formulas): the canvas and the plot markers never wait for a worker round trip. The ghost (the other
+ * branch) is solved only when it is drawn.
+ */
+export function useLinkagePose(state: AppState, ghostShown: boolean): FramePose {
+  const { linkage, theta2Deg, branch, coupler, method, tol } = state;
+  const withGhost = ghostShown && state.showGhost;
+  const local = useMemo(
+    () => localPose(linkage, theta2Deg, branch, coupler, withGhost),
+    [linkage, theta2Deg, branch, coupler, withGhost],
+  );
+  const marker = useMemo(() => poseAsPoint(local, { method, tol }), [local, method, tol]);
+  return { local, marker };
+}

@@ -1,0 +1,93 @@
+import { useMemo } from 'react';
+// The angles module alone: importing the barrel would pull the whole solver into the main bundle.
+import { radToDeg, radToDeg360 } from '../solver/angles';
+import type { Branch } from '../solver/types';
+import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
+import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
+import type { AppState } from '../state/appState';
+import { formatDeg, formatIntervalsDeg, formatNumber } from '../state/format';
+import type { Messages } from '../state/messages';
+import type { CycleResponse } from '../worker/protocol';
+import type { LocalPose } from './localPose';
+
+/** The scene to draw and its accessible description (the angles, or why it cannot assemble). */
+export interface LinkageSceneView {
+  scene: LinkageScene;
+  description: string;
+}
+
+/**
+ * Builds the canvas scene from this frame's pose (solved on the main thread) and the latest cycle: joints,
+ * ghost, the coupler curves with the current circuit marked, bounds that stay put while the linkage moves
+ * (from the cycle once it has arrived), and the texts.
+ */
+export function useLinkageScene(
+  state: AppState,
+  local: LocalPose,
+  cycle: CycleResponse | null,
+  t: Messages,
+): LinkageSceneView {
+  const { linkage, coupler, theta2Rad, branch } = local;
+  const pose = useMemo(() => scenePose(linkage, local.pose, coupler), [linkage, local.pose, coupler]);
+  const ghost = useMemo(() => scenePose(linkage, local.ghost, coupler), [linkage, local.ghost, coupler]);
+  const range = cycle?.classification.inputRange;
+  const rocking = range ? !range.full && range.intervals.length > 0 : false;
+  const curves = useMemo(() => (cycle ? sceneCurves(cycle.curves, branch, theta2Rad) : []), [cycle, branch, theta2Rad]);
+  const cycleBounds = useMemo(() => {
+    if (!cycle) return null;
+    const other: Branch = branch === 'open' ? 'crossed' : 'open';
+    const ext = (b: Branch): BranchExtent => ({ theta4: cycle[b].theta4, px: cycle[b].px, py: cycle[b].py });
+    const both = state.showGhost || rocking;
+    return sceneBounds(cycle.linkage, both ? [ext(branch), ext(other)] : [ext(branch)], [], []);
+  }, [cycle, branch, state.showGhost, rocking]);
+  // Before the first cycle arrives, fit the pose itself.
+  const poseBounds = useMemo(() => sceneBounds(linkage, [], [], [pose, ghost]), [linkage, pose, ghost]);
+  const bounds = cycleBounds ?? poseBounds;
+
+  const classification = cycle?.classification ?? null;
+  const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
+  const warning = !local.pose
+    ? classification?.type === 'cannot-assemble'
+      ? t.cannotAssembleAny
+      : t.cannotAssembleAt(theta2Text)
+    : null;
+  const warningDetail =
+    warning &&
+    classification &&
+    classification.type !== 'cannot-assemble' &&
+    classification.inputRange.intervals.length > 0
+      ? t.reachableHint(formatIntervalsDeg(classification.inputRange.intervals, t.rangeInterval))
+      : null;
+  const text: SceneText = useMemo(
+    () => ({
+      ...t.jointLabels,
+      warning,
+      warningDetail,
+      gridSpacing: t.gridSpacing,
+      formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
+      formatLength: (x: number) => formatNumber(x, 4),
+    }),
+    [t, warning, warningDetail],
+  );
+  const { showGrid, showAngles, showGhost, showTrace } = state;
+  const scene: LinkageScene = useMemo(
+    () => ({
+      linkage,
+      theta2: theta2Rad,
+      pose,
+      ghost,
+      curves,
+      showGrid,
+      showAngles,
+      showGhost,
+      showTrace,
+      text,
+      bounds,
+    }),
+    [linkage, theta2Rad, pose, ghost, curves, showGrid, showAngles, showGhost, showTrace, text, bounds],
+  );
+  const description = pose
+    ? `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`
+    : (warning ?? '');
+  return { scene, description };
+}

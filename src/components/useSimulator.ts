@@ -1,0 +1,71 @@
+import { useMemo, useReducer } from 'react';
+import type { Dispatch } from 'react';
+import type { Action, AppState } from '../state/appState';
+import { reducer } from '../state/appState';
+import type { SolverClient, SolverMode } from '../worker/client';
+import type { CycleResponse, PointResponse } from '../worker/protocol';
+import { usePacedValue } from './usePacedValue';
+import { useCycle, usePoint, useSolverClient } from './useSolver';
+
+/** How often the worker's pose (numbers, NR runs) follows the input while playing, ms: about 8 times a second. */
+const PLAY_POINT_INTERVAL_MS = 125;
+
+/** Which views a layout shows for a state: only what shows is solved for. */
+export interface ShownViews {
+  /** The linkage canvas is on screen (the full app hides it on the lab page). */
+  stage: boolean;
+  /** Device-pixel width of the visible angle plots; 0 when none is visible. */
+  plotPixels: number;
+  /** A panel shows the NR runs (numbers panel or convergence plot). */
+  newton: boolean;
+}
+
+/** The simulator's state, its dispatcher, the solver client and the latest answers for the state. */
+export interface Simulator {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+  client: SolverClient | null;
+  solverMode: SolverMode;
+  cycle: CycleResponse | null;
+  cycleError: string | null;
+  point: PointResponse | null;
+}
+
+/**
+ * The simulator's state (the app reducer, starting from initial) and the solver's answers for it: the cycle
+ * and the point at theta2, requested for what shownFor(state) says is on screen (latest wins).
+ */
+export function useSimulator(initial: AppState, shownFor: (state: AppState) => ShownViews): Simulator {
+  const [state, dispatch] = useReducer(reducer, initial);
+  const { client, mode } = useSolverClient();
+  const { stage, plotPixels, newton } = shownFor(state);
+  const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const cycleNeeds = useMemo(
+    () => ({
+      solver,
+      branch: state.branch,
+      otherBranch: state.showGhost,
+      curves: state.showTrace && stage,
+      plotPixels,
+    }),
+    [solver, state.branch, state.showGhost, state.showTrace, stage, plotPixels],
+  );
+  // The worker's pose answer feeds the numbers and the NR runs only: the canvas draws a pose solved on the
+  // main thread (useLinkagePose), ghost included, so the worker need not solve the ghost.
+  const pointNeeds = useMemo(() => ({ solver, ghost: false, newton }), [solver, newton]);
+  const { cycle, error } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
+  // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
+  // numbers and the NR plot, which need not follow every frame of Play.
+  const at = useMemo(() => ({ theta2Deg: state.theta2Deg, branch: state.branch }), [state.theta2Deg, state.branch]);
+  const pointAt = usePacedValue(at, state.playing, PLAY_POINT_INTERVAL_MS);
+  const point = usePoint(
+    client,
+    state.linkage,
+    pointAt.branch,
+    pointAt.theta2Deg,
+    state.samples,
+    state.coupler,
+    pointNeeds,
+  );
+  return { state, dispatch, client, solverMode: mode, cycle, cycleError: error, point };
+}

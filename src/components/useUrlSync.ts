@@ -1,0 +1,26 @@
+import { useEffect } from 'react';
+import type { AppState } from '../state/appState';
+import type { EmbedOptions } from '../state/url';
+import { serializeState } from '../state/url';
+
+/** Wait after the last change before the address bar is rewritten (ms). */
+const URL_DEBOUNCE_MS = 250;
+
+/**
+ * Keeps the address bar's query in step with the state (and the embed options, in the embed), debounced and
+ * not while animating, which would flood the history API. Sandboxed frames that refuse it are left alone.
+ */
+export function useUrlSync(state: AppState, embed?: EmbedOptions): void {
+  useEffect(() => {
+    if (state.playing) return;
+    const id = setTimeout(() => {
+      try {
+        const q = serializeState(state, embed);
+        window.history.replaceState(window.history.state, '', `${window.location.pathname}?${q}`);
+      } catch {
+        // Some sandboxed frames refuse history changes; the state still lives in the app.
+      }
+    }, URL_DEBOUNCE_MS);
+    return () => clearTimeout(id);
+  }, [state, embed]);
+}
