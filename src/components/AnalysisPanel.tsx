@@ -6,18 +6,20 @@ import { radToDeg, radToDeg180, radToDeg360 } from '../solver/angles';
 import { formatDeg, formatSci } from '../state/format';
 import { grashofSumsText } from '../state/grashofText';
 import { formatInputRange } from '../state/inputRange';
-import type { CycleResponse, PointResponse } from '../worker/protocol';
+import type { CycleResponse, PointResponse, TableResponse } from '../worker/protocol';
 import { useMessages } from './MessagesContext';
 
 /** Props of AnalysisPanel: the latest cycle and point answers, the branch and the chosen NR start. */
 export interface AnalysisPanelProps {
   cycle: CycleResponse | null;
+  /** The full n-point table of the branch (the cycle summary counts its rows); null until it arrives. */
+  table: TableResponse | null;
   point: PointResponse | null;
   branch: Branch;
   nrStart: NrStart;
 }
 
-function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps) {
+function AnalysisPanelImpl({ cycle, table, point, branch, nrStart }: AnalysisPanelProps) {
   const t = useMessages();
   const c = cycle?.classification;
   const verdict = !c ? '—' : c.type === 'change-point' ? t.grashofChangePoint : c.grashof ? t.grashofYes : t.grashofNo;
@@ -26,7 +28,6 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
   const pose = point?.pose ?? null;
   const theta2 = point ? formatDeg(radToDeg360(point.theta2Rad), 2) : '—';
   const deg = (rad: number) => `${formatDeg(radToDeg180(rad), 3)}°`;
-  const cur = cycle ? cycle[branch] : null;
 
   return (
     <div className="analysis">
@@ -92,9 +93,9 @@ function AnalysisPanelImpl({ cycle, point, branch, nrStart }: AnalysisPanelProps
           <dd>{nr ? (nr.start === 'continuation' ? t.nrContinuation : t.nrCold) : '—'}</dd>
         </div>
       </dl>
-      {cur && cycle ? (
+      {table && table.branch === branch ? (
         <p className="note">
-          {t.cycleSummary(String(cur.okCount), String(cycle.theta2Deg.length), String(cur.totalIterations))}
+          {t.cycleSummary(String(table.okCount), String(table.theta2Deg.length), String(table.totalIterations))}
         </p>
       ) : null}
     </div>

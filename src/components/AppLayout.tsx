@@ -1,5 +1,5 @@
 import './AppLayout.css';
-import { Suspense, lazy, useCallback } from 'react';
+import { Suspense, lazy, useCallback, useMemo } from 'react';
 import type { AppState } from '../state/appState';
 import { getMessages } from '../state/i18n';
 import type { ParsedUrl } from '../state/url';
@@ -28,6 +28,9 @@ import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useStableCallback } from './useStableCallback';
 import { useUrlSync } from './useUrlSync';
+import { UrlNotice } from './UrlNotice';
+import { SolverStatus } from './SolverStatus';
+import { useCycleTable } from './useSolver';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
@@ -51,13 +54,18 @@ export function AppLayout({ initial }: AppLayoutProps) {
     (s: AppState) => ({ stage: s.page !== 'lab', plotPixels: s.page !== 'lab' ? plotPixels : 0, newton: true }),
     [plotPixels],
   );
-  const { state, dispatch, client, solverMode, cycle, cycleError, point } = useSimulator(initial.state, shownFor);
+  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point } = useSimulator(
+    initial.state,
+    shownFor,
+  );
+  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, true);
   const t = getMessages(state.locale);
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -67,7 +75,6 @@ export function AppLayout({ initial }: AppLayoutProps) {
   useUrlSync(state);
   useCycleDrawnMark(cycle);
 
-  const solverNote = solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null;
   return (
     <MessagesContext.Provider value={t}>
       <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
@@ -77,6 +84,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
           <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
           <LanguageSelect locale={state.locale} dispatch={dispatch} />
         </header>
+        <UrlNotice ignored={initial.ignored} />
         <aside className="sidebar" aria-label={shell.controlsLabel}>
           <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
         </aside>
@@ -124,7 +132,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <h2 id="sec-analysis" className="section-title">
               {t.sectionAnalysis}
             </h2>
-            <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
+            <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
             {cycleError ? (
               <p className="note note-error" role="alert">
                 {cycleError}
@@ -146,7 +154,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             </h2>
             <SharePanel getState={getState} />
           </section>
-          {solverNote}
+          <SolverStatus mode={solverMode} reason={solverReason} />
         </aside>
       </div>
     </MessagesContext.Provider>

@@ -1,5 +1,5 @@
 import './EmbedLayout.css';
-import { useCallback } from 'react';
+import { useCallback, useMemo } from 'react';
 import type { AppState } from '../state/appState';
 import { getMessages } from '../state/i18n';
 import type { EmbedPanel, ParsedUrl } from '../state/url';
@@ -23,6 +23,9 @@ import { useLinkageScene } from './useLinkageScene';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useUrlSync } from './useUrlSync';
+import { UrlNotice } from './UrlNotice';
+import { SolverStatus } from './SolverStatus';
+import { useCycleTable } from './useSolver';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -52,12 +55,17 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
     () => ({ stage: true, plotPixels: plotsShown ? plotPixels : 0, newton: numbersShown }),
     [plotsShown, plotPixels, numbersShown],
   );
-  const { state, dispatch, solverMode, cycle, cycleError, point } = useSimulator(initial.state, shownFor);
+  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point } = useSimulator(
+    initial.state,
+    shownFor,
+  );
+  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, numbersShown);
   const t = getMessages(state.locale);
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, true);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, deg, scene, t });
+  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -83,6 +91,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
             ) : null}
           </div>
         </header>
+        <UrlNotice ignored={initial.ignored} />
         <main className="embed-main">
           <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
             <div className="embed-stage">
@@ -112,7 +121,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
           </div>
           {show('info') ? (
             <section className="card embed-card">
-              <AnalysisPanel cycle={cycle} point={point} branch={state.branch} nrStart={state.nrStart} />
+              <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
             </section>
           ) : null}
           {show('plots') ? (
@@ -132,7 +141,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
               <ExportPanel onPng={onPng} onCsv={onCsv} compact />
             </section>
           ) : null}
-          {solverMode === 'main-thread' ? <p className="note note-muted">{t.solvingOnMainThread}</p> : null}
+          <SolverStatus mode={solverMode} reason={solverReason} />
           {cycleError ? (
             <p className="note note-error" role="alert">
               {cycleError}

@@ -9,7 +9,7 @@ import type { LinkageScene } from '../render/scene';
 import type { Bounds } from '../render/view';
 import { fitView, toScreenX, toScreenY, zoomAbout } from '../render/view';
 import type { CouplerPoint, ViewOffset } from '../state/appState';
-import { benchMark } from './benchMark';
+import { benchMark } from '../worker/benchMarks';
 import type { ScreenPoint } from './canvasGestures';
 import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from './canvasGestures';
 import { Icon } from './Icon';

@@ -63,8 +63,6 @@ export function localPose(
  */
 export function poseAsPoint(p: LocalPose, solver: MethodChoice): PointResponse {
   return {
-    type: 'point',
-    id: -1,
     linkage: p.linkage,
     coupler: p.coupler,
     theta2Rad: p.theta2Rad,

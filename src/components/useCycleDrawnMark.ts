@@ -1,6 +1,6 @@
 import { useLayoutEffect } from 'react';
 import type { CycleResponse } from '../worker/protocol';
-import { benchMark } from './benchMark';
+import { benchMark } from '../worker/benchMarks';
 
 /**
  * Marks 'fourbar:cycle-drawn' (with the cycle's lengths) once the plots and canvas show a new cycle, for

@@ -1,6 +1,6 @@
 import { useMemo } from 'react';
 import type { InputRangeDeg } from '../state/animation';
-import { rangeToDeg } from '../state/animation';
+import { isRocking, rangeToDeg } from '../state/animation';
 import type { CycleResponse } from '../worker/protocol';
 import type { CycleDegrees } from './chartInputs';
 import { cycleDegrees } from './chartInputs';
@@ -17,7 +17,6 @@ export interface CycleFacts {
 export function useCycleFacts(cycle: CycleResponse | null): CycleFacts {
   const deg = useMemo(() => (cycle ? cycleDegrees(cycle) : null), [cycle]);
   const rangeDeg = useMemo(() => (cycle ? rangeToDeg(cycle.classification.inputRange) : null), [cycle]);
-  const range = cycle?.classification.inputRange;
-  const rocking = range ? !range.full && range.intervals.length > 0 : false;
+  const rocking = cycle ? isRocking(cycle.classification.inputRange) : false;
   return { deg, rangeDeg, rocking };
 }

@@ -4,6 +4,7 @@ import type { AppState } from '../state/appState';
 import type { ExportSubject, PngSize } from '../state/fileNames';
 import { csvFileName, pngFileName } from '../state/fileNames';
 import type { Messages } from '../state/messages';
+import type { SolverClient } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { decodeStatuses } from '../worker/statusCodes';
 import type { CycleDegrees } from './chartInputs';
@@ -23,6 +24,8 @@ export interface ExportSources {
   /** The pose on screen as a point (the plots' marker). */
   marker: PointResponse;
   cycle: CycleResponse | null;
+  /** The solver client: the CSV asks it for the full n-point table (the cycle is solved at view resolution). */
+  client: SolverClient | null;
   deg: CycleDegrees | null;
   scene: LinkageScene;
   t: Messages;
@@ -67,20 +70,27 @@ export function useExports(sources: ExportSources): Exports {
     downloadPng(bytes, name);
   });
   const onCsv = useStableCallback(async () => {
-    const { state: s, cycle: c } = sources;
-    if (!c) throw new Error('the cycle is still being solved');
-    const { downloadCsv } = await import('./exporters');
-    const b = c[s.branch];
+    const { state: s, client } = sources;
+    if (!client) throw new Error('the solver is still starting');
+    const [{ downloadCsv }, tbl] = await Promise.all([
+      import('./exporters'),
+      client.table(
+        { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol } },
+        'export',
+      ),
+    ]);
+    // A newer export request superseded this one: it downloads instead.
+    if (!tbl) return;
     downloadCsv(
       {
-        theta2Deg: c.theta2Deg,
-        theta3Rad: b.theta3,
-        theta4Rad: b.theta4,
-        status: decodeStatuses(b.statusCodes),
-        iterations: b.iterations,
-        residual: b.residual,
+        theta2Deg: tbl.theta2Deg,
+        theta3Rad: tbl.theta3Rad,
+        theta4Rad: tbl.theta4Rad,
+        status: decodeStatuses(tbl.statusCodes),
+        iterations: tbl.iterations,
+        residual: tbl.residual,
       },
-      csvFileName(c.linkage, s.branch, c.samples),
+      csvFileName(tbl.linkage, tbl.branch, tbl.samples),
     );
   });
   return { onPng, onCsv, onCanvasSize };

@@ -5,7 +5,8 @@ import type { Branch } from '../solver/types';
 import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
 import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
 import type { AppState } from '../state/appState';
-import { formatDeg, formatIntervalsDeg, formatNumber } from '../state/format';
+import { formatDeg, formatNumber } from '../state/format';
+import { formatInputRange } from '../state/inputRange';
 import type { Messages } from '../state/messages';
 import type { CycleResponse } from '../worker/protocol';
 import type { LocalPose } from './localPose';
@@ -56,7 +57,7 @@ export function useLinkageScene(
     classification &&
     classification.type !== 'cannot-assemble' &&
     classification.inputRange.intervals.length > 0
-      ? t.reachableHint(formatIntervalsDeg(classification.inputRange.intervals, t.rangeInterval))
+      ? t.reachableHint(formatInputRange(classification.inputRange, t))
       : null;
   const text: SceneText = useMemo(
     () => ({

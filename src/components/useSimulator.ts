@@ -2,7 +2,7 @@ import { useMemo, useReducer } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../state/appState';
 import { reducer } from '../state/appState';
-import type { SolverClient, SolverMode } from '../worker/client';
+import type { SolverClient, SolverMode, SolverModeReason } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { usePacedValue } from './usePacedValue';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
@@ -26,6 +26,8 @@ export interface Simulator {
   dispatch: Dispatch<Action>;
   client: SolverClient | null;
   solverMode: SolverMode;
+  /** Why the solver left the worker (for the status line), null while it runs there. */
+  solverReason: SolverModeReason | null;
   cycle: CycleResponse | null;
   cycleError: string | null;
   point: PointResponse | null;
@@ -37,7 +39,7 @@ export interface Simulator {
  */
 export function useSimulator(initial: AppState, shownFor: (state: AppState) => ShownViews): Simulator {
   const [state, dispatch] = useReducer(reducer, initial);
-  const { client, mode } = useSolverClient();
+  const { client, mode, reason } = useSolverClient();
   const { stage, plotPixels, newton } = shownFor(state);
   const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   const cycleNeeds = useMemo(
@@ -67,5 +69,5 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
     state.coupler,
     pointNeeds,
   );
-  return { state, dispatch, client, solverMode: mode, cycle, cycleError: error, point };
+  return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point };
 }
