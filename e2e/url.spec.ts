@@ -57,4 +57,22 @@ test.describe('share links', () => {
     expect(warnings.some((w) => w.includes('r1="abc"'))).toBe(true);
     expect(warnings.some((w) => w.includes('t2="1e308"'))).toBe(true);
   });
+
+  test('names the ignored key in a dismissible notice and keeps the default value', async ({ page }) => {
+    await page.goto('./?r3=abc');
+    await waitReady(page);
+    const notice = page.getByTestId('url-notice');
+    await expect(notice).toHaveAttribute('role', 'status');
+    await expect(notice).toContainText('r3 = “abc”');
+    await expect(page.getByRole('textbox', { name: /^r3/ })).toHaveValue('5');
+    await notice.getByRole('button').click();
+    await expect(page.getByTestId('url-notice')).toHaveCount(0);
+  });
+
+  test('shows no notice for a clean link', async ({ page }) => {
+    await page.goto('./?r3=4.5');
+    await waitReady(page);
+    await expect(page.getByRole('textbox', { name: /^r3/ })).toHaveValue('4.5');
+    await expect(page.getByTestId('url-notice')).toHaveCount(0);
+  });
 });
