@@ -5,4 +5,4 @@ import { mount } from './mount';
 import { applyTokens } from './theme/applyTokens';
 
 applyTokens(document.documentElement.style);
-mount(EmbedLayout);
+void mount(EmbedLayout);

@@ -2,7 +2,7 @@ import { StrictMode } from 'react';
 import type { ComponentType } from 'react';
 import { createRoot } from 'react-dom/client';
 import { ErrorBoundary } from './components/ErrorBoundary';
-import { getMessages } from './state/i18n';
+import { getMessages, loadMessages } from './state/i18n';
 import { initialState } from './state/initial';
 import { LOCALE_STORAGE_KEY, readStorage } from './state/storage';
 import type { ParsedUrl } from './state/url';
@@ -12,12 +12,20 @@ export interface LayoutProps {
   initial: ParsedUrl;
 }
 
-/** Mounts a layout (the app or the embed widget) into #root with the state from the URL, inside an error boundary. */
-export function mount(Layout: ComponentType<LayoutProps>): void {
+/**
+ * Mounts a layout (the app or the embed widget) into #root with the state from the URL, inside an error boundary,
+ * once the language's strings are loaded (English is in the first load; zh-TW is fetched first when chosen).
+ */
+export async function mount(Layout: ComponentType<LayoutProps>): Promise<void> {
   const root = document.getElementById('root');
   if (!root) throw new Error('index.html must have an element with id "root"');
   const languages = typeof navigator !== 'undefined' ? (navigator.languages ?? [navigator.language]) : [];
   const initial = initialState(window.location.search, languages, readStorage(LOCALE_STORAGE_KEY));
+  try {
+    await loadMessages(initial.state.locale);
+  } catch {
+    // The language chunk could not load (offline): the English strings are there.
+  }
   const reset = () => {
     try {
       window.location.assign(window.location.pathname);

@@ -1,7 +1,7 @@
 import { memo } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, Locale } from '../state/appState';
-import { LOCALES } from '../state/i18n';
+import { LOCALES, loadMessages } from '../state/i18n';
 import { LOCALE_STORAGE_KEY, writeStorage } from '../state/storage';
 import { Icon } from './Icon';
 import { useMessages } from './MessagesContext';
@@ -27,7 +27,11 @@ function LanguageSelectImpl({ locale, dispatch }: LanguageSelectProps) {
         onChange={(e) => {
           const l = e.target.value as Locale;
           writeStorage(LOCALE_STORAGE_KEY, l);
-          dispatch({ type: 'setLocale', locale: l });
+          // The state changes once the strings are there, so no frame shows a mix of languages.
+          loadMessages(l).then(
+            () => dispatch({ type: 'setLocale', locale: l }),
+            () => dispatch({ type: 'setLocale', locale: l }),
+          );
         }}
       >
         {LOCALES.map((l) => (

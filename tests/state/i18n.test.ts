@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { detectLocale, getMessages, matchLocale, parseLocale } from '../../src/state/i18n';
+import {
+  detectLocale,
+  getMessages,
+  loadMessages,
+  matchLocale,
+  messagesLoaded,
+  parseLocale,
+} from '../../src/state/i18n';
 import { messagesEn } from '../../src/state/messagesEn';
 import { messagesZhTw } from '../../src/state/messagesZhTw';
 
@@ -63,6 +70,14 @@ describe('detectLocale', () => {
     expect(matchLocale('EN-us')).toBe('en');
     expect(parseLocale('zh-tw')).toBe('zh-TW');
     expect(parseLocale('zh')).toBeNull();
+  });
+});
+
+describe('loadMessages', () => {
+  it('serves English until zh-TW is loaded, then the zh-TW table', async () => {
+    expect(getMessages('en').play).toBe('Play');
+    await loadMessages('zh-TW');
+    expect(messagesLoaded('zh-TW')).toBe(true);
     expect(getMessages('zh-TW').play).toBe('播放');
   });
 });
