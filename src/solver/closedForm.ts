@@ -1,10 +1,12 @@
 import { PI } from './angles';
-import { sumOfProducts } from './exact';
+import { exactSumOfProducts, halfUlp, sumOfProducts } from './exact';
 import type { DD } from './exact';
 import type { Angles, Branch, Linkage } from './types';
 import { normalizeLinkage, validateLinkage } from './validate';
 
 const EPS = Number.EPSILON;
+/** Sum2 error bound for the plan's constants (14 terms of size < 4): below it the exact sum is taken. */
+const EXACT_BELOW = 1e-26;
 /** Below this |A O4| (normalised) s^2 underflows and the closed form switches to s-scaled formulas. */
 const TINY_S = 1e-120;
 
@@ -73,12 +75,18 @@ export function planClosedForm(l: Linkage): ClosedFormPlan {
   const neg = (terms: ReadonlyArray<number | readonly [number, number]>) =>
     terms.map((t) => (typeof t === 'number' ? -t : ([-t[0], t[1]] as const)));
   const consts = new Float64Array(24);
+  // Sum2 is accurate to about (n eps)^2 of the terms' size (lengths < 1 here); a constant that small
+  // may be an exact tie (a flat chain, a change point), so it is recomputed exactly.
+  const constant = (terms: ReadonlyArray<number | readonly [number, number]>): DD => {
+    const dd = sumOfProducts(terms);
+    return Math.abs(dd.hi) > EXACT_BELOW ? dd : exactSumOfProducts(terms);
+  };
   bases.forEach((base, region) => {
     const dds = [
-      sumOfProducts([sq(r3), sq(r4), [2 * r3, r4], ...neg(base)]),
-      sumOfProducts([...base, [-r3, r3], [-r4, r4], [2 * r3, r4]]),
-      sumOfProducts([sq(r3), [-r4, r4], ...base]),
-      sumOfProducts([sq(r4), [-r3, r3], ...base]),
+      constant([sq(r3), sq(r4), [2 * r3, r4], ...neg(base)]),
+      constant([...base, [-r3, r3], [-r4, r4], [2 * r3, r4]]),
+      constant([sq(r3), [-r4, r4], ...base]),
+      constant([sq(r4), [-r3, r3], ...base]),
     ];
     dds.forEach((dd, j) => {
       consts[8 * region + 2 * j] = dd.hi;
@@ -128,7 +136,7 @@ export function newAssemblyFactors(): AssemblyFactors {
 /**
  * Whether the loop closes at theta2 (radians), and the triangle (s, r3, r4) it closes with.
  * 16 area^2 = ((r3+r4)^2 - s^2)(s^2 - (r3-r4)^2) is formed factor by factor without
- * cancellation (hard-cases.md, "A stable form"), so the reachability verdict is as exact as
+ * cancellation (docs/hard-cases.md, "A stable form"), so the reachability verdict is as exact as
  * cos and sin of theta2 are.
  */
 export function assemblyFactors(plan: ClosedFormPlan, theta2: number, f: AssemblyFactors): Assembly {
@@ -165,14 +173,27 @@ export function assemblyFactors(plan: ClosedFormPlan, theta2: number, f: Assembl
   f.dy = dy;
   f.x3 = k[o + 4] + m + k[o + 5];
   f.x4 = k[o + 6] + m + k[o + 7];
-  // What rounding of cos/sin t2 and of m can move the factors by; within it a factor is a limit.
-  const tol = 8 * EPS * Math.abs(m) + 64 * EPS * EPS;
+  // Each factor is (exact double-double constant) -/+ m; m carries the rounding of cos/sin t2 (a few
+  // ulps of m). A factor within that of zero is a limit. The verdict is about the angle the double
+  // theta2 stands for, so any angle within half an ulp of theta2 that closes the loop makes it a
+  // limit too (fl(pi) reaches a flat chain closing only at pi); that moves s^2 by k2 (|sin t2| h + h^2).
+  const mTol = 8 * EPS * Math.abs(m);
+  const h = EPS * Math.abs(theta2); // >= one ulp of theta2: a quick bound first
+  const band = k2 * (Math.abs(sn) + h) * h;
+  const tolP = mTol + 4 * EPS * EPS * Math.abs(k[o]);
+  const tolM = mTol + 4 * EPS * EPS * Math.abs(k[o + 2]);
   let status: Assembly = Assembly.Ok;
-  if (dPlus < tol || dMinus < tol) {
-    if (dPlus < -tol || dMinus < -tol) return Assembly.Unreachable;
-    status = Assembly.Limit;
-    if (dPlus < 0) dPlus = 0;
-    if (dMinus < 0) dMinus = 0;
+  if (dPlus < tolP + band || dMinus < tolM + band) {
+    const hu = halfUlp(theta2);
+    const exactBand = k2 * (Math.abs(sn) + hu) * hu;
+    const bandP = tolP + exactBand;
+    const bandM = tolM + exactBand;
+    if (dPlus < -bandP || dMinus < -bandM) return Assembly.Unreachable;
+    if (dPlus < bandP || dMinus < bandM) {
+      status = Assembly.Limit;
+      if (dPlus < 0) dPlus = 0;
+      if (dMinus < 0) dMinus = 0;
+    }
   }
   f.dPlus = dPlus;
   f.dMinus = dMinus;

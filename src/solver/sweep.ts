@@ -275,7 +275,7 @@ function sweepNewton(
     r.totalIterations += iterations;
     r.residual[i] = unscale(plan, res);
     r.status[i] = 'ok';
-    // Tangent of the solution curve (hard-cases.md, "Conditioning"):
+    // Tangent of the solution curve (docs/hard-cases.md, "Conditioning"):
     // dt3/dt2 = r2 sin(t4 - t2) / (r3 sin(t3 - t4)), dt4/dt2 = r2 sin(t2 - t3) / (r4 sin(t4 - t3)).
     const c2 = factors.cos2;
     const s2 = factors.sin2;

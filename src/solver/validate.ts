@@ -48,16 +48,16 @@ export interface NormalizedLinkage extends Linkage {
   exponent: number;
 }
 
-/** Rescales exactly by a power of two; angles are unchanged and squares can neither overflow nor underflow. */
+/**
+ * Rescales by a power of two so the longest link lies in [0.5, 1); angles are unchanged and squares
+ * cannot overflow. Exact unless a link is below 2^-1074 of the longest after scaling: such a link
+ * keeps the smallest positive double (it stays a link; the change is far below an ulp of the longest).
+ */
 export function normalizeLinkage(l: Linkage): NormalizedLinkage {
   const max = Math.max(l.r1, l.r2, l.r3, l.r4);
   let e = Math.ceil(Math.log2(max));
   if (scaleByPow2(max, -e) >= 1) e += 1;
-  return {
-    r1: scaleByPow2(l.r1, -e),
-    r2: scaleByPow2(l.r2, -e),
-    r3: scaleByPow2(l.r3, -e),
-    r4: scaleByPow2(l.r4, -e),
-    exponent: e,
-  };
+  if (scaleByPow2(max, -e) < 0.5) e -= 1;
+  const scale = (x: number) => scaleByPow2(x, -e) || Number.MIN_VALUE;
+  return { r1: scale(l.r1), r2: scale(l.r2), r3: scale(l.r3), r4: scale(l.r4), exponent: e };
 }
