@@ -57,7 +57,12 @@ export interface ClosedFormPoint {
   sin3: number;
   cos4: number;
   sin4: number;
-  /** Loop-closure residual norm in normalised units. */
+  /** cos and sin of theta2, as the loop residual used them. */
+  cos2: number;
+  sin2: number;
+  /** Loop-closure residual (f1, f2) and its norm, in normalised units. */
+  f1: number;
+  f2: number;
   residual: number;
 }
 
@@ -228,7 +233,9 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
     out.theta4 = w;
     out.cos3 = out.cos4 = Math.cos(w);
     out.sin3 = out.sin4 = Math.sin(w);
-    out.residual = 0;
+    out.cos2 = f.cos2;
+    out.sin2 = f.sin2;
+    out.f1 = out.f2 = out.residual = 0;
     return status;
   }
   const y = sigma * Math.sqrt(f.dPlus) * Math.sqrt(f.dMinus);
@@ -265,13 +272,17 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
   }
   const f1 = r2 * f.cos2 + r3 * out.cos3 - r4 * out.cos4 - r1;
   const f2 = r2 * f.sin2 + r3 * out.sin3 - r4 * out.sin4;
+  out.cos2 = f.cos2;
+  out.sin2 = f.sin2;
+  out.f1 = f1;
+  out.f2 = f2;
   out.residual = Math.sqrt(f1 * f1 + f2 * f2);
   return status;
 }
 
 /** Fresh scratch point for closedFormAt. */
 export function newClosedFormPoint(): ClosedFormPoint {
-  return { theta3: 0, theta4: 0, cos3: 1, sin3: 0, cos4: 1, sin4: 0, residual: 0 };
+  return { theta3: 0, theta4: 0, cos3: 1, sin3: 0, cos4: 1, sin4: 0, cos2: 1, sin2: 0, f1: 0, f2: 0, residual: 0 };
 }
 
 /** +1 for the open branch, -1 for crossed. */

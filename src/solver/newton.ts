@@ -1,6 +1,16 @@
-import { wrapAngle } from './angles';
+import { PI, wrapAngle } from './angles';
 import type { Angles, IterationRecord, Linkage, NewtonOptions, NewtonResult, NewtonStatus } from './types';
-import { normalizeLinkage, scaleByPow2, validateLinkage } from './validate';
+import {
+  checkAngles,
+  checkFinite,
+  checkObject,
+  checkOptionalBoolean,
+  checkOptionalPositive,
+  describe,
+  normalizeLinkage,
+  scaleByPow2,
+  validateLinkage,
+} from './validate';
 
 const EPS = Number.EPSILON;
 
@@ -14,6 +24,14 @@ export const SEED_MAX_ITERATIONS = 100;
 export const DEFAULT_TOLERANCE = 1e-13;
 /** |sin(theta3 - theta4)| below this is treated as singular by the project's NR. */
 export const SINGULAR_SIN = 64 * EPS;
+/**
+ * Largest NR step (Euclidean norm, radians) the project's NR takes; a longer step is shortened to it.
+ * Near a fold the full step is about |f| / (r |sin mu|), which can throw the angles many turns away
+ * from any solution; no solution is ever more than a half turn away in either angle.
+ */
+export const MAX_STEP_RAD = 1;
+/** Largest iteration cap solveNewton accepts. */
+const MAX_ITERATIONS_LIMIT = 100_000;
 
 /** Lengths and input trigonometry the NR core works on (any unit; normalised for the project's method). */
 export interface NewtonProblem {
@@ -151,27 +169,46 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     const d3 = (r4 * (f1 * c4 + f2 * s4)) / det;
     const d4 = (r3 * (f1 * c3 + f2 * s3)) / det;
     lastStep = Math.sqrt(d3 * d3 + d4 * d4);
+    let scale = 1;
+    if (!s.seed && lastStep > MAX_STEP_RAD) {
+      scale = MAX_STEP_RAD / lastStep;
+      lastStep = MAX_STEP_RAD;
+    }
     if (row) row.stepNorm = lastStep;
     if (polishing) {
       polishSteps++;
       prev = { t3, t4, c3, s3, c4, s4, det };
       prevResidual = res;
     }
-    t3 += d3;
-    t4 += d4;
+    t3 += d3 * scale;
+    t4 += d4 * scale;
+    if (!s.seed) {
+      // Keep the iterate within one turn, so its rounding stays that of an angle below pi.
+      if (t3 > PI || t3 <= -PI) t3 = wrapAngle(t3);
+      if (t4 > PI || t4 <= -PI) t4 = wrapAngle(t4);
+    }
   }
   st.theta3 = t3;
   st.theta4 = t4;
 }
 
-/** Resolves NewtonOptions for a problem whose lengths sum to total (problem units). */
+/**
+ * Resolves NewtonOptions for a problem whose lengths sum to total (problem units). Throws an Error
+ * naming the option for tol not positive finite, maxIterations not an integer in [0, 100000], or
+ * seed/polish/log not boolean.
+ */
 export function newtonSettings(opts: NewtonOptions, total: number): NewtonSettings {
+  checkOptionalPositive('tol', opts.tol);
+  checkOptionalBoolean('seed', opts.seed);
+  checkOptionalBoolean('polish', opts.polish);
+  checkOptionalBoolean('log', opts.log);
   const seed = opts.seed === true;
   const tol = opts.tol ?? (seed ? SEED_TOLERANCE : DEFAULT_TOLERANCE);
-  if (!(tol > 0) || !Number.isFinite(tol)) throw new Error(`tol must be a positive finite number, got ${tol}`);
   const maxIterations = opts.maxIterations ?? SEED_MAX_ITERATIONS;
-  if (!Number.isInteger(maxIterations) || maxIterations < 0) {
-    throw new Error(`maxIterations must be a non-negative integer, got ${maxIterations}`);
+  if (!Number.isInteger(maxIterations) || maxIterations < 0 || maxIterations > MAX_ITERATIONS_LIMIT) {
+    throw new Error(
+      `maxIterations must be an integer from 0 to ${MAX_ITERATIONS_LIMIT}, got ${describe(maxIterations)}`,
+    );
   }
   return {
     seed,
@@ -183,18 +220,19 @@ export function newtonSettings(opts: NewtonOptions, total: number): NewtonSettin
 }
 
 /**
- * Solves the loop equations at theta2 (radians) by Newton-Raphson from guess (radians).
- * Default: tolerance relative to r1 + r2 + r3 + r4 (1e-13), then polished to full double precision;
- * lengths are rescaled by a power of two so any unit works. opts.seed = true runs the report's
- * Algorithm 1 exactly. Returns wrapped angles in (-pi, pi], the status, iterations, the residual
- * norm and det J (user's units) and the iteration log. Throws for a bad linkage, theta2 or guess.
+ * Solves the loop equations at theta2 (radians) by Newton-Raphson from guess (radians, any finite
+ * value: it is first reduced exactly to (-pi, pi]). Default: tolerance relative to r1 + r2 + r3 + r4
+ * (1e-13), steps no longer than MAX_STEP_RAD, then polished to full double precision; lengths are
+ * rescaled by a power of two so any unit works. opts.seed = true runs the report's Algorithm 1
+ * exactly (docs/hard-cases.md). Returns wrapped angles in (-pi, pi], the status, iterations, the
+ * residual norm and det J (user's units) and the iteration log. Throws an Error naming the argument
+ * for a bad linkage, theta2 not finite, guess without finite theta3/theta4, or a bad option.
  */
 export function solveNewton(l: Linkage, theta2: number, guess: Angles, opts: NewtonOptions = {}): NewtonResult {
   validateLinkage(l);
-  if (!Number.isFinite(theta2)) throw new Error(`theta2 must be a finite angle in radians, got ${theta2}`);
-  if (!guess || !Number.isFinite(guess.theta3))
-    throw new Error(`guess.theta3 must be a finite angle, got ${guess?.theta3}`);
-  if (!Number.isFinite(guess.theta4)) throw new Error(`guess.theta4 must be a finite angle, got ${guess.theta4}`);
+  checkFinite('theta2', theta2, 'angle in radians');
+  checkAngles('guess', guess);
+  checkObject('opts', opts);
   const seed = opts.seed === true;
   const n = seed ? { ...l, exponent: 0 } : normalizeLinkage(l);
   const problem: NewtonProblem = {
@@ -206,7 +244,7 @@ export function solveNewton(l: Linkage, theta2: number, guess: Angles, opts: New
     sin2: Math.sin(theta2),
   };
   const settings = newtonSettings(opts, n.r1 + n.r2 + n.r3 + n.r4);
-  const st = newNewtonState(guess.theta3, guess.theta4);
+  const st = newNewtonState(wrapAngle(guess.theta3), wrapAngle(guess.theta4));
   const log: IterationRecord[] | null = opts.log === false ? null : [];
   newtonCore(problem, settings, st, log);
   const e = n.exponent;

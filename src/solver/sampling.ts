@@ -123,5 +123,5 @@ export function adaptiveSweep(l: Linkage, opts: AdaptiveSweepOptions): AdaptiveS
   const grid = adaptiveGrid(l, { ...opts, branches: [opts.branch] });
   const result = sweep(l, grid, { branch: opts.branch, method: opts.method });
   const base = Math.max(8, Math.min(100_000, Math.round(opts.pixels ?? 360)));
-  return { ...result, baseCount: base + 1, refinedCount: grid.length - (base + 1) };
+  return Object.assign(result, { baseCount: base + 1, refinedCount: grid.length - (base + 1) });
 }
