@@ -4,6 +4,10 @@ import type { DD } from './exact';
 import type { Angles, Branch, Linkage } from './types';
 import { normalizeLinkage, validateLinkage } from './validate';
 
+// A module-local copy of the units module's pi, read per point: loaders that turn imports into
+// getters (vite-node) would otherwise call a getter on every read.
+const HALF_TURN = PI;
+
 const EPS = Number.EPSILON;
 /** Sum2 error bound for the plan's constants (14 terms of size < 4): below it the exact sum is taken. */
 const EXACT_BELOW = 1e-26;
@@ -40,6 +44,9 @@ export interface ClosedFormPlan {
   exponent: number;
   /** 2 r1 r2 (normalised). */
   k2: number;
+  /** 1 / r3 and 1 / r4 (normalised). */
+  inv3: number;
+  inv4: number;
   /** r1 - r2 as a double-double, for dx near theta2 = 0. */
   d12: DD;
   /** Region constants, flat: [8 region + 2 j] = hi, [8 region + 2 j + 1] = lo for j = Ap, Am, X3, X4 where Ap = (r3+r4)^2 - base, Am = base - (r3-r4)^2,
@@ -66,9 +73,22 @@ export interface ClosedFormPoint {
   residual: number;
 }
 
-/** Builds the per-linkage constants for closedFormAt (validates the linkage; throws on bad input). */
+/** The last plan built, reused while the lengths are the same (a sweep per frame re-plans otherwise). */
+let lastPlan: ClosedFormPlan | null = null;
+let lastLengths: Linkage = { r1: NaN, r2: NaN, r3: NaN, r4: NaN };
+
+/** Builds (or reuses) the per-linkage constants for closedFormAt; validates the linkage, throws on bad input. */
 export function planClosedForm(l: Linkage): ClosedFormPlan {
   validateLinkage(l);
+  const k = lastLengths;
+  if (lastPlan !== null && l.r1 === k.r1 && l.r2 === k.r2 && l.r3 === k.r3 && l.r4 === k.r4) return lastPlan;
+  const plan = buildPlan(l);
+  lastPlan = plan;
+  lastLengths = { r1: l.r1, r2: l.r2, r3: l.r3, r4: l.r4 };
+  return plan;
+}
+
+function buildPlan(l: Linkage): ClosedFormPlan {
   const n = normalizeLinkage(l);
   const { r1, r2, r3, r4 } = n;
   const sq = (x: number): readonly [number, number] => [x, x];
@@ -106,6 +126,8 @@ export function planClosedForm(l: Linkage): ClosedFormPlan {
     r4,
     exponent: n.exponent,
     k2: 2 * r1 * r2,
+    inv3: 1 / r3,
+    inv4: 1 / r4,
     d12: { hi: d, lo: r1 - d - r2 },
     consts,
     unscale: Math.abs(n.exponent) <= 1000 ? 2 ** n.exponent : 0,
@@ -115,7 +137,7 @@ export function planClosedForm(l: Linkage): ClosedFormPlan {
 /** atan2 wrapped to (-pi, pi] (atan2 gives -pi for a negative zero). */
 export function wrapAtan2(y: number, x: number): number {
   const t = Math.atan2(y, x);
-  return t === -PI ? PI : t;
+  return t === -HALF_TURN ? HALF_TURN : t;
 }
 
 /** Triangle factors of one input angle, filled in by assemblyFactors (normalised units). */
@@ -227,7 +249,7 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
   const { r1, r2, r3, r4 } = plan;
   const { dx, dy, x3, x4 } = f;
   if (status === Assembly.Continuum) {
-    const t = sigma > 0 ? theta2 : theta2 + PI;
+    const t = sigma > 0 ? theta2 : theta2 + HALF_TURN;
     const w = wrapAtan2(Math.sin(t), Math.cos(t));
     out.theta3 = w;
     out.theta4 = w;
@@ -238,20 +260,34 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
     out.f1 = out.f2 = out.residual = 0;
     return status;
   }
-  const y = sigma * Math.sqrt(f.dPlus) * Math.sqrt(f.dMinus);
-  const re3 = dx * x3 - dy * y;
-  const im3 = dx * y + dy * x3;
-  const re4 = -(dx * x4 + dy * y);
-  const im4 = dx * y - dy * x4;
-  const mag3 = Math.sqrt(re3 * re3 + im3 * im3);
-  const mag4 = Math.sqrt(re4 * re4 + im4 * im4);
+  const { cos2, sin2 } = f;
   if (Math.abs(dx) + Math.abs(dy) >= TINY_S) {
+    const y = sigma * Math.sqrt(f.dPlus) * Math.sqrt(f.dMinus);
+    const re3 = dx * x3 - dy * y;
+    const im3 = dx * y + dy * x3;
+    const re4 = -(dx * x4 + dy * y);
+    const im4 = dx * y - dy * x4;
     out.theta3 = wrapAtan2(im3, re3);
     out.theta4 = wrapAtan2(im4, re4);
-    out.cos3 = re3 / mag3;
-    out.sin3 = im3 / mag3;
-    out.cos4 = re4 / mag4;
-    out.sin4 = im4 / mag4;
+    // |re3 + i im3| = s |x3 + i y| = 2 r3 s^2 (law of cosines: x3 = 2 r3 s cos psi, y = 2 r3 s sin psi),
+    // and |re4 + i im4| = 2 r4 s^2: one division gives all four cos/sin, no square roots.
+    const half = 0.5 / (dx * dx + dy * dy);
+    const u3 = re3 * half; // r3 cos t3
+    const v3 = im3 * half;
+    const u4 = re4 * half; // r4 cos t4
+    const v4 = im4 * half;
+    out.cos3 = u3 * plan.inv3;
+    out.sin3 = v3 * plan.inv3;
+    out.cos4 = u4 * plan.inv4;
+    out.sin4 = v4 * plan.inv4;
+    const f1 = r2 * cos2 + u3 - u4 - r1;
+    const f2 = r2 * sin2 + v3 - v4;
+    out.cos2 = cos2;
+    out.sin2 = sin2;
+    out.f1 = f1;
+    out.f2 = f2;
+    out.residual = Math.sqrt(f1 * f1 + f2 * f2);
+    return status;
   } else {
     // |A O4| = s so small that s^2 underflows: divide the triangle's X and Y by s, with
     // q = (r3 - r4) / s: X3 / s = q (r3 + r4) + s, X4 / s = s - q (r3 + r4), Y / s = sqrt(dPlus (1 - q^2)).
@@ -262,7 +298,7 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
     const psi = Math.atan2(ys, q * (r3 + r4) + sLen);
     const gamma = Math.atan2(ys, sLen - q * (r3 + r4));
     const a3 = beta + sigma * psi;
-    const a4 = beta + PI - sigma * gamma;
+    const a4 = beta + HALF_TURN - sigma * gamma;
     out.cos3 = Math.cos(a3);
     out.sin3 = Math.sin(a3);
     out.cos4 = Math.cos(a4);
@@ -270,10 +306,10 @@ export function closedFormAt(plan: ClosedFormPlan, theta2: number, sigma: number
     out.theta3 = wrapAtan2(out.sin3, out.cos3);
     out.theta4 = wrapAtan2(out.sin4, out.cos4);
   }
-  const f1 = r2 * f.cos2 + r3 * out.cos3 - r4 * out.cos4 - r1;
-  const f2 = r2 * f.sin2 + r3 * out.sin3 - r4 * out.sin4;
-  out.cos2 = f.cos2;
-  out.sin2 = f.sin2;
+  const f1 = r2 * cos2 + r3 * out.cos3 - r4 * out.cos4 - r1;
+  const f2 = r2 * sin2 + r3 * out.sin3 - r4 * out.sin4;
+  out.cos2 = cos2;
+  out.sin2 = sin2;
   out.f1 = f1;
   out.f2 = f2;
   out.residual = Math.sqrt(f1 * f1 + f2 * f2);

@@ -12,6 +12,10 @@ import {
   validateLinkage,
 } from './validate';
 
+// Module-local copies of the units module's constants, read in per-point loops: loaders that turn
+// imports into getters (vite-node) would otherwise call a getter on every read.
+const HALF_TURN = PI;
+
 const EPS = Number.EPSILON;
 
 /** The report's Algorithm 1 constants: absolute tolerance on |f1| and |f2|, singular threshold on |det J|. */
@@ -30,6 +34,8 @@ export const SINGULAR_SIN = 64 * EPS;
  * from any solution; no solution is ever more than a half turn away in either angle.
  */
 export const MAX_STEP_RAD = 1;
+/** Below this step (radians) the NR core updates cos/sin by rotation instead of calling cos and sin. */
+const ROTATE_MAX_RAD = 1e-3;
 /** Largest iteration cap solveNewton accepts. */
 const MAX_ITERATIONS_LIMIT = 100_000;
 
@@ -99,13 +105,27 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
   let polishing = false;
   let polishSteps = 0;
   let prevResidual = Infinity;
-  let prev = { t3, t4, c3: 1, s3: 0, c4: 1, s4: 0, det: 0 };
+  // The point before a polish step, restored when the step does not lower the residual.
+  let pt3 = 0,
+    pt4 = 0,
+    pc3 = 1,
+    ps3 = 0,
+    pc4 = 1,
+    ps4 = 0,
+    pdet = 0;
+  let c3 = 1,
+    s3 = 0,
+    c4 = 1,
+    s4 = 0;
+  let needTrig = true;
   st.iterations = 0;
   for (let k = 0; ; k++) {
-    const c3 = Math.cos(t3);
-    const s3 = Math.sin(t3);
-    const c4 = Math.cos(t4);
-    const s4 = Math.sin(t4);
+    if (needTrig) {
+      c3 = Math.cos(t3);
+      s3 = Math.sin(t3);
+      c4 = Math.cos(t4);
+      s4 = Math.sin(t4);
+    }
     const f1 = r2 * cos2 + r3 * c3 - r4 * c4 - r1;
     const f2 = r2 * sin2 + r3 * s3 - r4 * s4;
     const res = Math.sqrt(f1 * f1 + f2 * f2);
@@ -113,13 +133,13 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     const det = r3 * r4 * sinMu;
     if (polishing && !(res < prevResidual)) {
       // The polish step did not help: we are at the rounding floor; keep the previous point.
-      t3 = prev.t3;
-      t4 = prev.t4;
-      st.cos3 = prev.c3;
-      st.sin3 = prev.s3;
-      st.cos4 = prev.c4;
-      st.sin4 = prev.s4;
-      st.detJ = prev.det;
+      t3 = pt3;
+      t4 = pt4;
+      st.cos3 = pc3;
+      st.sin3 = ps3;
+      st.cos4 = pc4;
+      st.sin4 = ps4;
+      st.detJ = pdet;
       st.residual = prevResidual;
       st.iterations = k - 1;
       st.status = 'converged';
@@ -166,26 +186,48 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
       break;
     }
     // Cramer's rule on J d = -f.
-    const d3 = (r4 * (f1 * c4 + f2 * s4)) / det;
-    const d4 = (r3 * (f1 * c3 + f2 * s3)) / det;
+    let d3 = (r4 * (f1 * c4 + f2 * s4)) / det;
+    let d4 = (r3 * (f1 * c3 + f2 * s3)) / det;
     lastStep = Math.sqrt(d3 * d3 + d4 * d4);
-    let scale = 1;
     if (!s.seed && lastStep > MAX_STEP_RAD) {
-      scale = MAX_STEP_RAD / lastStep;
+      d3 *= MAX_STEP_RAD / lastStep;
+      d4 *= MAX_STEP_RAD / lastStep;
       lastStep = MAX_STEP_RAD;
     }
     if (row) row.stepNorm = lastStep;
     if (polishing) {
       polishSteps++;
-      prev = { t3, t4, c3, s3, c4, s4, det };
+      pt3 = t3;
+      pt4 = t4;
+      pc3 = c3;
+      ps3 = s3;
+      pc4 = c4;
+      ps4 = s4;
+      pdet = det;
       prevResidual = res;
     }
-    t3 += d3 * scale;
-    t4 += d4 * scale;
-    if (!s.seed) {
-      // Keep the iterate within one turn, so its rounding stays that of an angle below pi.
-      if (t3 > PI || t3 <= -PI) t3 = wrapAngle(t3);
-      if (t4 > PI || t4 <= -PI) t4 = wrapAngle(t4);
+    t3 += d3;
+    t4 += d4;
+    if (s.seed) continue; // the report's algorithm, verbatim: fresh trig every iteration, angles unwrapped
+    // Keep the iterate within one turn, so its rounding stays that of an angle below pi.
+    if (t3 > HALF_TURN || t3 <= -HALF_TURN) t3 = wrapAngle(t3);
+    if (t4 > HALF_TURN || t4 <= -HALF_TURN) t4 = wrapAngle(t4);
+    // A small step rotates (cos, sin) by the angle-addition formulas with a series for the step's own
+    // cos and sin (exact to rounding below ROTATE_MAX_RAD): no trig call after the first evaluation.
+    needTrig = !(Math.abs(d3) < ROTATE_MAX_RAD && Math.abs(d4) < ROTATE_MAX_RAD);
+    if (!needTrig) {
+      const q3 = d3 * d3;
+      const q4 = d4 * d4;
+      const ca = 1 - q3 * (0.5 - q3 / 24);
+      const sa = d3 * (1 - q3 * (1 / 6 - q3 / 120));
+      const cb = 1 - q4 * (0.5 - q4 / 24);
+      const sb = d4 * (1 - q4 * (1 / 6 - q4 / 120));
+      const n3 = c3 * ca - s3 * sa;
+      s3 = s3 * ca + c3 * sa;
+      c3 = n3;
+      const n4 = c4 * cb - s4 * sb;
+      s4 = s4 * cb + c4 * sb;
+      c4 = n4;
     }
   }
   st.theta3 = t3;

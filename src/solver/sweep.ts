@@ -1,4 +1,4 @@
-import { PI, angleDiff, degToRad, wrapAngle } from './angles';
+import { PI, TWO_PI, degToRad, wrapAngle } from './angles';
 import {
   Assembly,
   assemblyFactors,
@@ -12,7 +12,7 @@ import type { ClosedFormPlan } from './closedForm';
 import { SWEEP_METHODS } from './methods';
 import { newNewtonState, newtonCore, newtonSettings } from './newton';
 import type { NewtonProblem, NewtonState } from './newton';
-import { FAILED, OK, POINT_STATUSES, SINGULAR, UNREACHABLE } from './pointStatus';
+import { POINT_STATUSES, STATUS_CODE } from './pointStatus';
 import type { Angles, Branch, Linkage, PointStatus, SweepMethod, SweepOptions, SweepResult } from './types';
 import {
   checkFinite,
@@ -23,7 +23,21 @@ import {
   scaleByPow2,
 } from './validate';
 
+// Module-local copies of the units module's constants, read in per-point loops: loaders that turn
+// imports into getters (vite-node) would otherwise call a getter on every read.
+const HALF_TURN = PI;
+const FULL_TURN = TWO_PI;
+const { ok: OK, unreachable: UNREACHABLE, singular: SINGULAR, failed: FAILED } = STATUS_CODE;
+
 export { SWEEP_METHODS } from './methods';
+
+// The per-point loops below call these through local constants: a module loader that rewrites
+// imports into property reads of a module object (vite-node, some bundlers' dev modes) would
+// otherwise pay a lookup on every call and keep the engine from inlining them.
+const cfAt = closedFormAt;
+const factorsAt = assemblyFactors;
+const nrCore = newtonCore;
+const wrap = wrapAngle;
 
 /** Default sweep method: the stable closed form (full precision, fastest; see npm run bench). */
 export const DEFAULT_SWEEP_METHOD: SweepMethod = 'closed-form';
@@ -56,31 +70,40 @@ const MAX_PREDICTED_STEP = 0.5;
 /** Iteration cap of one continuation step before the point is re-seeded from the closed form. */
 const CONTINUATION_MAX_ITERATIONS = 25;
 
-/** The sweep's arrays with the status kept as codes; `status` is decoded on first read. */
-function allocate(n: number): SweepResult {
-  const statusCodes = new Uint8Array(n);
-  let decoded: PointStatus[] | null = null;
-  const r = {
-    theta2: new Float64Array(n),
-    theta3: new Float64Array(n),
-    theta4: new Float64Array(n),
-    iterations: new Int32Array(n),
-    residual: new Float64Array(n),
-    statusCodes,
-    totalIterations: 0,
-    branchCorrections: 0,
-  };
-  Object.defineProperty(r, 'status', {
-    enumerable: true,
-    get(): PointStatus[] {
-      if (decoded === null) {
-        decoded = [];
-        for (let i = 0; i < statusCodes.length; i++) decoded.push(POINT_STATUSES[statusCodes[i]]);
-      }
-      return decoded;
-    },
-  });
-  return r as SweepResult;
+/**
+ * The sweep's arrays, all views of one buffer (one allocation per sweep), with the status kept as one
+ * byte a point; `status` is decoded from the codes on first read.
+ */
+class SweepArrays implements SweepResult {
+  theta2: Float64Array;
+  theta3: Float64Array;
+  theta4: Float64Array;
+  residual: Float64Array;
+  iterations: Int32Array;
+  statusCodes: Uint8Array;
+  totalIterations = 0;
+  branchCorrections = 0;
+  private decoded: PointStatus[] | null = null;
+
+  constructor(n: number) {
+    const buffer = new ArrayBuffer(n * 37);
+    this.theta2 = new Float64Array(buffer, 0, n);
+    this.theta3 = new Float64Array(buffer, 8 * n, n);
+    this.theta4 = new Float64Array(buffer, 16 * n, n);
+    this.residual = new Float64Array(buffer, 24 * n, n);
+    this.iterations = new Int32Array(buffer, 32 * n, n);
+    this.statusCodes = new Uint8Array(buffer, 36 * n, n);
+  }
+
+  get status(): PointStatus[] {
+    if (this.decoded === null) {
+      const codes = this.statusCodes;
+      const out: PointStatus[] = [];
+      for (let i = 0; i < codes.length; i++) out.push(POINT_STATUSES[codes[i]]);
+      this.decoded = out;
+    }
+    return this.decoded;
+  }
 }
 
 /** Throws unless theta2s is an array or typed array of finite numbers (radians). */
@@ -135,7 +158,7 @@ function sweepClosedForm(
   for (let i = 0; i < theta2s.length; i++) {
     const t2 = theta2s[i];
     th2[i] = t2;
-    const a = closedFormAt(plan, t2, sigma, p);
+    const a = cfAt(plan, t2, sigma, p);
     if (a === Assembly.Unreachable) {
       unsolved(r, i, UNREACHABLE);
       continue;
@@ -169,8 +192,8 @@ function sweepClosedForm(
         const g2 = r2 * s2 + r3 * s3 - r4 * s4;
         const rp = Math.sqrt(g1 * g1 + g2 * g2);
         if (rp < rn) {
-          t3 = wrapAngle(t3 + d3);
-          t4 = wrapAngle(t4 + d4);
+          t3 = wrap(t3 + d3);
+          t4 = wrap(t4 + d4);
           rn = rp;
         }
       }
@@ -203,13 +226,13 @@ function sweepSeed(
     problem.sin2 = Math.sin(t2);
     st.theta3 = guess.theta3;
     st.theta4 = guess.theta4;
-    newtonCore(problem, settings, st, null);
+    nrCore(problem, settings, st, null);
     r.iterations[i] = st.iterations;
     total += st.iterations;
     if (st.status === 'converged') {
       r.statusCodes[i] = OK;
-      const w3 = wrapAngle(st.theta3);
-      const w4 = wrapAngle(st.theta4);
+      const w3 = wrap(st.theta3);
+      const w4 = wrap(st.theta4);
       r.theta3[i] = w3;
       r.theta4[i] = w4;
       r.residual[i] = st.residual;
@@ -221,6 +244,12 @@ function sweepSeed(
     }
   }
   r.totalIterations = total;
+}
+
+/** The previous angle `old` moved by the whole turn that separates it from its successor `now` (both in (-pi, pi]). */
+function reanchor(old: number, now: number): number {
+  const d = now - old;
+  return d > HALF_TURN ? old + FULL_TURN : d < -HALF_TURN ? old - FULL_TURN : old;
 }
 
 /** Cubic Hermite extrapolation of y at x from (x0, y0, d0) and (x1, y1, d1); Euler when x0 is absent. */
@@ -281,7 +310,7 @@ function sweepNewton(
     const t2 = theta2s[i];
     r.theta2[i] = t2;
     // Reachability first: plain NR "converges" just past a limit when the tolerance is loose.
-    const a = assemblyFactors(plan, t2, factors);
+    const a = factorsAt(plan, t2, factors);
     if (a === Assembly.Unreachable || a === Assembly.Continuum) {
       unsolved(r, i, a === Assembly.Unreachable ? UNREACHABLE : SINGULAR);
       have = 0;
@@ -311,7 +340,7 @@ function sweepNewton(
       }
       st.theta3 = g3;
       st.theta4 = g4;
-      newtonCore(problem, settings, st, null);
+      nrCore(problem, settings, st, null);
       iterations = st.iterations;
       if (st.status === 'converged') {
         const sinMu = st.sin4 * st.cos3 - st.cos4 * st.sin3; // sin(theta4 - theta3)
@@ -333,7 +362,7 @@ function sweepNewton(
     if (!solved) {
       // (Re-)seed on the requested branch from the closed form: first point, after a gap, next to a
       // fold, after a branch jump or a failed step, and where the branches are too close to tell apart.
-      closedFormAt(plan, t2, sigma, cf);
+      cfAt(plan, t2, sigma, cf);
       t3 = cf.theta3;
       t4 = cf.theta4;
       c3 = cf.cos3;
@@ -342,8 +371,8 @@ function sweepNewton(
       s4 = cf.sin4;
       res = cf.residual;
     }
-    const w3 = t3 > -PI && t3 <= PI ? t3 : wrapAngle(t3);
-    const w4 = t4 > -PI && t4 <= PI ? t4 : wrapAngle(t4);
+    const w3 = t3 > -HALF_TURN && t3 <= HALF_TURN ? t3 : wrap(t3);
+    const w4 = t4 > -HALF_TURN && t4 <= HALF_TURN ? t4 : wrap(t4);
     r.theta3[i] = w3;
     r.theta4[i] = w4;
     r.iterations[i] = iterations;
@@ -360,8 +389,8 @@ function sweepNewton(
     // Re-anchor: the previous point moves by the whole turns that reduce the new one.
     if (have > 0) {
       xa = xb;
-      a3 = w3 - angleDiff(w3, b3);
-      a4 = w4 - angleDiff(w4, b4);
+      a3 = reanchor(b3, w3);
+      a4 = reanchor(b4, w4);
       da3 = db3;
       da4 = db4;
     }
@@ -403,7 +432,7 @@ export function sweep(l: Linkage, theta2s: ArrayLike<number>, opts: SweepOptions
   checkSweepOptions(opts);
   const sigma = branchSign(opts.branch);
   const method = opts.method ?? DEFAULT_SWEEP_METHOD;
-  const r = allocate(theta2s.length);
+  const r = new SweepArrays(theta2s.length);
   switch (method) {
     case 'closed-form':
       sweepClosedForm(plan, theta2s, sigma, false, r);

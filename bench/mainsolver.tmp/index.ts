@@ -1,0 +1,33 @@
+/**
+ * Four-bar position analysis: classification, a stable closed form, Newton-Raphson and
+ * continuation sweeps. Pure TypeScript: no DOM, React, d3 or worker globals.
+ * Angles are radians, counter-clockwise from the ground line (O2 at the origin, O4 at (r1, 0)),
+ * reported wrapped to (-pi, pi]. Lengths are in any one unit.
+ */
+export type {
+  AngleInterval,
+  Angles,
+  Branch,
+  Classification,
+  InputRange,
+  IterationRecord,
+  Linkage,
+  LinkageType,
+  NewtonOptions,
+  NewtonResult,
+  NewtonStatus,
+  PointStatus,
+  SweepMethod,
+  SweepOptions,
+  SweepResult,
+} from './types';
+export { angleDiff, degToRad, radToDeg, wrapAngle } from './angles';
+export { classify, inputRange } from './classify';
+export { solveClosedForm } from './closedForm';
+export { couplerPoint, jointPositions, loopResidual, transmissionAngle, velocityRatios } from './kinematics';
+export type { Joints, Point } from './kinematics';
+export { DEFAULT_TOLERANCE, SEED_MAX_ITERATIONS, SEED_SINGULAR_DET, SEED_TOLERANCE, solveNewton } from './newton';
+export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid } from './sweep';
+export { validateLinkage } from './validate';
+export { adaptiveGrid, adaptiveSweep } from './sampling';
+export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
