@@ -160,6 +160,32 @@ export function newAssemblyFactors(): AssemblyFactors {
   return { cos2: 1, sin2: 0, dx: 0, dy: 0, dPlus: 0, dMinus: 0, x3: 0, x4: 0 };
 }
 
+/** Rounding of a double-double constant (relative): what is left of the constants' error. */
+const TINY_CONST = 4 * EPS * EPS;
+
+/**
+ * The verdict for factors within their quick tolerance: tolP and tolM are the rounding allowances of
+ * dPlus and dMinus, and any angle within half an ulp of theta2 counts (s^2 moves by
+ * k2 (|sin t2| h + h^2) over it, given here as k2Sin = k2 |sin t2| and k2).
+ */
+function limitVerdict(
+  dPlus: number,
+  dMinus: number,
+  tolP: number,
+  tolM: number,
+  k2Sin: number,
+  k2: number,
+  theta2: number,
+): Assembly {
+  const hu = halfUlp(theta2);
+  const exactBand = (k2Sin + k2 * hu) * hu;
+  const bandP = tolP + exactBand;
+  const bandM = tolM + exactBand;
+  if (dPlus < -bandP || dMinus < -bandM) return Assembly.Unreachable;
+  if (dPlus < bandP || dMinus < bandM) return Assembly.Limit;
+  return Assembly.Ok;
+}
+
 /**
  * Whether the loop closes at theta2 (radians), and the triangle (s, r3, r4) it closes with.
  * 16 area^2 = ((r3+r4)^2 - s^2)(s^2 - (r3-r4)^2) is formed factor by factor without
@@ -207,17 +233,19 @@ export function assemblyFactors(plan: ClosedFormPlan, theta2: number, f: Assembl
   const mTol = 8 * EPS * Math.abs(m);
   const h = EPS * Math.abs(theta2); // >= one ulp of theta2: a quick bound first
   const band = k2 * (Math.abs(sn) + h) * h;
-  const tolP = mTol + 4 * EPS * EPS * Math.abs(k[o]);
-  const tolM = mTol + 4 * EPS * EPS * Math.abs(k[o + 2]);
   let status: Assembly = Assembly.Ok;
-  if (dPlus < tolP + band || dMinus < tolM + band) {
-    const hu = halfUlp(theta2);
-    const exactBand = k2 * (Math.abs(sn) + hu) * hu;
-    const bandP = tolP + exactBand;
-    const bandM = tolM + exactBand;
-    if (dPlus < -bandP || dMinus < -bandM) return Assembly.Unreachable;
-    if (dPlus < bandP || dMinus < bandM) {
-      status = Assembly.Limit;
+  if (dPlus < mTol + band + TINY_CONST * Math.abs(k[o]) || dMinus < mTol + band + TINY_CONST * Math.abs(k[o + 2])) {
+    status = limitVerdict(
+      dPlus,
+      dMinus,
+      mTol + TINY_CONST * Math.abs(k[o]),
+      mTol + TINY_CONST * Math.abs(k[o + 2]),
+      k2 * Math.abs(sn),
+      k2,
+      theta2,
+    );
+    if (status === Assembly.Unreachable) return status;
+    if (status === Assembly.Limit) {
       if (dPlus < 0) dPlus = 0;
       if (dMinus < 0) dMinus = 0;
     }
