@@ -36,6 +36,19 @@ export const SINGULAR_SIN = 64 * EPS;
 export const MAX_STEP_RAD = 1;
 /** Below this step (radians) the NR core updates cos/sin by rotation instead of calling cos and sin. */
 const ROTATE_MAX_RAD = 1e-3;
+/** Newton steps longer than this (radians, per angle) get no second-order term: far from a root it does not help. */
+const CHEBYSHEV_MAX_RAD = 0.25;
+
+/**
+ * Whether a step of norm `step` left an error at the rounding level: about step^2 / |sin mu| after a
+ * Newton step (so step^2 <= eps |sin mu|), about step^3 / sin^2 mu after a second-order one (within
+ * a few eps: step^3 <= 16 eps sin^2 mu).
+ */
+function stepIsFinal(secondOrder: boolean, step: number, sinMu: number): boolean {
+  if (secondOrder) return step * step * step <= 16 * EPS * sinMu * sinMu;
+  return step * step <= EPS * Math.abs(sinMu);
+}
+
 /** Largest iteration cap solveNewton accepts. */
 const MAX_ITERATIONS_LIMIT = 100_000;
 
@@ -58,6 +71,12 @@ export interface NewtonSettings {
   polish: boolean;
   /** Residual floor of double precision for this problem (problem units). */
   floor: number;
+  /**
+   * Add Chebyshev's second-order term to each small Newton step (cubic convergence, one more 2x2
+   * solve with the same Jacobian, no extra evaluation). Continuation sweeps use it; solveNewton
+   * does not (it shows plain Newton-Raphson).
+   */
+  secondOrder: boolean;
 }
 
 /** Mutable NR state; the core reads the start from theta3/theta4 and leaves the answer there. */
@@ -163,14 +182,14 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     } else if (!polishing) {
       done = res <= s.tolAbs;
       if (done && s.polish) {
-        const negligible = res <= s.floor || lastStep * lastStep <= EPS * Math.abs(sinMu);
+        const negligible = res <= s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu);
         if (!negligible) {
           done = false;
           polishing = true;
         }
       }
     } else {
-      done = res <= s.floor || lastStep * lastStep <= EPS * Math.abs(sinMu) || polishSteps >= 3;
+      done = res <= s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu) || polishSteps >= 3;
     }
     if (done) {
       st.status = 'converged';
@@ -188,6 +207,16 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     // Cramer's rule on J d = -f.
     let d3 = (r4 * (f1 * c4 + f2 * s4)) / det;
     let d4 = (r3 * (f1 * c3 + f2 * s3)) / det;
+    if (s.secondOrder && Math.abs(d3) < CHEBYSHEV_MAX_RAD && Math.abs(d4) < CHEBYSHEV_MAX_RAD) {
+      // Chebyshev: x + d - J^-1 (f''(d, d) / 2), with f'' diagonal here: d^2 f / d t3^2 = -r3 (c3, s3),
+      // d^2 f / d t4^2 = r4 (c4, s4). The same Cramer solve as the Newton step.
+      const q3 = d3 * d3;
+      const q4 = d4 * d4;
+      const g1 = 0.5 * (r4 * c4 * q4 - r3 * c3 * q3);
+      const g2 = 0.5 * (r4 * s4 * q4 - r3 * s3 * q3);
+      d3 += (r4 * (g1 * c4 + g2 * s4)) / det;
+      d4 += (r3 * (g1 * c3 + g2 * s3)) / det;
+    }
     lastStep = Math.sqrt(d3 * d3 + d4 * d4);
     if (!s.seed && lastStep > MAX_STEP_RAD) {
       d3 *= MAX_STEP_RAD / lastStep;
@@ -258,6 +287,7 @@ export function newtonSettings(opts: NewtonOptions, total: number): NewtonSettin
     maxIterations,
     polish: !seed && opts.polish !== false,
     floor: EPS * total,
+    secondOrder: false,
   };
 }
 

@@ -286,6 +286,7 @@ function sweepNewton(
     { tol: opts.tol, polish: opts.polish, maxIterations: CONTINUATION_MAX_ITERATIONS },
     r1 + r2 + r3 + r4,
   );
+  settings.secondOrder = true;
   const factors = newAssemblyFactors();
   const cf = newClosedFormPoint();
   const st: NewtonState = newNewtonState();
