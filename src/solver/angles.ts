@@ -152,9 +152,10 @@ function inRange(r: number): Radians {
 /**
  * Wraps an angle in radians to (-pi, pi], exactly for every finite double (the result is within an
  * ulp of the true x - 2 pi k, by Cody-Waite reduction below 2^26 and Payne-Hanek style fixed-point
- * reduction above); -pi maps to pi. Non-finite input (no direction) gives NaN.
+ * reduction above); -pi maps to pi. Non-finite input (no direction) gives NaN; a non-number throws.
  */
 export function wrapAngle(rad: number): Radians {
+  if (typeof rad !== 'number') throw new Error(`wrapAngle needs a number of radians, got ${String(rad)}`);
   if (rad > -Math.PI && rad <= Math.PI) return rad;
   if (!(Math.abs(rad) < CODY_WAITE_MAX)) {
     if (!Number.isFinite(rad)) return NaN;
@@ -169,9 +170,12 @@ export function wrapAngle(rad: number): Radians {
 
 /**
  * Signed difference a - b wrapped to (-pi, pi], in radians: the exact difference is reduced (to within
- * an ulp), so huge or very unequal angles lose nothing. Non-finite input gives NaN.
+ * an ulp), so huge or very unequal angles lose nothing. Non-finite input gives NaN; a non-number throws.
  */
 export function angleDiff(a: number, b: number): Radians {
+  if (typeof a !== 'number' || typeof b !== 'number') {
+    throw new Error(`angleDiff needs two numbers of radians, got ${String(a)} and ${String(b)}`);
+  }
   const d = a - b;
   const bb = d - a;
   const err = a - (d - bb) + (-b - bb);

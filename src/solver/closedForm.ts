@@ -2,7 +2,7 @@ import { PI } from './angles';
 import { exactSumOfProducts, halfUlp, sumOfProducts } from './exact';
 import type { DD } from './exact';
 import type { Angles, Branch, Linkage } from './types';
-import { normalizeLinkage, validateLinkage } from './validate';
+import { checkFinite, describe, normalizeLinkage, validateLinkage } from './validate';
 
 // A module-local copy of the units module's pi, read per point: loaders that turn imports into
 // getters (vite-node) would otherwise call a getter on every read.
@@ -353,7 +353,7 @@ export function newClosedFormPoint(): ClosedFormPoint {
 export function branchSign(branch: Branch): number {
   if (branch === 'open') return 1;
   if (branch === 'crossed') return -1;
-  throw new Error(`branch must be 'open' or 'crossed', got ${JSON.stringify(branch)}`);
+  throw new Error(`branch must be 'open' or 'crossed', got ${describe(branch)}`);
 }
 
 /**
@@ -368,7 +368,7 @@ export function solveClosedForm(
   branch: Branch,
 ): (Angles & { limit: boolean; continuum: boolean }) | null {
   const plan = planClosedForm(l);
-  if (!Number.isFinite(theta2)) throw new Error(`theta2 must be a finite angle in radians, got ${theta2}`);
+  checkFinite('theta2', theta2, 'angle in radians');
   const p = newClosedFormPoint();
   const status = closedFormAt(plan, theta2, branchSign(branch), p);
   if (status === Assembly.Unreachable) return null;

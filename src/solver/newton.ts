@@ -275,7 +275,7 @@ export function newtonSettings(opts: NewtonOptions, total: number): NewtonSettin
   checkOptionalBoolean('log', opts.log);
   const seed = opts.seed === true;
   const tol = opts.tol ?? (seed ? SEED_TOLERANCE : DEFAULT_TOLERANCE);
-  const maxIterations = opts.maxIterations ?? SEED_MAX_ITERATIONS;
+  const maxIterations = opts.maxIterations === undefined ? SEED_MAX_ITERATIONS : opts.maxIterations;
   if (!Number.isInteger(maxIterations) || maxIterations < 0 || maxIterations > MAX_ITERATIONS_LIMIT) {
     throw new Error(
       `maxIterations must be an integer from 0 to ${MAX_ITERATIONS_LIMIT}, got ${describe(maxIterations)}`,

@@ -244,3 +244,34 @@ export function toDeg(x: number): number {
 export function exactToDeg(x: number): number {
   return exact(x).times(180).div(PI).toNumber();
 }
+
+/** Enough digits for any double's remainder modulo 2 pi (its integer part has up to 309 digits). */
+const WIDE = Decimal.clone({ precision: 420, rounding: Decimal.ROUND_HALF_EVEN, minE: -9e15, maxE: 9e15 });
+const WIDE_PI = WIDE.acos(-1);
+
+/** The exact value of a finite double at 420 digits (every double is exact there). */
+function wideExact(x: number): InstanceType<typeof WIDE> {
+  if (x === 0) return new WIDE(0);
+  const view = new DataView(new ArrayBuffer(8));
+  view.setFloat64(0, x);
+  const bits = view.getBigUint64(0);
+  const expBits = Number((bits >> 52n) & 0x7ffn);
+  const frac = bits & 0xfffffffffffffn;
+  const mantissa = expBits === 0 ? frac : frac | (1n << 52n);
+  const e = (expBits === 0 ? 1 : expBits) - 1075;
+  return new WIDE(mantissa.toString()).times(new WIDE(2).pow(e)).times(bits >> 63n ? -1 : 1);
+}
+
+/**
+ * The exact a - b (doubles taken as exact) reduced modulo 2 pi into (-pi, pi], rounded once to a
+ * double; b defaults to 0 (then it is the exact wrap of a). The double nearest to a value just above
+ * -pi is -fl(pi); reported here as it falls, the caller decides how to compare at the seam.
+ */
+export function referenceWrap(a: number, b = 0): number {
+  const x = wideExact(a).minus(wideExact(b));
+  const turn = WIDE_PI.times(2);
+  let r = x.minus(x.div(turn).round().times(turn));
+  if (r.lessThanOrEqualTo(WIDE_PI.neg())) r = r.plus(turn);
+  if (r.greaterThan(WIDE_PI)) r = r.minus(turn);
+  return r.toNumber();
+}

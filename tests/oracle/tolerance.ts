@@ -49,3 +49,30 @@ export function limitTolerance(l: LinkLengths, c: number): number {
   const dc = (EPS * (a * a + b * b + (c3 + c4) ** 2)) / (2 * a * b);
   return Math.max(BENIGN_TOL, (K * dc) / Math.sqrt(Math.max(0, 1 - c * c) + K * dc));
 }
+
+/** Unit roundoff of binary64, 2^-53. */
+export const U = 2 ** -53;
+
+/**
+ * The error bound of issue 7 for every full-precision method (rad): 1e-12 + 50 u (L / min(r3, r4)) / |sin mu|,
+ * with L the longest link and mu the transmission angle at the reference pose. The closed form meets it on
+ * over a million adversarial points; the NR continuation methods must meet it wherever the closed form does.
+ */
+export function errorBound(l: LinkLengths, pose: ReferencePose): number {
+  const lMax = Math.max(l.r1, l.r2, l.r3, l.r4);
+  return 1e-12 + (50 * U * (lMax / Math.min(l.r3, l.r4))) / Math.abs(pose.sinMu);
+}
+
+/**
+ * How far (length unit) the loop's slack may be from zero and still get either reachability verdict:
+ * 32 ulps of the longest link (rounding of cos and sin of theta2 and of m = 2 r1 r2 (1 - cos t2)) plus
+ * what moving theta2 within its rounding radius h does to s^2, 2 r1 r2 (|sin t2| + h) h, turned into a
+ * slack by dividing by s + |r3 - r4| (the smaller of the two factors' cofactors). Beyond it the verdict
+ * must follow the exact geometry.
+ */
+export function slackTolerance(l: LinkLengths, theta2: number, s: number): number {
+  const lMax = Math.max(l.r1, l.r2, l.r3, l.r4);
+  const h = Math.abs(theta2) * EPS * 0.5 + Number.MIN_VALUE; // >= half an ulp of theta2
+  const band = 2 * l.r1 * l.r2 * (Math.abs(Math.sin(theta2)) + h) * h;
+  return 32 * U * lMax + band / Math.max(s + Math.abs(l.r3 - l.r4), Number.MIN_VALUE);
+}
