@@ -2,7 +2,7 @@ import { PI } from './angles';
 import { exactSumOfProducts, halfUlp, sumOfProducts } from './exact';
 import type { DD } from './exact';
 import type { Angles, Branch, Linkage } from './types';
-import { checkFinite, describe, normalizeLinkage, validateLinkage } from './validate';
+import { checkFinite, describe, normalizeLinkage, scaleByPow2, validateLinkage } from './validate';
 
 // A module-local copy of the units module's pi, read per point: loaders that turn imports into
 // getters (vite-node) would otherwise call a getter on every read.
@@ -378,4 +378,101 @@ export function solveClosedForm(
     limit: status === Assembly.Limit,
     continuum: status === Assembly.Continuum,
   };
+}
+
+/** The arrays closedFormSweep fills, one entry per input angle. */
+export interface ClosedFormColumns {
+  theta2: Float64Array;
+  theta3: Float64Array;
+  theta4: Float64Array;
+  /** Loop-closure residual norm in the user's length unit. */
+  residual: Float64Array;
+  /** 0 ok, 1 unreachable, 2 singular (a continuum), as POINT_STATUSES. */
+  statusCodes: Uint8Array;
+}
+
+const fallbackPoint = newClosedFormPoint();
+
+/**
+ * closedFormAt over every theta2 (radians) on branch sigma, written into the columns (NaN angles and
+ * residual where the loop does not close). The common case (a reachable point clear of its limits,
+ * |A O4| not tiny) runs here inline, the same arithmetic as assemblyFactors and closedFormAt without
+ * their scratch objects; every other point goes through closedFormAt itself, so the limit verdict,
+ * the continuum and the tiny-s formulas live in one place. The result equals closedFormAt's bit for
+ * bit (tests/solver/closedForm.test.ts).
+ */
+export function closedFormSweep(
+  plan: ClosedFormPlan,
+  theta2s: ArrayLike<number>,
+  sigma: number,
+  out: ClosedFormColumns,
+): void {
+  const { r1, r2, k2, consts: k, unscale, exponent } = plan;
+  const d12hi = plan.d12.hi;
+  const d12lo = plan.d12.lo;
+  const { theta2: th2, theta3: th3, theta4: th4, residual: res, statusCodes: codes } = out;
+  const p = fallbackPoint;
+  for (let i = 0; i < theta2s.length; i++) {
+    const t2 = theta2s[i];
+    th2[i] = t2;
+    const c = Math.cos(t2);
+    const sn = Math.sin(t2);
+    let o: number;
+    let m: number;
+    let dx: number;
+    if (c > 0.5) {
+      const oneMinusC = (sn * sn) / (1 + c);
+      o = 0;
+      m = k2 * oneMinusC;
+      dx = d12hi + r2 * oneMinusC + d12lo;
+    } else if (c < -0.5) {
+      o = 16;
+      m = -k2 * ((sn * sn) / (1 - c));
+      dx = r1 - r2 * c;
+    } else {
+      o = 8;
+      m = -k2 * c;
+      dx = r1 - r2 * c;
+    }
+    const dy = -r2 * sn;
+    const dPlus = k[o] - m + k[o + 1];
+    const dMinus = k[o + 2] + m + k[o + 3];
+    const h = EPS * Math.abs(t2);
+    const quick = 8 * EPS * Math.abs(m) + k2 * (Math.abs(sn) + h) * h;
+    if (
+      dPlus < quick + TINY_CONST * Math.abs(k[o]) ||
+      dMinus < quick + TINY_CONST * Math.abs(k[o + 2]) ||
+      Math.abs(dx) + Math.abs(dy) < TINY_S
+    ) {
+      // Near a limit, past it, or the crank pin (almost) on O4: the careful path.
+      const a = closedFormAt(plan, t2, sigma, p);
+      if (a === Assembly.Unreachable || a === Assembly.Continuum) {
+        th3[i] = NaN;
+        th4[i] = NaN;
+        res[i] = NaN;
+        codes[i] = a === Assembly.Unreachable ? 1 : 2;
+        continue;
+      }
+      th3[i] = p.theta3;
+      th4[i] = p.theta4;
+      res[i] = unscale !== 0 ? p.residual * unscale : scaleByPow2(p.residual, exponent);
+      codes[i] = 0;
+      continue;
+    }
+    const x3 = k[o + 4] + m + k[o + 5];
+    const x4 = k[o + 6] + m + k[o + 7];
+    const y = sigma * Math.sqrt(dPlus) * Math.sqrt(dMinus);
+    const re3 = dx * x3 - dy * y;
+    const im3 = dx * y + dy * x3;
+    const re4 = -(dx * x4 + dy * y);
+    const im4 = dx * y - dy * x4;
+    th3[i] = wrapAtan2(im3, re3);
+    th4[i] = wrapAtan2(im4, re4);
+    const half = 0.5 / (dx * dx + dy * dy);
+    const f1 = r2 * c + re3 * half - re4 * half - r1;
+    const f2 = r2 * sn + im3 * half - im4 * half;
+    const rn = Math.sqrt(f1 * f1 + f2 * f2);
+    res[i] = unscale !== 0 ? rn * unscale : scaleByPow2(rn, exponent);
+    codes[i] = 0;
+  }
 }

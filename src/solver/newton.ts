@@ -123,7 +123,7 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
   let lastStep = Infinity;
   let polishing = false;
   let polishSteps = 0;
-  let prevResidual = Infinity;
+  let prevResidualSq = Infinity;
   // The point before a polish step, restored when the step does not lower the residual.
   let pt3 = 0,
     pt4 = 0,
@@ -147,10 +147,11 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     }
     const f1 = r2 * cos2 + r3 * c3 - r4 * c4 - r1;
     const f2 = r2 * sin2 + r3 * s3 - r4 * s4;
-    const res = Math.sqrt(f1 * f1 + f2 * f2);
+    // Squared norms in the tests (no square root per iteration); the root only for what is reported.
+    const resSq = f1 * f1 + f2 * f2;
     const sinMu = s3 * c4 - c3 * s4; // sin(theta3 - theta4)
     const det = r3 * r4 * sinMu;
-    if (polishing && !(res < prevResidual)) {
+    if (polishing && !(resSq < prevResidualSq)) {
       // The polish step did not help: we are at the rounding floor; keep the previous point.
       t3 = pt3;
       t4 = pt4;
@@ -159,7 +160,7 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
       st.cos4 = pc4;
       st.sin4 = ps4;
       st.detJ = pdet;
-      st.residual = prevResidual;
+      st.residual = Math.sqrt(prevResidualSq);
       st.iterations = k - 1;
       st.status = 'converged';
       if (log) log.pop();
@@ -170,43 +171,42 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     st.cos4 = c4;
     st.sin4 = s4;
     st.detJ = det;
-    st.residual = res;
     st.iterations = k;
     const row: IterationRecord | null = log
-      ? { iteration: k, theta3: wrapAngle(t3), theta4: wrapAngle(t4), f1, f2, residual: res, stepNorm: 0, detJ: det }
+      ? { iteration: k, theta3: wrapAngle(t3), theta4: wrapAngle(t4), f1, f2, residual: Math.sqrt(resSq), stepNorm: 0, detJ: det }
       : null;
     if (row) log!.push(row);
     let done: boolean;
     if (s.seed) {
       done = Math.abs(f1) < s.tolAbs && Math.abs(f2) < s.tolAbs;
     } else if (!polishing) {
-      done = res <= s.tolAbs;
+      done = resSq <= s.tolAbs * s.tolAbs;
       if (done && s.polish) {
-        const negligible = res <= s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu);
+        const negligible = resSq <= s.floor * s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu);
         if (!negligible) {
           done = false;
           polishing = true;
         }
       }
     } else {
-      done = res <= s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu) || polishSteps >= 3;
+      done = resSq <= s.floor * s.floor || stepIsFinal(s.secondOrder, lastStep, sinMu) || polishSteps >= 3;
     }
-    if (done) {
-      st.status = 'converged';
-      break;
-    }
-    if (k >= s.maxIterations) {
-      st.status = 'max-iterations';
+    if (done || k >= s.maxIterations) {
+      st.status = done ? 'converged' : 'max-iterations';
+      st.residual = Math.sqrt(resSq);
       break;
     }
     const singular = s.seed ? Math.abs(det) < SEED_SINGULAR_DET : Math.abs(sinMu) < SINGULAR_SIN || det === 0;
     if (singular) {
       st.status = 'singular';
+      st.residual = Math.sqrt(resSq);
       break;
     }
     // Cramer's rule on J d = -f.
-    let d3 = (r4 * (f1 * c4 + f2 * s4)) / det;
-    let d4 = (r3 * (f1 * c3 + f2 * s3)) / det;
+    // Cramer's rule; the project's NR multiplies by one reciprocal, seed mode divides as the report does.
+    const inv = 1 / det;
+    let d3 = s.seed ? (r4 * (f1 * c4 + f2 * s4)) / det : r4 * (f1 * c4 + f2 * s4) * inv;
+    let d4 = s.seed ? (r3 * (f1 * c3 + f2 * s3)) / det : r3 * (f1 * c3 + f2 * s3) * inv;
     if (s.secondOrder && Math.abs(d3) < CHEBYSHEV_MAX_RAD && Math.abs(d4) < CHEBYSHEV_MAX_RAD) {
       // Chebyshev: x + d - J^-1 (f''(d, d) / 2), with f'' diagonal here: d^2 f / d t3^2 = -r3 (c3, s3),
       // d^2 f / d t4^2 = r4 (c4, s4). The same Cramer solve as the Newton step.
@@ -214,8 +214,8 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
       const q4 = d4 * d4;
       const g1 = 0.5 * (r4 * c4 * q4 - r3 * c3 * q3);
       const g2 = 0.5 * (r4 * s4 * q4 - r3 * s3 * q3);
-      d3 += (r4 * (g1 * c4 + g2 * s4)) / det;
-      d4 += (r3 * (g1 * c3 + g2 * s3)) / det;
+      d3 += r4 * (g1 * c4 + g2 * s4) * inv;
+      d4 += r3 * (g1 * c3 + g2 * s3) * inv;
     }
     lastStep = Math.sqrt(d3 * d3 + d4 * d4);
     if (!s.seed && lastStep > MAX_STEP_RAD) {
@@ -233,7 +233,7 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
       pc4 = c4;
       ps4 = s4;
       pdet = det;
-      prevResidual = res;
+      prevResidualSq = resSq;
     }
     t3 += d3;
     t4 += d4;

@@ -4,6 +4,7 @@ import {
   assemblyFactors,
   branchSign,
   closedFormAt,
+  closedFormSweep,
   newAssemblyFactors,
   newClosedFormPoint,
   planClosedForm,
@@ -252,26 +253,6 @@ function reanchor(old: number, now: number): number {
   return d > HALF_TURN ? old + FULL_TURN : d < -HALF_TURN ? old - FULL_TURN : old;
 }
 
-/** Cubic Hermite extrapolation of y at x from (x0, y0, d0) and (x1, y1, d1); Euler when x0 is absent. */
-function predict(
-  x: number,
-  x1: number,
-  y1: number,
-  d1: number,
-  x0: number,
-  y0: number,
-  d0: number,
-  hermite: boolean,
-): number {
-  const h1 = x - x1;
-  if (!hermite) return y1 + d1 * h1;
-  const h = x1 - x0;
-  const t = (x - x0) / h;
-  const t2 = t * t;
-  const t3 = t2 * t;
-  return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * h * d0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * h * d1;
-}
-
 function sweepNewton(
   plan: ClosedFormPlan,
   theta2s: ArrayLike<number>,
@@ -332,8 +313,24 @@ function sweepNewton(
       let g3 = b3;
       let g4 = b4;
       if (usePredictor) {
-        const p3 = predict(t2, xb, b3, db3, xa, a3, da3, have > 1);
-        const p4 = predict(t2, xb, b4, db4, xa, a4, da4, have > 1);
+        // Cubic Hermite extrapolation through the last two points and their tangents (Euler after one).
+        let p3: number;
+        let p4: number;
+        if (have > 1) {
+          const h = xb - xa;
+          const t = (t2 - xa) / h;
+          const tt = t * t;
+          const ttt = tt * t;
+          const w0 = 2 * ttt - 3 * tt + 1;
+          const v0 = (ttt - 2 * tt + t) * h;
+          const w1 = 3 * tt - 2 * ttt;
+          const v1 = (ttt - tt) * h;
+          p3 = w0 * a3 + v0 * da3 + w1 * b3 + v1 * db3;
+          p4 = w0 * a4 + v0 * da4 + w1 * b4 + v1 * db4;
+        } else {
+          p3 = b3 + db3 * (t2 - xb);
+          p4 = b4 + db4 * (t2 - xb);
+        }
         if (Math.abs(p3 - b3) < MAX_PREDICTED_STEP && Math.abs(p4 - b4) < MAX_PREDICTED_STEP) {
           g3 = p3;
           g4 = p4;
@@ -384,9 +381,10 @@ function sweepNewton(
     // dt3/dt2 = r2 sin(t4 - t2) / (r3 sin(t3 - t4)), dt4/dt2 = r2 sin(t2 - t3) / (r4 sin(t4 - t3)).
     const c2 = factors.cos2;
     const s2 = factors.sin2;
+    const k34 = r2 / (s3 * c4 - c3 * s4); // r2 / sin(t3 - t4)
     const sin34 = s3 * c4 - c3 * s4;
-    const d3 = (r2 * (s4 * c2 - c4 * s2)) / (r3 * sin34);
-    const d4 = (r2 * (s2 * c3 - c2 * s3)) / (-r4 * sin34);
+    const d3 = (s4 * c2 - c4 * s2) * k34 * plan.inv3;
+    const d4 = -(s2 * c3 - c2 * s3) * k34 * plan.inv4;
     // Re-anchor: the previous point moves by the whole turns that reduce the new one.
     if (have > 0) {
       xa = xb;
@@ -436,7 +434,7 @@ export function sweep(l: Linkage, theta2s: ArrayLike<number>, opts: SweepOptions
   const r = new SweepArrays(theta2s.length);
   switch (method) {
     case 'closed-form':
-      sweepClosedForm(plan, theta2s, sigma, false, r);
+      closedFormSweep(plan, theta2s, sigma, r);
       break;
     case 'closed-form-polish':
       sweepClosedForm(plan, theta2s, sigma, true, r);
