@@ -18,6 +18,11 @@ const HALF_TURN = PI;
 
 const EPS = Number.EPSILON;
 
+// "The report" below is the project's seed report (position analysis by Newton-Raphson, summarised in
+// docs/hard-cases.md). Its Algorithm 1 is NR with Cramer's rule, stopping when |f1| and |f2| are both
+// below 1e-9 (absolute), as singular when |det J| < 1e-9, after at most 100 iterations; its Algorithm 2
+// sweeps theta2 over 0..360 deg starting each point from the previous solution.
+
 /** The report's Algorithm 1 constants: absolute tolerance on |f1| and |f2|, singular threshold on |det J|. */
 export const SEED_TOLERANCE = 1e-9;
 /** The report's singular threshold on |det J| (absolute). */

@@ -8,7 +8,7 @@
  * pin A, coupler pin B, rocker pivot O4 gives cos psi at A, the vector A -> O4 rotated by sigma psi
  * and scaled to r3 gives B, and both angles are read off B with atan2.
  *
- * Conventions (hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
+ * Conventions (docs/hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
  * sigma = +1 ("open") puts B left of the ray A -> O4, which gives sin(t4 - t3) > 0.
  */
 import Decimal from 'decimal.js';
@@ -179,7 +179,7 @@ export interface ReferenceLimits {
 }
 
 /**
- * Input-range limits (hard-cases.md "Classification"): s <= r3 + r4 iff cos t2 >= cU, s >= |r3 - r4|
+ * Input-range limits (docs/hard-cases.md "Classification"): s <= r3 + r4 iff cos t2 >= cU, s >= |r3 - r4|
  * iff cos t2 <= cL, so the reachable |t2| is [acos(min(cL, 1)), acos(max(cU, -1))] (empty if cU > cL
  * or the band misses [-1, 1]). Equivalent to the T1, T2, T3 tests of the table.
  */

@@ -1,5 +1,5 @@
 /**
- * Accuracy a backward-stable solver can reach, from hard-cases.md "Conditioning".
+ * Accuracy a backward-stable solver can reach, from docs/hard-cases.md "Conditioning".
  *
  * A backward-stable solve is exact for coordinates perturbed by about ea = 2 eps Lmax (A, B and O4 all
  * live at that scale). In the triangle A B O4 that moves the angle at A by about ea / (r3 |sin mu|) and
