@@ -76,7 +76,6 @@ function reference(l: Linkage, grid: Float64Array): Reference {
   return { open, crossed };
 }
 
-
 /** Timing passes per configuration; each config's time is the fastest of its pass medians (noise only adds). */
 const PASSES = 3;
 
@@ -214,7 +213,12 @@ function stressRows(): StressRow[] {
   const fromFold = new Float64Array(Math.floor((2 * lim) / deg) + 1).map((_, i) => lim - i * deg);
   return [
     ...stress(`${turns}-turn sweep, report 6-2-5-5, 1 deg`, { r1: 6, r2: 2, r3: 5, r4: 5 }, long, QUICK ? 10 : 20),
-    ...stress(`${turns}-turn sweep, drag link 1-2-sqrt(5.25)-1.5`, { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 }, long, QUICK ? 10 : 20),
+    ...stress(
+      `${turns}-turn sweep, drag link 1-2-sqrt(5.25)-1.5`,
+      { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
+      long,
+      QUICK ? 10 : 20,
+    ),
     ...stress('from the fold 135.95 deg, triple rocker 4-3-3.5-3', rocker, fromFold, 1),
   ];
 }
@@ -302,7 +306,9 @@ async function main(): Promise<void> {
     rows.push(...caseRows);
   }
   const report = CASES[0];
-  console.log('\n== Continuation stress (open branch): iterations per point and error against the oracle and the bound');
+  console.log(
+    '\n== Continuation stress (open branch): iterations per point and error against the oracle and the bound',
+  );
   const st = stressRows();
   printStress(st);
 
@@ -318,8 +324,12 @@ async function main(): Promise<void> {
     bundle.dispose();
   }
   const pass = (ok: boolean) => (ok ? 'PASS' : 'FAIL');
-  console.log(`\n== Targets on ${report.name} at 1 deg (361 points), medians of ${t.rounds} interleaved rounds, bundled`);
-  console.log(`lean report NR (the yardstick): ${t.usPerSweep.lean.toFixed(1)} us/sweep, ${t.itersPerPoint.lean.toFixed(2)} it/pt`);
+  console.log(
+    `\n== Targets on ${report.name} at 1 deg (361 points), medians of ${t.rounds} interleaved rounds, bundled`,
+  );
+  console.log(
+    `lean report NR (the yardstick): ${t.usPerSweep.lean.toFixed(1)} us/sweep, ${t.itersPerPoint.lean.toFixed(2)} it/pt`,
+  );
   console.log(
     `default sweep (closed form):    ${t.usPerSweep.default.toFixed(1)} us/sweep = ${t.overLean.default.toFixed(2)}x lean  (target <= 0.5x: ${pass(t.overLean.default <= 0.5)})`,
   );
@@ -333,7 +343,9 @@ async function main(): Promise<void> {
       t.itersPerPoint.newtonNoPredictor <= 2,
     )})`,
   );
-  console.log(`project's seed method:          ${t.usPerSweep.seed.toFixed(1)} us/sweep = ${t.overLean.seed.toFixed(2)}x lean`);
+  console.log(
+    `project's seed method:          ${t.usPerSweep.seed.toFixed(1)} us/sweep = ${t.overLean.seed.toFixed(2)}x lean`,
+  );
   console.log(`\n== ${sc.points} points over ten turns, best of ${sc.rounds} interleaved rounds (ns/point)`);
   for (const [m, ns] of Object.entries(sc.nsPerPoint)) console.log(`${m.padEnd(22)} ${ns.toFixed(0).padStart(6)}`);
   const fastest = Object.entries(sc.nsPerPoint).sort((a, b) => a[1] - b[1])[0][0];
@@ -372,7 +384,16 @@ async function main(): Promise<void> {
   writeFileSync(
     resolve(outDir, 'solver.json'),
     JSON.stringify(
-      { date: new Date().toISOString(), node: process.version, quick: QUICK, targets: t, scale: sc, memory: mem, stress: st, rows },
+      {
+        date: new Date().toISOString(),
+        node: process.version,
+        quick: QUICK,
+        targets: t,
+        scale: sc,
+        memory: mem,
+        stress: st,
+        rows,
+      },
       (_k, v) => (typeof v === 'number' && !Number.isFinite(v) ? null : v),
       2,
     ),

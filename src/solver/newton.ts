@@ -178,7 +178,16 @@ export function newtonCore(p: NewtonProblem, s: NewtonSettings, st: NewtonState,
     st.detJ = det;
     st.iterations = k;
     const row: IterationRecord | null = log
-      ? { iteration: k, theta3: wrapAngle(t3), theta4: wrapAngle(t4), f1, f2, residual: Math.sqrt(resSq), stepNorm: 0, detJ: det }
+      ? {
+          iteration: k,
+          theta3: wrapAngle(t3),
+          theta4: wrapAngle(t4),
+          f1,
+          f2,
+          residual: Math.sqrt(resSq),
+          stepNorm: 0,
+          detJ: det,
+        }
       : null;
     if (row) log!.push(row);
     let done: boolean;

@@ -30,7 +30,11 @@ function expectWrapped(got: number, ref: number, ctx: string): void {
 const anyDouble = fc.double({ noNaN: true, noDefaultInfinity: true });
 /** Near multiples of 2 pi and pi, where the reduction cancels most: k 2 pi + tiny, k up to 2^60. */
 const nearTurns = fc
-  .record({ k: fc.bigInt({ min: -(2n ** 60n), max: 2n ** 60n }), half: fc.boolean(), d: fc.double({ min: -1e-6, max: 1e-6, noNaN: true }) })
+  .record({
+    k: fc.bigInt({ min: -(2n ** 60n), max: 2n ** 60n }),
+    half: fc.boolean(),
+    d: fc.double({ min: -1e-6, max: 1e-6, noNaN: true }),
+  })
   .map(({ k, half, d }) => Number(k) * (half ? Math.PI : 2 * Math.PI) + d);
 
 describe('wrapAngle', () => {

@@ -94,11 +94,21 @@ describe('NR continuation sweeps', () => {
   it('stay within the bound from a change point, a parallelogram crossing or a kite fold, both ways', () => {
     const small = fc.integer({ min: 1, max: 12 });
     const changePoint = fc
-      .record({ a: small, b: small, c: small, order: fc.nat(23), kind: fc.constantFrom('any', 'parallelogram', 'kite') })
+      .record({
+        a: small,
+        b: small,
+        c: small,
+        order: fc.nat(23),
+        kind: fc.constantFrom('any', 'parallelogram', 'kite'),
+      })
       .map(({ a, b, c, order, kind }) => {
         // S + L = P + Q exactly: {a, b, c, a + b - c} in integers, or the two-pair families.
         const set =
-          kind === 'parallelogram' ? [a + 1, b, a + 1, b] : kind === 'kite' ? [a, a, b + 1, b + 1] : [a + 1, b + 1, c, a + b + 2 - c];
+          kind === 'parallelogram'
+            ? [a + 1, b, a + 1, b]
+            : kind === 'kite'
+              ? [a, a, b + 1, b + 1]
+              : [a + 1, b + 1, c, a + b + 2 - c];
         if (set.some((x) => x <= 0)) return null;
         const perm = permutation(order);
         const [r1, r2, r3, r4] = perm.map((k) => set[k]);
@@ -106,10 +116,17 @@ describe('NR continuation sweeps', () => {
       })
       .filter((x): x is Linkage => x !== null);
     fc.assert(
-      fc.property(changePoint, fc.constantFrom(0, Math.PI), fc.constantFrom(1, -1), fc.constantFrom(0.5, 1, 5), branchArb, (l, t0, dir, stepDeg, branch) => {
-        const t2s = Array.from({ length: 25 }, (_, i) => t0 + dir * i * stepDeg * DEG);
-        checkAll(l, t2s, branch, 'change-point start');
-      }),
+      fc.property(
+        changePoint,
+        fc.constantFrom(0, Math.PI),
+        fc.constantFrom(1, -1),
+        fc.constantFrom(0.5, 1, 5),
+        branchArb,
+        (l, t0, dir, stepDeg, branch) => {
+          const t2s = Array.from({ length: 25 }, (_, i) => t0 + dir * i * stepDeg * DEG);
+          checkAll(l, t2s, branch, 'change-point start');
+        },
+      ),
       { seed: 7002, numRuns: 30 },
     );
   });
@@ -129,7 +146,10 @@ describe('NR continuation sweeps', () => {
         for (let i = 0; i < n; i++) minSin = Math.min(minSin, Math.abs(Math.sin(cf.theta4[i] - cf.theta3[i])));
         for (const m of NR) {
           const r = sweep(l, grid, { branch, method: m });
-          expect(r.status.every((s) => s === 'ok'), `${m} at ${where(l, t0, branch)}`).toBe(true);
+          expect(
+            r.status.every((s) => s === 'ok'),
+            `${m} at ${where(l, t0, branch)}`,
+          ).toBe(true);
           if (minSin >= 0.2) {
             expect(r.totalIterations / n, `${m} iterations a point`).toBeLessThanOrEqual(m === 'newton' ? 1.2 : 2.05);
           }
@@ -148,8 +168,17 @@ describe('NR continuation sweeps', () => {
   it('follow the double crank (1, 2, sqrt(5.25), 1.5) from 130 000 rad as accurately as from 0', () => {
     const l = { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 };
     for (const branch of ['open', 'crossed'] as const) {
-      checkAll(l, Array.from({ length: 200 }, (_, i) => 130000 + i * DEG), branch, '130000 rad');
-      const far = sweep(l, Array.from({ length: 3601 }, (_, i) => i * 10 * DEG), { branch, method: 'newton' });
+      checkAll(
+        l,
+        Array.from({ length: 200 }, (_, i) => 130000 + i * DEG),
+        branch,
+        '130000 rad',
+      );
+      const far = sweep(
+        l,
+        Array.from({ length: 3601 }, (_, i) => i * 10 * DEG),
+        { branch, method: 'newton' },
+      );
       expect(far.totalIterations / 3601).toBeLessThanOrEqual(2.5);
     }
   });
@@ -158,7 +187,12 @@ describe('NR continuation sweeps', () => {
     const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
     const lim = classify(l).inputRange.intervals[0].hi;
     for (const branch of ['open', 'crossed'] as const) {
-      checkAll(l, Array.from({ length: 60 }, (_, i) => lim - i * DEG), branch, 'limit start');
+      checkAll(
+        l,
+        Array.from({ length: 60 }, (_, i) => lim - i * DEG),
+        branch,
+        'limit start',
+      );
     }
   });
 });

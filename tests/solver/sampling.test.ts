@@ -107,7 +107,9 @@ describe('adaptiveGrid', () => {
     const g = adaptiveGrid(TRIPLE_ROCKER, { pixels: 2000, startRad: 1000, endRad: 1100 });
     const hi = classify(TRIPLE_ROCKER).inputRange.intervals[0].hi;
     const turns = Math.floor((1100 - hi) / (2 * Math.PI)) - Math.ceil((1000 - hi) / (2 * Math.PI)) + 1;
-    const found = Array.from(g).filter((x) => Math.abs(x - hi - 2 * Math.PI * Math.round((x - hi) / (2 * Math.PI))) === 0);
+    const found = Array.from(g).filter(
+      (x) => Math.abs(x - hi - 2 * Math.PI * Math.round((x - hi) / (2 * Math.PI))) === 0,
+    );
     expect(turns).toBeGreaterThan(10);
     expect(found.length).toBeGreaterThanOrEqual(turns - 1);
   });
