@@ -65,14 +65,18 @@ export function errorBound(l: LinkLengths, pose: ReferencePose): number {
 
 /**
  * How far (length unit) the loop's slack may be from zero and still get either reachability verdict:
- * 32 ulps of the longest link (rounding of cos and sin of theta2 and of m = 2 r1 r2 (1 - cos t2)) plus
- * what moving theta2 within its rounding radius h does to s^2, 2 r1 r2 (|sin t2| + h) h, turned into a
- * slack by dividing by s + |r3 - r4| (the smaller of the two factors' cofactors). Beyond it the verdict
- * must follow the exact geometry.
+ * 4 ulps of the longest link, plus what the solver's own rounding of m = s^2 - (r1 - r2)^2 (8 eps |m|,
+ * doubled) and theta2's rounding radius h (s^2 moves by 2 r1 r2 (|sin t2| + h) h within it) do to
+ * s^2, turned into a slack by dividing by s + |r3 - r4| (the smaller cofactor of the two factors).
+ * m is 2 r1 r2 (1 - cos t2) near t2 = 0, -2 r1 r2 cos t2 in the middle, -2 r1 r2 (1 + cos t2) near pi.
+ * Beyond this the verdict must follow the exact geometry; within it, either verdict is right.
  */
 export function slackTolerance(l: LinkLengths, theta2: number, s: number): number {
   const lMax = Math.max(l.r1, l.r2, l.r3, l.r4);
+  const c = Math.cos(theta2);
+  const k2 = 2 * l.r1 * l.r2;
+  const m = k2 * (c > 0.5 ? 1 - c : c < -0.5 ? 1 + c : Math.abs(c));
   const h = Math.abs(theta2) * EPS * 0.5 + Number.MIN_VALUE; // >= half an ulp of theta2
-  const band = 2 * l.r1 * l.r2 * (Math.abs(Math.sin(theta2)) + h) * h;
-  return 32 * U * lMax + band / Math.max(s + Math.abs(l.r3 - l.r4), Number.MIN_VALUE);
+  const s2Error = 16 * EPS * m + k2 * (Math.abs(Math.sin(theta2)) + h) * h;
+  return 4 * U * lMax + s2Error / Math.max(s + Math.abs(l.r3 - l.r4), Number.MIN_VALUE);
 }

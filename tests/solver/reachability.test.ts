@@ -174,6 +174,22 @@ describe('the reachability verdict', () => {
     );
   });
 
+  it('rounds ill-conditioned limits inward (near 0 and 180 deg, a coupler of 1e-9): sweep reaches every endpoint', () => {
+    const cases: Linkage[] = [];
+    for (let k = 1; k <= 30; k++) {
+      cases.push({ r1: 4, r2: 1, r3: 3, r4: 2 - k * 1e-12 }); // hard case 6: limit near 180 deg
+      cases.push({ r1: 1, r2: 1, r3: k * 1e-9, r4: 1 }); // hard case 20: a window 1.3e-7 rad wide
+      cases.push({ r1: 6 + k * 1e-14, r2: 1, r3: 2, r4: 3 }); // just past flat: cannot assemble, empty range
+      cases.push({ r1: 6 - k * 1e-14, r2: 1, r3: 2, r4: 3 }); // nearly flat, a window of 1e-7 rad around 0
+    }
+    for (const l of cases) {
+      for (const { lo, hi } of inputRange(l).intervals) {
+        expect(sweepReaches(l, lo), `lo ${lo} of ${where(l, lo, '-')}`).toBe(true);
+        expect(sweepReaches(l, hi), `hi ${hi} of ${where(l, hi, '-')}`).toBe(true);
+      }
+    }
+  });
+
   it('keeps hard case 13: fl(pi/2) reachable, the next double up not (0.86 ulp of slack)', () => {
     const l = { r1: 4, r2: 3, r3: 2.5, r4: 2.5 };
     expect(sweepReaches(l, Math.PI / 2)).toBe(true);
