@@ -183,6 +183,17 @@ describe('NR continuation sweeps', () => {
     }
   });
 
+  it('keep a double crank within the bound after 130 000 rad of travel (20 700 turns), at about 1 iteration a point', () => {
+    const l = { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 };
+    const n = 745_000; // 10 deg steps
+    const grid = new Float64Array(n).map((_, i) => i * 10 * DEG);
+    for (const m of NR) {
+      const r = sweep(l, grid, { branch: 'open', method: m });
+      expect(r.totalIterations / n, `${m} iterations a point`).toBeLessThanOrEqual(m === 'newton' ? 2.5 : 3.5);
+      for (let i = n - 30; i < n; i++) expectClose(l, grid[i], 'open', r.theta3[i], r.theta4[i], `${m} point ${i}`);
+    }
+  });
+
   it('start at the triple rocker 4-3-3.5-3 limit (hard case 10) and leave it at 1 deg steps within the bound', () => {
     const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
     const lim = classify(l).inputRange.intervals[0].hi;
