@@ -182,6 +182,16 @@ describe('the reachability verdict', () => {
       cases.push({ r1: 6 + k * 1e-14, r2: 1, r3: 2, r4: 3 }); // just past flat: cannot assemble, empty range
       cases.push({ r1: 6 - k * 1e-14, r2: 1, r3: 2, r4: 3 }); // nearly flat, a window of 1e-7 rad around 0
     }
+    // Near change points where the limit formula's own endpoint lies just outside (found by search).
+    cases.push(
+      { r1: 0.05788681828602587, r2: 0.06974167262634373, r3: 12.95727278095509, r4: 12.945417926614763 },
+      { r1: 0.04706149133153012, r2: 0.04406964863120612, r3: 1.3574086296264811, r4: 1.3604004723268053 },
+      { r1: 0.22901182983343774, r2: 0.14014681345413144, r3: 0.09228500999607983, r4: 0.18115002637538624 },
+      { r1: 17.224350841320565, r2: 17.22330480749232, r3: 0.038759140504729256, r4: 0.037713106676483456 },
+      { r1: 8.041871372842346, r2: 0.5770507606924712, r3: 8.35278596340239, r4: 0.266136170132431 },
+      { r1: 25.007641182081695, r2: 24.951620123654013, r3: 0.1814051396963845, r4: 0.12538408126868278 },
+      { r1: 4.2061172004974, r2: 4.764288651113628, r3: 0.7156278175206119, r4: 0.15745636690438322 },
+    );
     for (const l of cases) {
       for (const { lo, hi } of inputRange(l).intervals) {
         expect(sweepReaches(l, lo), `lo ${lo} of ${where(l, lo, '-')}`).toBe(true);
