@@ -212,7 +212,7 @@ function stressRows(): StressRow[] {
   const lim = classify(rocker).inputRange.intervals[0].hi;
   const fromFold = new Float64Array(Math.floor((2 * lim) / deg) + 1).map((_, i) => lim - i * deg);
   return [
-    ...stress(`${turns}-turn sweep, report 6-2-5-5, 1 deg`, { r1: 6, r2: 2, r3: 5, r4: 5 }, long, QUICK ? 10 : 20),
+    ...stress(`${turns}-turn sweep, report 6-2-5-5, 1 deg`, { r1: 6, r2: 2, r3: 5, r4: 5 }, long, QUICK ? 10 : 40),
     ...stress(
       `${turns}-turn sweep, drag link 1-2-sqrt(5.25)-1.5`,
       { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
