@@ -109,13 +109,6 @@ export function exactSumOfProducts(terms: ReadonlyArray<number | readonly [numbe
   return { hi, lo };
 }
 
-/** Exact sign (-1, 0 or 1) of a sum of doubles. */
-export function exactSign(terms: readonly number[]): number {
-  let acc = 0n;
-  for (const t of terms) acc += toScaledBigInt(t, 0n);
-  return acc > 0n ? 1 : acc < 0n ? -1 : 0;
-}
-
 /** Half the spacing of the doubles at x (the rounding radius of x), exactly; finite x. */
 export function halfUlp(x: number): number {
   exactView.setFloat64(0, x);

@@ -1,5 +1,5 @@
 import type { Angles, Linkage } from './types';
-import { checkAngles, checkFinite, validateLinkage } from './validate';
+import { checkNumber, checkObject, validateLinkage } from './validate';
 
 /** A point in the linkage's length unit. */
 export interface Point {
@@ -15,14 +15,25 @@ export interface Joints {
   O4: Point;
 }
 
-/** Throws unless l is a linkage, theta2 finite and a has finite theta3, theta4. */
+// The kinematics functions take a pose that may be missing: a NaN angle (a point the solver did not
+// solve) gives NaN coordinates and ratios, which callers read as "no pose". Anything that is not a
+// number, or a linkage that is not four positive lengths, throws.
+
+/** Throws unless l is a linkage, theta2 a number and a an object with numeric theta3, theta4. */
 function checkPose(l: Linkage, theta2: number, a: Angles): void {
   validateLinkage(l);
-  checkFinite('theta2', theta2, 'angle in radians');
-  checkAngles('angles', a);
+  checkNumber('theta2', theta2);
+  checkAngleObject(a);
 }
 
-/** Joint positions (length unit) for theta2 and the solved angles (radians). Throws an Error naming a bad argument. */
+/** Throws unless a is an object with numeric theta3 and theta4. */
+function checkAngleObject(a: Angles): void {
+  checkObject('angles', a);
+  checkNumber('angles.theta3', a.theta3);
+  checkNumber('angles.theta4', a.theta4);
+}
+
+/** Joint positions (length unit) for theta2 and the solved angles (radians); NaN angles give NaN points. Throws an Error naming a bad argument. */
 export function jointPositions(l: Linkage, theta2: number, a: Angles): Joints {
   checkPose(l, theta2, a);
   const A = { x: l.r2 * Math.cos(theta2), y: l.r2 * Math.sin(theta2) };
@@ -32,22 +43,23 @@ export function jointPositions(l: Linkage, theta2: number, a: Angles): Joints {
 
 /**
  * Coupler point P at distance pDist (length unit, finite, any sign) from A, at angle pAngle (radians)
- * measured from the coupler line AB, counter-clockwise. Throws an Error naming a bad argument.
+ * measured from the coupler line AB, counter-clockwise; a NaN argument gives a NaN point. Throws an Error
+ * naming a bad argument (a linkage that is not four positive lengths, or a non-number).
  */
 export function couplerPoint(l: Linkage, theta2: number, theta3: number, pDist: number, pAngle: number): Point {
   validateLinkage(l);
-  checkFinite('theta2', theta2, 'angle in radians');
-  checkFinite('theta3', theta3, 'angle in radians');
-  checkFinite('pDist', pDist, 'length');
-  checkFinite('pAngle', pAngle, 'angle in radians');
+  checkNumber('theta2', theta2);
+  checkNumber('theta3', theta3);
+  checkNumber('pDist', pDist);
+  checkNumber('pAngle', pAngle);
   const ax = l.r2 * Math.cos(theta2);
   const ay = l.r2 * Math.sin(theta2);
   return { x: ax + pDist * Math.cos(theta3 + pAngle), y: ay + pDist * Math.sin(theta3 + pAngle) };
 }
 
-/** Transmission angle mu in radians, in [0, pi]: the angle between coupler and rocker at B. Throws for non-finite angles. */
+/** Transmission angle mu in radians, in [0, pi]: the angle between coupler and rocker at B (NaN for NaN angles). Throws for non-numbers. */
 export function transmissionAngle(a: Angles): number {
-  checkAngles('angles', a);
+  checkAngleObject(a);
   return Math.abs(Math.atan2(Math.sin(a.theta4 - a.theta3), Math.cos(a.theta4 - a.theta3)));
 }
 

@@ -64,6 +64,11 @@ export function checkAngles(name: string, a: unknown): void {
   checkFinite(`${name}.theta4`, a.theta4, 'angle in radians');
 }
 
+/** Throws unless v is a number (NaN and infinities allowed: they mean "no value" and propagate). */
+export function checkNumber(name: string, v: unknown): asserts v is number {
+  if (typeof v !== 'number') throw new Error(`${name} must be a number, got ${describe(v)}`);
+}
+
 /** Multiplies x by 2^k exactly (k may exceed the exponent range of a single power of two). */
 export function scaleByPow2(x: number, k: number): number {
   let y = x;
