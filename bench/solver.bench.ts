@@ -1,7 +1,11 @@
 /**
- * Solver benchmark: speed against error. Prints a work-precision table and writes
- * bench/results/solver.json and bench/results/work-precision.svg.
- * Error is measured against the tests' 60-digit decimal.js oracle (tests/oracle/reference.ts).
+ * Solver benchmark: speed against error. Prints a work-precision table, the continuation stress rows
+ * (a 100-turn sweep and a sweep starting at a fold: iterations per point, max error, error / bound),
+ * the 361-point targets against a lean implementation of the report's algorithm (bench/leanReport.ts)
+ * and the 10-million-point time and memory per method, and writes bench/results/solver.json,
+ * solver-table.md and work-precision.svg. Error is measured against the tests' 60-digit decimal.js
+ * oracle (tests/oracle/reference.ts). The targets and the large sweeps run bundled in a child node
+ * process (bench/nodeBundle.ts, bench/nodeChild.ts), as the app ships the solver.
  * Run: npm run bench   (BENCH_QUICK=1 for a shorter run)
  */
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -11,7 +15,10 @@ import { LAB_TOLERANCES } from '../src/lab/options';
 import { medianTime, scoreSweep } from '../src/lab/workPrecision';
 import { sweep, theta2Grid } from '../src/solver';
 import type { Linkage, SweepMethod } from '../src/solver';
-import { referenceAngles } from '../tests/oracle/reference';
+import { classify } from '../src/solver';
+import { angleDiff, referenceAngles } from '../tests/oracle/reference';
+import { errorBound } from '../tests/oracle/tolerance';
+import { bundleForNode, runBundle } from './nodeBundle';
 import { workPrecisionSvg } from './workPrecisionSvg';
 
 const here = dirname(fileURLToPath(import.meta.url));
@@ -67,12 +74,6 @@ function reference(l: Linkage, grid: Float64Array): Reference {
     crossed.push(referenceAngles(l, t2, -1));
   }
   return { open, crossed };
-}
-
-function median(xs: number[]): number {
-  const s = [...xs].sort((a, b) => a - b);
-  const n = s.length;
-  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
 }
 
 /** Timing passes per configuration; each config's time is the fastest of its pass medians (noise only adds). */
@@ -131,45 +132,110 @@ function printRows(rows: Row[]): void {
   }
 }
 
-/** Side-by-side target check: alternate the three sweeps in rounds so drift hits all alike. */
-function targets(l: Linkage, grid: Float64Array) {
-  const runs = {
-    seed: () => sweep(l, grid, { branch: 'open', method: 'seed' }),
-    default: () => sweep(l, grid, { branch: 'open' }),
-    newton: () => sweep(l, grid, { branch: 'open', method: 'newton' }),
-  };
-  const times: Record<keyof typeof runs, number[]> = { seed: [], default: [], newton: [] };
-  for (let round = 0; round < (QUICK ? 60 : 300); round++) {
-    for (const k of Object.keys(runs) as Array<keyof typeof runs>) {
-      const t0 = performance.now();
-      runs[k]();
-      times[k].push(performance.now() - t0);
-    }
-  }
-  const seedMs = median(times.seed.slice(10));
-  const defaultMs = median(times.default.slice(10));
-  const newtonMs = median(times.newton.slice(10));
-  const newtonIters = runs.newton().totalIterations / grid.length;
-  const seedIters = runs.seed().totalIterations / grid.length;
-  return {
-    points: grid.length,
-    seedUsPerSweep: seedMs * 1000,
-    defaultUsPerSweep: defaultMs * 1000,
-    newtonUsPerSweep: newtonMs * 1000,
-    seedItersPerPoint: seedIters,
-    newtonItersPerPoint: newtonIters,
-    defaultOverSeed: defaultMs / seedMs,
-    newtonOverSeed: newtonMs / seedMs,
-    pass: {
-      defaultAtMostHalfOfSeed: defaultMs / seedMs <= 0.5,
-      newtonAtMost2ItersPerPoint: newtonIters <= 2.0,
-      newtonAtMostSeedTime: newtonMs / seedMs <= 1.0,
-    },
-  };
+interface Targets {
+  points: number;
+  rounds: number;
+  usPerSweep: Record<'lean' | 'seed' | 'default' | 'newton' | 'newtonNoPredictor' | 'closedFormPolish', number>;
+  overLean: Targets['usPerSweep'];
+  itersPerPoint: { lean: number; seed: number; newton: number; newtonNoPredictor: number };
 }
 
-/** The README's table: every case at 1 deg, default settings, plus the target line. */
-function markdownTable(rows: Row[], t: ReturnType<typeof targets>): string {
+interface Scale {
+  points: number;
+  rounds: number;
+  nsPerPoint: Record<SweepMethod, number>;
+}
+
+interface Memory {
+  method: SweepMethod;
+  points: number;
+  before: number;
+  afterSweep: number;
+  afterStatus: number;
+}
+
+interface StressRow {
+  sweep: string;
+  method: SweepMethod;
+  points: number;
+  checked: number;
+  itersPerPoint: number;
+  maxError: number;
+  maxOverBound: number;
+  notOk: number;
+}
+
+/**
+ * Continuation stress: each method on a long sweep, error against the oracle on every `every`-th point
+ * (and every point of the last turn), as the max angle error and the max of error / errorBound.
+ */
+function stress(name: string, l: Linkage, grid: Float64Array, every: number): StressRow[] {
+  const idx: number[] = [];
+  for (let i = 0; i < grid.length; i += every) idx.push(i);
+  for (let i = Math.max(0, grid.length - 360); i < grid.length; i++) if (i % every) idx.push(i);
+  const refs = idx.map((i) => referenceAngles(l, grid[i], 1));
+  const methods: SweepMethod[] = ['closed-form', 'newton', 'newton-no-predictor', 'seed'];
+  return methods.map((method) => {
+    const r = sweep(l, grid, { branch: 'open', method });
+    let maxError = 0;
+    let maxOverBound = 0;
+    let notOk = 0;
+    idx.forEach((i, k) => {
+      const ref = refs[k];
+      if (!ref) return;
+      if (r.statusCodes[i] !== 0) {
+        notOk++;
+        return;
+      }
+      const e = Math.max(Math.abs(angleDiff(r.theta3[i], ref.theta3)), Math.abs(angleDiff(r.theta4[i], ref.theta4)));
+      maxError = Math.max(maxError, e);
+      maxOverBound = Math.max(maxOverBound, e / errorBound(l, ref));
+    });
+    return {
+      sweep: name,
+      method,
+      points: grid.length,
+      checked: idx.length,
+      itersPerPoint: r.totalIterations / grid.length,
+      maxError,
+      maxOverBound,
+      notOk,
+    };
+  });
+}
+
+function stressRows(): StressRow[] {
+  const deg = Math.PI / 180;
+  const turns = QUICK ? 10 : 100;
+  const long = new Float64Array(360 * turns + 1).map((_, i) => i * deg);
+  const rocker = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
+  const lim = classify(rocker).inputRange.intervals[0].hi;
+  const fromFold = new Float64Array(Math.floor((2 * lim) / deg) + 1).map((_, i) => lim - i * deg);
+  return [
+    ...stress(`${turns}-turn sweep, report 6-2-5-5, 1 deg`, { r1: 6, r2: 2, r3: 5, r4: 5 }, long, QUICK ? 10 : 40),
+    ...stress(
+      `${turns}-turn sweep, drag link 1-2-sqrt(5.25)-1.5`,
+      { r1: 1, r2: 2, r3: Math.sqrt(5.25), r4: 1.5 },
+      long,
+      QUICK ? 10 : 20,
+    ),
+    ...stress('from the fold 135.95 deg, triple rocker 4-3-3.5-3', rocker, fromFold, 1),
+  ];
+}
+
+function printStress(rows: StressRow[]): void {
+  console.log(
+    `${'sweep'.padEnd(52)} ${'method'.padEnd(20)} ${'points'.padStart(7)} ${'it/pt'.padStart(6)} ${'max err'.padStart(8)} ${'err/bound'.padStart(9)}  not ok`,
+  );
+  for (const r of rows) {
+    console.log(
+      `${r.sweep.padEnd(52)} ${r.method.padEnd(20)} ${String(r.points).padStart(7)} ${r.itersPerPoint.toFixed(2).padStart(6)} ${fmtE(r.maxError).padStart(8)} ${fmtE(r.maxOverBound).padStart(9)}  ${String(r.notOk).padStart(6)}`,
+    );
+  }
+}
+
+/** The README's tables: every case at 1 deg, default settings; the stress rows; targets and scale. */
+function markdownTable(rows: Row[], st: StressRow[], t: Targets, sc: Scale, mem: Memory): string {
   const e = (x: number) => (Number.isNaN(x) ? '-' : x.toExponential(1));
   const lines = [
     '| case | method | ns/point | iterations/point | max error (rad) | p99 error (rad) | failed | wrong branch | false conv. |',
@@ -182,14 +248,36 @@ function markdownTable(rows: Row[], t: ReturnType<typeof targets>): string {
   }
   lines.push(
     '',
-    `Targets (report's case, 1 deg, 361 points, interleaved medians in one process): seed NR ${t.seedUsPerSweep.toFixed(1)} us/sweep at ${t.seedItersPerPoint.toFixed(2)} it/pt; ` +
-      `default sweep ${t.defaultUsPerSweep.toFixed(1)} us = ${t.defaultOverSeed.toFixed(2)}x seed (target <= 0.5x); ` +
-      `NR continuation ${t.newtonUsPerSweep.toFixed(1)} us = ${t.newtonOverSeed.toFixed(2)}x seed (target <= 1.0x) at ${t.newtonItersPerPoint.toFixed(2)} it/pt (target <= 2.0).`,
+    '| continuation stress (open branch) | method | points | iterations/point | max error (rad) | max error / bound | not ok |',
+    '|---|---|---:|---:|---:|---:|---:|',
+  );
+  for (const r of st) {
+    lines.push(
+      `| ${r.sweep} | ${r.method} | ${r.points} | ${r.itersPerPoint.toFixed(2)} | ${e(r.maxError)} | ${e(r.maxOverBound)} | ${r.notOk} |`,
+    );
+  }
+  const u = t.usPerSweep;
+  const o = t.overLean;
+  lines.push(
+    '',
+    `Targets (report's case, 1 deg, 361 points, medians of ${t.rounds} interleaved rounds in one bundled node process): ` +
+      `lean report NR ${u.lean.toFixed(1)} us/sweep at ${t.itersPerPoint.lean.toFixed(2)} it/pt; ` +
+      `default sweep (closed form) ${u.default.toFixed(1)} us = ${o.default.toFixed(2)}x lean (target <= 0.5x); ` +
+      `NR continuation ${u.newton.toFixed(1)} us = ${o.newton.toFixed(2)}x lean (target <= 1.0x) at ${t.itersPerPoint.newton.toFixed(2)} it/pt; ` +
+      `NR without predictor ${o.newtonNoPredictor.toFixed(2)}x at ${t.itersPerPoint.newtonNoPredictor.toFixed(2)} it/pt; ` +
+      `the project's seed method ${o.seed.toFixed(2)}x.`,
+    '',
+    `Scale (${sc.points.toExponential(0)} points over ten turns, best of ${sc.rounds} interleaved rounds, ns/point): ` +
+      Object.entries(sc.nsPerPoint)
+        .map(([m, ns]) => `${m} ${ns.toFixed(0)}`)
+        .join(', ') +
+      `. Peak resident memory of a ${mem.points.toExponential(0)}-point ${mem.method} sweep: ${mem.before.toFixed(0)} MiB before (grid), ` +
+      `${mem.afterSweep.toFixed(0)} MiB after, ${mem.afterStatus.toFixed(0)} MiB once the string \`status\` array is read.`,
   );
   return lines.join('\n') + '\n';
 }
 
-function main(): void {
+async function main(): Promise<void> {
   const rows: Row[] = [];
   const t0 = performance.now();
   for (const c of QUICK ? CASES.slice(0, 1) : CASES) {
@@ -218,20 +306,52 @@ function main(): void {
     rows.push(...caseRows);
   }
   const report = CASES[0];
-  const t = targets(report.linkage, theta2Grid(0, 360, 1));
-  console.log(`\n== Targets on ${report.name} at 1 deg (361 points), medians of interleaved runs in one process`);
   console.log(
-    `seed NR (report's Algorithm 2): ${t.seedUsPerSweep.toFixed(1)} us/sweep, ${t.seedItersPerPoint.toFixed(2)} it/pt`,
+    '\n== Continuation stress (open branch): iterations per point and error against the oracle and the bound',
+  );
+  const st = stressRows();
+  printStress(st);
+
+  const bundle = await bundleForNode(resolve(here, 'nodeChild.ts'));
+  let t: Targets;
+  let sc: Scale;
+  let mem: Memory;
+  try {
+    t = runBundle<Targets>(bundle, ['targets', String(QUICK ? 100 : 400)]);
+    sc = runBundle<Scale>(bundle, ['scale', String(QUICK ? 1e6 : 1e7), String(QUICK ? 1 : 2)]);
+    mem = runBundle<Memory>(bundle, ['memory', 'closed-form', String(QUICK ? 1e6 : 1e7)]);
+  } finally {
+    bundle.dispose();
+  }
+  const pass = (ok: boolean) => (ok ? 'PASS' : 'FAIL');
+  console.log(
+    `\n== Targets on ${report.name} at 1 deg (361 points), medians of ${t.rounds} interleaved rounds, bundled`,
   );
   console.log(
-    `default sweep (closed form):    ${t.defaultUsPerSweep.toFixed(1)} us/sweep = ${t.defaultOverSeed.toFixed(2)}x seed  (target <= 0.5x: ${
-      t.pass.defaultAtMostHalfOfSeed ? 'PASS' : 'FAIL'
-    })`,
+    `lean report NR (the yardstick): ${t.usPerSweep.lean.toFixed(1)} us/sweep, ${t.itersPerPoint.lean.toFixed(2)} it/pt`,
   );
   console.log(
-    `NR continuation (default NR):   ${t.newtonUsPerSweep.toFixed(1)} us/sweep = ${t.newtonOverSeed.toFixed(2)}x seed  (target <= 1.0x: ${
-      t.pass.newtonAtMostSeedTime ? 'PASS' : 'FAIL'
-    }), ${t.newtonItersPerPoint.toFixed(2)} it/pt (target <= 2.0: ${t.pass.newtonAtMost2ItersPerPoint ? 'PASS' : 'FAIL'})`,
+    `default sweep (closed form):    ${t.usPerSweep.default.toFixed(1)} us/sweep = ${t.overLean.default.toFixed(2)}x lean  (target <= 0.5x: ${pass(t.overLean.default <= 0.5)})`,
+  );
+  console.log(
+    `NR continuation ('newton'):     ${t.usPerSweep.newton.toFixed(1)} us/sweep = ${t.overLean.newton.toFixed(2)}x lean  (target <= 1.0x: ${pass(
+      t.overLean.newton <= 1,
+    )}), ${t.itersPerPoint.newton.toFixed(2)} it/pt (target <= 2.0: ${pass(t.itersPerPoint.newton <= 2)})`,
+  );
+  console.log(
+    `NR without predictor:           ${t.usPerSweep.newtonNoPredictor.toFixed(1)} us/sweep = ${t.overLean.newtonNoPredictor.toFixed(2)}x lean, ${t.itersPerPoint.newtonNoPredictor.toFixed(2)} it/pt (target <= 2.0: ${pass(
+      t.itersPerPoint.newtonNoPredictor <= 2,
+    )})`,
+  );
+  console.log(
+    `project's seed method:          ${t.usPerSweep.seed.toFixed(1)} us/sweep = ${t.overLean.seed.toFixed(2)}x lean`,
+  );
+  console.log(`\n== ${sc.points} points over ten turns, best of ${sc.rounds} interleaved rounds (ns/point)`);
+  for (const [m, ns] of Object.entries(sc.nsPerPoint)) console.log(`${m.padEnd(22)} ${ns.toFixed(0).padStart(6)}`);
+  const fastest = Object.entries(sc.nsPerPoint).sort((a, b) => a[1] - b[1])[0][0];
+  console.log(`fastest: ${fastest} (target: closed-form: ${pass(fastest === 'closed-form')})`);
+  console.log(
+    `peak resident memory, ${mem.points}-point ${mem.method} sweep: ${mem.before.toFixed(0)} MiB before, ${mem.afterSweep.toFixed(0)} MiB after, ${mem.afterStatus.toFixed(0)} MiB after reading status`,
   );
 
   const colors: Record<string, string> = {
@@ -264,15 +384,24 @@ function main(): void {
   writeFileSync(
     resolve(outDir, 'solver.json'),
     JSON.stringify(
-      { date: new Date().toISOString(), node: process.version, quick: QUICK, targets: t, rows },
+      {
+        date: new Date().toISOString(),
+        node: process.version,
+        quick: QUICK,
+        targets: t,
+        scale: sc,
+        memory: mem,
+        stress: st,
+        rows,
+      },
       (_k, v) => (typeof v === 'number' && !Number.isFinite(v) ? null : v),
       2,
     ),
   );
-  writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, t));
+  writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, st, t, sc, mem));
   console.log(
     `\nwrote bench/results/solver.json, solver-table.md and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`,
   );
 }
 
-main();
+await main();

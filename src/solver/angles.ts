@@ -45,20 +45,148 @@ export function degPerSToRadPerS(degPerS: number): number {
   return degPerS * RAD_PER_DEG;
 }
 
-/** Wraps an angle in radians to (-pi, pi]; non-finite input is returned unchanged. */
-export function wrapAngle(rad: number): Radians {
-  if (rad > -Math.PI && rad <= Math.PI) return rad;
-  if (!Number.isFinite(rad)) return rad;
-  let w = rad - TWO_PI * Math.floor((rad + Math.PI) / TWO_PI);
-  // floor can land one ulp off the half-open interval.
-  if (w <= -Math.PI) w += TWO_PI;
-  if (w > Math.PI) w -= TWO_PI;
-  return w;
+/** 2 pi as an unevaluated sum of three doubles (hi + mid + lo, about 160 bits), for Cody-Waite reduction. */
+const TWO_PI_MID = 2.4492935982947064e-16;
+const TWO_PI_LO = -5.989539619436679e-33;
+/** Below this |x| the three-double reduction is exact to rounding (k * hi and k * mid are exact products). */
+const CODY_WAITE_MAX = 2 ** 26;
+/** Dekker's splitting constant for binary64. */
+const SPLITTER = 134217729;
+
+/** Product error a * b - fl(a * b), exact (Dekker's TwoProduct). */
+function prodError(a: number, b: number, p: number): number {
+  let t = SPLITTER * a;
+  const ah = t - (t - a);
+  const al = a - ah;
+  t = SPLITTER * b;
+  const bh = t - (t - b);
+  const bl = b - bh;
+  return ah * bh - p + ah * bl + al * bh + al * bl;
 }
 
-/** Signed difference a - b wrapped to (-pi, pi], in radians. */
+/**
+ * x - k 2 pi to about 2^-100 absolute, for an integer |k| <= 2^25 and |x| < 2^26: k hi and k mid are
+ * formed exactly, x - k hi is exact (Sterbenz), and the small terms are added with compensation.
+ */
+function codyWaite(x: number, k: number): number {
+  const ph = k * TWO_PI;
+  const pl = prodError(k, TWO_PI, ph);
+  const qh = k * TWO_PI_MID;
+  const ql = prodError(k, TWO_PI_MID, qh);
+  const r0 = x - ph;
+  // r0 - pl - qh - ql - k lo with the rounding errors of the first two additions carried (TwoSum).
+  const s1 = r0 - pl;
+  const b1 = s1 - r0;
+  const e1 = r0 - (s1 - b1) + (-pl - b1);
+  const s2 = s1 - qh;
+  const b2 = s2 - s1;
+  const e2 = s1 - (s2 - b2) + (-qh - b2);
+  return s2 + (e1 + e2 - ql - k * TWO_PI_LO);
+}
+
+/** Bits of the fixed-point constants of the exact reduction (1/(2 pi) needs 971 + 53 + 200 for any double). */
+const FRACTION_BITS = 1280;
+/** Bits of a turn fraction returned by turnFraction (absolute resolution 2^-130 turn). */
+const TURN_BITS = 130n;
+let invTwoPiFixed = 0n;
+let twoPiFixed = 0n;
+
+/** atan(1/x) * 2^bits by its Taylor series (x >= 5), truncated; error below 2^-bits * (terms). */
+function atanInvFixed(x: bigint, bits: bigint): bigint {
+  const x2 = x * x;
+  let power = (1n << bits) / x;
+  let sum = power;
+  for (let n = 3n, sign = -1n; power !== 0n; n += 2n, sign = -sign) {
+    power /= x2;
+    sum += (sign * power) / n;
+  }
+  return sum;
+}
+
+/** Machin's formula pi = 16 atan(1/5) - 4 atan(1/239), computed once, on the first huge argument. */
+function reductionConstants(): void {
+  if (invTwoPiFixed !== 0n) return;
+  const bits = BigInt(FRACTION_BITS + 64);
+  const piFixed = 16n * atanInvFixed(5n, bits) - 4n * atanInvFixed(239n, bits);
+  invTwoPiFixed = (1n << (bits + BigInt(FRACTION_BITS))) / (2n * piFixed);
+  twoPiFixed = (2n * piFixed) >> (bits - TURN_BITS);
+}
+
+const bitsView = new DataView(new ArrayBuffer(8));
+
+/** x / (2 pi) modulo 1, centred in [-1/2, 1/2), as a signed integer over 2^130 (finite x, exact to 2^-130). */
+function turnFraction(x: number): bigint {
+  reductionConstants();
+  bitsView.setFloat64(0, x);
+  const hiWord = bitsView.getUint32(0);
+  const biased = (hiWord >>> 20) & 0x7ff;
+  const mant = (BigInt(hiWord & 0xfffff) << 32n) | BigInt(bitsView.getUint32(4));
+  const m = biased === 0 ? mant : mant | (1n << 52n);
+  const e = BigInt((biased === 0 ? 1 : biased) - 1075);
+  // x / (2 pi) = m 2^e invTwoPiFixed / 2^FRACTION_BITS; keep the fraction only.
+  const g = BigInt(FRACTION_BITS) - e;
+  const n = m * invTwoPiFixed;
+  let f = (g > 0n ? n & ((1n << g) - 1n) : 0n) >> (g - TURN_BITS);
+  const half = 1n << (TURN_BITS - 1n);
+  if (f >= half) f -= 2n * half;
+  return hiWord >>> 31 ? -f : f;
+}
+
+/** A turn fraction (over 2^130) times 2 pi, as the nearest double (within an ulp). */
+function turnsToRadians(f: bigint): number {
+  if (f === 0n) return 0;
+  const neg = f < 0n;
+  const p = (neg ? -f : f) * twoPiFixed; // over 2^260
+  const len = p.toString(2).length;
+  const shift = len > 64 ? len - 64 : 0;
+  const top = Number(p >> BigInt(shift));
+  const v = top * 2 ** (shift - 260);
+  return neg ? -v : v;
+}
+
+/** A wrapped result within an ulp of +-pi could round just outside the range: fold it onto pi. */
+function inRange(r: number): Radians {
+  return r > -Math.PI && r <= Math.PI ? r : Math.PI;
+}
+
+/**
+ * Wraps an angle in radians to (-pi, pi], exactly for every finite double (the result is within an
+ * ulp of the true x - 2 pi k, by Cody-Waite reduction below 2^26 and Payne-Hanek style fixed-point
+ * reduction above); -pi maps to pi. Non-finite input (no direction) gives NaN; a non-number throws.
+ */
+export function wrapAngle(rad: number): Radians {
+  if (typeof rad !== 'number') throw new Error(`wrapAngle needs a number of radians, got ${String(rad)}`);
+  if (rad > -Math.PI && rad <= Math.PI) return rad;
+  if (!(Math.abs(rad) < CODY_WAITE_MAX)) {
+    if (!Number.isFinite(rad)) return NaN;
+    return inRange(turnsToRadians(turnFraction(rad)));
+  }
+  const k = Math.round(rad / TWO_PI);
+  let r = codyWaite(rad, k);
+  if (r > Math.PI) r = codyWaite(rad, k + 1);
+  else if (r <= -Math.PI) r = codyWaite(rad, k - 1);
+  return inRange(r);
+}
+
+/**
+ * Signed difference a - b wrapped to (-pi, pi], in radians: the exact difference is reduced (to within
+ * an ulp), so huge or very unequal angles lose nothing. Non-finite input gives NaN; a non-number throws.
+ */
 export function angleDiff(a: number, b: number): Radians {
-  return wrapAngle(a - b);
+  if (typeof a !== 'number' || typeof b !== 'number') {
+    throw new Error(`angleDiff needs two numbers of radians, got ${String(a)} and ${String(b)}`);
+  }
+  const d = a - b;
+  const bb = d - a;
+  const err = a - (d - bb) + (-b - bb);
+  if (!Number.isFinite(a) || !Number.isFinite(b)) return NaN;
+  if (err === 0) return wrapAngle(d);
+  if (Math.abs(a) < CODY_WAITE_MAX && Math.abs(b) < CODY_WAITE_MAX) return wrapAngle(wrapAngle(d) + err);
+  const half = 1n << (TURN_BITS - 1n);
+  let f = turnFraction(a) - turnFraction(b);
+  if (f >= half) f -= 2n * half;
+  else if (f < -half) f += 2n * half;
+  return inRange(turnsToRadians(f));
 }
 
 /** Wraps degrees into [0, 360); non-finite input gives 0 (the input angle theta2 shown to people). */

@@ -1,12 +1,48 @@
 import { PI, TWO_PI } from './angles';
-import { sumOfProducts } from './exact';
+import { Assembly, assemblyFactors, newAssemblyFactors, planClosedForm } from './closedForm';
+import type { ClosedFormPlan } from './closedForm';
+import { exactSumOfProducts, sumOfProducts } from './exact';
 import type { AngleInterval, Classification, InputRange, Linkage, LinkageType } from './types';
 import { normalizeLinkage, validateLinkage } from './validate';
 
-/** Exact-sign sum of four lengths with the signs given (double-double, so the sign is right). */
+/** Sum2's error bound for four normalised lengths (< 1 each): below it the sum is formed exactly. */
+const EXACT_BELOW = 1e-29;
+
+/** Sum of four lengths with the signs given, its sign exact (Sum2, or BigInt for a near-tie). */
 function signedSum(a: number, b: number, c: number, d: number): number {
-  const s = sumOfProducts([a, b, c, d]);
+  let s = sumOfProducts([a, b, c, d]);
+  if (Math.abs(s.hi) <= EXACT_BELOW) s = exactSumOfProducts([a, b, c, d]);
   return s.hi + s.lo;
+}
+
+/** Most ulp-steps an endpoint is moved inward before the sweep's own test calls it reachable. */
+const INWARD_STEPS = 64;
+
+/**
+ * The endpoint t moved towards `towards` until the closed form's reachability test (the one sweep
+ * uses) accepts it, in steps growing from one ulp; null when none is found before passing `towards`.
+ */
+function inward(plan: ClosedFormPlan, t: number, towards: number): number | null {
+  const f = newAssemblyFactors();
+  const dir = towards >= t ? 1 : -1;
+  let step = Math.max(Number.MIN_VALUE, Math.abs(t) * Number.EPSILON * 0.5);
+  let x = t;
+  for (let k = 0; k < INWARD_STEPS; k++) {
+    if (dir * (towards - x) < 0) return null;
+    if (assemblyFactors(plan, x, f) !== Assembly.Unreachable) return x;
+    x += dir * step;
+    step *= 2;
+  }
+  return null;
+}
+
+/** An interval with both ends moved inward to inputs sweep calls reachable; null if nothing is left. */
+function roundInward(plan: ClosedFormPlan, iv: AngleInterval): AngleInterval | null {
+  const lo = inward(plan, iv.lo, iv.hi);
+  if (lo === null) return null;
+  const hi = inward(plan, iv.hi, lo);
+  if (hi === null) return null;
+  return { lo, hi };
 }
 
 /**
@@ -19,11 +55,26 @@ function limitAngle(u: number, v: number, p: number, q: number): number {
 }
 
 /**
- * Reachable input angles (radians) from the limit conditions of hard-cases.md, with
- * T1 = r1 + r3 - r2 - r4, T2 = r1 + r4 - r2 - r3, T3 = r3 + r4 - r1 - r2.
+ * Reachable input angles (radians) from the limit conditions of docs/hard-cases.md, with
+ * T1 = r1 + r3 - r2 - r4, T2 = r1 + r4 - r2 - r3, T3 = r3 + r4 - r1 - r2 (signs exact). Endpoints are
+ * rounded inward to angles sweep calls reachable; a flat chain (L = S + P + Q) gets a one-point
+ * interval. Empty exactly when the chain cannot close (L > S + P + Q). Throws for a bad linkage.
  */
 export function inputRange(l: Linkage): InputRange {
   validateLinkage(l);
+  const range = limitRange(l);
+  if (range.full || range.intervals.length === 0) return range;
+  const plan = planClosedForm(l);
+  const intervals: AngleInterval[] = [];
+  for (const iv of range.intervals) {
+    const r = roundInward(plan, iv);
+    if (r) intervals.push(r);
+  }
+  return { full: false, intervals };
+}
+
+/** The input range from the limit formulas, before rounding inward. */
+function limitRange(l: Linkage): InputRange {
   const { r1, r2, r3, r4 } = normalizeLinkage(l);
   // sin^2(tmax/2) ~ (r3+r4-r1+r2)(r3+r4+r1-r2); cos^2(tmax/2) ~ (r1+r2-r3-r4)(r1+r2+r3+r4)
   const uMax = signedSum(r3, r4, -r1, r2);
@@ -45,9 +96,19 @@ export function inputRange(l: Linkage): InputRange {
   const tMax = hasMax ? limitAngle(uMax, vMax, -t3, sumAll) : PI;
   const tMin = hasMin ? limitAngle(uMin, vMin, pMin, qMin) : 0;
   if (!hasMax && !hasMin) return { full: true, intervals: [{ lo: -PI, hi: PI }] };
-  if (hasMax && !hasMin) return { full: false, intervals: [{ lo: -tMax, hi: tMax }] };
+  if (hasMax && !hasMin) return { full: false, intervals: [{ lo: 0 - tMax, hi: tMax }] };
   if (!hasMax && hasMin) return { full: false, intervals: [{ lo: tMin, hi: TWO_PI - tMin }] };
-  if (tMin > tMax) return { full: false, intervals: [] };
+  // The chain can close (checked above), so tMin <= tMax up to rounding: meet in the middle if not.
+  if (tMin > tMax) {
+    const mid = (tMin + tMax) / 2;
+    return {
+      full: false,
+      intervals: [
+        { lo: mid, hi: mid },
+        { lo: -mid, hi: -mid },
+      ],
+    };
+  }
   const intervals: AngleInterval[] = [
     { lo: tMin, hi: tMax },
     { lo: -tMax, hi: -tMin },
@@ -61,8 +122,10 @@ const GRASHOF_TYPES: LinkageType[] = ['double-crank', 'crank-rocker', 'double-ro
 
 /**
  * Grashof condition, linkage type, Barker class (as tabulated in Norton) and the input's
- * reachable range. Change point means S + L = P + Q within a few ulps of the total length.
- * Throws an Error naming the field and value when l is not four positive finite lengths.
+ * reachable range (inputRange). Change point means S + L = P + Q within a few ulps of the total
+ * length; a flat chain (L = S + P + Q exactly) is a triple rocker with a one-point range;
+ * 'cannot-assemble' exactly when the range is empty. Throws an Error naming the field and value
+ * when l is not four positive finite lengths.
  */
 export function classify(l: Linkage): Classification {
   validateLinkage(l);
@@ -73,10 +136,10 @@ export function classify(l: Linkage): Classification {
   const ns = [n.r1, n.r2, n.r3, n.r4].sort((a, b) => a - b);
   const total = ns[0] + ns[1] + ns[2] + ns[3];
   const excess = signedSum(ns[0], ns[3], -ns[1], -ns[2]); // S + L - P - Q
-  const assemblyGap = signedSum(ns[3], -ns[0], -ns[1], -ns[2]); // L - S - P - Q
   const range = inputRange(l);
   const base = { S, L, P, Q, inputRange: range, inputIsCrank: range.full };
-  if (assemblyGap >= 0) {
+  // One test decides assembly for classify, inputRange and sweep: the range (empty iff L > S + P + Q).
+  if (range.intervals.length === 0) {
     return { ...base, grashof: false, type: 'cannot-assemble', barker: 'none' };
   }
   const shortest = lengths.indexOf(S);

@@ -26,10 +26,18 @@ export { classify, inputRange } from './classify';
 export { solveClosedForm } from './closedForm';
 export { couplerPoint, jointPositions, loopResidual, transmissionAngle, velocityRatios } from './kinematics';
 export type { Joints, Point } from './kinematics';
-export { DEFAULT_TOLERANCE, SEED_MAX_ITERATIONS, SEED_SINGULAR_DET, SEED_TOLERANCE, solveNewton } from './newton';
-export { DEFAULT_SWEEP_METHOD, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid } from './sweep';
+export {
+  DEFAULT_TOLERANCE,
+  MAX_STEP_RAD,
+  SEED_MAX_ITERATIONS,
+  SEED_SINGULAR_DET,
+  SEED_TOLERANCE,
+  solveNewton,
+} from './newton';
+export { POINT_STATUSES, STATUS_CODE } from './pointStatus';
+export { DEFAULT_SWEEP_METHOD, MAX_SWEEP_POINTS, SWEEP_METHODS, seedFirstGuess, sweep, theta2Grid } from './sweep';
 export { validateLinkage } from './validate';
-export { adaptiveGrid, adaptiveSweep } from './sampling';
+export { MAX_GRID_ANGLE_RAD, adaptiveGrid, adaptiveSweep } from './sampling';
 export type { AdaptiveGridOptions, AdaptiveSweepOptions, AdaptiveSweepResult } from './sampling';
 export { LIMIT_SIN_MU, couplerPointMotion, linkRates, sweepRates } from './rates';
 export type { InputMotion, LinkRates, PointMotion, SweepRates } from './rates';

@@ -1,4 +1,5 @@
 import type { Angles, Linkage } from './types';
+import { checkNumber, checkObject, validateLinkage } from './validate';
 
 /** A point in the linkage's length unit. */
 export interface Point {
@@ -14,30 +15,57 @@ export interface Joints {
   O4: Point;
 }
 
-/** Joint positions (length unit) for theta2 and the solved angles (radians). */
+// The kinematics functions take a pose that may be missing: a NaN angle (a point the solver did not
+// solve) gives NaN coordinates and ratios, which callers read as "no pose". Anything that is not a
+// number, or a linkage that is not four positive lengths, throws.
+
+/** Throws unless l is a linkage, theta2 a number and a an object with numeric theta3, theta4. */
+function checkPose(l: Linkage, theta2: number, a: Angles): void {
+  validateLinkage(l);
+  checkNumber('theta2', theta2);
+  checkAngleObject(a);
+}
+
+/** Throws unless a is an object with numeric theta3 and theta4. */
+function checkAngleObject(a: Angles): void {
+  checkObject('angles', a);
+  checkNumber('angles.theta3', a.theta3);
+  checkNumber('angles.theta4', a.theta4);
+}
+
+/** Joint positions (length unit) for theta2 and the solved angles (radians); NaN angles give NaN points. Throws an Error naming a bad argument. */
 export function jointPositions(l: Linkage, theta2: number, a: Angles): Joints {
+  checkPose(l, theta2, a);
   const A = { x: l.r2 * Math.cos(theta2), y: l.r2 * Math.sin(theta2) };
   const B = { x: A.x + l.r3 * Math.cos(a.theta3), y: A.y + l.r3 * Math.sin(a.theta3) };
   return { O2: { x: 0, y: 0 }, A, B, O4: { x: l.r1, y: 0 } };
 }
 
 /**
- * Coupler point P at distance pDist (length unit) from A, at angle pAngle (radians) measured from
- * the coupler line AB, counter-clockwise.
+ * Coupler point P at distance pDist (length unit, finite, any sign) from A, at angle pAngle (radians)
+ * measured from the coupler line AB, counter-clockwise; a NaN argument gives a NaN point. Throws an Error
+ * naming a bad argument (a linkage that is not four positive lengths, or a non-number).
  */
 export function couplerPoint(l: Linkage, theta2: number, theta3: number, pDist: number, pAngle: number): Point {
+  validateLinkage(l);
+  checkNumber('theta2', theta2);
+  checkNumber('theta3', theta3);
+  checkNumber('pDist', pDist);
+  checkNumber('pAngle', pAngle);
   const ax = l.r2 * Math.cos(theta2);
   const ay = l.r2 * Math.sin(theta2);
   return { x: ax + pDist * Math.cos(theta3 + pAngle), y: ay + pDist * Math.sin(theta3 + pAngle) };
 }
 
-/** Transmission angle mu in radians, in [0, pi]: the angle between coupler and rocker at B. */
+/** Transmission angle mu in radians, in [0, pi]: the angle between coupler and rocker at B (NaN for NaN angles). Throws for non-numbers. */
 export function transmissionAngle(a: Angles): number {
+  checkAngleObject(a);
   return Math.abs(Math.atan2(Math.sin(a.theta4 - a.theta3), Math.cos(a.theta4 - a.theta3)));
 }
 
-/** Velocity ratios d theta3 / d theta2 and d theta4 / d theta2 (dimensionless); infinite at a limit. */
+/** Velocity ratios d theta3 / d theta2 and d theta4 / d theta2 (dimensionless); infinite at a limit. Throws an Error naming a bad argument. */
 export function velocityRatios(l: Linkage, theta2: number, a: Angles): { dTheta3: number; dTheta4: number } {
+  checkPose(l, theta2, a);
   const sin34 = Math.sin(a.theta3 - a.theta4);
   return {
     dTheta3: (l.r2 * Math.sin(a.theta4 - theta2)) / (l.r3 * sin34),
@@ -45,8 +73,9 @@ export function velocityRatios(l: Linkage, theta2: number, a: Angles): { dTheta3
   };
 }
 
-/** Loop-closure residual norm |f| (length unit) of a pose. */
+/** Loop-closure residual norm |f| (length unit) of a pose. Throws an Error naming a bad argument. */
 export function loopResidual(l: Linkage, theta2: number, a: Angles): number {
+  checkPose(l, theta2, a);
   const f1 = l.r2 * Math.cos(theta2) + l.r3 * Math.cos(a.theta3) - l.r4 * Math.cos(a.theta4) - l.r1;
   const f2 = l.r2 * Math.sin(theta2) + l.r3 * Math.sin(a.theta3) - l.r4 * Math.sin(a.theta4);
   return Math.hypot(f1, f2);

@@ -67,9 +67,9 @@ export interface IterationRecord {
 
 /** Options of solveNewton. */
 export interface NewtonOptions {
-  /** Relative tolerance on |f| / (r1 + r2 + r3 + r4); default 1e-13, then polished. Ignored when seed is true. */
+  /** Tolerance: relative on |f| / (r1 + r2 + r3 + r4), default 1e-13, then polished; with seed, absolute on |f1| and |f2|, default 1e-9. */
   tol?: number;
-  /** Iteration cap; default 100 (the report's). */
+  /** Iteration cap, an integer from 0 to 100000; default 100 (the report's). */
   maxIterations?: number;
   /** Reproduce the report's Algorithm 1 exactly: absolute 1e-9 on |f1| and |f2|, singular at |det J| < 1e-9. */
   seed?: boolean;
@@ -91,16 +91,22 @@ export interface NewtonResult extends Angles {
 /** Status of one sweep point. */
 export type PointStatus = 'ok' | 'unreachable' | 'singular' | 'failed';
 
-/** Sweep methods: default 'newton' continuation with predictor, variants for the benchmark and the lab. */
+/**
+ * Sweep methods: 'closed-form' (the default: stable closed form, fastest), 'closed-form-polish' (plus
+ * one NR step), 'newton' (NR continuation with a predictor), 'newton-no-predictor', 'seed' (the
+ * report's Algorithm 2).
+ */
 export type SweepMethod = 'newton' | 'newton-no-predictor' | 'seed' | 'closed-form' | 'closed-form-polish';
 
 /** Options of sweep. */
 export interface SweepOptions {
   branch: Branch;
-  /** Default: 'closed-form-polish' (fastest full-precision). 'newton' forces NR continuation. */
-  method?: SweepMethod | string;
-  /** NR tolerance: relative for the project's methods, absolute for 'seed'. */
+  /** Default 'closed-form' (DEFAULT_SWEEP_METHOD); undefined means the default, anything else not in SWEEP_METHODS throws. */
+  method?: SweepMethod;
+  /** NR tolerance, positive: relative for the project's NR methods (default 1e-13), absolute for 'seed' (1e-9); unused by the closed form. */
   tol?: number;
+  /** NR methods: polish to full precision after the tolerance is met (default true). */
+  polish?: boolean;
 }
 
 /** Result of sweep; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
@@ -111,7 +117,10 @@ export interface SweepResult {
   iterations: Int32Array;
   /** Loop-closure residual norm at each point (length unit), NaN where not 'ok'. */
   residual: Float64Array;
-  status: PointStatus[];
+  /** One byte per point: the index of its status in POINT_STATUSES (0 ok, 1 unreachable, 2 singular, 3 failed). */
+  statusCodes: Uint8Array;
+  /** Status of each point, decoded from statusCodes on first read (a big sweep that never reads it pays nothing). */
+  readonly status: PointStatus[];
   totalIterations: number;
   /** Points where NR landed on the other branch and were re-solved on the requested one. */
   branchCorrections: number;

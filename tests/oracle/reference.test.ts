@@ -1,5 +1,5 @@
 /**
- * Validates the 60-digit oracle itself against the published table of hard cases (hard-cases.md),
+ * Validates the 60-digit oracle itself against the published table of hard cases (docs/hard-cases.md),
  * independently of the solver. The table prints 10 decimals of a degree, so agreement to 1e-9 deg
  * (a tenth of the last printed digit's rounding band plus slack) is the most it can confirm.
  */

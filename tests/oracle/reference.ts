@@ -8,7 +8,7 @@
  * pin A, coupler pin B, rocker pivot O4 gives cos psi at A, the vector A -> O4 rotated by sigma psi
  * and scaled to r3 gives B, and both angles are read off B with atan2.
  *
- * Conventions (hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
+ * Conventions (docs/hard-cases.md): O2 at the origin, O4 at (r1, 0); A = r2 (cos t2, sin t2);
  * sigma = +1 ("open") puts B left of the ray A -> O4, which gives sin(t4 - t3) > 0.
  */
 import Decimal from 'decimal.js';
@@ -179,7 +179,7 @@ export interface ReferenceLimits {
 }
 
 /**
- * Input-range limits (hard-cases.md "Classification"): s <= r3 + r4 iff cos t2 >= cU, s >= |r3 - r4|
+ * Input-range limits (docs/hard-cases.md "Classification"): s <= r3 + r4 iff cos t2 >= cU, s >= |r3 - r4|
  * iff cos t2 <= cL, so the reachable |t2| is [acos(min(cL, 1)), acos(max(cU, -1))] (empty if cU > cL
  * or the band misses [-1, 1]). Equivalent to the T1, T2, T3 tests of the table.
  */
@@ -243,4 +243,35 @@ export function toDeg(x: number): number {
 /** Exact conversion of a radian double to degrees in 60 digits (for comparing with 10-decimal tables). */
 export function exactToDeg(x: number): number {
   return exact(x).times(180).div(PI).toNumber();
+}
+
+/** Enough digits for any double's remainder modulo 2 pi (its integer part has up to 309 digits). */
+const WIDE = Decimal.clone({ precision: 420, rounding: Decimal.ROUND_HALF_EVEN, minE: -9e15, maxE: 9e15 });
+const WIDE_PI = WIDE.acos(-1);
+
+/** The exact value of a finite double at 420 digits (every double is exact there). */
+function wideExact(x: number): InstanceType<typeof WIDE> {
+  if (x === 0) return new WIDE(0);
+  const view = new DataView(new ArrayBuffer(8));
+  view.setFloat64(0, x);
+  const bits = view.getBigUint64(0);
+  const expBits = Number((bits >> 52n) & 0x7ffn);
+  const frac = bits & 0xfffffffffffffn;
+  const mantissa = expBits === 0 ? frac : frac | (1n << 52n);
+  const e = (expBits === 0 ? 1 : expBits) - 1075;
+  return new WIDE(mantissa.toString()).times(new WIDE(2).pow(e)).times(bits >> 63n ? -1 : 1);
+}
+
+/**
+ * The exact a - b (doubles taken as exact) reduced modulo 2 pi into (-pi, pi], rounded once to a
+ * double; b defaults to 0 (then it is the exact wrap of a). The double nearest to a value just above
+ * -pi is -fl(pi); reported here as it falls, the caller decides how to compare at the seam.
+ */
+export function referenceWrap(a: number, b = 0): number {
+  const x = wideExact(a).minus(wideExact(b));
+  const turn = WIDE_PI.times(2);
+  let r = x.minus(x.div(turn).round().times(turn));
+  if (r.lessThanOrEqualTo(WIDE_PI.neg())) r = r.plus(turn);
+  if (r.greaterThan(WIDE_PI)) r = r.minus(turn);
+  return r.toNumber();
 }

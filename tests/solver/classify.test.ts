@@ -145,8 +145,9 @@ const table: Expected[] = [
     crank: false,
   },
   { name: 'case 21 (10, 1, 2, 3)', l: CASES[21], barker: 'none', type: 'cannot-assemble', crank: false },
-  // L = S + P + Q: the brief maps L >= S + P + Q to 'cannot-assemble' (it assembles at one point only).
-  { name: 'case 22 (6, 1, 2, 3)', l: CASES[22], barker: 'none', type: 'cannot-assemble', crank: false },
+  // L = S + P + Q: a flat chain assembles at t2 = 0 only (docs/hard-cases.md case 22), so it is not
+  // 'cannot-assemble' (classify, inputRange and sweep agree); S + L > P + Q makes it non-Grashof.
+  { name: 'case 22 (6, 1, 2, 3)', l: CASES[22], barker: 'II-1 RRR1', type: 'triple-rocker', crank: false },
   // The Barker classes the table does not cover.
   {
     name: 'output shortest (6, 5, 5, 2)',
@@ -351,14 +352,12 @@ describe('classify', () => {
     expect(range.intervals).toEqual([]);
   });
 
-  it('gives case 22 at most the single point t2 = 0', () => {
+  it('gives case 22 exactly the single point t2 = 0', () => {
     const range = classify(CASES[22]).inputRange;
     expect(range.full).toBe(false);
-    for (const { lo, hi } of range.intervals) {
-      expect(lo).toBeLessThanOrEqual(1e-7);
-      expect(hi).toBeGreaterThanOrEqual(-1e-7);
-      expect(hi - lo).toBeLessThanOrEqual(2e-7);
-    }
+    expect(range.intervals).toHaveLength(1);
+    expect(range.intervals[0].lo).toBe(0);
+    expect(range.intervals[0].hi).toBe(0);
   });
 
   it('matches the oracle limits of the other table cases', () => {

@@ -1,7 +1,7 @@
 /**
- * The 23 hard cases of hard-cases.md, each checked against the 60-digit oracle (tests/oracle).
+ * The 23 hard cases of docs/hard-cases.md, each checked against the 60-digit oracle (tests/oracle).
  *
- * Tolerances come from tests/oracle/tolerance.ts (hard-cases.md "Conditioning"): at most 1e-12 rad
+ * Tolerances come from tests/oracle/tolerance.ts (docs/hard-cases.md "Conditioning"): at most 1e-12 rad
  * where the problem is benign (|sin mu| >= 0.1, comparable links); otherwise the conditioning bound
  * 10 ea / (r sqrt(sin^2 mu + ea / min(r3, r4))) + 10 ea / s with ea = 2 eps Lmax, which is
  * "K eps / sqrt(d + eps)" near a limit (K = 10 times the ~1e-8 rad of the limit itself) and
@@ -157,7 +157,7 @@ function expectHonestNewton(l: Linkage, t2: number, guess: { theta3: number; the
 
 const quarterTurns = degGrid(-180, 180, 15);
 
-describe('hard cases (hard-cases.md)', () => {
+describe('hard cases (docs/hard-cases.md)', () => {
   it("case 1: the report's crank-rocker 6-2-5-5 matches the table at 0, 90, 180 deg on both branches, by every method", () => {
     const l = CASES[1];
     checkEverything(l, [0, deg(90), deg(180)]);

@@ -1,5 +1,5 @@
 /**
- * Shared test helpers: the hard-case linkages (copied from hard-cases.md so nothing is read at run
+ * Shared test helpers: the hard-case linkages (copied from docs/hard-cases.md so nothing is read at run
  * time), branch <-> sigma, the oracle comparison with conditioning-based tolerances, and a few
  * floating-point utilities.
  */
@@ -9,7 +9,7 @@ import type { ReferenceOutcome, ReferencePose, Sigma } from '../oracle/reference
 import { angleDiff, referenceSolve, toDeg } from '../oracle/reference';
 import { angleTolerance } from '../oracle/tolerance';
 
-/** The linkages of hard-cases.md (r1 ground, r2 crank, r3 coupler, r4 rocker). */
+/** The linkages of docs/hard-cases.md (r1 ground, r2 crank, r3 coupler, r4 rocker). */
 export const CASES = {
   1: { r1: 6, r2: 2, r3: 5, r4: 5 },
   2: { r1: 4, r2: 1, r3: 3, r4: 2 + 1e-9 },

@@ -1,3 +1,4 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { adaptiveGrid, adaptiveSweep, classify, solveClosedForm } from '../../src/solver';
 import { referenceLimits } from '../oracle/reference';
@@ -62,5 +63,54 @@ describe('adaptiveGrid', () => {
       'r2 must be a positive finite length, got -2',
     );
     expect(() => adaptiveGrid(REPORT, { pixels: 10, startRad: 1, endRad: 1 })).toThrow(/endRad/);
+  });
+
+  it('never hangs: any options either throw an Error naming the option or give finite increasing samples in range', () => {
+    const num = fc.oneof(
+      fc.double({ noNaN: false }),
+      fc.constantFrom(Infinity, -Infinity, 1.79e308, -1.79e308, 0, -1, 1e6, -1e6, 2 * Math.PI),
+    );
+    const linkage = fc.constantFrom(REPORT, TRIPLE_ROCKER, DOUBLE_ROCKER, { r1: 6, r2: 1, r3: 2, r4: 3 });
+    const opts = fc.record(
+      {
+        startRad: num,
+        endRad: num,
+        pixels: fc.oneof(num, fc.integer({ min: 1, max: 2000 })),
+        maxJumpRad: num,
+        maxPoints: fc.oneof(num, fc.integer({ min: 1, max: 5000 })),
+      },
+      { requiredKeys: [] },
+    );
+    fc.assert(
+      fc.property(linkage, opts, (l, o) => {
+        let g: Float64Array;
+        try {
+          g = adaptiveGrid(l, o);
+        } catch (e) {
+          expect(e).toBeInstanceOf(Error);
+          expect((e as Error).message).toMatch(/startRad|endRad|pixels|maxJumpRad|maxPoints/);
+          return;
+        }
+        const start = o.startRad ?? 0;
+        const end = o.endRad ?? 2 * Math.PI;
+        expect(g[0]).toBe(start);
+        expect(g[g.length - 1]).toBe(end);
+        for (let i = 1; i < g.length; i++) expect(g[i]).toBeGreaterThan(g[i - 1]);
+        for (const x of g) expect(Number.isFinite(x)).toBe(true);
+        expect(g.length).toBeLessThanOrEqual(Math.max(o.maxPoints ?? 0, 8 * 100_001) + 200);
+      }),
+      { seed: 7201, numRuns: 150 },
+    );
+  });
+
+  it('carries the limit angles of every turn of a long range (not only two turns either side)', () => {
+    const g = adaptiveGrid(TRIPLE_ROCKER, { pixels: 2000, startRad: 1000, endRad: 1100 });
+    const hi = classify(TRIPLE_ROCKER).inputRange.intervals[0].hi;
+    const turns = Math.floor((1100 - hi) / (2 * Math.PI)) - Math.ceil((1000 - hi) / (2 * Math.PI)) + 1;
+    const found = Array.from(g).filter(
+      (x) => Math.abs(x - hi - 2 * Math.PI * Math.round((x - hi) / (2 * Math.PI))) === 0,
+    );
+    expect(turns).toBeGreaterThan(10);
+    expect(found.length).toBeGreaterThanOrEqual(turns - 1);
   });
 });
