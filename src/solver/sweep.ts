@@ -11,6 +11,7 @@ import {
 } from './closedForm';
 import type { ClosedFormPlan } from './closedForm';
 import { SWEEP_METHODS } from './methods';
+import { sweepRates } from './rates';
 import { newNewtonState, newtonCore, newtonSettings } from './newton';
 import type { NewtonProblem, NewtonState } from './newton';
 import { POINT_STATUSES, STATUS_CODE } from './pointStatus';
@@ -415,6 +416,15 @@ function checkSweepOptions(opts: unknown): asserts opts is SweepOptions {
   }
   checkOptionalPositive('tol', opts.tol);
   checkOptionalBoolean('polish', opts.polish);
+  const rates = opts.rates;
+  if (rates !== undefined) {
+    checkObject('rates', rates);
+    for (const k of ['omega2', 'alpha2'] as const) {
+      if (typeof rates[k] !== 'number' || !Number.isFinite(rates[k])) {
+        throw new Error(`rates.${k} must be a finite number, got ${describe(rates[k])}`);
+      }
+    }
+  }
 }
 
 /**
@@ -448,6 +458,14 @@ export function sweep(l: Linkage, theta2s: ArrayLike<number>, opts: SweepOptions
     case 'seed':
       sweepSeed(l, theta2s, opts.branch, opts.tol, r);
       break;
+  }
+  if (opts.rates) {
+    const codes = r.statusCodes;
+    const ok = STATUS_CODE.ok;
+    Object.assign(
+      r,
+      sweepRates(l, r.theta2, r.theta3, r.theta4, (i) => codes[i] === ok, opts.rates),
+    );
   }
   return r;
 }

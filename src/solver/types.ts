@@ -107,6 +107,11 @@ export interface SweepOptions {
   tol?: number;
   /** NR methods: polish to full precision after the tolerance is met (default true). */
   polish?: boolean;
+  /**
+   * Input motion (omega2 rad/s, alpha2 rad/s², counter-clockwise positive): when given, the result also carries
+   * omega3, omega4, alpha3 and alpha4 (see src/solver/rates.ts); when absent nothing extra is computed.
+   */
+  rates?: { omega2: number; alpha2: number };
 }
 
 /** Result of sweep; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
@@ -124,4 +129,9 @@ export interface SweepResult {
   totalIterations: number;
   /** Points where NR landed on the other branch and were re-solved on the requested one. */
   branchCorrections: number;
+  /** Coupler and rocker angular velocities (rad/s) and accelerations (rad/s²), only when opts.rates was given; NaN where status is not 'ok' and at limit positions. */
+  omega3?: Float64Array;
+  omega4?: Float64Array;
+  alpha3?: Float64Array;
+  alpha4?: Float64Array;
 }
