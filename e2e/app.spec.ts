@@ -66,6 +66,8 @@ test.describe('the simulator', () => {
     // 360 samples per turn: one step is 1°.
     await page.getByRole('button', { name: 'Step forward' }).click();
     await expect(theta2).toHaveValue('46');
+    // The numbers (the worker's answer) follow the step too.
+    await expect(page.getByRole('heading', { name: 'At θ2 = 46.00°' })).toBeVisible();
     await page.getByRole('radio', { name: 'Clockwise', exact: true }).check();
     await page.getByRole('button', { name: 'Step forward' }).click();
     await expect(theta2).toHaveValue('45');

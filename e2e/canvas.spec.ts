@@ -55,6 +55,19 @@ test.describe('the linkage canvas', () => {
     expect(Math.abs(angle - 30)).toBeLessThan(1);
   });
 
+  test('a locked θ2 in the embed cannot be dragged or turned on the canvas', async ({ page }) => {
+    await page.goto('./embed.html?t2=60&panels=controls&lock=theta2');
+    await waitReady(page);
+    const canvas = page.locator('canvas.linkage-canvas');
+    const o2 = await joint(canvas, 'o2');
+    const a = await joint(canvas, 'a');
+    await drag(page, a, { x: o2.x - (a.x - o2.x), y: a.y });
+    await canvas.focus();
+    await page.keyboard.press('ArrowRight');
+    await expect(canvas).toHaveAccessibleName(/θ2 60\.00°/);
+    await expect(canvas).not.toHaveAccessibleDescription(/turn the crank/);
+  });
+
   test('dragging an empty spot pans the view', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);
