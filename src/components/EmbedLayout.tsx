@@ -91,7 +91,8 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   useEmbedMessages(bridge, state, dispatch, embed.locked);
   useCycleDrawnMark(cycle);
 
-  const fullHref = fullAppHref(state);
+  // The full app lives beside embed.html; a page hosting the element has no such neighbour.
+  const fullHref = ownsPage ? fullAppHref(state) : '';
   return (
     <MessagesContext.Provider value={t}>
       <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
