@@ -3,7 +3,17 @@ import tseslint from 'typescript-eslint';
 
 /** Lint: the solver's import boundary (STYLE.md principle 1), type-only imports, hooks rules. */
 export default tseslint.config(
-  { ignores: ['dist/**', 'node_modules/**', 'e2e/artifacts/**', 'playwright-report/**', 'test-results/**'] },
+  {
+    ignores: [
+      'dist/**',
+      'dist-single/**',
+      'dist-element/**',
+      'node_modules/**',
+      'e2e/artifacts/**',
+      'playwright-report/**',
+      'test-results/**',
+    ],
+  },
   ...tseslint.configs.recommended,
   {
     files: ['**/*.{ts,tsx}'],

@@ -1,12 +1,14 @@
 import './EmbedLayout.css';
-import { useCallback, useMemo } from 'react';
+import { useCallback, useMemo, useState } from 'react';
 import type { AppState } from '../state/appState';
 import { getMessages } from '../state/i18n';
-import type { EmbedPanel, ParsedUrl } from '../state/url';
+import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../state/url';
 import { appUrl } from '../state/url';
 import { AnalysisPanel } from './AnalysisPanel';
 import { AnglePlotsPanel } from './AnglePlotsPanel';
 import { ControlsPanel } from './ControlsPanel';
+import type { EmbedBridge } from './embedBridge';
+import { frameBridge } from './embedBridge';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
@@ -17,6 +19,7 @@ import { useCanvasEdits } from './useCanvasEdits';
 import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
+import { useEmbedMessages } from './useEmbedMessages';
 import { useExports } from './useExports';
 import { useLinkagePose } from './useLinkagePose';
 import { useLinkageScene } from './useLinkageScene';
@@ -30,6 +33,15 @@ import { useCycleTable } from './useSolver';
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
   initial: ParsedUrl;
+  /** How the widget talks to its host; default: postMessage with the parent window (frameBridge). */
+  bridge?: EmbedBridge;
+  /** Panels and locks when the host changes them later (the custom element's attributes); default initial.embed. */
+  embed?: EmbedOptions;
+  /**
+   * Whether the widget owns its page (embed.html, default): it sets the document's title and language and keeps
+   * the address bar in step. The custom element, inside someone else's page, does neither.
+   */
+  ownsPage?: boolean;
 }
 
 /** The link to the full simulator with this state, or '' where the frame's address cannot be read. */
@@ -45,8 +57,10 @@ function fullAppHref(state: AppState): string {
  * The compact widget for an iframe: title bar with language and a link to the full simulator, the linkage
  * with the controls beside it, then the panels the URL asks for (numbers, plots, export).
  */
-export function EmbedLayout({ initial }: EmbedLayoutProps) {
-  const embed = initial.embed;
+export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, ownsPage = true }: EmbedLayoutProps) {
+  const embed = givenEmbed ?? initial.embed;
+  const [ownBridge] = useState(() => (givenBridge ? null : frameBridge()));
+  const bridge = givenBridge ?? ownBridge;
   const show = (p: EmbedPanel) => embed.panels.includes(p);
   const { plotsRef, plotPixels } = usePlotPixels();
   const plotsShown = embed.panels.includes('plots');
@@ -72,14 +86,16 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const crankMovable = !embed.locked.includes('theta2');
   const couplerMovable = !embed.locked.includes('coupler');
   const shell = shellMessages(state.locale);
-  useDocumentMeta(t.htmlLang, t.embedTitle);
-  useUrlSync(state, embed);
+  useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
+  useUrlSync(state, embed, ownsPage);
+  useEmbedMessages(bridge, state, dispatch, embed.locked);
   useCycleDrawnMark(cycle);
 
-  const fullHref = fullAppHref(state);
+  // The full app lives beside embed.html; a page hosting the element has no such neighbour.
+  const fullHref = ownsPage ? fullAppHref(state) : '';
   return (
     <MessagesContext.Provider value={t}>
-      <div className="embed" data-ready={cycle && point ? 'true' : 'false'}>
+      <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
         <header className="embed-bar">
           <h1 className="embed-title">{t.embedTitle}</h1>
           <div className="embed-bar-right">

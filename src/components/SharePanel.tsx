@@ -1,11 +1,12 @@
 import './SharePanel.css';
-import { memo, useState } from 'react';
+import { Suspense, lazy, memo, useState } from 'react';
 import type { AppState } from '../state/appState';
+import type { EmbedPresetId } from '../state/embedSnippet';
+import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from '../state/embedSnippet';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../state/url';
-import { EMBED_PANELS, embedCode, embedUrl, serializeState } from '../state/url';
+import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS, embedUrl, serializeState } from '../state/url';
 import { copyText } from './clipboard';
 import { useMessages } from './MessagesContext';
-import { Toggle } from './Toggle';
 
 /** Props of SharePanel: how to read the state to share when a copy button is pressed. */
 export interface SharePanelProps {
@@ -13,36 +14,53 @@ export interface SharePanelProps {
   getState: () => AppState;
 }
 
-const LENGTHS: LockableParam[] = ['r1', 'r2', 'r3', 'r4'];
+// The generator's controls, preview and code load on first open: the app's first load does not carry them.
+const EmbedGenerator = lazy(() => import('./EmbedGenerator').then((m) => ({ default: m.EmbedGenerator })));
+
+function presetOf(id: EmbedPresetId) {
+  return EMBED_PRESETS.find((p) => p.id === id) ?? DEFAULT_EMBED_PRESET;
+}
 
 function SharePanelImpl({ getState }: SharePanelProps) {
   const t = useMessages();
-  const [embed, setEmbed] = useState<EmbedOptions>({ panels: ['controls', 'plots'], locked: [] });
+  const [embed, setEmbed] = useState<EmbedOptions>(DEFAULT_EMBED);
+  const [presetId, setPresetId] = useState<EmbedPresetId>(DEFAULT_EMBED_PRESET.id);
   const [status, setStatus] = useState('');
   const [shown, setShown] = useState<string | null>(null);
+  // The generator (options, preview, code) renders only once opened; its URL is taken when an option changes.
+  const [src, setSrc] = useState<string | null>(null);
 
+  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, { ...getState(), playing: false }, e);
   const linkHref = () => {
     const u = new URL(window.location.href);
     u.search = `?${serializeState({ ...getState(), playing: false })}`;
     u.hash = '';
     return u.toString();
   };
-  const code = () => embedCode(embedUrl(window.location.href, { ...getState(), playing: false }, embed), t.embedTitle);
+  const codeFor = (s: string, id: EmbedPresetId) => embedSnippet({ src: s, title: t.embedTitle, preset: presetOf(id) });
   const copy = async (text: string) => {
     const ok = await copyText(text);
     setStatus(ok ? t.copied : t.copyFailed);
     setShown(text);
   };
+  const change = (next: EmbedOptions) => {
+    setEmbed(next);
+    if (src !== null) setSrc(srcFor(next));
+  };
   const togglePanel = (p: EmbedPanel, on: boolean) =>
-    setEmbed((e) => ({
-      ...e,
-      panels: on ? EMBED_PANELS.filter((x) => x === p || e.panels.includes(x)) : e.panels.filter((x) => x !== p),
-    }));
-  const toggleLock = (params: LockableParam[], on: boolean) =>
-    setEmbed((e) => ({
-      ...e,
-      locked: on ? [...new Set([...e.locked, ...params])] : e.locked.filter((x) => !params.includes(x)),
-    }));
+    change({
+      ...embed,
+      panels: on
+        ? EMBED_PANELS.filter((x) => x === p || embed.panels.includes(x))
+        : embed.panels.filter((x) => x !== p),
+    });
+  const toggleLock = (p: LockableParam, on: boolean) =>
+    change({
+      ...embed,
+      locked: on
+        ? LOCKABLE_PARAMS.filter((x) => x === p || embed.locked.includes(x))
+        : embed.locked.filter((x) => x !== p),
+    });
 
   return (
     <div className="share-panel">
@@ -50,38 +68,25 @@ function SharePanelImpl({ getState }: SharePanelProps) {
         <button type="button" className="btn btn-small" onClick={() => void copy(linkHref())}>
           {t.copyLink}
         </button>
-        <button type="button" className="btn btn-small" onClick={() => void copy(code())}>
+        <button type="button" className="btn btn-small" onClick={() => void copy(codeFor(srcFor(embed), presetId))}>
           {t.copyEmbed}
         </button>
       </div>
-      <details className="embed-options">
-        <summary>
-          {t.embedPanels} / {t.embedLock}
-        </summary>
-        <fieldset className="checks">
-          <legend>{t.embedPanels}</legend>
-          {EMBED_PANELS.map((p) => (
-            <Toggle
-              key={p}
-              label={t.panelNames[p]}
-              checked={embed.panels.includes(p)}
-              onChange={(v) => togglePanel(p, v)}
+      <details className="embed-options" onToggle={(e) => setSrc(e.currentTarget.open ? srcFor(embed) : null)}>
+        <summary>{t.embedGenerator}</summary>
+        {src !== null ? (
+          <Suspense fallback={null}>
+            <EmbedGenerator
+              embed={embed}
+              presetId={presetId}
+              src={src}
+              code={codeFor(src, presetId)}
+              onPreset={setPresetId}
+              onPanel={togglePanel}
+              onLock={toggleLock}
             />
-          ))}
-        </fieldset>
-        <fieldset className="checks">
-          <legend>{t.embedLock}</legend>
-          <Toggle
-            label={t.lockLengths}
-            checked={LENGTHS.every((p) => embed.locked.includes(p))}
-            onChange={(v) => toggleLock(LENGTHS, v)}
-          />
-          <Toggle
-            label={t.lockAngle}
-            checked={embed.locked.includes('theta2')}
-            onChange={(v) => toggleLock(['theta2'], v)}
-          />
-        </fieldset>
+          </Suspense>
+        ) : null}
       </details>
       <p className="status-line" role="status" aria-live="polite">
         {status}
@@ -100,5 +105,8 @@ function SharePanelImpl({ getState }: SharePanelProps) {
   );
 }
 
-/** Share link and embed code: choose the embed's panels and locks, copy; shows the text when the clipboard fails. */
+/**
+ * Share link and embed code. The embed generator (opened on demand) chooses the size preset, the panels and
+ * the locks, shows a live preview and the snippet; the copy buttons show the text when the clipboard fails.
+ */
 export const SharePanel = memo(SharePanelImpl);

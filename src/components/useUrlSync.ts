@@ -9,10 +9,11 @@ const URL_DEBOUNCE_MS = 250;
 /**
  * Keeps the address bar's query in step with the state (and the embed options, in the embed), debounced and
  * not while animating, which would flood the history API. Sandboxed frames that refuse it are left alone.
+ * Not when enabled is false (a widget inside someone else's page leaves its address bar alone).
  */
-export function useUrlSync(state: AppState, embed?: EmbedOptions): void {
+export function useUrlSync(state: AppState, embed?: EmbedOptions, enabled = true): void {
   useEffect(() => {
-    if (state.playing) return;
+    if (state.playing || !enabled) return;
     const id = setTimeout(() => {
       try {
         const q = serializeState(state, embed);
@@ -22,5 +23,5 @@ export function useUrlSync(state: AppState, embed?: EmbedOptions): void {
       }
     }, URL_DEBOUNCE_MS);
     return () => clearTimeout(id);
-  }, [state, embed]);
+  }, [state, embed, enabled]);
 }

@@ -19,6 +19,23 @@ export interface Messages {
   sectionDisplay: string;
   sectionExport: string;
   sectionShare: string;
+  /** The Share panel's embed generator: its summary, size presets, lock names, preview and code labels. */
+  embedGenerator: string;
+  embedSize: string;
+  embedPresetNames: { compact: string; standard: string; large: string; responsive: string };
+  lockNames: {
+    r1: string;
+    r2: string;
+    r3: string;
+    r4: string;
+    theta2: string;
+    branch: string;
+    coupler: string;
+    play: string;
+  };
+  embedPreview: string;
+  embedCodeLabel: string;
+  embedPreviewNote: string;
   sectionAnalysis: string;
   sectionPlots: string;
 
@@ -125,8 +142,6 @@ export interface Messages {
   embedPanels: string;
   embedLock: string;
   panelNames: { controls: string; info: string; plots: string; export: string };
-  lockLengths: string;
-  lockAngle: string;
   openFull: string;
   embedTitle: string;
 

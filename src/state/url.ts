@@ -117,16 +117,3 @@ export function appUrl(embedHref: string, state: AppState): string {
   u.pathname = u.pathname.replace(/[^/]*$/, '');
   return `${u.toString()}?${serializeState(state)}`;
 }
-
-/** Escapes text for an HTML attribute value in double quotes. */
-export function escapeAttribute(s: string): string {
-  return s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
-}
-
-/** The iframe snippet that embeds the widget; sandboxed, lazy, with a title; width and height in CSS pixels. */
-export function embedCode(src: string, title: string, width = 760, height = 520): string {
-  return (
-    `<iframe src="${escapeAttribute(src)}" title="${escapeAttribute(title)}" width="${width}" height="${height}" ` +
-    `style="border:0;max-width:100%" loading="lazy" sandbox="allow-scripts allow-same-origin allow-downloads"></iframe>`
-  );
-}

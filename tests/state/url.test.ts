@@ -4,7 +4,7 @@ import type { AppState } from '../../src/state/appState';
 import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../src/lab/options';
 import { SWEEP_METHODS } from '../../src/solver/methods';
 import { DEFAULT_STATE } from '../../src/state/appState';
-import { DEFAULT_EMBED, appUrl, embedCode, embedUrl, parseUrl, serializeState } from '../../src/state/url';
+import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../src/state/url';
 import { DEFAULT_TARGET, URL_KEYS } from '../../src/state/urlKeys';
 
 const quiet = () => undefined;
@@ -454,7 +454,7 @@ describe('parseUrl ignored parameters', () => {
   });
 });
 
-describe('embedUrl, appUrl and embedCode', () => {
+describe('embedUrl and appUrl', () => {
   it('points the embed at embed.html beside the app page', () => {
     const u = embedUrl('https://example.edu/course/fourbar/index.html?r1=1#x', DEFAULT_STATE, DEFAULT_EMBED);
     expect(u.startsWith('https://example.edu/course/fourbar/embed.html?r1=6&')).toBe(true);
@@ -462,11 +462,5 @@ describe('embedUrl, appUrl and embedCode', () => {
     expect(appUrl('https://example.edu/course/fourbar/embed.html?x=1', DEFAULT_STATE)).toMatch(
       /^https:\/\/example\.edu\/course\/fourbar\/\?r1=6&/,
     );
-  });
-  it('escapes the URL and title in the iframe snippet and sandboxes it', () => {
-    const code = embedCode('https://a.b/embed.html?x=1&y="2"', 'A <b> "title"');
-    expect(code).toContain('src="https://a.b/embed.html?x=1&amp;y=&quot;2&quot;"');
-    expect(code).toContain('title="A &lt;b&gt; &quot;title&quot;"');
-    expect(code).toContain('sandbox="allow-scripts');
   });
 });

@@ -1,0 +1,84 @@
+import { existsSync, readFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { expect, test } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import { ORIGIN } from './helpers';
+
+// The custom element from `npm run build:element` (npm run test:e2e builds it first), on a plain course page.
+const SCRIPT = join(dirname(fileURLToPath(import.meta.url)), '..', 'dist-element', 'fourbar-lab.js');
+const PAGE = `${ORIGIN}/e2e-course/element.html`;
+
+interface Fired {
+  id: string;
+  detail: Record<string, unknown>;
+}
+
+function fired(page: Page): Promise<Fired[]> {
+  return page.evaluate(() => (window as unknown as { fired: Fired[] }).fired);
+}
+
+test.describe('the <fourbar-lab> custom element', () => {
+  test('two elements on one page keep their own state, styles and change events', async ({ page }) => {
+    if (!existsSync(SCRIPT)) throw new Error(`${SCRIPT} is missing: run npm run build:element`);
+    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
+      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
+    );
+    await page.route(PAGE, (route) =>
+      route.fulfill({
+        contentType: 'text/html',
+        body: `<!doctype html><html lang="en"><head><title>Week 3</title>
+<script src="./fourbar-lab.js"></script></head><body>
+<h1>Week 3</h1><div class="embed-bar" id="probe">A page element that shares a class name with the widget.</div>
+<fourbar-lab id="a" r1="6" r2="2" r3="5" r4="5" t2="60" panels="controls"></fourbar-lab>
+<fourbar-lab id="b" r1="6" r2="2" r3="4.5" r4="5" t2="30" panels="controls,info" lock="r1" style="height:600px"></fourbar-lab>
+<script>
+  window.fired = [];
+  for (const el of document.querySelectorAll('fourbar-lab'))
+    el.addEventListener('change', (e) => { if (e.target === el) window.fired.push({ id: el.id, detail: e.detail }); });
+</script></body></html>`,
+      }),
+    );
+    const errors: string[] = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(PAGE);
+    const a = page.locator('#a');
+    const b = page.locator('#b');
+    await expect(a.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+    await expect(b.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+    await expect(a.getByRole('textbox', { name: /^r3/ })).toHaveValue('5');
+    await expect(b.getByRole('textbox', { name: /^r3/ })).toHaveValue('4.5');
+    await expect(b.getByRole('textbox', { name: /^r1/ })).toBeDisabled();
+    await expect(a.getByRole('textbox', { name: /^r1/ })).toBeEnabled();
+    await expect(b.getByTestId('linkage-type')).toBeVisible();
+    await expect(a.getByTestId('linkage-type')).toHaveCount(0);
+    await expect(page.getByText(/main thread/)).toHaveCount(0);
+
+    // Styles stay inside the shadow roots: the page's own .embed-bar is not turned into the widget's flex bar,
+    // and the element's host size comes from the page (b) or the default (a).
+    expect(await page.locator('#probe').evaluate((el) => getComputedStyle(el).display)).toBe('block');
+    expect(await page.evaluate(() => document.styleSheets.length)).toBe(0);
+    expect((await a.boundingBox())?.height).toBe(520);
+    expect((await b.boundingBox())?.height).toBe(600);
+
+    // A person changes r3 in a: a fires change with r3 = 4; b neither changes nor fires.
+    const r3 = a.getByRole('textbox', { name: /^r3/ });
+    await r3.fill('4');
+    await r3.press('Enter');
+    await expect.poll(async () => (await fired(page)).find((f) => f.id === 'a')?.detail.r3).toBe(4);
+    expect((await fired(page)).filter((f) => f.id === 'b')).toEqual([]);
+    await expect(b.getByRole('textbox', { name: /^r3/ })).toHaveValue('4.5');
+    expect(await b.evaluate((el) => (el as unknown as { state: { r3: number } }).state.r3)).toBe(4.5);
+
+    // The page changes an attribute of b: b follows and fires its own change; a keeps its state.
+    await b.evaluate((el) => el.setAttribute('t2', '90'));
+    await expect(b.getByRole('img', { name: /^Linkage view\. θ2 90\.00°/ })).toBeVisible();
+    await expect.poll(async () => (await fired(page)).find((f) => f.id === 'b')?.detail.t2).toBe(90);
+    await expect(a.getByRole('img', { name: /^Linkage view\. θ2 60\.00°/ })).toBeVisible();
+    expect((await fired(page)).filter((f) => f.id === 'a').every((f) => f.detail.t2 === 60)).toBe(true);
+    // Panels follow their attribute too.
+    await a.evaluate((el) => el.setAttribute('panels', 'controls,info'));
+    await expect(a.getByTestId('linkage-type')).toBeVisible();
+    expect(errors).toEqual([]);
+  });
+});

@@ -1,0 +1,36 @@
+import { useRef } from 'react';
+import type { EmbedPreset } from '../state/embedSnippet';
+import { EMBED_SANDBOX } from '../state/embedSnippet';
+import { useElementSize } from './useElementSize';
+
+/** Props of EmbedPreview: the widget's URL, the frame's size preset and the frame's accessible title. */
+export interface EmbedPreviewProps {
+  src: string;
+  preset: EmbedPreset;
+  title: string;
+}
+
+/**
+ * The embed as a host page would show it: an iframe of embed.html at the preset's CSS pixel size, with the
+ * snippet's sandbox, scaled down (never up) to the panel's width so the layout inside is the real one.
+ */
+export function EmbedPreview({ src, preset, title }: EmbedPreviewProps) {
+  const box = useRef<HTMLDivElement>(null);
+  const { width } = useElementSize(box);
+  const scale = width > 0 ? Math.min(1, width / preset.width) : 0;
+  return (
+    <div className="embed-preview" ref={box} style={{ height: Math.ceil(preset.height * scale) }}>
+      {scale > 0 ? (
+        <iframe
+          src={src}
+          title={title}
+          sandbox={EMBED_SANDBOX}
+          width={preset.width}
+          height={preset.height}
+          data-scale={scale.toFixed(4)}
+          style={{ transform: `scale(${scale})` }}
+        />
+      ) : null}
+    </div>
+  );
+}

@@ -1,0 +1,142 @@
+import type { AppState } from './appState';
+import type { LockableParam } from './embedOptions';
+import { DEFAULT_EMBED } from './embedOptions';
+import { serializeState } from './url';
+import type { UrlTarget } from './urlKeys';
+import { URL_CONSTRAINTS, URL_KEYS } from './urlKeys';
+
+/** The tag on every message the widget posts (`source`) and on every command it accepts (`target`). */
+export const EMBED_MESSAGE_TAG = 'fourbar-lab';
+
+/** A value in a state event or a set-state command: what JSON carries for a URL key. */
+export type EmbedValue = number | string | boolean;
+
+/** What the widget posts to its host when its state changes: URL keys and their values. */
+export interface StateEvent {
+  source: typeof EMBED_MESSAGE_TAG;
+  type: 'state';
+  state: Record<string, EmbedValue>;
+}
+
+/** The only command the widget accepts: set some URL keys (r1..r4, t2, br, pd, pa, play, ...). */
+export interface SetStateCommand {
+  target: typeof EMBED_MESSAGE_TAG;
+  type: 'set-state';
+  state: Record<string, unknown>;
+}
+
+/** Longest string value a command may carry, characters (a URL value is never longer; more is refused unread). */
+export const MAX_VALUE_CHARS = 64;
+
+/** The lock that guards each URL key a command could set: a locked value is refused. */
+export const LOCK_OF_KEY: Readonly<Partial<Record<string, LockableParam>>> = {
+  r1: 'r1',
+  r2: 'r2',
+  r3: 'r3',
+  r4: 'r4',
+  t2: 'theta2',
+  br: 'branch',
+  pd: 'coupler',
+  pa: 'coupler',
+  play: 'play',
+};
+
+const NUMERIC = /^-?(\d+\.?\d*|\.\d+)(e-?\d+)?$/;
+
+function isRecord(x: unknown): x is Record<string, unknown> {
+  return typeof x === 'object' && x !== null && !Array.isArray(x);
+}
+
+/**
+ * The state as URL keys and JSON values, the keys serializeState writes for a share link: numbers where the
+ * URL text is a number (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
+ * (br 'open', dir 'ccw'). Every value is accepted back by applyPatch.
+ */
+export function stateValues(state: AppState): Record<string, EmbedValue> {
+  const out: Record<string, EmbedValue> = {};
+  for (const [name, text] of new URLSearchParams(serializeState(state))) {
+    const k = URL_KEYS.find((x) => x.name === name);
+    const raw = k?.get({ state, embed: DEFAULT_EMBED });
+    out[name] = typeof raw === 'boolean' ? raw : NUMERIC.test(text) ? Number(text) : text;
+  }
+  return out;
+}
+
+/** The message the widget posts for a state. */
+export function stateEvent(state: AppState): StateEvent {
+  return { source: EMBED_MESSAGE_TAG, type: 'state', state: stateValues(state) };
+}
+
+/** The keys and values of a set-state command, or null when data is not one (anything else is ignored). */
+export function readSetState(data: unknown): Record<string, unknown> | null {
+  if (!isRecord(data) || data.target !== EMBED_MESSAGE_TAG || data.type !== 'set-state') return null;
+  return isRecord(data.state) ? data.state : null;
+}
+
+/** A key of a patch that was not applied, and why (English, for the console). */
+export interface RefusedKey {
+  key: string;
+  why: string;
+}
+
+/** What applyPatch made of a patch: the new state, the keys applied, the keys refused and why. */
+export interface PatchResult {
+  state: AppState;
+  applied: string[];
+  refused: RefusedKey[];
+}
+
+function valueText(value: unknown): string | null {
+  if (typeof value === 'number') return Number.isFinite(value) ? String(value) : null;
+  if (typeof value === 'boolean') return value ? '1' : '0';
+  if (typeof value === 'string') return value.length <= MAX_VALUE_CHARS ? value : null;
+  return null;
+}
+
+/**
+ * Applies a patch of URL keys to the state through the URL table's codecs (the same parse as a link's query):
+ * numbers, booleans and strings up to MAX_VALUE_CHARS are read as the URL text they stand for. Unknown keys,
+ * embed-only keys (panels, lock), bad values and keys guarded by a lock in `locked` are refused and listed;
+ * the rules between keys (URL_CONSTRAINTS) revert the keys that break them. Never throws, never evaluates.
+ */
+export function applyPatch(
+  state: AppState,
+  patch: Readonly<Record<string, unknown>>,
+  locked: readonly LockableParam[] = [],
+): PatchResult {
+  const start: UrlTarget = { state, embed: DEFAULT_EMBED };
+  let target = start;
+  const applied: string[] = [];
+  const refused: RefusedKey[] = [];
+  for (const name of Object.keys(patch)) {
+    const k = URL_KEYS.find((x) => x.name === name);
+    if (!k || k.scope !== 'state') {
+      refused.push({ key: name, why: 'unknown key' });
+      continue;
+    }
+    const lock = LOCK_OF_KEY[name];
+    if (lock && locked.includes(lock)) {
+      refused.push({ key: name, why: `locked (${lock})` });
+      continue;
+    }
+    const text = valueText(patch[name]);
+    const r = text === null ? null : k.parse(text);
+    if (!r || !r.ok) {
+      refused.push({ key: name, why: r ? r.why : 'expected a finite number, a boolean or a short string' });
+      continue;
+    }
+    target = k.set(target, r.value);
+    applied.push(name);
+  }
+  for (const c of URL_CONSTRAINTS) {
+    if (c.holds(target.state)) continue;
+    for (const name of c.keys) {
+      const k = URL_KEYS.find((x) => x.name === name);
+      if (!k || !applied.includes(name)) continue;
+      target = k.set(target, k.get(start));
+      applied.splice(applied.indexOf(name), 1);
+      refused.push({ key: name, why: c.why });
+    }
+  }
+  return { state: applied.length ? target.state : state, applied, refused };
+}
