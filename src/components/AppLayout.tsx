@@ -8,6 +8,7 @@ import { AnglePlotsPanel } from './AnglePlotsPanel';
 import { Brand } from './Brand';
 import { ControlsPanel } from './ControlsPanel';
 import { ConvergencePanel } from './ConvergencePanel';
+import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
@@ -31,6 +32,7 @@ import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
+import { useDesignMetrics } from './useDesignMetrics';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
@@ -64,6 +66,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
+  const design = useDesignMetrics(state.linkage, state.branch);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
@@ -138,6 +141,17 @@ export function AppLayout({ initial }: AppLayoutProps) {
                 {cycleError}
               </p>
             ) : null}
+          </section>
+          <section className="card" aria-labelledby="sec-design">
+            <h2 id="sec-design" className="section-title">
+              {t.sectionDesign}
+            </h2>
+            <DesignPanel
+              design={design}
+              muBandLoDeg={state.muBandLoDeg}
+              muBandHiDeg={state.muBandHiDeg}
+              dispatch={dispatch}
+            />
           </section>
           <section className="card convergence-card">
             <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />

@@ -7,6 +7,7 @@ import { appUrl } from '../state/url';
 import { AnalysisPanel } from './AnalysisPanel';
 import { AnglePlotsPanel } from './AnglePlotsPanel';
 import { ControlsPanel } from './ControlsPanel';
+import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
@@ -26,6 +27,7 @@ import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
+import { useDesignMetrics } from './useDesignMetrics';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -64,6 +66,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const t = getMessages(state.locale);
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, true);
+  const design = useDesignMetrics(state.linkage, state.branch);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
@@ -122,6 +125,18 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
           {show('info') ? (
             <section className="card embed-card">
               <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+            </section>
+          ) : null}
+          {show('info') ? (
+            <section className="card embed-card" aria-label={t.sectionDesign}>
+              <DesignPanel
+                design={design}
+                muBandLoDeg={state.muBandLoDeg}
+                muBandHiDeg={state.muBandHiDeg}
+                dispatch={dispatch}
+                theta2Locked={!crankMovable}
+                compact
+              />
             </section>
           ) : null}
           {show('plots') ? (

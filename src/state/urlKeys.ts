@@ -153,6 +153,8 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   key('ang', boolCodec, stateLens('showAngles')),
   key('ghost', boolCodec, stateLens('showGhost')),
   key('trace', boolCodec, stateLens('showTrace')),
+  optional('dc', boolCodec, stateLens('showDeadCentres')),
+  optional('ic', boolCodec, stateLens('showInstantCentres')),
   key(
     'nr',
     enumCodec([

@@ -47,6 +47,8 @@ const gridState: fc.Arbitrary<AppState> = fc
     showAngles: fc.boolean(),
     showGhost: fc.boolean(),
     showTrace: fc.boolean(),
+    showDeadCentres: fc.boolean(),
+    showInstantCentres: fc.boolean(),
     nrStart: fc.constantFrom('continuation' as const, 'cold' as const),
     plotLayout: fc.constantFrom('separate' as const, 'together' as const),
     samples: fc.integer({ min: 12, max: 36000 }),
