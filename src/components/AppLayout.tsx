@@ -33,6 +33,7 @@ import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
+import { useDesignScene } from './useDesignScene';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
@@ -67,7 +68,8 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
   const design = useDesignMetrics(state.linkage, state.branch);
-  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const designScene = useDesignScene(state, local, design, t);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);

@@ -28,6 +28,7 @@ import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
+import { useDesignScene } from './useDesignScene';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -67,7 +68,8 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, true);
   const design = useDesignMetrics(state.linkage, state.branch);
-  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const designScene = useDesignScene(state, local, design, t);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
