@@ -34,9 +34,12 @@ import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
 import { useDesignScene } from './useDesignScene';
+import { deadCentreXMarks } from './transmissionInputs';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
+// The transmission plot (its chart module) loads after the first paint.
+const TransmissionPanel = lazy(() => import('./TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })));
 
 /** Props of AppLayout: the state parsed from the URL. */
 export interface AppLayoutProps {
@@ -69,6 +72,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { local, marker } = useLinkagePose(state, !onLab);
   const design = useDesignMetrics(state.linkage, state.branch);
   const designScene = useDesignScene(state, local, design, t);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
@@ -126,7 +130,20 @@ export function AppLayout({ initial }: AppLayoutProps) {
                     showOther={state.showGhost}
                     layout={state.plotLayout}
                     dispatch={dispatch}
+                    xMarks={xMarks}
                   />
+                </section>
+                <section className="card transmission-card" aria-label={t.chartTransmission}>
+                  <Suspense fallback={null}>
+                    <TransmissionPanel
+                      deg={deg}
+                      point={marker}
+                      branch={state.branch}
+                      muBandLoDeg={state.muBandLoDeg}
+                      muBandHiDeg={state.muBandHiDeg}
+                      xMarks={xMarks}
+                    />
+                  </Suspense>
                 </section>
               </>
             )}

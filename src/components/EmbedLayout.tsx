@@ -29,6 +29,7 @@ import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
 import { useDesignScene } from './useDesignScene';
+import { deadCentreXMarks } from './transmissionInputs';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -69,6 +70,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const { local, marker } = useLinkagePose(state, true);
   const design = useDesignMetrics(state.linkage, state.branch);
   const designScene = useDesignScene(state, local, design, t);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
@@ -150,6 +152,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
                 showOther={state.showGhost}
                 layout={state.plotLayout}
                 dispatch={dispatch}
+                xMarks={xMarks}
               />
             </section>
           ) : null}
