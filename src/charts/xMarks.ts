@@ -11,6 +11,17 @@ export interface XMark {
 /** Font size of the marks' labels, CSS pixels. */
 export const X_MARK_FONT_SIZE = 10;
 
+/** The marks to draw and their x in plot pixels: those with a finite xDeg inside the scale's domain, in order. */
+export function xMarkPositions(
+  marks: readonly XMark[],
+  x: ScaleLinear<number, number>,
+): { xPx: number; label: string }[] {
+  const [d0, d1] = x.domain();
+  return marks
+    .filter((m) => Number.isFinite(m.xDeg) && m.xDeg >= Math.min(d0, d1) && m.xDeg <= Math.max(d0, d1))
+    .map((m) => ({ xPx: x(m.xDeg), label: m.label }));
+}
+
 /**
  * Draws the marks in g (class x-mark per mark: a dashed line down height pixels and its label just above
  * the plot); marks outside the x domain or not finite are left out.
@@ -21,10 +32,9 @@ export function drawXMarks(
   x: ScaleLinear<number, number>,
   height: number,
 ): void {
-  const [d0, d1] = x.domain();
-  const shown = marks.filter((m) => Number.isFinite(m.xDeg) && m.xDeg >= d0 && m.xDeg <= d1);
+  const shown = xMarkPositions(marks, x);
   const sel = g
-    .selectAll<SVGGElement, XMark>('g.x-mark')
+    .selectAll<SVGGElement, { xPx: number; label: string }>('g.x-mark')
     .data(shown)
     .join((enter) => {
       const m = enter.append('g').attr('class', 'x-mark');
@@ -32,7 +42,7 @@ export function drawXMarks(
       m.append('text');
       return m;
     });
-  sel.attr('transform', (d) => `translate(${x(d.xDeg)},0)`);
+  sel.attr('transform', (d) => `translate(${d.xPx},0)`);
   sel
     .select('line')
     .attr('y1', 0)
