@@ -91,7 +91,10 @@ describe('xMarkPositions and deadCentreXMarks', () => {
     const marks = deadCentreXMarks(designMetrics({ r1: 6, r2: 2, r3: 5, r4: 5 }, 'open'), messagesEn);
     expect(marks.map((m) => m.label)).toEqual(['ext.', 'fold.']);
     const x = scaleLinear().domain([0, 360]).range([0, 720]);
-    const pos = xMarkPositions([...marks, { xDeg: 400, label: 'off' }, { xDeg: Number.NaN, label: 'nan' }], x);
+    const pos = xMarkPositions(
+      [...marks, { xDeg: 400, label: 'off' }, { xDeg: -10, label: 'below' }, { xDeg: Number.NaN, label: 'nan' }],
+      x,
+    );
     expect(pos.map((p) => p.label)).toEqual(['ext.', 'fold.']);
     // The extended dead centre from the law of cosines: angle at O2 of the triangle (6, 7, 5).
     expect(Math.abs(pos[0].xPx - 2 * deg(Math.acos((36 + 49 - 25) / 84)))).toBeLessThan(1e-9);
