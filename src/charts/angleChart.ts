@@ -18,6 +18,8 @@ import {
 } from './chartFrame';
 import type { AngleAxis } from './ticks';
 import { angleAxis, angleTicks, fittedTicks, tickCount } from './ticks';
+import type { XMark } from './xMarks';
+import { drawXMarks } from './xMarks';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -55,6 +57,8 @@ export interface AngleChartOptions extends AngleChartText {
   xMaxTicks?: number;
   /** Pixels of plot height per y tick; default 34. */
   yTickSpacing?: number;
+  /** Faint vertical rules on the theta2 axis (dead centres); default none. */
+  xMarks?: readonly XMark[];
 }
 
 /**
@@ -76,6 +80,8 @@ export interface AngleChart {
   resize(width: number, height: number): void;
   /** Sets the title and axis labels; a no-op when unchanged. */
   setText(text: AngleChartText): void;
+  /** Replaces the faint theta2 rules (dead centres); nothing else is redrawn. */
+  setXMarks(marks: readonly XMark[]): void;
   /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (angle degrees to plot pixels). */
   scale(name: 'x' | 'y'): ScaleLinear<number, number>;
 }
@@ -172,7 +178,7 @@ export interface AngleChartSize {
 }
 
 /** Fills in the documented defaults of the size options. */
-export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChartText>): AngleChartSize {
+export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChartText | 'xMarks'>): AngleChartSize {
   return {
     width: Math.max(0, options.width),
     height: Math.max(0, options.height),
@@ -263,6 +269,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   let text: AngleChartText = { title: options.title, xLabel: options.xLabel, yLabel: options.yLabel };
   let data = EMPTY_DATA;
   let marker: AngleMarker | null = null;
+  let xMarks: readonly XMark[] = options.xMarks ?? [];
   let frame = angleFrame(data.series, size);
   // What the axes and legend were last drawn for: they are redrawn only when this changes.
   let xAxisKey = '';
@@ -277,6 +284,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   const gridY = child(plot, 'g', 'grid-y');
   const ax = child(plot, 'g', 'axis-x');
   const ay = child(plot, 'g', 'axis-y');
+  const marksG = child(plot, 'g', 'x-marks');
   const lines = child(plot, 'g', 'lines');
   const mark = child(plot, 'g', 'marker');
   const mline = child(mark, 'line', 'mline')
@@ -367,6 +375,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
     drawAxes();
     drawLines();
     drawText();
+    drawXMarks(marksG, xMarks, frame.x, frame.ih);
     drawMarker();
   };
 
@@ -394,6 +403,10 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
       if (next.title === text.title && next.xLabel === text.xLabel && next.yLabel === text.yLabel) return;
       text = { ...next };
       if (laidOut()) drawText();
+    },
+    setXMarks(next) {
+      xMarks = next;
+      if (laidOut()) drawXMarks(marksG, xMarks, frame.x, frame.ih);
     },
     scale(name) {
       return (name === 'x' ? frame.x : frame.y).copy();

@@ -2,6 +2,7 @@ import './SvgChartView.css';
 import { useCallback, useLayoutEffect, useRef, useState } from 'react';
 import { createAngleChart } from '../charts/angleChart';
 import type { AngleChart, AngleMarker } from '../charts/angleChart';
+import type { XMark } from '../charts/xMarks';
 import type { AngleChartInputs } from './chartInputs';
 import { useElementSize } from './useElementSize';
 
@@ -11,13 +12,17 @@ export interface AngleChartViewProps {
   marker: AngleMarker;
   /** Accessible name of the chart figure. */
   label: string;
+  /** Faint theta2 rules (dead centres); default none. */
+  xMarks?: readonly XMark[];
 }
+
+const NO_MARKS: readonly XMark[] = [];
 
 /**
  * A live angle chart: the chart is created once per SVG element; new data redraw the curves (the axes
  * only when their domain changes), a new marker only moves the marker, a new size redraws everything.
  */
-export function AngleChartView({ inputs, marker, label }: AngleChartViewProps) {
+export function AngleChartView({ inputs, marker, label, xMarks = NO_MARKS }: AngleChartViewProps) {
   const boxRef = useRef<HTMLDivElement>(null);
   const [chart, setChart] = useState<AngleChart | null>(null);
   const svgRef = useCallback((svg: SVGSVGElement | null) => {
@@ -35,6 +40,9 @@ export function AngleChartView({ inputs, marker, label }: AngleChartViewProps) {
   useLayoutEffect(() => {
     chart?.setMarker(marker);
   }, [chart, marker]);
+  useLayoutEffect(() => {
+    chart?.setXMarks(xMarks);
+  }, [chart, xMarks]);
   useLayoutEffect(() => {
     if (width > 0 && height > 0) chart?.resize(width, height);
   }, [chart, width, height]);

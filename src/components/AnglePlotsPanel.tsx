@@ -1,6 +1,7 @@
 import './AnglePlotsPanel.css';
 import type { Dispatch } from 'react';
 import { memo, useMemo } from 'react';
+import type { XMark } from '../charts/xMarks';
 import type { Branch } from '../solver/types';
 import type { Action, PlotLayout } from '../state/appState';
 import type { PointResponse } from '../worker/protocol';
@@ -18,9 +19,11 @@ export interface AnglePlotsPanelProps {
   showOther: boolean;
   layout: PlotLayout;
   dispatch: Dispatch<Action>;
+  /** Faint theta2 rules on every chart (dead centres); default none. */
+  xMarks?: readonly XMark[];
 }
 
-function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch }: AnglePlotsPanelProps) {
+function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch, xMarks }: AnglePlotsPanelProps) {
   const t = useMessages();
   const in3 = useMemo(() => angleChartInputs('theta3', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const in4 = useMemo(() => angleChartInputs('theta4', deg, branch, showOther, t), [deg, branch, showOther, t]);
@@ -44,11 +47,11 @@ function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch }
       <div className={`plots-grid plots-${layout}`}>
         {layout === 'separate' ? (
           <>
-            <AngleChartView inputs={in3} marker={m3} label={t.chartTheta3} />
-            <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} />
+            <AngleChartView inputs={in3} marker={m3} label={t.chartTheta3} xMarks={xMarks} />
+            <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} xMarks={xMarks} />
           </>
         ) : (
-          <AngleChartView inputs={inBoth} marker={mBoth} label={t.chartBoth} />
+          <AngleChartView inputs={inBoth} marker={mBoth} label={t.chartBoth} xMarks={xMarks} />
         )}
       </div>
       <p className="footnote">{t.angleFootnote}</p>

@@ -8,6 +8,7 @@ import { AnglePlotsPanel } from './AnglePlotsPanel';
 import { Brand } from './Brand';
 import { ControlsPanel } from './ControlsPanel';
 import { ConvergencePanel } from './ConvergencePanel';
+import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
@@ -31,9 +32,14 @@ import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
+import { useDesignMetrics } from './useDesignMetrics';
+import { useDesignScene } from './useDesignScene';
+import { deadCentreXMarks } from './transmissionInputs';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
+// The transmission plot (its chart module) loads after the first paint.
+const TransmissionPanel = lazy(() => import('./TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })));
 
 /** Props of AppLayout: the state parsed from the URL. */
 export interface AppLayoutProps {
@@ -64,7 +70,10 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
-  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const design = useDesignMetrics(state.linkage, state.branch);
+  const designScene = useDesignScene(state, local, design, t);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
@@ -121,7 +130,20 @@ export function AppLayout({ initial }: AppLayoutProps) {
                     showOther={state.showGhost}
                     layout={state.plotLayout}
                     dispatch={dispatch}
+                    xMarks={xMarks}
                   />
+                </section>
+                <section className="card transmission-card" aria-label={t.chartTransmission}>
+                  <Suspense fallback={null}>
+                    <TransmissionPanel
+                      deg={deg}
+                      point={marker}
+                      branch={state.branch}
+                      muBandLoDeg={state.muBandLoDeg}
+                      muBandHiDeg={state.muBandHiDeg}
+                      xMarks={xMarks}
+                    />
+                  </Suspense>
                 </section>
               </>
             )}
@@ -138,6 +160,17 @@ export function AppLayout({ initial }: AppLayoutProps) {
                 {cycleError}
               </p>
             ) : null}
+          </section>
+          <section className="card" aria-labelledby="sec-design">
+            <h2 id="sec-design" className="section-title">
+              {t.sectionDesign}
+            </h2>
+            <DesignPanel
+              design={design}
+              muBandLoDeg={state.muBandLoDeg}
+              muBandHiDeg={state.muBandHiDeg}
+              dispatch={dispatch}
+            />
           </section>
           <section className="card convergence-card">
             <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />

@@ -234,6 +234,16 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
               checked={state.showTrace}
               onChange={(v) => dispatch({ type: 'setFlag', flag: 'showTrace', value: v })}
             />
+            <Toggle
+              label={t.showDeadCentres}
+              checked={state.showDeadCentres}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showDeadCentres', value: v })}
+            />
+            <Toggle
+              label={t.showInstantCentres}
+              checked={state.showInstantCentres}
+              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showInstantCentres', value: v })}
+            />
           </div>
           <label className="inline-field">
             <span>{t.samples}</span>

@@ -9,6 +9,7 @@ import { AnglePlotsPanel } from './AnglePlotsPanel';
 import { ControlsPanel } from './ControlsPanel';
 import type { EmbedBridge } from './embedBridge';
 import { frameBridge } from './embedBridge';
+import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
@@ -29,6 +30,9 @@ import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
+import { useDesignMetrics } from './useDesignMetrics';
+import { useDesignScene } from './useDesignScene';
+import { deadCentreXMarks } from './transmissionInputs';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -78,7 +82,10 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const t = getMessages(state.locale);
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, true);
-  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const design = useDesignMetrics(state.linkage, state.branch);
+  const designScene = useDesignScene(state, local, design, t);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
@@ -140,6 +147,18 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
               <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
             </section>
           ) : null}
+          {show('info') ? (
+            <section className="card embed-card" aria-label={t.sectionDesign}>
+              <DesignPanel
+                design={design}
+                muBandLoDeg={state.muBandLoDeg}
+                muBandHiDeg={state.muBandHiDeg}
+                dispatch={dispatch}
+                theta2Locked={!crankMovable}
+                compact
+              />
+            </section>
+          ) : null}
           {show('plots') ? (
             <section className="card embed-card embed-plots" ref={plotsRef}>
               <AnglePlotsPanel
@@ -149,6 +168,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
                 showOther={state.showGhost}
                 layout={state.plotLayout}
                 dispatch={dispatch}
+                xMarks={xMarks}
               />
             </section>
           ) : null}

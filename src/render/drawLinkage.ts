@@ -1,5 +1,6 @@
 import { TWO_PI } from '../solver/angles';
 import { STROKES } from '../theme/tokens';
+import { drawDesignOver, drawDesignUnder } from './designOverlay';
 import type { Px, ScreenRect } from './rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
@@ -276,10 +277,12 @@ export function drawLinkage(
   drawGroundPivot(ctx, O4);
 
   if (scene.ghost && scene.showGhost) drawGhost(ctx, v, scene.ghost);
+  if (layout.design) drawDesignUnder(ctx, layout.design);
   if (scene.pose) drawPose(ctx, layout);
   else drawUnassembled(ctx, scene, v, layout);
   drawJoint(ctx, O2, STROKES.pivotRadius);
   drawJoint(ctx, O4, STROKES.pivotRadius);
+  if (layout.design) drawDesignOver(ctx, layout.design);
   for (const l of layout.labels) drawLabel(ctx, l);
   if (layout.warning) drawWarning(ctx, layout.warning);
   ctx.restore();

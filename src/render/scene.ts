@@ -3,6 +3,7 @@ import { couplerPoint, jointPositions } from '../solver/kinematics';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
 import type { CouplerCurve, PoseAngles } from '../worker/protocol';
+import type { SceneDesign } from './designOverlay';
 import type { Bounds } from './view';
 import { emptyBounds, extendBounds, extendBoundsCircle } from './view';
 
@@ -55,6 +56,8 @@ export interface LinkageScene {
   text: SceneText;
   /** World bounds to fit: the crank and rocker circles and the coupler curves (stable while animating). */
   bounds: Bounds;
+  /** The design overlay (dead centres, instant centres, the mu band); absent draws none. */
+  design?: SceneDesign;
 }
 
 /** Coupler point: distance from A (length unit) and angle from AB (radians). */

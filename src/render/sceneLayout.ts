@@ -1,5 +1,7 @@
 import { PI, TWO_PI, angleDiff, radToDeg } from '../solver/angles';
 import { FONT_SIZES, STROKES } from '../theme/tokens';
+import type { DesignLayout } from './designOverlay';
+import { designLabels, layoutDesign, muOutsideBand } from './designOverlay';
 import type { LabelRequest, Obstacle } from './labelPlacement';
 import { placeLabels } from './labelPlacement';
 import type { Px, ScreenRect } from './rect';
@@ -25,7 +27,10 @@ export type LabelId =
   | 'r2'
   | 'r3'
   | 'r4'
-  | 'r1';
+  | 'r1'
+  | 'swing'
+  | 'I13'
+  | 'I24';
 
 /** The two label fonts: THEME.font (FONT_SIZES.canvas) and THEME.fontBold (FONT_SIZES.canvasBold). */
 export type LabelFont = 'regular' | 'bold';
@@ -78,6 +83,8 @@ export interface SceneLayout {
   warning: WarningBox | null;
   /** Labels that found no free spot (off-canvas joints, or a crowded tiny linkage). */
   dropped: LabelId[];
+  /** The design overlay in CSS pixels; null when the scene has none. */
+  design: DesignLayout | null;
 }
 
 /** Padding (CSS pixels) around a label's text inside its box; covers the white halo. */
@@ -349,7 +356,8 @@ export function layoutScene(
         if (Math.abs(arc.toRad - arc.fromRad) < 1e-9) continue;
         arcs.push(arc);
         obstacles.push(...arcObstacles(arc, 1, id));
-        add(id, texts[id], 'regular', arc.color, (w, h) => besideArc(arc, w, h));
+        const color = id === 'mu' && muOutsideBand(scene.design, pose.mu) ? THEME.warning : arc.color;
+        add(id, texts[id], 'regular', color, (w, h) => besideArc(arc, w, h));
       }
       for (const [p, q] of references) obstacles.push({ kind: 'segment', a: p, b: q, halfWidth: 1, weight: 1 });
     }
@@ -368,7 +376,12 @@ export function layoutScene(
     besideSegment(O2, O4, { x: (O2.x + O4.x) / 2, y: (O2.y + O4.y) / 2 - 1 }, STROKES.ground, w, h),
   );
 
-  // The warning first and the grid label next, then the joints, angles and links.
+  const design = scene.design ? layoutDesign(scene.design, l, v, joints, bounds) : null;
+  if (scene.design && design) {
+    for (const d of designLabels(scene.design, design)) add(d.id, d.text, 'regular', d.color, d.candidates);
+  }
+
+  // The warning first and the grid label next, then the joints, angles and links, then the design overlay.
   const order: LabelId[] = [
     'warning',
     'grid',
@@ -385,6 +398,9 @@ export function layoutScene(
     'r3',
     'r4',
     'r1',
+    'swing',
+    'I13',
+    'I24',
   ];
   requests.sort((x, y) => order.indexOf(x.id) - order.indexOf(y.id));
   const { placed, dropped } = placeLabels(requests, bounds, exclusions, obstacles);
@@ -397,5 +413,5 @@ export function layoutScene(
     const m = meta.get(p.id)!;
     labels.push({ id: p.id, text: m.text, font: m.font, color: m.color, centre: p.centre, box: p.box });
   }
-  return { joints, arcs, references, labels, warning, dropped };
+  return { joints, arcs, references, labels, warning, dropped, design };
 }

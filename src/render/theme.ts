@@ -24,6 +24,8 @@ export const THEME = {
   labelHalo: COLORS.labelHalo,
   couplerPoint: COLORS.couplerPoint,
   warning: COLORS.warning,
+  deadCentre: COLORS.deadCentre,
+  instantCentre: COLORS.instantCentre,
   warningFill: COLORS.warningFill,
   linkWidth: STROKES.link,
   jointRadius: STROKES.jointRadius,

@@ -44,6 +44,10 @@ export interface AppState {
   showAngles: boolean;
   showGhost: boolean;
   showTrace: boolean;
+  /** Canvas: faint outlines of the two dead-centre poses and the rocker's swing arc (crank-rockers). */
+  showDeadCentres: boolean;
+  /** Canvas: instant centres I13 and I24 with their construction lines. */
+  showInstantCentres: boolean;
   nrStart: NrStart;
   plotLayout: PlotLayout;
   /** Intervals per cycle: the sweep has samples + 1 points from 0 to 360 degrees. */
@@ -99,6 +103,8 @@ export const DEFAULT_STATE: AppState = {
   showAngles: true,
   showGhost: true,
   showTrace: true,
+  showDeadCentres: false,
+  showInstantCentres: false,
   nrStart: 'continuation',
   plotLayout: 'separate',
   samples: 360,
@@ -122,6 +128,9 @@ export function clamp(x: number, lo: number, hi: number): number {
   return Math.min(hi, Math.max(lo, x));
 }
 
+/** The boolean display toggles of the state. */
+export type ViewFlag = 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace' | 'showDeadCentres' | 'showInstantCentres';
+
 /** Every state change the UI can make. */
 export type Action =
   | { type: 'setLength'; field: keyof Linkage; value: number }
@@ -133,7 +142,7 @@ export type Action =
   | { type: 'setPlaying'; playing: boolean }
   | { type: 'setSpeed'; degPerFrame: number }
   | { type: 'setDirection'; direction: Direction }
-  | { type: 'setFlag'; flag: 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace'; value: boolean }
+  | { type: 'setFlag'; flag: ViewFlag; value: boolean }
   | { type: 'setNrStart'; start: NrStart }
   | { type: 'setPlotLayout'; layout: PlotLayout }
   | { type: 'setSamples'; samples: number }

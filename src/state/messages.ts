@@ -37,6 +37,39 @@ export interface Messages {
   embedCodeLabel: string;
   embedPreviewNote: string;
   sectionAnalysis: string;
+  /** Design metrics panel (issue 10): transmission extremes, dead centres, swing, time ratio, input limits. */
+  sectionDesign: string;
+  designMuMin: string;
+  designMuMax: string;
+  /** Where an extreme or a dead centre occurs: "at θ2 = 44.415°". */
+  designAt: (theta2: string) => string;
+  deadCentreExtended: string;
+  deadCentreFolded: string;
+  /** The rocker angle at a dead centre: "θ4 = 101.537°". */
+  deadCentreTheta4: (theta4: string) => string;
+  swing: string;
+  timeRatio: string;
+  inputLimit: string;
+  goTo: string;
+  /** Accessible name of a go-to button: "Go to the extended dead centre (θ2 = 44.415°)". */
+  goToLabel: (what: string, theta2: string) => string;
+  noDeadCentres: string;
+  muBand: string;
+  muBandOrder: string;
+  showDeadCentres: string;
+  showInstantCentres: string;
+  chartTransmission: string;
+  axisMu: string;
+  legendMu: string;
+  legendOutsideBand: string;
+  legendBand: (lo: string, hi: string) => string;
+  /** Short chart labels of the dead-centre rules on θ2 axes. */
+  markExtended: string;
+  markFolded: string;
+  /** Canvas label of the swing arc: "swing 48.54°". */
+  swingLabel: (deg: string) => string;
+  /** Canvas edge marker of an off-screen instant centre: "I13 (12.3, −4.5)". */
+  offscreenCentre: (name: string, x: string, y: string) => string;
   sectionPlots: string;
 
   /** Accessible names of the fields and sliders; English ones begin with r1..r4 and θ2. */

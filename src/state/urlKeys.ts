@@ -193,6 +193,8 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   optional('a2', numberCodec('alpha2'), stateLens('alpha2RadPerS2')),
   optional('mulo', numberCodec('muBandLo'), stateLens('muBandLoDeg')),
   optional('muhi', numberCodec('muBandHi'), stateLens('muBandHiDeg')),
+  optional('dc', boolCodec, stateLens('showDeadCentres')),
+  optional('ic', boolCodec, stateLens('showInstantCentres')),
   key('z', numberCodec(ZOOM_RANGE, { significant: URL_VIEW_DIGITS }), viewLens('zoom'), 'state', viewMoved),
   key('px', numberCodec(PAN_RANGE, { significant: URL_VIEW_DIGITS }), viewLens('panX'), 'state', viewMoved),
   key('py', numberCodec(PAN_RANGE, { significant: URL_VIEW_DIGITS }), viewLens('panY'), 'state', viewMoved),

@@ -80,6 +80,13 @@ export const COLORS = {
   marker: '#e2590c',
   residual: '#2563eb',
   tolerance: '#9ca3af',
+  /** Outlines of the dead-centre poses and the swing arc; instant centres and their construction lines. */
+  deadCentre: '#64748b',
+  instantCentre: '#0e7490',
+  /** Transmission plot: the usable band's fill and the stretches of mu outside it. */
+  muBandFill: 'rgba(6, 118, 71, 0.1)',
+  muOutside: '#b91c1c',
+  muOutsideFill: 'rgba(185, 28, 28, 0.08)',
   warningFill: 'rgba(254, 242, 242, 0.94)',
   warning: '#b91c1c',
 } as const;
@@ -108,6 +115,14 @@ export const STROKES = {
   traceGhostDash: [4, 4],
   groundDash: [6, 4],
   referenceDash: [3, 3],
+  deadCentre: 1.5,
+  deadCentreDash: [2, 3],
+  construction: 1,
+  constructionDash: [6, 3, 1, 3],
+  instantCentreRadius: 4,
+  /** Edge marker of an off-screen instant centre: inset from the canvas edge and arrow length. */
+  edgeInset: 14,
+  edgeArrow: 10,
 } as const;
 
 /** The canvas's zoom buttons (CSS pixels): inset from the top-right corner, button size, gap, how many. */

@@ -1,0 +1,44 @@
+import { useMemo } from 'react';
+import { degToRad, radToDeg } from '../solver/angles';
+// The module itself, not the solver's barrel (which would pull the sweep and NR into the main bundle).
+import { instantCenters } from '../solver/instantCenters';
+import type { SceneDesign } from '../render/designOverlay';
+import type { AppState } from '../state/appState';
+import { formatDeg, formatNumber } from '../state/format';
+import type { Messages } from '../state/messages';
+import type { LocalPose } from './localPose';
+import type { DesignInfo } from './useDesignMetrics';
+
+/**
+ * The canvas's design overlay for this frame: the mu band (always, for the mu label's colour), the dead
+ * centres and swing when that toggle is on and the input is a crank driving a rocker, and this pose's
+ * instant centres when that toggle is on.
+ */
+export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {
+  const { showDeadCentres, showInstantCentres, muBandLoDeg, muBandHiDeg } = state;
+  const output = design?.metrics.output ?? null;
+  const dead = useMemo(
+    () => (showDeadCentres && output ? [output.extended, output.folded] : null),
+    [showDeadCentres, output],
+  );
+  const { linkage, theta2Rad, pose } = local;
+  const centres = useMemo(() => {
+    if (!showInstantCentres || !pose) return null;
+    try {
+      return instantCenters(linkage, theta2Rad, pose);
+    } catch {
+      return null;
+    }
+  }, [showInstantCentres, linkage, theta2Rad, pose]);
+  const swingText = output ? t.swingLabel(`${formatDeg(radToDeg(output.swing), 2)}°`) : '';
+  return useMemo(
+    () => ({
+      muBandRad: { lo: degToRad(muBandLoDeg), hi: degToRad(muBandHiDeg) },
+      deadCentres: dead,
+      swingText,
+      instantCentres: centres,
+      offscreenText: (name, x, y) => t.offscreenCentre(name, formatNumber(x, 3), formatNumber(y, 3)),
+    }),
+    [muBandLoDeg, muBandHiDeg, dead, swingText, centres, t],
+  );
+}
