@@ -5,7 +5,7 @@ import { waitReady } from './helpers';
 import { gifFacts, videoDurationInBrowser, webmFacts } from './media';
 
 /**
- * The Export panel's animation export, driven as a person does. Expected UI (the integrator wires it):
+ * The Export panel's animation export, driven as a person does. The UI:
  * a group "Animation size" with radios "Screen" and "720p", a number input "Frames per cycle" (36..720),
  * a checkbox "Loop" (checked by default), buttons "Export animation GIF" and "Export animation WebM", and
  * while an export runs a progressbar "Animation export progress" with a "Cancel" button beside it; the
@@ -25,8 +25,7 @@ async function setFrames(page: Page, n: number): Promise<void> {
   await page.getByRole('spinbutton', { name: 'Frames per cycle' }).press('Enter');
 }
 
-// Remove .fixme once the Export panel has the animation controls described above.
-test.describe.fixme('animation export', () => {
+test.describe('animation export', () => {
   test('the GIF decodes to one cycle of frames at the screen size, looping', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

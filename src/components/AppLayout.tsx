@@ -65,7 +65,16 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
+    state,
+    point,
+    marker,
+    cycle,
+    client,
+    deg,
+    scene,
+    t,
+  });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -146,7 +155,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <h2 id="sec-export" className="section-title">
               {t.sectionExport}
             </h2>
-            <ExportPanel onPng={onPng} onCsv={onCsv} />
+            <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} />
           </section>
           <section className="card" aria-labelledby="sec-share">
             <h2 id="sec-share" className="section-title">

@@ -65,7 +65,16 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, true);
   const { scene, description } = useLinkageScene(state, local, cycle, t);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
+    state,
+    point,
+    marker,
+    cycle,
+    client,
+    deg,
+    scene,
+    t,
+  });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -138,7 +147,7 @@ export function EmbedLayout({ initial }: EmbedLayoutProps) {
           ) : null}
           {show('export') ? (
             <section className="card embed-card">
-              <ExportPanel onPng={onPng} onCsv={onCsv} compact />
+              <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
             </section>
           ) : null}
           <SolverStatus mode={solverMode} reason={solverReason} />
