@@ -126,10 +126,11 @@ export class SvgContext implements DrawContext {
   private readonly measure: MeasureFont;
   private readonly elements: string[] = [];
   private readonly stack: DrawState[] = [];
+  // The canvas's initial state: black paint (a spec default, not a palette colour), 1 px lines, 10px sans-serif.
   private s: DrawState = {
     matrix: IDENTITY,
-    fillStyle: '#000000',
-    strokeStyle: '#000000',
+    fillStyle: 'black',
+    strokeStyle: 'black',
     lineWidth: 1,
     lineCap: 'butt',
     lineJoin: 'miter',
