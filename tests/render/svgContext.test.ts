@@ -69,6 +69,20 @@ describe('SvgContext', () => {
     expect(pts[1].args[4]).toBe(0);
   });
 
+  it('turns the sweep round under a mirroring transform (y up)', () => {
+    const ctx = new SvgContext(100, 100, { measure: fixedMeasure });
+    ctx.translate(0, 100);
+    ctx.scale(1, -1);
+    ctx.beginPath();
+    ctx.arc(50, 50, 10, 0, Math.PI / 2);
+    ctx.stroke();
+    const pts = pathPoints(elements(ctx.toSvg())[0].attrs.d);
+    // World (50, 60) lands at (50, 40) on the page; the clockwise canvas arc is counter-clockwise there.
+    expect(Math.abs(pts[1].x - 50)).toBeLessThan(PX_TOL);
+    expect(Math.abs(pts[1].y - 40)).toBeLessThan(PX_TOL);
+    expect(pts[1].args[4]).toBe(0);
+  });
+
   it('joins an arc to the current point with a line, as the canvas does', () => {
     const ctx = new SvgContext(100, 100, { measure: fixedMeasure });
     ctx.beginPath();
