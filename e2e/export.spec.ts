@@ -24,7 +24,7 @@ test.describe('exports', () => {
       ['300 DPI print', 300 / 96],
     ];
     for (const [size, k] of sizes) {
-      await page.getByRole('radio', { name: size }).check();
+      await page.getByRole('group', { name: 'PNG size' }).getByRole('radio', { name: size }).check();
       const d = await download(page, 'Export linkage view PNG');
       const suffix = k === 1 ? 'screen' : k === 2 ? '2x' : '300dpi';
       expect(d.suggestedFilename()).toBe(`fourbar_6-2-5-5_open_theta2-45_linkage_${suffix}.png`);

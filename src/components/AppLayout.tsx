@@ -74,7 +74,16 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const designScene = useDesignScene(state, local, design, t);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
+    state,
+    point,
+    marker,
+    cycle,
+    client,
+    deg,
+    scene,
+    t,
+  });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -179,7 +188,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <h2 id="sec-export" className="section-title">
               {t.sectionExport}
             </h2>
-            <ExportPanel onPng={onPng} onCsv={onCsv} />
+            <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} />
           </section>
           <section className="card" aria-labelledby="sec-share">
             <h2 id="sec-share" className="section-title">

@@ -86,7 +86,16 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const designScene = useDesignScene(state, local, design, t);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
-  const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
+    state,
+    point,
+    marker,
+    cycle,
+    client,
+    deg,
+    scene,
+    t,
+  });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
@@ -174,7 +183,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
           ) : null}
           {show('export') ? (
             <section className="card embed-card">
-              <ExportPanel onPng={onPng} onCsv={onCsv} compact />
+              <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
             </section>
           ) : null}
           <SolverStatus mode={solverMode} reason={solverReason} />

@@ -1,17 +1,22 @@
 import { memo, useState } from 'react';
+import type { AnimationExportResult } from '../export/types';
 import type { ExportSubject, PngSize } from '../state/fileNames';
+import type { AnimationRequest } from './animationExporter';
+import { AnimationExportControls } from './AnimationExportControls';
 import { useMessages } from './MessagesContext';
 import { Segmented } from './Segmented';
 
 /** Props of ExportPanel: handlers that build and download each file; they reject with a reason on failure. */
 export interface ExportPanelProps {
   onPng: (subject: ExportSubject, size: PngSize) => Promise<void>;
+  onSvg: (subject: ExportSubject) => Promise<void>;
   onCsv: () => Promise<void>;
+  onAnimation: (request: AnimationRequest) => Promise<AnimationExportResult>;
   /** Hide the size choice and offer fewer buttons (embed). */
   compact?: boolean;
 }
 
-function ExportPanelImpl({ onPng, onCsv, compact = false }: ExportPanelProps) {
+function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false }: ExportPanelProps) {
   const t = useMessages();
   const [size, setSize] = useState<PngSize>('2x');
   const [status, setStatus] = useState('');
@@ -19,12 +24,12 @@ function ExportPanelImpl({ onPng, onCsv, compact = false }: ExportPanelProps) {
     setStatus('');
     f().catch((e: unknown) => setStatus(t.exportFailed(e instanceof Error ? e.message : String(e))));
   };
-  const items: { subject: ExportSubject; label: string }[] = [
-    { subject: 'linkage', label: t.exportLinkage },
-    { subject: 'theta3', label: t.exportTheta3 },
-    { subject: 'theta4', label: t.exportTheta4 },
-    { subject: 'both', label: t.exportBoth },
-    { subject: 'convergence', label: t.exportConvergence },
+  const items: { subject: ExportSubject; label: string; svgLabel: string }[] = [
+    { subject: 'linkage', label: t.exportLinkage, svgLabel: t.exportLinkageSvg },
+    { subject: 'theta3', label: t.exportTheta3, svgLabel: t.exportTheta3Svg },
+    { subject: 'theta4', label: t.exportTheta4, svgLabel: t.exportTheta4Svg },
+    { subject: 'both', label: t.exportBoth, svgLabel: t.exportBothSvg },
+    { subject: 'convergence', label: t.exportConvergence, svgLabel: t.exportConvergenceSvg },
   ];
   const shown = compact ? items.filter((i) => i.subject === 'linkage' || i.subject === 'both') : items;
   return (
@@ -54,12 +59,20 @@ function ExportPanelImpl({ onPng, onCsv, compact = false }: ExportPanelProps) {
           {t.exportCsv}
         </button>
       </div>
+      <div className="export-buttons">
+        {shown.map((i) => (
+          <button key={i.subject} type="button" className="btn btn-small" onClick={() => run(() => onSvg(i.subject))}>
+            {i.svgLabel}
+          </button>
+        ))}
+      </div>
       <p className="status-line" role="status" aria-live="polite">
         {status}
       </p>
+      <AnimationExportControls onAnimation={onAnimation} />
     </div>
   );
 }
 
-/** Export buttons: PNG of the linkage view and of each plot at the chosen size, and the cycle as CSV. */
+/** Export buttons: PNG (at the chosen size) and SVG of the linkage view and each plot, the cycle as CSV, and the animation. */
 export const ExportPanel = memo(ExportPanelImpl);

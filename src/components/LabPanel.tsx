@@ -10,14 +10,14 @@ import type { Action, AppState } from '../state/appState';
 import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
 import { SWEEP_METHODS } from '../solver/methods';
 import type { PngSize } from '../state/fileNames';
-import { labFileName } from '../state/fileNames';
+import { labFileName, labSvgFileName } from '../state/fileNames';
 import { formatDeg, formatSci } from '../state/format';
 import { HARD_CASES } from '../state/hardCases';
 import { labToCsv } from '../state/labCsv';
 import { labProgressStatus } from '../state/labStage';
 import type { SolverClient } from '../worker/client';
 import { downloadPng, downloadText } from './exporters';
-import { labPng } from './labExport';
+import { labPng, labSvg } from './labExport';
 import { useMessages } from './MessagesContext';
 import { Segmented } from './Segmented';
 import { SvgChartView } from './SvgChartView';
@@ -117,6 +117,15 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
     } catch (e) {
       setExportStatus(t.exportFailed(e instanceof Error ? e.message : String(e)));
     }
+  };
+  const onSvg = () => {
+    if (!result) return;
+    const { width, height } = LAB_EXPORT_SIZE;
+    downloadText(
+      labSvg(result.series, { ...chartOptions, width, height }),
+      labSvgFileName(result.linkage, result.branch, result.stepDeg),
+      'image/svg+xml;charset=utf-8',
+    );
   };
   const onCsv = () => {
     if (!result) return;
@@ -272,6 +281,9 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
           />
           <button type="button" className="btn btn-small" onClick={() => void onPng()} disabled={!result}>
             {t.exportLabPng}
+          </button>
+          <button type="button" className="btn btn-small" onClick={onSvg} disabled={!result}>
+            {t.exportLabSvg}
           </button>
           <button type="button" className="btn btn-small" onClick={onCsv} disabled={!result}>
             {t.exportLabCsv}

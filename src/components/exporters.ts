@@ -4,8 +4,9 @@ import { drawConvergenceChart } from '../charts/convergenceChart';
 import { canvasToPngBytes, downloadBlob } from '../render/download';
 import { drawLinkage } from '../render/drawLinkage';
 import { withPngDpi } from '../render/png';
-import { svgToPngBytes } from '../render/rasterize';
+import { svgToPngBytes, svgToText } from '../render/rasterize';
 import type { LinkageScene } from '../render/scene';
+import { SvgContext } from '../render/svgContext';
 import { fitView } from '../render/view';
 import type { ViewOffset } from '../state/appState';
 import type { CycleTable } from '../state/csv';
@@ -31,6 +32,34 @@ export async function linkagePng(
   ctx.setTransform(canvas.width / width, 0, 0, canvas.height / height, 0, 0);
   drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
   return withPngDpi(await canvasToPngBytes(canvas), PNG_DPI[size]);
+}
+
+/** The linkage scene as an SVG document of width x height CSS pixels, drawn by drawLinkage itself (text as <text>). */
+export function linkageSvg(scene: LinkageScene, view: ViewOffset, width: number, height: number): string {
+  const ctx = new SvgContext(width, height);
+  drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
+  return ctx.toSvg();
+}
+
+/** An angle chart drawn off screen at width x height CSS pixels, as SVG text (the chart's own SVG). */
+export function angleChartSvg(inputs: AngleChartInputs, marker: AngleMarker, width: number, height: number): string {
+  const svg = detachedSvg();
+  drawAngleChart(svg, inputs.data, marker, {
+    width,
+    height,
+    title: inputs.title,
+    xLabel: inputs.xLabel,
+    yLabel: inputs.yLabel,
+  });
+  return svgToText(svg);
+}
+
+/** The convergence chart drawn off screen at width x height CSS pixels, as SVG text. */
+export function convergenceSvg(inputs: ConvergenceInputs, width: number, height: number): string {
+  const svg = detachedSvg();
+  const { runs, tolerance, ...text } = inputs;
+  drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height });
+  return svgToText(svg);
 }
 
 /** A new SVG element outside the document, for off-screen chart rendering. */

@@ -1,12 +1,14 @@
 import { useCallback, useRef } from 'react';
+import type { AnimationExportResult } from '../export/types';
 import type { LinkageScene } from '../render/scene';
 import type { AppState } from '../state/appState';
 import type { ExportSubject, PngSize } from '../state/fileNames';
-import { csvFileName, pngFileName } from '../state/fileNames';
+import { csvFileName, pngFileName, svgFileName } from '../state/fileNames';
 import type { Messages } from '../state/messages';
 import type { SolverClient } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { decodeStatuses } from '../worker/statusCodes';
+import type { AnimationRequest } from './animationExporter';
 import type { CycleDegrees } from './chartInputs';
 import { angleChartInputs, angleMarker, convergenceInputs } from './chartInputs';
 import { useStableCallback } from './useStableCallback';
@@ -31,10 +33,14 @@ export interface ExportSources {
   t: Messages;
 }
 
-/** Stable export handlers (PNG of the linkage or a plot, CSV of the cycle) and the canvas size report they use. */
+/** Stable export handlers (PNG or SVG of the linkage or a plot, CSV, animation) and the canvas size report they use. */
 export interface Exports {
   onPng: (subject: ExportSubject, size: PngSize) => Promise<void>;
+  /** Downloads the linkage view or a plot as SVG (text as text). */
+  onSvg: (subject: ExportSubject) => Promise<void>;
   onCsv: () => Promise<void>;
+  /** Exports one cycle as GIF or WebM and downloads it when done; resolves to the outcome. */
+  onAnimation: (request: AnimationRequest) => Promise<AnimationExportResult>;
   /** Give to LinkageCanvas: the linkage PNG is drawn at the on-screen canvas size. */
   onCanvasSize: (width: number, height: number) => void;
 }
@@ -69,6 +75,39 @@ export function useExports(sources: ExportSources): Exports {
     }
     downloadPng(bytes, name);
   });
+  const onSvg = useStableCallback(async (subject: ExportSubject) => {
+    const { state: s, point: p, marker, deg: d, scene, t } = sources;
+    const { angleChartSvg, convergenceSvg, downloadText, linkageSvg } = await import('./exporters');
+    let text: string;
+    if (subject === 'linkage') {
+      const { width, height } = canvasSize.current;
+      text = linkageSvg(scene, s.view, width, height);
+    } else if (subject === 'convergence') {
+      const { width, height } = CONVERGENCE_EXPORT_SIZE;
+      text = convergenceSvg(convergenceInputs(p, s.nrStart, t), width, height);
+    } else {
+      const { width, height } = ANGLE_EXPORT_SIZE;
+      text = angleChartSvg(
+        angleChartInputs(subject, d, s.branch, s.showGhost, t),
+        angleMarker(subject, marker),
+        width,
+        height,
+      );
+    }
+    downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
+  });
+  const onAnimation = useStableCallback(async (request: AnimationRequest) => {
+    const { state, cycle, scene, t } = sources;
+    if (!cycle) throw new Error('the cycle is still being solved');
+    // The frame planner, the encoders and their worker load on the first animation export.
+    const { exportLinkageAnimation } = await import('./animationExporter');
+    const { width, height } = canvasSize.current;
+    const devicePixelRatio = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
+    return exportLinkageAnimation(
+      { state, cycle, scene, viewWidth: width, viewHeight: height, devicePixelRatio, t },
+      request,
+    );
+  });
   const onCsv = useStableCallback(async () => {
     const { state: s, client } = sources;
     if (!client) throw new Error('the solver is still starting');
@@ -93,5 +132,5 @@ export function useExports(sources: ExportSources): Exports {
       csvFileName(tbl.linkage, tbl.branch, tbl.samples),
     );
   });
-  return { onPng, onCsv, onCanvasSize };
+  return { onPng, onSvg, onCsv, onAnimation, onCanvasSize };
 }

@@ -7,9 +7,9 @@ import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
 import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
 import type { AppState } from '../state/appState';
 import { formatDeg, formatNumber } from '../state/format';
-import { formatInputRange } from '../state/inputRange';
 import type { Messages } from '../state/messages';
 import type { CycleResponse } from '../worker/protocol';
+import { sceneWarning } from './frameScene';
 import type { LocalPose } from './localPose';
 
 /** The scene to draw and its accessible description (the angles, or why it cannot assemble). */
@@ -49,18 +49,7 @@ export function useLinkageScene(
 
   const classification = cycle?.classification ?? null;
   const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
-  const warning = !local.pose
-    ? classification?.type === 'cannot-assemble'
-      ? t.cannotAssembleAny
-      : t.cannotAssembleAt(theta2Text)
-    : null;
-  const warningDetail =
-    warning &&
-    classification &&
-    classification.type !== 'cannot-assemble' &&
-    classification.inputRange.intervals.length > 0
-      ? t.reachableHint(formatInputRange(classification.inputRange, t))
-      : null;
+  const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
   const text: SceneText = useMemo(
     () => ({
       ...t.jointLabels,

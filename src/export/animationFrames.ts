@@ -6,6 +6,10 @@ import { LIMIT_INSET_DEG, advanceTheta2, inputTurnsFully } from '../state/animat
 import type { Direction } from '../state/appState';
 import { NOMINAL_FPS } from '../state/appState';
 
+// The bounds live in their own module so the Export panel can show them without loading the planner.
+import { FRAMES_PER_CYCLE_MAX, FRAMES_PER_CYCLE_MIN } from './framesPerCycle';
+export { FRAMES_PER_CYCLE_DEFAULT, FRAMES_PER_CYCLE_MAX, FRAMES_PER_CYCLE_MIN } from './framesPerCycle';
+
 /** One frame of an exported animation: the input angle (radians, [0, 2π)) and the assembly branch to draw. */
 export interface AnimationFrame {
   theta2Rad: Radians;
@@ -25,13 +29,6 @@ export interface FramePlan {
   /** Degrees the input travels in one cycle: 360 for a full turn, twice the interval's width when rocking. */
   travelDeg: number;
 }
-
-/** Fewest frames per cycle the export offers. */
-export const FRAMES_PER_CYCLE_MIN = 36;
-/** Most frames per cycle the export offers. */
-export const FRAMES_PER_CYCLE_MAX = 720;
-/** Frames per cycle unless the user picks another number. */
-export const FRAMES_PER_CYCLE_DEFAULT = 120;
 
 /** Where the animation starts: the app's input angle (degrees), direction and branch, and the input's range. */
 export interface FramePlanInput {

@@ -4,6 +4,7 @@
  * centre shown by an arrow at the canvas edge. layoutDesign places it in CSS pixels, designLabels asks the
  * scene's label placement for its texts, drawDesignUnder / drawDesignOver paint it below and above the pose.
  */
+import type { DrawContext } from './drawContext';
 import { PI, TWO_PI, angleDiff } from '../solver/angles';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
@@ -15,7 +16,7 @@ import { THEME } from './theme';
 import type { ViewTransform } from './view';
 import { toScreenX, toScreenY } from './view';
 
-type Ctx = CanvasRenderingContext2D | OffscreenCanvasRenderingContext2D;
+type Ctx = DrawContext;
 
 /** Names of the instant centres drawn. */
 export type CentreName = 'I13' | 'I24';

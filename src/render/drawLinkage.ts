@@ -1,6 +1,7 @@
 import { TWO_PI } from '../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
+import type { DrawContext } from './drawContext';
 import type { Px, ScreenRect } from './rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
@@ -9,7 +10,8 @@ import { THEME } from './theme';
 import type { ViewTransform } from './view';
 import { gridLines, toScreenX, toScreenY } from './view';
 
-type Ctx = CanvasRenderingContext2D | OffscreenCanvasRenderingContext2D;
+// Any DrawContext: a canvas's 2D context, or SvgContext for the vector export.
+type Ctx = DrawContext;
 
 function fontOf(font: LabelFont): string {
   return font === 'bold' ? THEME.fontBold : THEME.font;

@@ -53,3 +53,27 @@ export function labFileName(l: Linkage, branch: Branch, stepDeg: number, ext: 'p
   const sz = ext === 'png' && size ? `_${SUFFIX[size]}` : '';
   return `${fileStem(l, branch)}_work-precision_step${fileNumber(stepDeg)}${sz}.${ext}`;
 }
+
+/** Animation file formats, as file extensions. */
+export type AnimationExt = 'gif' | 'webm';
+
+/** File name of an animation export, e.g. fourbar_6-2-5-5_open_cycle_120f_720p.gif (size 'screen' or '720p'). */
+export function animationFileName(
+  l: Linkage,
+  branch: Branch,
+  framesPerCycle: number,
+  size: 'screen' | '720p',
+  ext: AnimationExt,
+): string {
+  return `${fileStem(l, branch)}_cycle_${fileNumber(framesPerCycle)}f_${size}.${ext}`;
+}
+
+/** File name of an SVG export, e.g. fourbar_6-2-5-5_open_theta2-45_linkage.svg (the angle as in pngFileName). */
+export function svgFileName(l: Linkage, branch: Branch, theta2Deg: number, subject: ExportSubject): string {
+  return pngFileName(l, branch, theta2Deg, subject, 'screen').replace(/_screen\.png$/, '.svg');
+}
+
+/** File name of the solver lab's diagram as SVG, e.g. fourbar_6-2-5-5_open_work-precision_step1.svg. */
+export function labSvgFileName(l: Linkage, branch: Branch, stepDeg: number): string {
+  return `${fileStem(l, branch)}_work-precision_step${fileNumber(stepDeg)}.svg`;
+}

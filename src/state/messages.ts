@@ -18,6 +18,27 @@ export interface Messages {
   sectionAnimation: string;
   sectionDisplay: string;
   sectionExport: string;
+  /** Animation export (Export panel): the size group, 720p, frames, loop, buttons, progress, outcomes. */
+  animationSize: string;
+  size720p: string;
+  framesPerCycle: string;
+  animationLoop: string;
+  exportGif: string;
+  exportWebm: string;
+  animationProgress: string;
+  cancel: string;
+  animationRunning: (done: number, total: number) => string;
+  animationDone: (format: string) => string;
+  animationCancelled: string;
+  animationUnsupported: (reason: string) => string;
+  framesOutOfRange: (min: number, max: number) => string;
+  /** Vector export buttons. */
+  exportLinkageSvg: string;
+  exportTheta3Svg: string;
+  exportTheta4Svg: string;
+  exportBothSvg: string;
+  exportConvergenceSvg: string;
+  exportLabSvg: string;
   sectionShare: string;
   /** The Share panel's embed generator: its summary, size presets, lock names, preview and code labels. */
   embedGenerator: string;
