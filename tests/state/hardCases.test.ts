@@ -29,7 +29,7 @@ const EXPECTED_BARKER: Record<number, string> = {
   19: 'I-2 GCRR',
   20: 'I-3 GRCR',
   21: 'none',
-  22: 'none',
+  22: 'II-1 RRR1',
   23: 'I-2 GCRR',
 };
 
