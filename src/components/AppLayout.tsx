@@ -11,6 +11,7 @@ import { ConvergencePanel } from './ConvergencePanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
+import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
 import { SharePanel } from './SharePanel';
@@ -22,8 +23,10 @@ import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
+import { useFrameMotion } from './useFrameMotion';
 import { useLinkagePose } from './useLinkagePose';
 import { useLinkageScene } from './useLinkageScene';
+import { useSceneVectors } from './useSceneVectors';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useStableCallback } from './useStableCallback';
@@ -64,7 +67,9 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
   const { local, marker } = useLinkagePose(state, !onLab);
-  const { scene, description } = useLinkageScene(state, local, cycle, t);
+  const motion = useFrameMotion(state, local);
+  const vectors = useSceneVectors(state, motion, t);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, vectors);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
   const getState = useStableCallback(() => state);
@@ -138,6 +143,12 @@ export function AppLayout({ initial }: AppLayoutProps) {
                 {cycleError}
               </p>
             ) : null}
+          </section>
+          <section className="card" aria-labelledby="sec-motion-results">
+            <h2 id="sec-motion-results" className="section-title">
+              {t.motionPanelTitle}
+            </h2>
+            <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
           </section>
           <section className="card convergence-card">
             <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />

@@ -2,6 +2,7 @@ import { useMemo } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { radToDeg, radToDeg360 } from '../solver/angles';
 import type { Branch } from '../solver/types';
+import type { SceneVectors } from '../render/motionVectors';
 import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
 import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
 import type { AppState } from '../state/appState';
@@ -20,13 +21,14 @@ export interface LinkageSceneView {
 /**
  * Builds the canvas scene from this frame's pose (solved on the main thread) and the latest cycle: joints,
  * ghost, the coupler curves with the current circuit marked, bounds that stay put while the linkage moves
- * (from the cycle once it has arrived), and the texts.
+ * (from the cycle once it has arrived), the texts, and the motion vectors when given (useSceneVectors).
  */
 export function useLinkageScene(
   state: AppState,
   local: LocalPose,
   cycle: CycleResponse | null,
   t: Messages,
+  vectors: SceneVectors | null = null,
 ): LinkageSceneView {
   const { linkage, coupler, theta2Rad, branch } = local;
   const pose = useMemo(() => scenePose(linkage, local.pose, coupler), [linkage, local.pose, coupler]);
@@ -84,8 +86,9 @@ export function useLinkageScene(
       showTrace,
       text,
       bounds,
+      vectors,
     }),
-    [linkage, theta2Rad, pose, ghost, curves, showGrid, showAngles, showGhost, showTrace, text, bounds],
+    [linkage, theta2Rad, pose, ghost, curves, showGrid, showAngles, showGhost, showTrace, text, bounds, vectors],
   );
   const description = pose
     ? `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`

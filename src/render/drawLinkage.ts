@@ -1,5 +1,6 @@
 import { TWO_PI } from '../solver/angles';
 import { STROKES } from '../theme/tokens';
+import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
 import type { Px, ScreenRect } from './rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
@@ -257,7 +258,11 @@ export function drawLinkage(
 ): SceneLayout {
   const v = view;
   ctx.save();
-  const layout = layoutScene(scene, v, canvasMeasure(ctx), exclusions);
+  const measure = canvasMeasure(ctx);
+  // The motion vectors' labels and shafts join the layout; their legend's corner is kept free of labels.
+  const vectors = scene.vectors ? vectorOverlay(scene.vectors, scene.pose, v, measure) : null;
+  const excluded = vectors ? [...exclusions, ...vectors.exclusions] : exclusions;
+  const layout = layoutScene(scene, v, measure, excluded, vectors?.extras ?? null);
   ctx.fillStyle = THEME.background;
   ctx.fillRect(0, 0, v.width, v.height);
   if (scene.showGrid) drawGrid(ctx, v);
@@ -280,7 +285,9 @@ export function drawLinkage(
   else drawUnassembled(ctx, scene, v, layout);
   drawJoint(ctx, O2, STROKES.pivotRadius);
   drawJoint(ctx, O4, STROKES.pivotRadius);
+  if (vectors) drawVectorArrows(ctx, vectors);
   for (const l of layout.labels) drawLabel(ctx, l);
+  if (vectors) drawVectorLegend(ctx, vectors);
   if (layout.warning) drawWarning(ctx, layout.warning);
   ctx.restore();
   return layout;

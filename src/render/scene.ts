@@ -2,6 +2,7 @@ import { TWO_PI } from '../solver/angles';
 import { couplerPoint, jointPositions } from '../solver/kinematics';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
+import type { SceneVectors } from './motionVectors';
 import type { CouplerCurve, PoseAngles } from '../worker/protocol';
 import type { Bounds } from './view';
 import { emptyBounds, extendBounds, extendBoundsCircle } from './view';
@@ -55,6 +56,8 @@ export interface LinkageScene {
   text: SceneText;
   /** World bounds to fit: the crank and rocker circles and the coupler curves (stable while animating). */
   bounds: Bounds;
+  /** Velocity and acceleration arrows with their scale legend; absent or null when both are off. */
+  vectors?: SceneVectors | null;
 }
 
 /** Coupler point: distance from A (length unit) and angle from AB (radians). */

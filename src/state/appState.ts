@@ -10,6 +10,9 @@ export type NrStart = 'continuation' | 'cold';
 /** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
 export type PlotLayout = 'separate' | 'together';
 
+/** Which plots the plot area shows: output angles, angular velocities or angular accelerations against theta2. */
+export type PlotKind = 'angles' | 'velocities' | 'accelerations';
+
 /** Which page the app shows: the simulator, or the solver lab (work-precision study of the current linkage). */
 export type Page = 'simulator' | 'lab';
 
@@ -44,6 +47,12 @@ export interface AppState {
   showAngles: boolean;
   showGhost: boolean;
   showTrace: boolean;
+  /** Velocity arrows at A, B and P on the canvas. */
+  showVelocity: boolean;
+  /** Acceleration arrows at A, B and P on the canvas. */
+  showAcceleration: boolean;
+  /** The plots shown below the canvas (default 'angles'). */
+  plotKind: PlotKind;
   nrStart: NrStart;
   plotLayout: PlotLayout;
   /** Intervals per cycle: the sweep has samples + 1 points from 0 to 360 degrees. */
@@ -99,6 +108,9 @@ export const DEFAULT_STATE: AppState = {
   showAngles: true,
   showGhost: true,
   showTrace: true,
+  showVelocity: false,
+  showAcceleration: false,
+  plotKind: 'angles',
   nrStart: 'continuation',
   plotLayout: 'separate',
   samples: 360,
@@ -133,9 +145,14 @@ export type Action =
   | { type: 'setPlaying'; playing: boolean }
   | { type: 'setSpeed'; degPerFrame: number }
   | { type: 'setDirection'; direction: Direction }
-  | { type: 'setFlag'; flag: 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace'; value: boolean }
+  | {
+      type: 'setFlag';
+      flag: 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace' | 'showVelocity' | 'showAcceleration';
+      value: boolean;
+    }
   | { type: 'setNrStart'; start: NrStart }
   | { type: 'setPlotLayout'; layout: PlotLayout }
+  | { type: 'setPlotKind'; kind: PlotKind }
   | { type: 'setSamples'; samples: number }
   | { type: 'setLocale'; locale: Locale }
   | { type: 'setView'; view: ViewOffset }
@@ -178,6 +195,8 @@ export function reducer(state: AppState, action: Action): AppState {
       return { ...state, nrStart: action.start };
     case 'setPlotLayout':
       return { ...state, plotLayout: action.layout };
+    case 'setPlotKind':
+      return action.kind === state.plotKind ? state : { ...state, plotKind: action.kind };
     case 'setSamples':
       return { ...state, samples: Math.round(clamp(action.samples, SAMPLES_MIN, SAMPLES_MAX)) };
     case 'setLocale':
