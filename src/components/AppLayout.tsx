@@ -14,6 +14,7 @@ import { LinkageCanvas } from './LinkageCanvas';
 import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
+import { cycleRates } from './rateInputs';
 import { SharePanel } from './SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
@@ -69,6 +70,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { local, marker } = useLinkagePose(state, !onLab);
   const motion = useFrameMotion(state, local);
   const vectors = useSceneVectors(state, motion, t);
+  const rates = useMemo(() => cycleRates(cycle, state.direction), [cycle, state.direction]);
   const { scene, description } = useLinkageScene(state, local, cycle, t, vectors);
   const { onPng, onCsv, onCanvasSize } = useExports({ state, point, marker, cycle, client, deg, scene, t });
   const onStep = useAnimation(state, dispatch, rangeDeg);
@@ -126,6 +128,9 @@ export function AppLayout({ initial }: AppLayoutProps) {
                     showOther={state.showGhost}
                     layout={state.plotLayout}
                     dispatch={dispatch}
+                    kind={state.plotKind}
+                    rates={rates}
+                    currentRates={motion?.rates ?? null}
                   />
                 </section>
               </>
