@@ -34,15 +34,15 @@ export function vectorText(
 /** The motion panel's lines at this frame: ω3, ω4, α3, α4, the speeds of A, B and P, and P's acceleration. */
 export function motionFacts(m: FrameMotion, t: Messages): MotionFact[] {
   const r = m.rates;
-  const speed = (p: PointRates) => vectorText(p.vx, p.vy, 'length/s', t);
+  const speed = (p: PointRates) => vectorText(p.vx, p.vy, t.unitSpeed, t);
   return [
-    { key: 'omega3', label: 'ω3', value: rateText(r.omega3, 'rad/s', t) },
-    { key: 'omega4', label: 'ω4', value: rateText(r.omega4, 'rad/s', t) },
-    { key: 'alpha3', label: 'α3', value: rateText(r.alpha3, 'rad/s²', t) },
-    { key: 'alpha4', label: 'α4', value: rateText(r.alpha4, 'rad/s²', t) },
+    { key: 'omega3', label: `${t.angularVelocity}3`, value: rateText(r.omega3, 'rad/s', t) },
+    { key: 'omega4', label: `${t.angularVelocity}4`, value: rateText(r.omega4, 'rad/s', t) },
+    { key: 'alpha3', label: `${t.angularAcceleration}3`, value: rateText(r.alpha3, 'rad/s²', t) },
+    { key: 'alpha4', label: `${t.angularAcceleration}4`, value: rateText(r.alpha4, 'rad/s²', t) },
     { key: 'vA', label: t.pointSpeed('A'), value: speed(m.A) },
     { key: 'vB', label: t.pointSpeed('B'), value: speed(m.B) },
     { key: 'vP', label: t.pointSpeed('P'), value: speed(m.P) },
-    { key: 'aP', label: t.pointAcceleration('P'), value: vectorText(m.P.ax, m.P.ay, 'length/s²', t) },
+    { key: 'aP', label: t.pointAcceleration('P'), value: vectorText(m.P.ax, m.P.ay, t.unitAcceleration, t) },
   ];
 }

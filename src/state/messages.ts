@@ -135,6 +135,9 @@ export interface Messages {
   vectorAccelerationBar: (value: string) => string;
   vectorZero: string;
   vectorClamped: string;
+  /** Units of the panel's point speeds and accelerations (the linkage's length unit per s, per s²). */
+  unitSpeed: string;
+  unitAcceleration: string;
 
   exportSize: string;
   sizeScreen: string;

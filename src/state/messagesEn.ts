@@ -191,6 +191,8 @@ export const messagesEn: Messages = {
   vectorVelocityBar: (v) => `= ${v} length/s`,
   vectorAccelerationBar: (v) => `= ${v} length/s²`,
   vectorZero: 'zero',
+  unitSpeed: 'length/s',
+  unitAcceleration: 'length/s²',
   vectorClamped: 'dashed: clamped, not to scale',
 
   exportSize: 'PNG size',

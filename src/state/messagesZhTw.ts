@@ -190,6 +190,8 @@ export const messagesZhTw: Messages = {
   vectorVelocityBar: (v) => `= ${v} 長度單位/s`,
   vectorAccelerationBar: (v) => `= ${v} 長度單位/s²`,
   vectorZero: '零',
+  unitSpeed: '長度單位/s',
+  unitAcceleration: '長度單位/s²',
   vectorClamped: '虛線：已截斷，未依比例',
 
   exportSize: 'PNG 尺寸',
