@@ -68,7 +68,11 @@ describe('cycleRates', () => {
     alpha4: Float64Array.of(-7, 8),
   };
   const cycle = {
-    plot: { theta2Deg: Float64Array.of(0, 1), open: { theta3: rates.omega3, theta4: rates.omega3, rates }, crossed: null },
+    plot: {
+      theta2Deg: Float64Array.of(0, 1),
+      open: { theta3: rates.omega3, theta4: rates.omega3, rates },
+      crossed: null,
+    },
   } as unknown as CycleResponse;
 
   it('keeps the rates as solved for the counter-clockwise direction', () => {

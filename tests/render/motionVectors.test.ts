@@ -11,9 +11,10 @@ import type { SceneVectors, VectorText } from '../../src/render/motionVectors';
 import { scenePose } from '../../src/render/scene';
 import type { LinkageScene } from '../../src/render/scene';
 import { layoutScene } from '../../src/render/sceneLayout';
+import { drawLinkage } from '../../src/render/drawLinkage';
 import { fitView } from '../../src/render/view';
 import { solveClosedForm } from '../../src/solver/closedForm';
-import { measureModel, sceneText } from './fixtures';
+import { RecordingContext, measureModel, sceneText } from './fixtures';
 
 const TEXT: VectorText = {
   symbol: { v: 'v', a: 'a' },
@@ -74,7 +75,11 @@ function sceneWith(theta2Deg: number, vectors: SceneVectors): LinkageScene {
   const t2 = (theta2Deg * Math.PI) / 180;
   const a = solveClosedForm(l, t2, 'open');
   if (!a) throw new Error('no pose');
-  const pose = scenePose(l, { theta2: t2, theta3: a.theta3, theta4: a.theta4, mu: 1 }, { distance: 2.5, angleRad: 0.5 });
+  const pose = scenePose(
+    l,
+    { theta2: t2, theta3: a.theta3, theta4: a.theta4, mu: 1 },
+    { distance: 2.5, angleRad: 0.5 },
+  );
   return {
     linkage: l,
     theta2: t2,
@@ -155,5 +160,33 @@ describe('vectorOverlay', () => {
     const lo = vectorOverlay(limit, scene.pose, view, measureModel);
     expect(lo.arrows.map((a) => `${a.kind}${a.at}`)).toEqual(['vA']);
     expect(lo.legend?.rows.at(-1)?.text).toBe('limit position');
+  });
+});
+
+describe('drawLinkage with motion vectors', () => {
+  it('keeps every label off the scale legend, on a small canvas all around the cycle', () => {
+    let checked = 0;
+    for (let deg = 0; deg < 360; deg += 15) {
+      const vectors: SceneVectors = {
+        velocity: V,
+        acceleration: ACC,
+        velocityScale: arrowScale(20),
+        accelerationScale: arrowScale(200),
+        limit: false,
+        text: TEXT,
+      };
+      const scene = sceneWith(deg, vectors);
+      const view = fitView(scene.bounds, 300, 200, { zoom: 1, panX: 0, panY: 0 });
+      const ctx = new RecordingContext();
+      const layout = drawLinkage(ctx as unknown as CanvasRenderingContext2D, scene, view);
+      const legend = vectorOverlay(vectors, scene.pose, view, measureModel).legend!.box;
+      for (const l of layout.labels) {
+        const ox = Math.min(l.box.x + l.box.width, legend.x + legend.width) - Math.max(l.box.x, legend.x);
+        const oy = Math.min(l.box.y + l.box.height, legend.y + legend.height) - Math.max(l.box.y, legend.y);
+        expect(ox > 0 && oy > 0, `${l.id} at ${deg} deg`).toBe(false);
+        checked++;
+      }
+    }
+    expect(checked).toBeGreaterThan(100);
   });
 });

@@ -115,7 +115,25 @@ describe('cycleToCsv with motion', () => {
       },
     });
     expect(text).not.toMatch(/NaN|Infinity/);
-    expect(csvParseRows(text)[1]).toEqual(['0', '0', '0', '', '', '', '', '0', '1', '2', '', '', '', '', 'ok', '1', '0']);
+    expect(csvParseRows(text)[1]).toEqual([
+      '0',
+      '0',
+      '0',
+      '',
+      '',
+      '',
+      '',
+      '0',
+      '1',
+      '2',
+      '',
+      '',
+      '',
+      '',
+      'ok',
+      '1',
+      '0',
+    ]);
   });
 });
 
