@@ -27,7 +27,7 @@ export const messagesZhTw: Messages = {
     couplerDistance: 'P 與 A 的距離',
     couplerAngle: 'P 相對 AB 的角度（°）',
     speed: '速度（°/幀）',
-    omega2: 'ω2 輸入轉速',
+    omega2: 'ω2 輸入角速度',
     alpha2: 'α2 輸入角加速度（rad/s²）',
     muBandLo: 'μ 傳動角範圍下限（°）',
     muBandHi: 'μ 傳動角範圍上限（°）',
