@@ -1,15 +1,23 @@
 import './AnglePlotsPanel.css';
 import type { Dispatch } from 'react';
-import { memo, useMemo } from 'react';
+import { Suspense, lazy, memo, useMemo } from 'react';
 import type { XMark } from '../charts/xMarks';
+import type { LinkRates } from '../solver/rates';
 import type { Branch } from '../solver/types';
-import type { Action, PlotLayout } from '../state/appState';
+import type { Action, PlotKind, PlotLayout } from '../state/appState';
 import type { PointResponse } from '../worker/protocol';
 import { AngleChartView } from './AngleChartView';
 import type { CycleDegrees } from './chartInputs';
 import { angleChartInputs, angleMarker } from './chartInputs';
 import { useMessages } from './MessagesContext';
+import type { CycleRates } from './rateInputs';
 import { Segmented } from './Segmented';
+
+// The rate charts load only when a rate plot is chosen: they are not part of the first load.
+const RatePlots = lazy(() => import('./RatePlots').then((m) => ({ default: m.RatePlots })));
+
+/** The plot chooser's choices, in order; a new kind of plot is one more entry (and its view below). */
+export const PLOT_KINDS: readonly PlotKind[] = ['angles', 'velocities', 'accelerations'];
 
 /** Props of AnglePlotsPanel: the cycle in degrees, the latest pose and the display choices. */
 export interface AnglePlotsPanelProps {
@@ -21,9 +29,26 @@ export interface AnglePlotsPanelProps {
   dispatch: Dispatch<Action>;
   /** Faint theta2 rules on every chart (dead centres); default none. */
   xMarks?: readonly XMark[];
+  /** Which plots show (the chooser above them); default 'angles'. */
+  kind?: PlotKind;
+  /** The cycle's rates on the plot samples (null until a rate plot's cycle arrives). */
+  rates?: CycleRates | null;
+  /** This frame's rates for the rate plots' marker; null when not assembled. */
+  currentRates?: LinkRates | null;
 }
 
-function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch, xMarks }: AnglePlotsPanelProps) {
+function AnglePlotsPanelImpl({
+  deg,
+  point,
+  branch,
+  showOther,
+  layout,
+  dispatch,
+  xMarks,
+  kind = 'angles',
+  rates = null,
+  currentRates = null,
+}: AnglePlotsPanelProps) {
   const t = useMessages();
   const in3 = useMemo(() => angleChartInputs('theta3', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const in4 = useMemo(() => angleChartInputs('theta4', deg, branch, showOther, t), [deg, branch, showOther, t]);
@@ -34,6 +59,12 @@ function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch, 
   return (
     <div className="plots-panel">
       <div className="plots-head">
+        <Segmented<PlotKind>
+          legend={t.plotKind}
+          value={kind}
+          options={PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] }))}
+          onChange={(v) => dispatch({ type: 'setPlotKind', kind: v })}
+        />
         <Segmented<PlotLayout>
           legend={t.plotLayout}
           value={layout}
@@ -44,20 +75,36 @@ function AnglePlotsPanelImpl({ deg, point, branch, showOther, layout, dispatch, 
           onChange={(v) => dispatch({ type: 'setPlotLayout', layout: v })}
         />
       </div>
-      <div className={`plots-grid plots-${layout}`}>
-        {layout === 'separate' ? (
-          <>
-            <AngleChartView inputs={in3} marker={m3} label={t.chartTheta3} xMarks={xMarks} />
-            <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} xMarks={xMarks} />
-          </>
-        ) : (
-          <AngleChartView inputs={inBoth} marker={mBoth} label={t.chartBoth} xMarks={xMarks} />
-        )}
-      </div>
-      <p className="footnote">{t.angleFootnote}</p>
+      {kind === 'velocities' || kind === 'accelerations' ? (
+        <Suspense fallback={<p className="note">…</p>}>
+          <RatePlots
+            kind={kind}
+            rates={rates}
+            current={currentRates}
+            theta2Deg={mBoth.theta2Deg}
+            branch={branch}
+            showOther={showOther}
+            layout={layout}
+          />
+        </Suspense>
+      ) : (
+        <>
+          <div className={`plots-grid plots-${layout}`}>
+            {layout === 'separate' ? (
+              <>
+                <AngleChartView inputs={in3} marker={m3} label={t.chartTheta3} xMarks={xMarks} />
+                <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} xMarks={xMarks} />
+              </>
+            ) : (
+              <AngleChartView inputs={inBoth} marker={mBoth} label={t.chartBoth} xMarks={xMarks} />
+            )}
+          </div>
+          <p className="footnote">{t.angleFootnote}</p>
+        </>
+      )}
     </div>
   );
 }
 
-/** theta3 and theta4 against theta2, in two charts or one, with the angle-range footnote. */
+/** The plots under the canvas: the chooser (angles, velocities, accelerations), then the chosen charts in two or one. */
 export const AnglePlotsPanel = memo(AnglePlotsPanelImpl);

@@ -12,8 +12,10 @@ import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
 import { LinkageCanvas } from './LinkageCanvas';
+import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
+import { cycleRates } from './rateInputs';
 import { SharePanel } from './SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
@@ -23,8 +25,10 @@ import { useCycleDrawnMark } from './useCycleDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
+import { useFrameMotion } from './useFrameMotion';
 import { useLinkagePose } from './useLinkagePose';
 import { useLinkageScene } from './useLinkageScene';
+import { useSceneVectors } from './useSceneVectors';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useStableCallback } from './useStableCallback';
@@ -73,7 +77,10 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const design = useDesignMetrics(state.linkage, state.branch);
   const designScene = useDesignScene(state, local, design, t);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
+  const motion = useFrameMotion(state, local);
+  const vectors = useSceneVectors(state, motion, t);
+  const rates = useMemo(() => cycleRates(cycle, state.direction), [cycle, state.direction]);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
   const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
     state,
     point,
@@ -140,6 +147,9 @@ export function AppLayout({ initial }: AppLayoutProps) {
                     layout={state.plotLayout}
                     dispatch={dispatch}
                     xMarks={xMarks}
+                    kind={state.plotKind}
+                    rates={rates}
+                    currentRates={motion?.rates ?? null}
                   />
                 </section>
                 <section className="card transmission-card" aria-label={t.chartTransmission}>
@@ -180,6 +190,12 @@ export function AppLayout({ initial }: AppLayoutProps) {
               muBandHiDeg={state.muBandHiDeg}
               dispatch={dispatch}
             />
+          </section>
+          <section className="card" aria-labelledby="sec-motion-results">
+            <h2 id="sec-motion-results" className="section-title">
+              {t.motionPanelTitle}
+            </h2>
+            <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
           </section>
           <section className="card convergence-card">
             <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />

@@ -11,6 +11,7 @@ import { lengthSliderRange, needsNewRange } from '../state/sliderRange';
 import type { LockableParam } from '../state/url';
 import { useMessages } from './MessagesContext';
 import { Icon } from './Icon';
+import { MotionControls } from './MotionControls';
 import { NumberControl } from './NumberControl';
 import { Segmented } from './Segmented';
 import { Toggle } from './Toggle';
@@ -180,6 +181,8 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
         ) : null}
         {rocking ? <p className="note">{t.rockingNote}</p> : null}
       </section>
+
+      {!compact ? <MotionControls state={state} dispatch={dispatch} /> : null}
 
       {!compact ? (
         <section className="panel-section" aria-labelledby="sec-coupler">

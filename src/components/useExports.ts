@@ -1,9 +1,11 @@
 import { useCallback, useRef } from 'react';
 import type { AnimationExportResult } from '../export/types';
 import type { LinkageScene } from '../render/scene';
+import { degToRad } from '../solver/angles';
 import type { AppState } from '../state/appState';
 import type { ExportSubject, PngSize } from '../state/fileNames';
 import { csvFileName, pngFileName, svgFileName } from '../state/fileNames';
+import { effectiveInputMotion } from '../state/inputMotion';
 import type { Messages } from '../state/messages';
 import type { SolverClient } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
@@ -111,10 +113,15 @@ export function useExports(sources: ExportSources): Exports {
   const onCsv = useStableCallback(async () => {
     const { state: s, client } = sources;
     if (!client) throw new Error('the solver is still starting');
+    // The export always carries the motion columns, for the input motion as the panel shows it.
+    const motion = {
+      input: effectiveInputMotion(s.omega2RadPerS, s.alpha2RadPerS2, s.direction),
+      coupler: { distance: s.coupler.distance, angleRad: degToRad(s.coupler.angleDeg) },
+    };
     const [{ downloadCsv }, tbl] = await Promise.all([
       import('./exporters'),
       client.table(
-        { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol } },
+        { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol }, motion },
         'export',
       ),
     ]);
@@ -128,6 +135,7 @@ export function useExports(sources: ExportSources): Exports {
         status: decodeStatuses(tbl.statusCodes),
         iterations: tbl.iterations,
         residual: tbl.residual,
+        motion: tbl.motion ?? null,
       },
       csvFileName(tbl.linkage, tbl.branch, tbl.samples),
     );

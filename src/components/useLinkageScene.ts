@@ -3,6 +3,7 @@ import { useMemo } from 'react';
 import { radToDeg, radToDeg360 } from '../solver/angles';
 import type { Branch } from '../solver/types';
 import type { SceneDesign } from '../render/designOverlay';
+import type { SceneVectors } from '../render/motionVectors';
 import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
 import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
 import type { AppState } from '../state/appState';
@@ -21,7 +22,7 @@ export interface LinkageSceneView {
 /**
  * Builds the canvas scene from this frame's pose (solved on the main thread) and the latest cycle: joints,
  * ghost, the coupler curves with the current circuit marked, bounds that stay put while the linkage moves
- * (from the cycle once it has arrived), the texts and the design overlay when given.
+ * (from the cycle once it has arrived), the texts, the design overlay and the motion vectors when given.
  */
 export function useLinkageScene(
   state: AppState,
@@ -29,6 +30,7 @@ export function useLinkageScene(
   cycle: CycleResponse | null,
   t: Messages,
   design?: SceneDesign,
+  vectors: SceneVectors | null = null,
 ): LinkageSceneView {
   const { linkage, coupler, theta2Rad, branch } = local;
   const pose = useMemo(() => scenePose(linkage, local.pose, coupler), [linkage, local.pose, coupler]);
@@ -76,8 +78,23 @@ export function useLinkageScene(
       text,
       bounds,
       ...(design ? { design } : {}),
+      vectors,
     }),
-    [linkage, theta2Rad, pose, ghost, curves, showGrid, showAngles, showGhost, showTrace, text, bounds, design],
+    [
+      linkage,
+      theta2Rad,
+      pose,
+      ghost,
+      curves,
+      showGrid,
+      showAngles,
+      showGhost,
+      showTrace,
+      text,
+      bounds,
+      design,
+      vectors,
+    ],
   );
   const description = pose
     ? `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`

@@ -42,6 +42,12 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   const { client, mode, reason } = useSolverClient();
   const { stage, plotPixels, newton } = shownFor(state);
   const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  // Rates only for a visible rate plot, for ω2 as set: the plots flip ω3 and ω4 with the direction themselves.
+  const ratePlot = plotPixels > 0 && state.plotKind !== 'angles';
+  const rates = useMemo(
+    () => (ratePlot ? { omega2: state.omega2RadPerS, alpha2: state.alpha2RadPerS2 } : null),
+    [ratePlot, state.omega2RadPerS, state.alpha2RadPerS2],
+  );
   const cycleNeeds = useMemo(
     () => ({
       solver,
@@ -49,8 +55,9 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
       otherBranch: state.showGhost,
       curves: state.showTrace && stage,
       plotPixels,
+      rates,
     }),
-    [solver, state.branch, state.showGhost, state.showTrace, stage, plotPixels],
+    [solver, state.branch, state.showGhost, state.showTrace, stage, plotPixels, rates],
   );
   // The worker's pose answer feeds the numbers and the NR runs only: the canvas draws a pose solved on the
   // main thread (useLinkagePose), ghost included, so the worker need not solve the ghost.

@@ -1,6 +1,7 @@
 import { useEffect, useLayoutEffect, useState } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../solver/angles';
+import type { InputMotion } from '../solver/rates';
 import type { Branch, Linkage } from '../solver/types';
 import type { CouplerPoint } from '../state/appState';
 import type { Messages } from '../state/messages';
@@ -51,6 +52,8 @@ export interface CycleNeeds {
   curves: boolean;
   /** Device-pixel width of the visible angle plots, 0 when none is visible. */
   plotPixels: number;
+  /** Input motion of a visible rate plot (rad/s, rad/s²); absent or null when no rate plot shows. */
+  rates?: InputMotion | null;
 }
 
 /** The latest solved cycle (view resolution) for these inputs (latest wins while they change), and the last error. */
@@ -69,6 +72,8 @@ export function useCycle(
   // With both branches wanted the branch choice does not change the request: no re-solve on a branch switch.
   const branch: Branch = needs.otherBranch ? 'open' : needs.branch;
   const { otherBranch, curves, plotPixels } = needs;
+  const omega2 = needs.rates ? needs.rates.omega2 : null;
+  const alpha2 = needs.rates ? needs.rates.alpha2 : null;
   // A layout effect posts the request before the browser paints: a passive effect would wait a frame.
   useLayoutEffect(() => {
     if (!client) return;
@@ -82,6 +87,7 @@ export function useCycle(
         otherBranch,
         curves,
         plotPixels,
+        rates: omega2 !== null && alpha2 !== null ? { omega2, alpha2 } : null,
       })
       .then(
         (r) => {
@@ -92,7 +98,24 @@ export function useCycle(
         },
         (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
       );
-  }, [client, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves, plotPixels]);
+  }, [
+    client,
+    r1,
+    r2,
+    r3,
+    r4,
+    samples,
+    distance,
+    angleDeg,
+    method,
+    tol,
+    branch,
+    otherBranch,
+    curves,
+    plotPixels,
+    omega2,
+    alpha2,
+  ]);
   return { cycle, error };
 }
 

@@ -2,6 +2,7 @@ import { TWO_PI } from '../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
 import type { DrawContext } from './drawContext';
+import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
 import type { Px, ScreenRect } from './rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
@@ -260,7 +261,11 @@ export function drawLinkage(
 ): SceneLayout {
   const v = view;
   ctx.save();
-  const layout = layoutScene(scene, v, canvasMeasure(ctx), exclusions);
+  const measure = canvasMeasure(ctx);
+  // The motion vectors' labels and shafts join the layout; their legend's corner is kept free of labels.
+  const vectors = scene.vectors ? vectorOverlay(scene.vectors, scene.pose, v, measure) : null;
+  const excluded = vectors ? [...exclusions, ...vectors.exclusions] : exclusions;
+  const layout = layoutScene(scene, v, measure, excluded, vectors?.extras ?? null);
   ctx.fillStyle = THEME.background;
   ctx.fillRect(0, 0, v.width, v.height);
   if (scene.showGrid) drawGrid(ctx, v);
@@ -285,7 +290,9 @@ export function drawLinkage(
   drawJoint(ctx, O2, STROKES.pivotRadius);
   drawJoint(ctx, O4, STROKES.pivotRadius);
   if (layout.design) drawDesignOver(ctx, layout.design);
+  if (vectors) drawVectorArrows(ctx, vectors);
   for (const l of layout.labels) drawLabel(ctx, l);
+  if (vectors) drawVectorLegend(ctx, vectors);
   if (layout.warning) drawWarning(ctx, layout.warning);
   ctx.restore();
   return layout;

@@ -2,6 +2,7 @@ import { TWO_PI } from '../solver/angles';
 import { couplerPoint, jointPositions } from '../solver/kinematics';
 import type { Point } from '../solver/kinematics';
 import type { Linkage } from '../solver/types';
+import type { SceneVectors } from './motionVectors';
 import type { CouplerCurve, PoseAngles } from '../worker/protocol';
 import type { SceneDesign } from './designOverlay';
 import type { Bounds } from './view';
@@ -58,6 +59,8 @@ export interface LinkageScene {
   bounds: Bounds;
   /** The design overlay (dead centres, instant centres, the mu band); absent draws none. */
   design?: SceneDesign;
+  /** Velocity and acceleration arrows with their scale legend; absent or null when both are off. */
+  vectors?: SceneVectors | null;
 }
 
 /** Coupler point: distance from A (length unit) and angle from AB (radians). */

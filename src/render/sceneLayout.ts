@@ -30,7 +30,11 @@ export type LabelId =
   | 'r1'
   | 'swing'
   | 'I13'
-  | 'I24';
+  | 'I24'
+  | ExtraLabelId;
+
+/** Id of a label an overlay adds through SceneExtras (e.g. 'extra:vP'). */
+export type ExtraLabelId = `extra:${string}`;
 
 /** The two label fonts: THEME.font (FONT_SIZES.canvas) and THEME.fontBold (FONT_SIZES.canvasBold). */
 export type LabelFont = 'regular' | 'bold';
@@ -62,6 +66,21 @@ export interface WarningBox {
   box: ScreenRect;
   title: string;
   detail: string | null;
+}
+
+/** A label an overlay asks layoutScene to place: text, font, colour and its candidate centres for a box size. */
+export interface ExtraLabel {
+  id: ExtraLabelId;
+  text: string;
+  font: LabelFont;
+  color: string;
+  candidates: (width: number, height: number) => Px[];
+}
+
+/** Labels and obstacles an overlay adds (the motion vectors): placed after the scene's own labels, avoided by all. */
+export interface SceneExtras {
+  labels: readonly ExtraLabel[];
+  obstacles: readonly Obstacle[];
 }
 
 /** Screen positions of the joints: A is the crank pin at theta2 even with no pose; B and P need a pose. */
@@ -253,12 +272,14 @@ function poseArcs(
  * Lays out the canvas: joint positions, angle arcs and every label, placed so that no two labels overlap and
  * none overlaps an exclusion rectangle (the zoom buttons: canvasToolsRect) or leaves the canvas. Labels are
  * placed in LabelId order; one with no free spot is dropped and listed. measure gives text widths in CSS pixels.
+ * extras (an overlay's labels and obstacles) are placed last, in their order, and their obstacles avoided by every label.
  */
 export function layoutScene(
   scene: LinkageScene,
   view: ViewTransform,
   measure: MeasureText,
   exclusions: readonly ScreenRect[] = [],
+  extras: SceneExtras | null = null,
 ): SceneLayout {
   const v = view;
   const l = scene.linkage;
@@ -381,7 +402,12 @@ export function layoutScene(
     for (const d of designLabels(scene.design, design)) add(d.id, d.text, 'regular', d.color, d.candidates);
   }
 
-  // The warning first and the grid label next, then the joints, angles and links, then the design overlay.
+  if (extras) {
+    for (const e of extras.labels) add(e.id, e.text, e.font, e.color, e.candidates);
+    obstacles.push(...extras.obstacles);
+  }
+
+  // The warning first and the grid label next, then the joints, angles and links, then the design overlay and the extras in their order.
   const order: LabelId[] = [
     'warning',
     'grid',
@@ -402,7 +428,11 @@ export function layoutScene(
     'I13',
     'I24',
   ];
-  requests.sort((x, y) => order.indexOf(x.id) - order.indexOf(y.id));
+  const rank = (id: LabelId) => {
+    const k = order.indexOf(id);
+    return k >= 0 ? k : order.length;
+  };
+  requests.sort((x, y) => rank(x.id) - rank(y.id));
   const { placed, dropped } = placeLabels(requests, bounds, exclusions, obstacles);
   const labels: SceneLabel[] = [];
   for (const p of placed) {

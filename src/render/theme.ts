@@ -23,6 +23,8 @@ export const THEME = {
   reference: COLORS.reference,
   labelHalo: COLORS.labelHalo,
   couplerPoint: COLORS.couplerPoint,
+  velocity: COLORS.velocity,
+  acceleration: COLORS.acceleration,
   warning: COLORS.warning,
   deadCentre: COLORS.deadCentre,
   instantCentre: COLORS.instantCentre,

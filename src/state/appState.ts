@@ -10,6 +10,9 @@ export type NrStart = 'continuation' | 'cold';
 /** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
 export type PlotLayout = 'separate' | 'together';
 
+/** Which plots the plot area shows: output angles, angular velocities or angular accelerations against theta2. */
+export type PlotKind = 'angles' | 'velocities' | 'accelerations';
+
 /** Which page the app shows: the simulator, or the solver lab (work-precision study of the current linkage). */
 export type Page = 'simulator' | 'lab';
 
@@ -48,6 +51,12 @@ export interface AppState {
   showDeadCentres: boolean;
   /** Canvas: instant centres I13 and I24 with their construction lines. */
   showInstantCentres: boolean;
+  /** Velocity arrows at A, B and P on the canvas. */
+  showVelocity: boolean;
+  /** Acceleration arrows at A, B and P on the canvas. */
+  showAcceleration: boolean;
+  /** The plots shown below the canvas (default 'angles'). */
+  plotKind: PlotKind;
   nrStart: NrStart;
   plotLayout: PlotLayout;
   /** Intervals per cycle: the sweep has samples + 1 points from 0 to 360 degrees. */
@@ -105,6 +114,9 @@ export const DEFAULT_STATE: AppState = {
   showTrace: true,
   showDeadCentres: false,
   showInstantCentres: false,
+  showVelocity: false,
+  showAcceleration: false,
+  plotKind: 'angles',
   nrStart: 'continuation',
   plotLayout: 'separate',
   samples: 360,
@@ -129,7 +141,15 @@ export function clamp(x: number, lo: number, hi: number): number {
 }
 
 /** The boolean display toggles of the state. */
-export type ViewFlag = 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace' | 'showDeadCentres' | 'showInstantCentres';
+export type ViewFlag =
+  | 'showGrid'
+  | 'showAngles'
+  | 'showGhost'
+  | 'showTrace'
+  | 'showDeadCentres'
+  | 'showInstantCentres'
+  | 'showVelocity'
+  | 'showAcceleration';
 
 /** Every state change the UI can make. */
 export type Action =
@@ -145,6 +165,7 @@ export type Action =
   | { type: 'setFlag'; flag: ViewFlag; value: boolean }
   | { type: 'setNrStart'; start: NrStart }
   | { type: 'setPlotLayout'; layout: PlotLayout }
+  | { type: 'setPlotKind'; kind: PlotKind }
   | { type: 'setSamples'; samples: number }
   | { type: 'setLocale'; locale: Locale }
   | { type: 'setView'; view: ViewOffset }
@@ -187,6 +208,8 @@ export function reducer(state: AppState, action: Action): AppState {
       return { ...state, nrStart: action.start };
     case 'setPlotLayout':
       return { ...state, plotLayout: action.layout };
+    case 'setPlotKind':
+      return action.kind === state.plotKind ? state : { ...state, plotKind: action.kind };
     case 'setSamples':
       return { ...state, samples: Math.round(clamp(action.samples, SAMPLES_MIN, SAMPLES_MAX)) };
     case 'setLocale':

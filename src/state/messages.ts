@@ -1,4 +1,6 @@
 import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../solver/types';
+import type { PlotKind } from './appState';
+import type { OmegaUnit } from './inputMotion';
 import type { FieldError, FieldName } from './validate';
 import type { HardCaseId } from './hardCases';
 import type { PresetId } from './presets';
@@ -176,6 +178,37 @@ export interface Messages {
   zoomOut: string;
   gridSpacing: (step: string) => string;
   jointLabels: { O2: string; O4: string; A: string; B: string; P: string };
+
+  /** Velocity and acceleration analysis (issue 9): input motion controls, panel, vectors, rate plots. */
+  sectionMotion: string;
+  omegaUnit: string;
+  omegaUnits: Record<OmegaUnit, string>;
+  showVelocity: string;
+  showAcceleration: string;
+  motionPanelTitle: string;
+  motionAt: (theta2: string) => string;
+  angularVelocity: string;
+  angularAcceleration: string;
+  pointSpeed: (point: string) => string;
+  pointAcceleration: (point: string) => string;
+  /** A vector's direction, counter-clockwise from the +x axis. */
+  directionDeg: (deg: string) => string;
+  limitPosition: string;
+  motionNoPose: string;
+  motionNote: string;
+  plotKind: string;
+  plotKinds: Record<PlotKind, string>;
+  chartRates: Record<'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth', string>;
+  axisOmega: string;
+  axisAlpha: string;
+  rateFootnote: string;
+  vectorVelocityBar: (value: string) => string;
+  vectorAccelerationBar: (value: string) => string;
+  vectorZero: string;
+  vectorClamped: string;
+  /** Units of the panel's point speeds and accelerations (the linkage's length unit per s, per s²). */
+  unitSpeed: string;
+  unitAcceleration: string;
 
   exportSize: string;
   sizeScreen: string;

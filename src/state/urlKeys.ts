@@ -191,6 +191,17 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   optional('lstep', choiceCodec(LAB_STEPS_DEG), stateLens('labStepDeg')),
   optional('w2', numberCodec('omega2'), stateLens('omega2RadPerS')),
   optional('a2', numberCodec('alpha2'), stateLens('alpha2RadPerS2')),
+  optional('vel', boolCodec, stateLens('showVelocity')),
+  optional('acc', boolCodec, stateLens('showAcceleration')),
+  optional(
+    'plot',
+    enumCodec([
+      ['ang', 'angles'],
+      ['vel', 'velocities'],
+      ['acc', 'accelerations'],
+    ] as const),
+    stateLens('plotKind'),
+  ),
   optional('mulo', numberCodec('muBandLo'), stateLens('muBandLoDeg')),
   optional('muhi', numberCodec('muBandHi'), stateLens('muBandHiDeg')),
   optional('dc', boolCodec, stateLens('showDeadCentres')),

@@ -70,6 +70,9 @@ export const COLORS = {
   /** Dashed zero-angle references at A and O4. */
   reference: '#7c8798',
   couplerPoint: '#9a3412',
+  /** Velocity and acceleration arrows on the canvas and their series in the rate plots. */
+  velocity: '#0e7490',
+  acceleration: '#be185d',
   /** White halo behind canvas labels, so they read over lines. */
   labelHalo: 'rgba(255, 255, 255, 0.9)',
   grid: '#e8ecf1',
@@ -123,6 +126,11 @@ export const STROKES = {
   /** Edge marker of an off-screen instant centre: inset from the canvas edge and arrow length. */
   edgeInset: 14,
   edgeArrow: 10,
+  /** Velocity and acceleration arrows: shaft width, head length and width, dash of a clamped arrow. */
+  vector: 2,
+  vectorHead: 9,
+  vectorHeadWidth: 7,
+  vectorClampDash: [6, 3],
 } as const;
 
 /** The canvas's zoom buttons (CSS pixels): inset from the top-right corner, button size, gap, how many. */

@@ -10,21 +10,26 @@ import {
   solveClosedForm,
   solveNewton,
   sweep,
+  sweepRates,
+  couplerPointMotion,
   transmissionAngle,
   validateLinkage,
   velocityRatios,
 } from '../solver';
+import type { InputMotion } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
 import { encodeStatuses } from './statusCodes';
 import type {
   BranchCycle,
+  CouplerSpec,
   CycleParams,
   CycleResponse,
   MethodChoice,
   NewtonSummary,
   PlotSeries,
   PointParams,
+  TableMotion,
   PointResponse,
   PoseAngles,
   TableParams,
@@ -115,12 +120,20 @@ function branchCycle(
   };
 }
 
-function plotSeries(l: Linkage, pixels: number, branches: Branch[], solver: MethodChoice): PlotSeries {
+function plotSeries(
+  l: Linkage,
+  pixels: number,
+  branches: Branch[],
+  solver: MethodChoice,
+  rates: InputMotion | null,
+): PlotSeries {
   const grid = adaptiveGrid(l, { pixels, branches });
   const one = (b: Branch) => {
     if (!branches.includes(b)) return null;
     const r = sweep(l, grid, sweepOptions(b, solver));
-    return { theta3: r.theta3, theta4: r.theta4 };
+    if (!rates) return { theta3: r.theta3, theta4: r.theta4 };
+    const w = sweepRates(l, grid, r.theta3, r.theta4, (i) => r.status[i] === 'ok', rates);
+    return { theta3: r.theta3, theta4: r.theta4, rates: w };
   };
   return { theta2Deg: grid.map(radToDeg), open: one('open'), crossed: one('crossed') };
 }
@@ -151,7 +164,8 @@ export function computeCycle(req: CycleParams): CycleResponse {
   // The curves follow the screen, not the samples the user chose: always VIEW_SAMPLES_MAX per turn.
   const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, VIEW_SAMPLES_MAX) : [];
   const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
-  const plot = req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver) : null;
+  const plot =
+    req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver, req.rates ?? null) : null;
   let points = 0;
   let iterations = 0;
   for (const b of [open, crossed]) {
@@ -176,13 +190,45 @@ export function computeCycle(req: CycleParams): CycleResponse {
   };
 }
 
-/** The whole samples + 1 point sweep of one branch with the chosen method: the cycle CSV's columns. Throws for bad params. */
+/** Rates, transmission angle and coupler point motion of every row of a swept table (NaN where not ok). */
+function tableMotion(
+  l: Linkage,
+  theta2: Float64Array,
+  r: { theta3: Float64Array; theta4: Float64Array; status: readonly string[] },
+  input: InputMotion,
+  coupler: CouplerSpec,
+): TableMotion {
+  const ok = (i: number) => r.status[i] === 'ok';
+  const rates = sweepRates(l, theta2, r.theta3, r.theta4, ok, input);
+  const n = theta2.length;
+  const col = () => new Float64Array(n).fill(Number.NaN);
+  const m: TableMotion = { ...rates, mu: col(), px: col(), py: col(), vpx: col(), vpy: col(), apx: col(), apy: col() };
+  for (let i = 0; i < n; i++) {
+    if (!ok(i)) continue;
+    const pose = { theta3: r.theta3[i], theta4: r.theta4[i] };
+    m.mu[i] = transmissionAngle(pose);
+    const p = couplerPointMotion(l, theta2[i], pose, input, coupler.distance, coupler.angleRad);
+    m.px[i] = p.x;
+    m.py[i] = p.y;
+    m.vpx[i] = p.vx;
+    m.vpy[i] = p.vy;
+    m.apx[i] = p.ax;
+    m.apy[i] = p.ay;
+  }
+  return m;
+}
+
+/**
+ * The whole samples + 1 point sweep of one branch with the chosen method: the cycle CSV's columns, with the
+ * rates, transmission angle and coupler point motion per row when req.motion asks. Throws for bad params.
+ */
 export function computeTable(req: TableParams): TableResponse {
   checkSamples(req.samples);
   const { deg, rad } = uniformGrid(req.samples);
   const r = sweep(req.linkage, rad, sweepOptions(req.branch, req.solver));
   let okCount = 0;
   for (const s of r.status) if (s === 'ok') okCount++;
+  const motion = req.motion ? tableMotion(req.linkage, rad, r, req.motion.input, req.motion.coupler) : null;
   return {
     linkage: { ...req.linkage },
     branch: req.branch,
@@ -198,6 +244,7 @@ export function computeTable(req: TableParams): TableResponse {
     totalIterations: r.totalIterations,
     branchCorrections: r.branchCorrections,
     work: { points: req.samples + 1, iterations: r.totalIterations },
+    motion,
   };
 }
 

@@ -1,4 +1,5 @@
 import type { LabResult } from '../lab/workPrecision';
+import type { InputMotion } from '../solver/rates';
 import type {
   Angles,
   Branch,
@@ -41,6 +42,8 @@ export interface CycleParams {
   curves: boolean;
   /** Device-pixel width of the angle plots; 0 when no plot is visible (no plot sampling at all). */
   plotPixels: number;
+  /** Input motion of the rate plots (rad/s, rad/s²): the plot samples get rates only when given and plotPixels > 0. */
+  rates?: InputMotion | null;
 }
 
 /** One pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
@@ -63,6 +66,8 @@ export interface TableParams {
   samples: number;
   branch: Branch;
   solver: MethodChoice;
+  /** Rates, transmission angle and the coupler point's motion per row (the CSV export asks); absent or null: none. */
+  motion?: { input: InputMotion; coupler: CouplerSpec } | null;
 }
 
 /** The solver lab's work-precision study of a linkage (long: progress messages, cancellable). */
@@ -90,12 +95,28 @@ export interface BranchCycle {
   skipped: boolean;
 }
 
+/** Rates along a plot or a table (rad/s, rad/s²); NaN where not assembled or at a limit position. */
+export interface RateSeries {
+  omega3: Float64Array;
+  omega4: Float64Array;
+  alpha3: Float64Array;
+  alpha4: Float64Array;
+}
+
+/** One branch's plot samples: angles in radians wrapped to (-pi, pi], NaN in gaps, and the rates when asked. */
+export interface PlotBranch {
+  theta3: Float64Array;
+  theta4: Float64Array;
+  /** Present when the request asked for rates. */
+  rates?: RateSeries | null;
+}
+
 /** Angle plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). */
 export interface PlotSeries {
   theta2Deg: Float64Array;
-  /** Radians wrapped to (-pi, pi], NaN in gaps; null when that branch is not shown. */
-  open: { theta3: Float64Array; theta4: Float64Array } | null;
-  crossed: { theta3: Float64Array; theta4: Float64Array } | null;
+  /** Null when that branch is not shown. */
+  open: PlotBranch | null;
+  crossed: PlotBranch | null;
 }
 
 /** A closed coupler curve (length unit); closed when its first and last points coincide or it rocks between limits. */
@@ -194,6 +215,19 @@ export interface TableResponse {
   totalIterations: number;
   branchCorrections: number;
   work: WorkCount;
+  /** Present when the request asked for motion: per row, NaN where not assembled (rates also at a limit). */
+  motion?: TableMotion | null;
+}
+
+/** Per-row motion of a table: rates, transmission angle (radians in [0, pi]) and the coupler point (length unit). */
+export interface TableMotion extends RateSeries {
+  mu: Float64Array;
+  px: Float64Array;
+  py: Float64Array;
+  vpx: Float64Array;
+  vpy: Float64Array;
+  apx: Float64Array;
+  apy: Float64Array;
 }
 
 /** What a long call can do besides answering: report progress (fraction in [0, 1], stage) and see a cancel. */

@@ -1,0 +1,79 @@
+import { useState } from 'react';
+import type { Dispatch } from 'react';
+import type { Action, AppState } from '../state/appState';
+import type { OmegaUnit } from '../state/inputMotion';
+import { ALPHA_SLIDER, OMEGA_SLIDER, OMEGA_UNITS, omegaFromUnit, omegaToUnit } from '../state/inputMotion';
+import { useMessages } from './MessagesContext';
+import { NumberControl } from './NumberControl';
+import { Toggle } from './Toggle';
+
+/** Props of MotionControls: the state and its dispatcher. */
+export interface MotionControlsProps {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+}
+
+/** Decimals the ω2 and α2 fields show (trailing zeros dropped). */
+const MOTION_DECIMALS = 6;
+
+/**
+ * The input motion: ω2 (slider and field in the unit chosen beside it: rad/s, rpm or °/s; the state keeps
+ * rad/s), α2 in rad/s², and the toggles of the canvas's velocity and acceleration vectors.
+ */
+export function MotionControls({ state, dispatch }: MotionControlsProps) {
+  const t = useMessages();
+  const [unit, setUnit] = useState<OmegaUnit>('rad/s');
+  const slider = OMEGA_SLIDER[unit];
+  return (
+    <section className="panel-section" aria-labelledby="sec-motion">
+      <h2 id="sec-motion" className="section-title">
+        {t.sectionMotion}
+      </h2>
+      <NumberControl
+        field="omega2"
+        value={omegaToUnit(state.omega2RadPerS, unit)}
+        decimals={MOTION_DECIMALS}
+        min={slider.min}
+        max={slider.max}
+        step={slider.step}
+        onCommit={(v) => dispatch({ type: 'setInputMotion', omega2RadPerS: omegaFromUnit(v, unit) })}
+      />
+      <label className="inline-field">
+        <span>{t.omegaUnit}</span>
+        <select
+          className="select select-small"
+          aria-label={t.omegaUnit}
+          value={unit}
+          onChange={(e) => setUnit(e.target.value as OmegaUnit)}
+        >
+          {OMEGA_UNITS.map((u) => (
+            <option key={u} value={u}>
+              {t.omegaUnits[u]}
+            </option>
+          ))}
+        </select>
+      </label>
+      <NumberControl
+        field="alpha2"
+        value={state.alpha2RadPerS2}
+        decimals={MOTION_DECIMALS}
+        min={ALPHA_SLIDER.min}
+        max={ALPHA_SLIDER.max}
+        step={ALPHA_SLIDER.step}
+        onCommit={(v) => dispatch({ type: 'setInputMotion', alpha2RadPerS2: v })}
+      />
+      <div className="toggles">
+        <Toggle
+          label={t.showVelocity}
+          checked={state.showVelocity}
+          onChange={(v) => dispatch({ type: 'setFlag', flag: 'showVelocity', value: v })}
+        />
+        <Toggle
+          label={t.showAcceleration}
+          checked={state.showAcceleration}
+          onChange={(v) => dispatch({ type: 'setFlag', flag: 'showAcceleration', value: v })}
+        />
+      </div>
+    </section>
+  );
+}

@@ -1,0 +1,41 @@
+import './AnalysisPanel.css';
+import { memo } from 'react';
+import { radToDeg360 } from '../solver/angles';
+import { formatDeg } from '../state/format';
+import type { FrameMotion } from './frameMotion';
+import { useMessages } from './MessagesContext';
+import { motionFacts } from './motionFacts';
+
+/** Props of MotionPanel: this frame's motion (null when the linkage does not assemble) and its theta2 (radians). */
+export interface MotionPanelProps {
+  motion: FrameMotion | null;
+  theta2Rad: number;
+}
+
+function MotionPanelImpl({ motion, theta2Rad }: MotionPanelProps) {
+  const t = useMessages();
+  const facts = motion ? motionFacts(motion, t) : [];
+  return (
+    <div className="motion" data-limit={motion?.limit ? 'true' : 'false'}>
+      <h3 className="subhead">{t.motionAt(formatDeg(radToDeg360(theta2Rad), 2))}</h3>
+      {motion ? (
+        <dl className="facts facts-grid">
+          {facts.map((f) => (
+            <div key={f.key} className={f.key.startsWith('v') || f.key === 'aP' ? 'fact fact-wide' : 'fact'}>
+              <dt>{f.label}</dt>
+              <dd className="mono" data-testid={`motion-${f.key}`}>
+                {f.value}
+              </dd>
+            </div>
+          ))}
+        </dl>
+      ) : (
+        <p className="note">{t.motionNoPose}</p>
+      )}
+      <p className="footnote">{t.motionNote}</p>
+    </div>
+  );
+}
+
+/** Velocity and acceleration at the current θ2: ω3, ω4, α3, α4, speeds of A, B, P and P's acceleration with directions. */
+export const MotionPanel = memo(MotionPanelImpl);
