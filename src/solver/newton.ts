@@ -116,7 +116,7 @@ export function newNewtonState(theta3 = 0, theta4 = 0): NewtonState {
 
 /**
  * Newton-Raphson on the loop equations f1 = r2 c2 + r3 c3 - r4 c4 - r1, f2 = r2 s2 + r3 s3 - r4 s4
- * with det J = r3 r4 sin(theta3 - theta4) (the report's eq. 5 has the sign flipped). Seed mode is
+ * with det J = r3 r4 sin(theta3 - theta4) (eq. 5 of the report, docs/report.md, has the sign flipped). Seed mode is
  * the report's Algorithm 1 verbatim. Otherwise: stop once |f| <= tolAbs, then polish while the
  * last step was not yet negligible (error after a step ~ step^2 / |sin mu|), reverting a polish
  * step that does not lower the residual. Angles stay unwrapped (continuous) in the state.

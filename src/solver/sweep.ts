@@ -432,7 +432,7 @@ function checkSweepOptions(opts: unknown): asserts opts is SweepOptions {
  * MAX_SWEEP_POINTS) on one branch. Methods: 'closed-form' (default, full precision), 'closed-form-polish',
  * 'newton' (NR continuation with a Hermite predictor from the velocity ratios; re-seeds from the
  * closed form after a gap, next to a fold, after a failure or a branch jump), 'newton-no-predictor',
- * 'seed' (the report's Algorithm 2). Angles wrapped to (-pi, pi], NaN where status is not 'ok'.
+ * 'seed' (Algorithm 2 of the report, docs/report.md). Angles wrapped to (-pi, pi], NaN where status is not 'ok'.
  * Throws an Error naming the argument for a bad linkage, theta2s, branch, method, tol or polish.
  */
 export function sweep(l: Linkage, theta2s: ArrayLike<number>, opts: SweepOptions): SweepResult {

@@ -69,7 +69,7 @@ export interface IterationRecord {
 export interface NewtonOptions {
   /** Tolerance: relative on |f| / (r1 + r2 + r3 + r4), default 1e-13, then polished; with seed, absolute on |f1| and |f2|, default 1e-9. */
   tol?: number;
-  /** Iteration cap, an integer from 0 to 100000; default 100 (the report's). */
+  /** Iteration cap, an integer from 0 to 100000; default 100 (as in the report, docs/report.md). */
   maxIterations?: number;
   /** Reproduce the report's Algorithm 1 exactly: absolute 1e-9 on |f1| and |f2|, singular at |det J| < 1e-9. */
   seed?: boolean;

@@ -253,7 +253,7 @@ function pose(theta2: number, a: Angles | null): PoseAngles | null {
   return { theta2, theta3: a.theta3, theta4: a.theta4, mu: transmissionAngle(a) };
 }
 
-/** NR options for the chosen method: the report's Algorithm 1 for seed, the tolerance unpolished when one is chosen. */
+/** NR options for the chosen method: Algorithm 1 of the report (docs/report.md) for seed, the tolerance unpolished when one is chosen. */
 function newtonOptions(solver: MethodChoice): NewtonOptions {
   if (solver.method === 'seed') return { seed: true, tol: solver.tol ?? undefined };
   if (solver.tol !== null && (solver.method === 'newton' || solver.method === 'newton-no-predictor')) {

@@ -191,7 +191,7 @@ export interface PointResponse {
   ghost: PoseAngles | null;
   /** NR from the solution one cycle step back (or null when that point cannot assemble). */
   continuation: NewtonSummary | null;
-  /** NR from the report's fixed first guess. */
+  /** NR from the fixed first guess of the report (docs/report.md). */
   cold: NewtonSummary | null;
   solver: MethodChoice;
   work: WorkCount;

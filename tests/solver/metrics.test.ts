@@ -23,7 +23,7 @@ const REPORT: Linkage = CASES[1];
 
 describe('designMetrics', () => {
   it("gives the report's 6-2-5-5 crank-rocker its printed transmission range and rocker swing on both branches", () => {
-    // hard-cases.md case 1: mu in [47.16, 106.26] deg; rocker swings 101.537..150.074 deg (open branch).
+    // docs/hard-cases.md case 1: mu in [47.16, 106.26] deg; rocker swings 101.537..150.074 deg (open branch).
     for (const b of BRANCHES) {
       const m = expectMatchesOracle(REPORT, b);
       expectNear(toDeg(m.transmission.min), 47.16, 0.005, 'mu min (deg)');
