@@ -251,7 +251,9 @@ function drawWarning(ctx: Ctx, w: WarningBox): void {
  * curves, ground with hatched pivots, the ghost of the other branch, the pose with its angle arcs, then the
  * labels where layoutScene placed them (never overlapping each other or the exclusion rectangles, e.g. the
  * zoom buttons from canvasToolsRect). With no pose it draws the ground, the crank at theta2 and the two
- * circles that fail to meet, with a message: never a torn linkage. Returns the layout it drew.
+ * circles that fail to meet, with a message: never a torn linkage. With scene.vectors it also draws the
+ * velocity and acceleration arrows (motionVectors.ts): their labels join the layout, their legend's corner is
+ * excluded. Returns the layout it drew.
  */
 export function drawLinkage(
   ctx: Ctx,

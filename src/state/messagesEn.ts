@@ -231,7 +231,7 @@ export const messagesEn: Messages = {
   showVelocity: 'Velocity vectors',
   showAcceleration: 'Acceleration vectors',
   motionPanelTitle: 'Velocity and acceleration',
-  motionAt: (theta2) => `At θ2 = ${theta2}°`,
+  motionAt: (theta2) => `Rates, θ2 = ${theta2}°`,
   angularVelocity: 'Angular velocity ω',
   angularAcceleration: 'Angular acceleration α',
   pointSpeed: (p) => `Speed of ${p}`,

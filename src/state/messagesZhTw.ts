@@ -231,7 +231,7 @@ export const messagesZhTw: Messages = {
   showVelocity: '速度向量',
   showAcceleration: '加速度向量',
   motionPanelTitle: '速度與加速度',
-  motionAt: (theta2) => `θ2 = ${theta2}° 時`,
+  motionAt: (theta2) => `θ2 = ${theta2}° 時的運動`,
   angularVelocity: '角速度 ω',
   angularAcceleration: '角加速度 α',
   pointSpeed: (p) => `${p} 點速度`,
