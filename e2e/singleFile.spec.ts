@@ -43,10 +43,13 @@ test.describe('the offline single file', () => {
     await page.goto(`file://${SINGLE}`);
     await waitReady(page);
     const rows = await changeR3AndExportCsv(page);
-    expect(rows[0]).toEqual(['theta2_deg', 'theta3_deg', 'theta4_deg', 'status', 'iterations', 'residual']);
+    const header = rows[0];
+    expect(header.slice(0, 3)).toEqual(['theta2_deg', 'theta3_deg', 'theta4_deg']);
+    expect(header).toContain('omega4_rad_s');
     expect(rows).toHaveLength(362);
     // r1=6, r2=2, r3=4.5, r4=5 is a Grashof crank-rocker: every row of the cycle assembles.
-    expect(rows.slice(1).every((r) => r[3] === 'ok')).toBe(true);
+    const status = header.indexOf('status');
+    expect(rows.slice(1).every((r) => r[status] === 'ok')).toBe(true);
     expect(Number(rows[91][0])).toBe(90);
     // The worker from the inline blob answered: no fall-back to the main thread.
     await expect(page.getByText(/main thread/)).toHaveCount(0);
