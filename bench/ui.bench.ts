@@ -32,6 +32,8 @@ const BASE = `http://localhost:${PORT}/`;
 const RUNS = Math.max(1, Number(process.env.BENCH_RUNS ?? 3));
 const OUT = process.env.BENCH_OUT ?? join(ROOT, 'bench', 'results', 'ui.json');
 const PLAY_SECONDS = 6;
+/** The app with every issue-9 view on: both arrow sets, the velocity plot (and so the motion panel's rates). */
+const MOTION_URL = `${BASE}?vel=1&acc=1&plot=vel`;
 const DRAG_STEPS = 120;
 
 /** Issue 11's targets. */
@@ -113,8 +115,8 @@ async function openPage(browser: Browser, rate: number, url: string): Promise<{ 
 }
 
 /** Redraws during PLAY_SECONDS of Play: frames that drew a new pose per second, and the longest gap between them. */
-async function measurePlay(browser: Browser, rate: number) {
-  const { context, page } = await openPage(browser, rate, BASE);
+async function measurePlay(browser: Browser, rate: number, url = BASE) {
+  const { context, page } = await openPage(browser, rate, url);
   try {
     await page.getByRole('button', { name: 'Play' }).click();
     await page.waitForTimeout(300);
@@ -291,6 +293,9 @@ async function main(): Promise<void> {
     const t1: ReturnType<typeof dragSummary>[] = [];
     const t4: typeof t1 = [];
     const r3: typeof t1 = [];
+    // Issue 9: Play at 4x with the velocity/acceleration views off (BASE) and on (arrows, rate plot, motion panel).
+    const motionOff: typeof play1 = [];
+    const motionOn: typeof play1 = [];
     // Interleaved runs, so a slow spell of the machine spreads over every figure rather than hitting one.
     for (let run = 0; run < RUNS; run++) {
       play1.push(await measurePlay(browser, 1));
@@ -298,6 +303,8 @@ async function main(): Promise<void> {
       t1.push(dragSummary(await measureDrag(browser, 1, 'theta2')));
       t4.push(dragSummary(await measureDrag(browser, 4, 'theta2')));
       r3.push(dragSummary(await measureDrag(browser, 1, 'r3')));
+      motionOff.push(await measurePlay(browser, 4, `${BASE}?plot=vel`));
+      motionOn.push(await measurePlay(browser, 4, MOTION_URL));
       console.log(`run ${run + 1}/${RUNS} done`);
     }
     const pick = <T>(xs: T[], f: (x: T) => number) => spread(xs.map(f));
@@ -318,6 +325,15 @@ async function main(): Promise<void> {
       viewport: '1280x800 @1x',
       runs: RUNS,
       play: { x1: play(play1), x4: play(play4) },
+      // Frame time (ms, from the animation-frame rate) at 4x with the rate plot shown, arrows off and on.
+      motion: {
+        offFrameMs: pick(motionOff, (p) => 1000 / p.frameFps),
+        onFrameMs: pick(motionOn, (p) => 1000 / p.frameFps),
+        ratio: pick(
+          motionOn.map((p, i) => ({ on: p, off: motionOff[i] })),
+          (x) => x.off.frameFps / x.on.frameFps,
+        ),
+      },
       drag: { inputs: DRAG_STEPS, theta2x1: drag(t1), theta2x4: drag(t4), r3n3600x1: drag(r3) },
       firstLoad,
       targets: TARGETS,
@@ -383,6 +399,16 @@ async function main(): Promise<void> {
         ok(firstLoad.gzipKB <= TARGETS.gzipKB),
       ),
       row('first-load JS raw (KB)', f(firstLoad.rawKB)),
+      row(
+        'Play frame time at 4x (ms), velocity+acceleration arrows off / on',
+        `${s(result.motion.offFrameMs)} / ${s(result.motion.onFrameMs)}`,
+      ),
+      row(
+        'frame time with arrows on / off, 4x',
+        s(result.motion.ratio, 2),
+        '< 1.20',
+        ok(result.motion.ratio.median < 1.2),
+      ),
     ]);
     console.log(`wrote ${OUT}`);
   } finally {
