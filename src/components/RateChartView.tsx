@@ -1,9 +1,9 @@
 import './SvgChartView.css';
-import { useCallback, useLayoutEffect, useRef, useState } from 'react';
+import { useLayoutEffect } from 'react';
 import { createRateChart } from '../charts/rateChart';
-import type { RateChart, RateMarker } from '../charts/rateChart';
+import type { RateMarker } from '../charts/rateChart';
 import type { RateChartInputs } from './rateInputs';
-import { useElementSize } from './useElementSize';
+import { useLiveChart } from './useLiveChart';
 
 /** Props of RateChartView: everything the chart shows; it sizes itself to its box. */
 export interface RateChartViewProps {
@@ -13,28 +13,18 @@ export interface RateChartViewProps {
   label: string;
 }
 
+/** A new rate chart at size 0 (drawn once the view knows its box). */
+const newRateChart = (svg: SVGSVGElement) =>
+  createRateChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' });
+
 /** A live rate chart (ω or α against θ2), updated like AngleChartView: data, marker, size and texts separately. */
 export function RateChartView({ inputs, marker, label }: RateChartViewProps) {
-  const boxRef = useRef<HTMLDivElement>(null);
-  const [chart, setChart] = useState<RateChart | null>(null);
-  const svgRef = useCallback((svg: SVGSVGElement | null) => {
-    setChart(svg ? createRateChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' }) : null);
-  }, []);
-  const { width, height } = useElementSize(boxRef);
   const { data, title, xLabel, yLabel } = inputs;
+  const { chart, boxRef, svgRef } = useLiveChart(newRateChart, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel });
   }, [chart, title, xLabel, yLabel]);
-  useLayoutEffect(() => {
-    chart?.update(data);
-  }, [chart, data]);
-  useLayoutEffect(() => {
-    chart?.setMarker(marker);
-  }, [chart, marker]);
-  useLayoutEffect(() => {
-    if (width > 0 && height > 0) chart?.resize(width, height);
-  }, [chart, width, height]);
 
   return (
     <div className="chart-box" ref={boxRef}>

@@ -1,10 +1,9 @@
 import './SvgChartView.css';
-import { useCallback, useLayoutEffect, useRef, useState } from 'react';
+import { useLayoutEffect } from 'react';
 import type { AngleMarker } from '../charts/angleChart';
-import type { TransmissionChart } from '../charts/transmissionChart';
 import { createTransmissionChart } from '../charts/transmissionChart';
 import type { TransmissionChartInputs } from './transmissionInputs';
-import { useElementSize } from './useElementSize';
+import { useLiveChart } from './useLiveChart';
 
 /** Props of TransmissionChartView, shaped as AngleChartView's: inputs, marker (valuesDeg[0] is mu), label. */
 export interface TransmissionChartViewProps {
@@ -14,28 +13,23 @@ export interface TransmissionChartViewProps {
   label: string;
 }
 
+/** A new transmission chart at size 0 (drawn once the view knows its box). */
+const newTransmissionChart = (svg: SVGSVGElement) =>
+  createTransmissionChart(svg, {
+    width: 0,
+    height: 0,
+    title: '',
+    xLabel: '',
+    yLabel: '',
+    legendMu: '',
+    legendOutside: '',
+    legendBand: '',
+  });
+
 /** A live transmission chart sized to its box; each input change redraws only what it touches. */
 export function TransmissionChartView({ inputs, marker, label }: TransmissionChartViewProps) {
-  const boxRef = useRef<HTMLDivElement>(null);
-  const [chart, setChart] = useState<TransmissionChart | null>(null);
-  const svgRef = useCallback((svg: SVGSVGElement | null) => {
-    setChart(
-      svg
-        ? createTransmissionChart(svg, {
-            width: 0,
-            height: 0,
-            title: '',
-            xLabel: '',
-            yLabel: '',
-            legendMu: '',
-            legendOutside: '',
-            legendBand: '',
-          })
-        : null,
-    );
-  }, []);
-  const { width, height } = useElementSize(boxRef);
   const { data, band, xMarks, title, xLabel, yLabel, legendMu, legendOutside, legendBand } = inputs;
+  const { chart, boxRef, svgRef } = useLiveChart(newTransmissionChart, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel, legendMu, legendOutside, legendBand });
@@ -44,17 +38,8 @@ export function TransmissionChartView({ inputs, marker, label }: TransmissionCha
     chart?.setBand(band);
   }, [chart, band]);
   useLayoutEffect(() => {
-    chart?.update(data);
-  }, [chart, data]);
-  useLayoutEffect(() => {
     chart?.setXMarks(xMarks);
   }, [chart, xMarks]);
-  useLayoutEffect(() => {
-    chart?.setMarker(marker);
-  }, [chart, marker]);
-  useLayoutEffect(() => {
-    if (width > 0 && height > 0) chart?.resize(width, height);
-  }, [chart, width, height]);
 
   return (
     <div className="chart-box" ref={boxRef}>
