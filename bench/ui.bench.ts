@@ -8,8 +8,8 @@
  *     3601 points at 1x (the plots and canvas show that r3 or a newer one);
  *   - inputs left without a redraw (0 expected);
  *   - JavaScript transferred on first load (entry, chunks and worker), raw and gzip -9.
- * How it sees a redraw without app code: an init script wraps CanvasRenderingContext2D.fillRect and records every
- * full clear of the linkage canvas with the canvas's accessible label at that moment (it names the drawn θ2).
+ * How it sees a redraw without app code: an init script wraps CanvasRenderingContext2D.fillRect and drawImage
+ * and records every full cover of the linkage canvas (its background colour, or its cached background bitmap) with the canvas's accessible label at that moment (it names the drawn θ2).
  * Plot redraws come from the app's 'fourbar:cycle-drawn' mark, which the app makes only when
  * window.__FOURBAR_BENCH__ is set (this script sets it before any page script runs).
  * "End of the rendered frame" is the first message posted from a later requestAnimationFrame callback, which
@@ -72,13 +72,26 @@ function instrument(): void {
   w.__FOURBAR_BENCH__ = true;
   const b: BenchLog = { draws: [], cycles: [], frameEnds: [], runFrames: false };
   w.__bench = b;
-  const fillRect = CanvasRenderingContext2D.prototype.fillRect;
-  CanvasRenderingContext2D.prototype.fillRect = function (x: number, y: number, width: number, height: number) {
-    const c = this.canvas;
+  // A full redraw starts by covering the canvas: with its background colour, or with the cached background
+  // bitmap (the live canvas redraws only the linkage over it).
+  const record = (c: HTMLCanvasElement, x: number, y: number) => {
     if (x === 0 && y === 0 && c.classList.contains('linkage-canvas') && c.isConnected) {
       b.draws.push({ t: performance.now(), label: c.getAttribute('aria-label') ?? '' });
     }
+  };
+  const proto = CanvasRenderingContext2D.prototype;
+  const fillRect = proto.fillRect;
+  proto.fillRect = function (x: number, y: number, width: number, height: number) {
+    record(this.canvas, x, y);
     return fillRect.call(this, x, y, width, height);
+  };
+  const drawImage = proto.drawImage as (this: CanvasRenderingContext2D, ...args: unknown[]) => void;
+  (proto as unknown as { drawImage: (...args: unknown[]) => void }).drawImage = function (
+    this: CanvasRenderingContext2D,
+    ...args: unknown[]
+  ) {
+    if (args.length === 3) record(this.canvas, args[1] as number, args[2] as number);
+    return drawImage.apply(this, args);
   };
   new PerformanceObserver((list) => {
     for (const e of list.getEntries()) {

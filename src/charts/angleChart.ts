@@ -5,7 +5,6 @@ import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
 import {
-  CHART_STYLE,
   child,
   drawChartText,
   drawGridX,
@@ -18,6 +17,8 @@ import {
 } from './chartFrame';
 import type { AngleAxis } from './ticks';
 import { angleAxis, angleTicks, fittedTicks, tickCount } from './ticks';
+import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
+import { chartMarker } from './markerLayer';
 import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
 
@@ -59,6 +60,8 @@ export interface AngleChartOptions extends AngleChartText {
   yTickSpacing?: number;
   /** Faint vertical rules on the theta2 axis (dead centres); default none. */
   xMarks?: readonly XMark[];
+  /** A box laid over the SVG to draw the marker in (on screen: moving it repaints nothing); default inside the SVG. */
+  markerHost?: HTMLElement;
 }
 
 /**
@@ -231,24 +234,17 @@ export function seriesPath(theta2Deg: ArrayLike<number>, valuesDeg: ArrayLike<nu
   return gen(wrappedSegments(xs, ys)) ?? '';
 }
 
-/** One marker dot in plot pixels. */
-export interface MarkerDot {
-  cx: number;
-  cy: number;
-  color: string;
-}
-
 /** Where the marker goes: its line's x (null when hidden) and a dot on each solid series whose value is finite and in the y domain. */
 export function markerGeometry(
   marker: AngleMarker | null,
   series: readonly AngleSeries[],
   frame: AngleFrame,
-): { x: number | null; dots: MarkerDot[] } {
+): MarkerPlacement {
   if (!marker || !Number.isFinite(marker.theta2Deg)) return { x: null, dots: [] };
   const cx = frame.x(Math.min(360, Math.max(0, marker.theta2Deg)));
   const [y0, y1] = frame.y.domain();
   const solid = series.filter((s) => !s.faint);
-  const dots: MarkerDot[] = [];
+  const dots: MarkerDotPx[] = [];
   marker.valuesDeg.forEach((v, i) => {
     if (i < solid.length && Number.isFinite(v) && v >= y0 && v <= y1) {
       dots.push({ cx, cy: frame.y(v), color: solid[i].color });
@@ -286,11 +282,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   const ay = child(plot, 'g', 'axis-y');
   const marksG = child(plot, 'g', 'x-marks');
   const lines = child(plot, 'g', 'lines');
-  const mark = child(plot, 'g', 'marker');
-  const mline = child(mark, 'line', 'mline')
-    .attr('y1', 0)
-    .attr('stroke', CHART_STYLE.marker)
-    .attr('stroke-width', 1.25);
+  const mark = chartMarker(plot.node() as SVGGElement, options.markerHost);
 
   const drawAxes = () => {
     const { iw, ih, x, y, xTicks, yTicks } = frame;
@@ -340,20 +332,8 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   };
 
   const drawMarker = () => {
-    const g = markerGeometry(marker, data.series, frame);
-    mark.attr('display', g.x === null ? 'none' : null);
-    if (g.x === null) return;
-    mline.attr('x1', g.x).attr('x2', g.x).attr('y2', frame.ih);
-    mark
-      .selectAll<SVGCircleElement, MarkerDot>('circle')
-      .data(g.dots)
-      .join('circle')
-      .attr('cx', (d) => d.cx)
-      .attr('cy', (d) => d.cy)
-      .attr('r', 4)
-      .attr('fill', (d) => d.color)
-      .attr('stroke', CHART_STYLE.background)
-      .attr('stroke-width', 1.5);
+    const { left, top } = size.margins;
+    mark.draw(markerGeometry(marker, data.series, frame), { left, top, height: frame.ih }, size.width, size.height);
   };
 
   const drawText = () => {

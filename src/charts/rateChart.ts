@@ -8,7 +8,6 @@ import type { AngleChartSize } from './angleChart';
 import { angleChartSize, plotIndices } from './angleChart';
 import type { Margins } from './chartFrame';
 import {
-  CHART_STYLE,
   child,
   drawChartText,
   drawGridX,
@@ -19,6 +18,7 @@ import {
   prepareSvg,
   styleAxis,
 } from './chartFrame';
+import { chartMarker } from './markerLayer';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
@@ -51,6 +51,8 @@ export interface RateChartOptions extends RateChartText {
   xTickSpacing?: number;
   xMaxTicks?: number;
   yTickSpacing?: number;
+  /** A box laid over the SVG to draw the marker in (on screen); default inside the SVG. */
+  markerHost?: HTMLElement;
 }
 
 /** The marker: current theta2 (degrees) and each solid series' current value (NaN when undetermined). */
@@ -206,11 +208,7 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
   const ay = child(plot, 'g', 'axis-y');
   const lines = child(plot, 'g', 'lines').attr('clip-path', `url(#${clipId})`);
   const clips = child(plot, 'g', 'clip-marks');
-  const mark = child(plot, 'g', 'marker');
-  const mline = child(mark, 'line', 'mline')
-    .attr('y1', 0)
-    .attr('stroke', CHART_STYLE.marker)
-    .attr('stroke-width', 1.25);
+  const mark = chartMarker(plot.node() as SVGGElement, options.markerHost);
 
   const drawAxes = () => {
     const { iw, ih, x, y, xTicks, yTicks } = frame;
@@ -274,13 +272,12 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
   };
 
   const drawMarker = () => {
+    const box = { left: size.margins.left, top: size.margins.top, height: frame.ih };
     if (!marker || !Number.isFinite(marker.theta2Deg)) {
-      mark.attr('display', 'none');
+      mark.draw({ x: null, dots: [] }, box, size.width, size.height);
       return;
     }
-    mark.attr('display', null);
     const cx = frame.x(Math.min(360, Math.max(0, marker.theta2Deg)));
-    mline.attr('x1', cx).attr('x2', cx).attr('y2', frame.ih);
     const [y0, y1] = frame.y.domain();
     const solid = data.series.filter((d) => !d.faint);
     const dots = marker.values.flatMap((v, i) =>
@@ -288,16 +285,7 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
         ? [{ cx, cy: frame.y(v), color: solid[i].color }]
         : [],
     );
-    mark
-      .selectAll<SVGCircleElement, { cx: number; cy: number; color: string }>('circle')
-      .data(dots)
-      .join('circle')
-      .attr('cx', (d) => d.cx)
-      .attr('cy', (d) => d.cy)
-      .attr('r', 4)
-      .attr('fill', (d) => d.color)
-      .attr('stroke', CHART_STYLE.background)
-      .attr('stroke-width', 1.5);
+    mark.draw({ x: cx, dots }, box, size.width, size.height);
   };
 
   const drawText = () => {

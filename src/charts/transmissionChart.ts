@@ -8,7 +8,6 @@ import type { AngleMarker } from './angleChart';
 import { plotIndices } from './angleChart';
 import type { Margins } from './chartFrame';
 import {
-  CHART_STYLE,
   child,
   drawChartText,
   drawGridX,
@@ -18,6 +17,7 @@ import {
   prepareSvg,
   styleAxis,
 } from './chartFrame';
+import { chartMarker } from './markerLayer';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
@@ -56,6 +56,8 @@ export interface TransmissionChartOptions extends TransmissionChartText {
   xMarks?: readonly XMark[];
   /** Default { top: 46, right: 14, bottom: 40, left: 50 }, as the angle charts. */
   margins?: Margins;
+  /** A box laid over the SVG to draw the marker in (on screen); default inside the SVG. */
+  markerHost?: HTMLElement;
 }
 
 /** A live transmission chart; every method redraws only what its change touches. */
@@ -175,12 +177,7 @@ export function createTransmissionChart(svg: SVGSVGElement, options: Transmissio
   const lines = child(plot, 'g', 'lines');
   const muPath = child(lines, 'path', 'mu-line');
   const muOutPath = child(lines, 'path', 'mu-line-outside');
-  const mark = child(plot, 'g', 'marker');
-  const mline = child(mark, 'line', 'mline').attr('stroke', CHART_STYLE.marker).attr('stroke-width', 1.25);
-  const mdot = child(mark, 'circle', 'mdot')
-    .attr('r', 4)
-    .attr('stroke', CHART_STYLE.background)
-    .attr('stroke-width', 1.5);
+  const mark = chartMarker(plot.node() as SVGGElement, options.markerHost);
 
   const drawAxes = () => {
     const { iw, ih, x, y } = f;
@@ -265,17 +262,16 @@ export function createTransmissionChart(svg: SVGSVGElement, options: Transmissio
 
   const drawMarker = () => {
     const t2 = marker?.theta2Deg ?? Number.NaN;
-    mark.attr('display', Number.isFinite(t2) ? null : 'none');
-    if (!marker || !Number.isFinite(t2)) return;
+    const box = { left: m.left, top: m.top, height: f.ih };
+    if (!marker || !Number.isFinite(t2)) {
+      mark.draw({ x: null, dots: [] }, box, width, height);
+      return;
+    }
     const cx = f.x(Math.min(360, Math.max(0, t2)));
-    mline.attr('x1', cx).attr('x2', cx).attr('y1', 0).attr('y2', f.ih);
     const mu = marker.valuesDeg[0];
     const outside = mu < band.loDeg || mu > band.hiDeg;
-    mdot
-      .attr('display', Number.isFinite(mu) ? null : 'none')
-      .attr('cx', cx)
-      .attr('cy', Number.isFinite(mu) ? f.y(mu) : 0)
-      .attr('fill', outside ? COLORS.muOutside : MU_COLOR);
+    const dots = Number.isFinite(mu) ? [{ cx, cy: f.y(mu), color: outside ? COLORS.muOutside : MU_COLOR }] : [];
+    mark.draw({ x: cx, dots }, box, width, height);
   };
 
   const drawText = () => {

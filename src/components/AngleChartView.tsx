@@ -19,8 +19,8 @@ export interface AngleChartViewProps {
 const NO_MARKS: readonly XMark[] = [];
 
 /** A new angle chart at size 0 (drawn once the view knows its box). */
-const newAngleChart = (svg: SVGSVGElement) =>
-  createAngleChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' });
+const newAngleChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
+  createAngleChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost });
 
 /**
  * A live angle chart: the chart is created once per SVG element; new data redraw the curves (the axes
@@ -28,7 +28,7 @@ const newAngleChart = (svg: SVGSVGElement) =>
  */
 export function AngleChartView({ inputs, marker, label, xMarks = NO_MARKS }: AngleChartViewProps) {
   const { data, title, xLabel, yLabel } = inputs;
-  const { chart, boxRef, svgRef } = useLiveChart(newAngleChart, data, marker);
+  const { chart, boxRef, svgRef, markerRef } = useLiveChart(newAngleChart, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel });
@@ -40,6 +40,7 @@ export function AngleChartView({ inputs, marker, label, xMarks = NO_MARKS }: Ang
   return (
     <div className="chart-box" ref={boxRef}>
       <svg ref={svgRef} role="img" aria-label={label} className="chart-svg" />
+      <div className="chart-marker" ref={markerRef} />
     </div>
   );
 }

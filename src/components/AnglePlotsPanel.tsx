@@ -2,13 +2,11 @@ import './AnglePlotsPanel.css';
 import type { Dispatch } from 'react';
 import { Suspense, lazy, memo, useMemo } from 'react';
 import type { XMark } from '../charts/xMarks';
-import type { LinkRates } from '../solver/rates';
-import type { Branch } from '../solver/types';
 import type { Action, PlotKind, PlotLayout } from '../state/appState';
-import type { PointResponse } from '../worker/protocol';
 import { AngleChartView } from './AngleChartView';
 import type { CycleDegrees } from './chartInputs';
 import { angleChartInputs, angleMarker } from './chartInputs';
+import { useFramePose } from './FramePoseContext';
 import { useMessages } from './MessagesContext';
 import type { CycleRates } from './rateInputs';
 import { Segmented } from './Segmented';
@@ -19,11 +17,9 @@ const RatePlots = lazy(() => import('./RatePlots').then((m) => ({ default: m.Rat
 /** The plot chooser's choices, in order; a new kind of plot is one more entry (and its view below). */
 export const PLOT_KINDS: readonly PlotKind[] = ['angles', 'velocities', 'accelerations'];
 
-/** Props of AnglePlotsPanel: the cycle in degrees, the latest pose and the display choices. */
+/** Props of AnglePlotsPanel: the cycle in degrees and the display choices (the marker is the frame on screen). */
 export interface AnglePlotsPanelProps {
   deg: CycleDegrees | null;
-  point: PointResponse | null;
-  branch: Branch;
   showOther: boolean;
   layout: PlotLayout;
   dispatch: Dispatch<Action>;
@@ -33,23 +29,22 @@ export interface AnglePlotsPanelProps {
   kind?: PlotKind;
   /** The cycle's rates on the plot samples (null until a rate plot's cycle arrives). */
   rates?: CycleRates | null;
-  /** This frame's rates for the rate plots' marker; null when not assembled. */
-  currentRates?: LinkRates | null;
 }
 
 function AnglePlotsPanelImpl({
   deg,
-  point,
-  branch,
   showOther,
   layout,
   dispatch,
   xMarks,
   kind = 'angles',
   rates = null,
-  currentRates = null,
 }: AnglePlotsPanelProps) {
   const t = useMessages();
+  // The frame on screen: the markers (and the branch, which a rocking input switches) follow every frame of Play.
+  const { state, marker: point, motion } = useFramePose();
+  const { branch } = state;
+  const currentRates = motion?.rates ?? null;
   const in3 = useMemo(() => angleChartInputs('theta3', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const in4 = useMemo(() => angleChartInputs('theta4', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const inBoth = useMemo(() => angleChartInputs('both', deg, branch, showOther, t), [deg, branch, showOther, t]);

@@ -1,6 +1,7 @@
 import './AppLayout.css';
-import { Suspense, lazy, useCallback, useMemo } from 'react';
+import { Suspense, lazy, useCallback, useMemo, useState } from 'react';
 import type { AppState } from '../state/appState';
+import { Playhead } from '../state/playhead';
 import { getMessages } from '../state/i18n';
 import type { ParsedUrl } from '../state/url';
 import { AnalysisPanel } from './AnalysisPanel';
@@ -11,7 +12,6 @@ import { ConvergencePanel } from './ConvergencePanel';
 import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
-import { LinkageCanvas } from './LinkageCanvas';
 import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
@@ -26,9 +26,10 @@ import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
 import { useFrameMotion } from './useFrameMotion';
+import { FramePoseProvider } from './FramePoseProvider';
+import { LinkageStage } from './LinkageStage';
+import { useShownFrame } from './useShownFrame';
 import { useLinkagePose } from './useLinkagePose';
-import { useLinkageScene } from './useLinkageScene';
-import { useSceneVectors } from './useSceneVectors';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useStableCallback } from './useStableCallback';
@@ -37,7 +38,6 @@ import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
-import { useDesignScene } from './useDesignScene';
 import { deadCentreXMarks } from './transmissionInputs';
 
 // The solver lab (its charts and tables) loads only when it is opened.
@@ -73,25 +73,17 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const t = getMessages(state.locale);
   const onLab = state.page === 'lab';
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
-  const { local, marker } = useLinkagePose(state, !onLab);
-  const design = useDesignMetrics(state.linkage, state.branch);
-  const designScene = useDesignScene(state, local, design, t);
-  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
+  // The numbers panel follows the state (a few times a second while playing); the canvas and the plot
+  // markers follow every frame through the FramePoseProvider below.
+  const { local } = useLinkagePose(state, false);
   const motion = useFrameMotion(state, local);
-  const vectors = useSceneVectors(state, motion, t);
+  const design = useDesignMetrics(state.linkage, state.branch);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const rates = useMemo(() => cycleRates(cycle, state.direction), [cycle, state.direction]);
-  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
-  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
-    state,
-    point,
-    marker,
-    cycle,
-    client,
-    deg,
-    scene,
-    t,
-  });
-  const onStep = useAnimation(state, dispatch, rangeDeg);
+  const { shown, onShown } = useShownFrame();
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
+  const [playhead] = useState(() => new Playhead());
+  const onStep = useAnimation(state, dispatch, rangeDeg, playhead);
   const getState = useStableCallback(() => state);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
   const shell = shellMessages(state.locale);
@@ -102,119 +94,116 @@ export function AppLayout({ initial }: AppLayoutProps) {
 
   return (
     <MessagesContext.Provider value={t}>
-      <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
-      <div className="app" data-ready={cycle && point ? 'true' : 'false'}>
-        <header className="topbar">
-          <Brand />
-          <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
-          <LanguageSelect locale={state.locale} dispatch={dispatch} />
-        </header>
-        <UrlNotice ignored={initial.ignored} />
-        <aside className="sidebar" aria-label={shell.controlsLabel}>
-          <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
-        </aside>
-        <main className="app-main" id={MAIN_ID} tabIndex={-1}>
-          <div
-            className={`main${onLab ? ' main-lab' : ''}`}
-            id={PANEL_ID}
-            role="tabpanel"
-            aria-labelledby={pageTabId(state.page)}
-          >
-            {onLab ? (
-              <Suspense fallback={<p className="note">{t.labRun}…</p>}>
-                <LabPanel client={client} state={state} dispatch={dispatch} />
-              </Suspense>
-            ) : (
-              <>
-                <section className="card stage">
-                  <LinkageCanvas
-                    scene={scene}
-                    view={state.view}
-                    onViewChange={onViewChange}
-                    onTheta2={onTheta2}
-                    onCoupler={onCoupler}
-                    onSize={onCanvasSize}
-                    description={description}
-                    hint={shell.canvasHint({ crank: true, coupler: true })}
-                  />
-                </section>
-                <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
-                  <AnglePlotsPanel
-                    deg={deg}
-                    point={marker}
-                    branch={state.branch}
-                    showOther={state.showGhost}
-                    layout={state.plotLayout}
-                    dispatch={dispatch}
-                    xMarks={xMarks}
-                    kind={state.plotKind}
-                    rates={rates}
-                    currentRates={motion?.rates ?? null}
-                  />
-                </section>
-                <section className="card transmission-card" aria-label={t.chartTransmission}>
-                  <Suspense fallback={null}>
-                    <TransmissionPanel
-                      deg={deg}
-                      point={marker}
-                      branch={state.branch}
-                      muBandLoDeg={state.muBandLoDeg}
-                      muBandHiDeg={state.muBandHiDeg}
-                      xMarks={xMarks}
+      <FramePoseProvider state={state} playhead={playhead} ghostShown={!onLab}>
+        <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
+        <div className="app" data-ready={cycle && point ? 'true' : 'false'}>
+          <header className="topbar">
+            <Brand />
+            <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
+            <LanguageSelect locale={state.locale} dispatch={dispatch} />
+          </header>
+          <UrlNotice ignored={initial.ignored} />
+          <aside className="sidebar" aria-label={shell.controlsLabel}>
+            <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
+          </aside>
+          <main className="app-main" id={MAIN_ID} tabIndex={-1}>
+            <div
+              className={`main${onLab ? ' main-lab' : ''}`}
+              id={PANEL_ID}
+              role="tabpanel"
+              aria-labelledby={pageTabId(state.page)}
+            >
+              {onLab ? (
+                <Suspense fallback={<p className="note">{t.labRun}…</p>}>
+                  <LabPanel client={client} state={state} dispatch={dispatch} />
+                </Suspense>
+              ) : (
+                <>
+                  <section className="card stage">
+                    <LinkageStage
+                      cycle={cycle}
+                      design={design}
+                      onViewChange={onViewChange}
+                      onTheta2={onTheta2}
+                      onCoupler={onCoupler}
+                      onSize={onCanvasSize}
+                      hint={shell.canvasHint({ crank: true, coupler: true })}
+                      onShown={onShown}
                     />
-                  </Suspense>
-                </section>
-              </>
-            )}
-          </div>
-        </main>
-        <aside className="rightbar" aria-label={shell.resultsLabel}>
-          <section className="card" aria-labelledby="sec-analysis">
-            <h2 id="sec-analysis" className="section-title">
-              {t.sectionAnalysis}
-            </h2>
-            <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
-            {cycleError ? (
-              <p className="note note-error" role="alert">
-                {cycleError}
-              </p>
-            ) : null}
-          </section>
-          <section className="card" aria-labelledby="sec-design">
-            <h2 id="sec-design" className="section-title">
-              {t.sectionDesign}
-            </h2>
-            <DesignPanel
-              design={design}
-              muBandLoDeg={state.muBandLoDeg}
-              muBandHiDeg={state.muBandHiDeg}
-              dispatch={dispatch}
-            />
-          </section>
-          <section className="card" aria-labelledby="sec-motion-results">
-            <h2 id="sec-motion-results" className="section-title">
-              {t.motionPanelTitle}
-            </h2>
-            <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
-          </section>
-          <section className="card convergence-card">
-            <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />
-          </section>
-          <section className="card" aria-labelledby="sec-export">
-            <h2 id="sec-export" className="section-title">
-              {t.sectionExport}
-            </h2>
-            <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} />
-          </section>
-          <section className="card" aria-labelledby="sec-share">
-            <h2 id="sec-share" className="section-title">
-              {t.sectionShare}
-            </h2>
-            <SharePanel getState={getState} />
-          </section>
-          <SolverStatus mode={solverMode} reason={solverReason} />
-        </aside>
-      </div>
+                  </section>
+                  <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
+                    <AnglePlotsPanel
+                      deg={deg}
+                      showOther={state.showGhost}
+                      layout={state.plotLayout}
+                      dispatch={dispatch}
+                      xMarks={xMarks}
+                      kind={state.plotKind}
+                      rates={rates}
+                    />
+                  </section>
+                  <section className="card transmission-card" aria-label={t.chartTransmission}>
+                    <Suspense fallback={null}>
+                      <TransmissionPanel
+                        deg={deg}
+                        muBandLoDeg={state.muBandLoDeg}
+                        muBandHiDeg={state.muBandHiDeg}
+                        xMarks={xMarks}
+                      />
+                    </Suspense>
+                  </section>
+                </>
+              )}
+            </div>
+          </main>
+          <aside className="rightbar" aria-label={shell.resultsLabel}>
+            <section className="card" aria-labelledby="sec-analysis">
+              <h2 id="sec-analysis" className="section-title">
+                {t.sectionAnalysis}
+              </h2>
+              <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+              {cycleError ? (
+                <p className="note note-error" role="alert">
+                  {cycleError}
+                </p>
+              ) : null}
+            </section>
+            <section className="card" aria-labelledby="sec-design">
+              <h2 id="sec-design" className="section-title">
+                {t.sectionDesign}
+              </h2>
+              <DesignPanel
+                design={design}
+                muBandLoDeg={state.muBandLoDeg}
+                muBandHiDeg={state.muBandHiDeg}
+                dispatch={dispatch}
+              />
+            </section>
+            <section className="card" aria-labelledby="sec-motion-results">
+              <h2 id="sec-motion-results" className="section-title">
+                {t.motionPanelTitle}
+              </h2>
+              <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
+            </section>
+            <section className="card convergence-card">
+              <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />
+            </section>
+            <section className="card" aria-labelledby="sec-export">
+              <h2 id="sec-export" className="section-title">
+                {t.sectionExport}
+              </h2>
+              <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} />
+            </section>
+            <section className="card" aria-labelledby="sec-share">
+              <h2 id="sec-share" className="section-title">
+                {t.sectionShare}
+              </h2>
+              <SharePanel getState={getState} />
+            </section>
+            <SolverStatus mode={solverMode} reason={solverReason} />
+          </aside>
+        </div>
+      </FramePoseProvider>
     </MessagesContext.Provider>
   );
 }

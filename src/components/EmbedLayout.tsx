@@ -1,6 +1,7 @@
 import './EmbedLayout.css';
 import { useCallback, useMemo, useState } from 'react';
 import type { AppState } from '../state/appState';
+import { Playhead } from '../state/playhead';
 import { getMessages } from '../state/i18n';
 import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../state/url';
 import { appUrl } from '../state/url';
@@ -12,7 +13,8 @@ import { frameBridge } from './embedBridge';
 import { DesignPanel } from './DesignPanel';
 import { ExportPanel } from './ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
-import { LinkageCanvas } from './LinkageCanvas';
+import { FramePoseProvider } from './FramePoseProvider';
+import { LinkageStage } from './LinkageStage';
 import { MessagesContext } from './MessagesContext';
 import { shellMessages } from './shellMessages';
 import { useAnimation } from './useAnimation';
@@ -22,8 +24,6 @@ import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useEmbedMessages } from './useEmbedMessages';
 import { useExports } from './useExports';
-import { useLinkagePose } from './useLinkagePose';
-import { useLinkageScene } from './useLinkageScene';
 import { usePlotPixels } from './usePlotPixels';
 import { useSimulator } from './useSimulator';
 import { useUrlSync } from './useUrlSync';
@@ -31,7 +31,7 @@ import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from './SolverStatus';
 import { useCycleTable } from './useSolver';
 import { useDesignMetrics } from './useDesignMetrics';
-import { useDesignScene } from './useDesignScene';
+import { useShownFrame } from './useShownFrame';
 import { deadCentreXMarks } from './transmissionInputs';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
@@ -81,22 +81,12 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, numbersShown);
   const t = getMessages(state.locale);
   const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
-  const { local, marker } = useLinkagePose(state, true);
   const design = useDesignMetrics(state.linkage, state.branch);
-  const designScene = useDesignScene(state, local, design, t);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene);
-  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({
-    state,
-    point,
-    marker,
-    cycle,
-    client,
-    deg,
-    scene,
-    t,
-  });
-  const onStep = useAnimation(state, dispatch, rangeDeg);
+  const { shown, onShown } = useShownFrame();
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
+  const [playhead] = useState(() => new Playhead());
+  const onStep = useAnimation(state, dispatch, rangeDeg, playhead);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
   const crankMovable = !embed.locked.includes('theta2');
@@ -111,89 +101,95 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const fullHref = ownsPage ? fullAppHref(state) : '';
   return (
     <MessagesContext.Provider value={t}>
-      <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
-        <header className="embed-bar">
-          <h1 className="embed-title">{t.embedTitle}</h1>
-          <div className="embed-bar-right">
-            <LanguageSelect locale={state.locale} dispatch={dispatch} />
-            {fullHref ? (
-              <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
-                {t.openFull} ↗
-              </a>
-            ) : null}
-          </div>
-        </header>
-        <UrlNotice ignored={initial.ignored} />
-        <main className="embed-main">
-          <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
-            <div className="embed-stage">
-              <LinkageCanvas
-                scene={scene}
-                view={state.view}
-                onViewChange={onViewChange}
-                onTheta2={crankMovable ? onTheta2 : undefined}
-                onCoupler={couplerMovable ? onCoupler : undefined}
-                onSize={onCanvasSize}
-                description={description}
-                hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
-              />
+      <FramePoseProvider state={state} playhead={playhead} ghostShown>
+        <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
+          <header className="embed-bar">
+            <h1 className="embed-title">{t.embedTitle}</h1>
+            <div className="embed-bar-right">
+              <LanguageSelect locale={state.locale} dispatch={dispatch} />
+              {fullHref ? (
+                <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
+                  {t.openFull} ↗
+                </a>
+              ) : null}
             </div>
-            {show('controls') ? (
-              <div className="embed-controls">
-                <ControlsPanel
-                  state={state}
-                  dispatch={dispatch}
-                  locked={embed.locked}
-                  compact
-                  rocking={rocking}
-                  onStep={onStep}
+          </header>
+          <UrlNotice ignored={initial.ignored} />
+          <main className="embed-main">
+            <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
+              <div className="embed-stage">
+                <LinkageStage
+                  cycle={cycle}
+                  design={design}
+                  onViewChange={onViewChange}
+                  onTheta2={crankMovable ? onTheta2 : undefined}
+                  onCoupler={couplerMovable ? onCoupler : undefined}
+                  onSize={onCanvasSize}
+                  hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
+                  onShown={onShown}
                 />
               </div>
+              {show('controls') ? (
+                <div className="embed-controls">
+                  <ControlsPanel
+                    state={state}
+                    dispatch={dispatch}
+                    locked={embed.locked}
+                    compact
+                    rocking={rocking}
+                    onStep={onStep}
+                  />
+                </div>
+              ) : null}
+            </div>
+            {show('info') ? (
+              <section className="card embed-card">
+                <AnalysisPanel
+                  cycle={cycle}
+                  table={table}
+                  point={point}
+                  branch={state.branch}
+                  nrStart={state.nrStart}
+                />
+              </section>
             ) : null}
-          </div>
-          {show('info') ? (
-            <section className="card embed-card">
-              <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
-            </section>
-          ) : null}
-          {show('info') ? (
-            <section className="card embed-card" aria-label={t.sectionDesign}>
-              <DesignPanel
-                design={design}
-                muBandLoDeg={state.muBandLoDeg}
-                muBandHiDeg={state.muBandHiDeg}
-                dispatch={dispatch}
-                theta2Locked={!crankMovable}
-                compact
-              />
-            </section>
-          ) : null}
-          {show('plots') ? (
-            <section className="card embed-card embed-plots" ref={plotsRef}>
-              <AnglePlotsPanel
-                deg={deg}
-                point={marker}
-                branch={state.branch}
-                showOther={state.showGhost}
-                layout={state.plotLayout}
-                dispatch={dispatch}
-                xMarks={xMarks}
-              />
-            </section>
-          ) : null}
-          {show('export') ? (
-            <section className="card embed-card">
-              <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
-            </section>
-          ) : null}
-          <SolverStatus mode={solverMode} reason={solverReason} />
-          {cycleError ? (
-            <p className="note note-error" role="alert">
-              {cycleError}
-            </p>
-          ) : null}
-        </main>
-      </div>
+            {show('info') ? (
+              <section className="card embed-card" aria-label={t.sectionDesign}>
+                <DesignPanel
+                  design={design}
+                  muBandLoDeg={state.muBandLoDeg}
+                  muBandHiDeg={state.muBandHiDeg}
+                  dispatch={dispatch}
+                  theta2Locked={!crankMovable}
+                  compact
+                />
+              </section>
+            ) : null}
+            {show('plots') ? (
+              <section className="card embed-card embed-plots" ref={plotsRef}>
+                <AnglePlotsPanel
+                  deg={deg}
+                  showOther={state.showGhost}
+                  layout={state.plotLayout}
+                  dispatch={dispatch}
+                  xMarks={xMarks}
+                />
+              </section>
+            ) : null}
+            {show('export') ? (
+              <section className="card embed-card">
+                <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
+              </section>
+            ) : null}
+            <SolverStatus mode={solverMode} reason={solverReason} />
+            {cycleError ? (
+              <p className="note note-error" role="alert">
+                {cycleError}
+              </p>
+            ) : null}
+          </main>
+        </div>
+      </FramePoseProvider>
     </MessagesContext.Provider>
   );
 }

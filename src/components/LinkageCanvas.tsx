@@ -4,9 +4,9 @@ import type { PointerEvent as ReactPointerEvent } from 'react';
 import { flushSync } from 'react-dom';
 import { radToDeg360, wrapDeg360 } from '../solver/angles';
 import { canvasToolsRect } from '../render/canvasTools';
-import { drawLinkage } from '../render/drawLinkage';
+import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../render/drawLinkage';
 import type { LinkageScene } from '../render/scene';
-import type { Bounds } from '../render/view';
+import type { Bounds, ViewTransform } from '../render/view';
 import { fitView, toScreenX, toScreenY, zoomAbout } from '../render/view';
 import type { CouplerPoint, ViewOffset } from '../state/appState';
 import { benchMark } from '../worker/benchMarks';
@@ -42,6 +42,31 @@ type Gesture =
 /** Degrees the arrow keys turn the crank (with Shift: ten times as far). */
 const KEY_STEP_DEG = 1;
 
+/** The background bitmap for scene in this transform: the last one when it still holds, else redrawn. */
+function backgroundFor(
+  last: { canvas: HTMLCanvasElement; scene: LinkageScene; key: string } | null,
+  scene: LinkageScene,
+  transform: ViewTransform,
+  pw: number,
+  ph: number,
+  dpr: number,
+): { canvas: HTMLCanvasElement; scene: LinkageScene; key: string } {
+  const t = transform;
+  const key = `${pw} ${ph} ${dpr} ${t.width} ${t.height} ${t.scale} ${t.centerX} ${t.centerY} ${t.panXPx} ${t.panYPx}`;
+  if (last && last.key === key && sameBackground(last.scene, scene)) return last;
+  const canvas = last?.canvas ?? document.createElement('canvas');
+  if (canvas.width !== pw || canvas.height !== ph) {
+    canvas.width = pw;
+    canvas.height = ph;
+  }
+  const ctx = canvas.getContext('2d');
+  if (ctx) {
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    drawLinkageBackground(ctx, scene, transform);
+  }
+  return { canvas, scene, key };
+}
+
 function LinkageCanvasImpl({
   scene,
   view,
@@ -64,6 +89,9 @@ function LinkageCanvasImpl({
   // the pointer and the joint would drift away from it.
   const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
   const bounds = heldBounds ?? scene.bounds;
+  // The background (grid, curves, ground) as last drawn, device pixels, and what it was drawn for: touched
+  // in the drawing effect only. Play redraws only the linkage over a copy of it.
+  const background = useRef<{ canvas: HTMLCanvasElement; scene: LinkageScene; key: string } | null>(null);
 
   useEffect(() => {
     if (width > 0 && height > 0) onSize?.(width, height);
@@ -81,9 +109,13 @@ function LinkageCanvasImpl({
     }
     const ctx = canvas.getContext('2d');
     if (!ctx) return;
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     const transform = fitView(bounds, width, height, view);
-    drawLinkage(ctx, scene, transform, [canvasToolsRect(width)]);
+    const back = backgroundFor(background.current, scene, transform, pw, ph, dpr);
+    background.current = back;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(back.canvas, 0, 0);
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    drawLinkageForeground(ctx, scene, transform, [canvasToolsRect(width)]);
     // Where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas.
     const at = (p: { x: number; y: number } | undefined) =>
       p ? `${toScreenX(transform, p.x).toFixed(1)},${toScreenY(transform, p.y).toFixed(1)}` : '';

@@ -14,13 +14,13 @@ export interface RateChartViewProps {
 }
 
 /** A new rate chart at size 0 (drawn once the view knows its box). */
-const newRateChart = (svg: SVGSVGElement) =>
-  createRateChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' });
+const newRateChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
+  createRateChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost });
 
 /** A live rate chart (ω or α against θ2), updated like AngleChartView: data, marker, size and texts separately. */
 export function RateChartView({ inputs, marker, label }: RateChartViewProps) {
   const { data, title, xLabel, yLabel } = inputs;
-  const { chart, boxRef, svgRef } = useLiveChart(newRateChart, data, marker);
+  const { chart, boxRef, svgRef, markerRef } = useLiveChart(newRateChart, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel });
@@ -29,6 +29,7 @@ export function RateChartView({ inputs, marker, label }: RateChartViewProps) {
   return (
     <div className="chart-box" ref={boxRef}>
       <svg ref={svgRef} role="img" aria-label={label} className="chart-svg" />
+      <div className="chart-marker" ref={markerRef} />
     </div>
   );
 }

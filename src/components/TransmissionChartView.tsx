@@ -14,7 +14,7 @@ export interface TransmissionChartViewProps {
 }
 
 /** A new transmission chart at size 0 (drawn once the view knows its box). */
-const newTransmissionChart = (svg: SVGSVGElement) =>
+const newTransmissionChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
   createTransmissionChart(svg, {
     width: 0,
     height: 0,
@@ -24,12 +24,13 @@ const newTransmissionChart = (svg: SVGSVGElement) =>
     legendMu: '',
     legendOutside: '',
     legendBand: '',
+    markerHost,
   });
 
 /** A live transmission chart sized to its box; each input change redraws only what it touches. */
 export function TransmissionChartView({ inputs, marker, label }: TransmissionChartViewProps) {
   const { data, band, xMarks, title, xLabel, yLabel, legendMu, legendOutside, legendBand } = inputs;
-  const { chart, boxRef, svgRef } = useLiveChart(newTransmissionChart, data, marker);
+  const { chart, boxRef, svgRef, markerRef } = useLiveChart(newTransmissionChart, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel, legendMu, legendOutside, legendBand });
@@ -44,6 +45,7 @@ export function TransmissionChartView({ inputs, marker, label }: TransmissionCha
   return (
     <div className="chart-box" ref={boxRef}>
       <svg ref={svgRef} role="img" aria-label={label} className="chart-svg transmission-svg" />
+      <div className="chart-marker" ref={markerRef} />
     </div>
   );
 }

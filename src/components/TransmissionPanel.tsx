@@ -1,26 +1,25 @@
 import './TransmissionPanel.css';
 import type { XMark } from '../charts/xMarks';
 import { useMemo } from 'react';
-import type { Branch } from '../solver/types';
-import type { PointResponse } from '../worker/protocol';
 import type { CycleDegrees } from './chartInputs';
+import { useFramePose } from './FramePoseContext';
 import { useMessages } from './MessagesContext';
 import { TransmissionChartView } from './TransmissionChartView';
 import { muMarker, transmissionData, transmissionInputs } from './transmissionInputs';
 
-/** Props of TransmissionPanel: the cycle in degrees, the pose, the branch, the band (degrees) and the dead-centre rules. */
+/** Props of TransmissionPanel: the cycle in degrees, the band (degrees) and the dead-centre rules (the marker is the frame on screen). */
 export interface TransmissionPanelProps {
   deg: CycleDegrees | null;
-  point: PointResponse | null;
-  branch: Branch;
   muBandLoDeg: number;
   muBandHiDeg: number;
   xMarks: readonly XMark[];
 }
 
 /** The transmission-angle plot: mu against theta2 with the usable band (loaded on demand, with its chart). */
-export function TransmissionPanel({ deg, point, branch, muBandLoDeg, muBandHiDeg, xMarks }: TransmissionPanelProps) {
+export function TransmissionPanel({ deg, muBandLoDeg, muBandHiDeg, xMarks }: TransmissionPanelProps) {
   const t = useMessages();
+  const { state, marker: point } = useFramePose();
+  const { branch } = state;
   const data = useMemo(() => transmissionData(deg, branch), [deg, branch]);
   const band = useMemo(() => ({ loDeg: muBandLoDeg, hiDeg: muBandHiDeg }), [muBandLoDeg, muBandHiDeg]);
   const inputs = useMemo(() => transmissionInputs(data, band, xMarks, t), [data, band, xMarks, t]);

@@ -1,33 +1,70 @@
 import type { Dispatch } from 'react';
-import { flushSync } from 'react-dom';
+import { startTransition, useEffect, useRef } from 'react';
 import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../state/animation';
 import type { InputRangeDeg } from '../state/animation';
 import type { Action, AppState } from '../state/appState';
+import { normalizeTheta2Deg } from '../state/appState';
+import type { PlayFrame, Playhead } from '../state/playhead';
+import { frameOf, playBase, sameFrame } from '../state/playhead';
 import { useAnimationFrame } from './useAnimationFrame';
 import { useStableCallback } from './useStableCallback';
+
+/**
+ * How often Play commits its frame to the app state, ms. Every frame moves the playhead (canvas and plot
+ * markers follow it); the panels, the θ2 field, the worker's numbers and the address bar follow the state,
+ * five times a second, in a transition that frames may interrupt.
+ */
+export const PLAY_COMMIT_MS = 200;
 
 /**
  * Plays the input while state.playing (time based: speed in degrees per nominal 60 FPS frame, rocking
  * between limits when the input cannot turn fully) and returns the step handler: +1 one cycle sample
  * forward in the play direction (so clockwise when Clockwise is chosen), -1 one back. Play waits for the
- * first cycle's input range. Each frame's state is committed inside its animation frame (flushSync), so
- * the canvas draws that frame's pose before the browser paints, and the next frame starts from it.
+ * first cycle's input range. Each frame moves the playhead (see PLAY_COMMIT_MS); when Play stops, the frame
+ * on screen is committed and the playhead handed back to the state.
  */
 export function useAnimation(
   state: AppState,
   dispatch: Dispatch<Action>,
   rangeDeg: InputRangeDeg | null,
+  playhead: Playhead,
 ): (sign: 1 | -1) => void {
-  useAnimationFrame(state.playing, (dt) => {
+  // Touched only in the frame callback and effects: the state's frame at the previous tick, the frames
+  // committed and not yet seen in the state (oldest first), and when the last commit was.
+  const seen = useRef<PlayFrame | null>(null);
+  const committed = useRef<PlayFrame[]>([]);
+  const lastCommitMs = useRef(0);
+  useAnimationFrame(state.playing, (dt, now) => {
     if (!rangeDeg) return;
+    const own = frameOf(state);
+    const i = committed.current.findIndex((c) => sameFrame(c, own));
+    const base = playBase(own, seen.current, playhead.get(), committed.current);
+    if (i >= 0) committed.current = committed.current.slice(i + 1);
+    seen.current = own;
     const next = advanceTheta2(
-      state.theta2Deg,
+      base.theta2Deg,
       degreesForElapsed(state.speedDegPerFrame, dt),
-      state.direction,
-      state.branch,
+      base.direction,
+      base.branch,
       rangeDeg,
     );
-    flushSync(() => dispatch({ type: 'animate', ...next }));
+    playhead.set(next);
+    if (now - lastCommitMs.current >= PLAY_COMMIT_MS) {
+      lastCommitMs.current = now;
+      committed.current = [...committed.current, next];
+      startTransition(() => dispatch({ type: 'animate', ...next }));
+    }
   });
+  // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead.
+  useEffect(() => {
+    if (state.playing) return;
+    seen.current = null;
+    committed.current = [];
+    const frame = playhead.get();
+    if (!frame) return;
+    // Compared as the reducer stores it, so a frame the state cannot hold more exactly still hands back.
+    if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
+    else dispatch({ type: 'animate', ...frame });
+  }, [state, playhead, dispatch]);
   return useStableCallback((sign: 1 | -1) => dispatch({ type: 'animate', ...stepTheta2(state, rangeDeg, sign) }));
 }

@@ -20,19 +20,38 @@ export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
 /** Logical (CSS pixel) size of the exported convergence plot. */
 export const CONVERGENCE_EXPORT_SIZE = { width: 560, height: 340 } as const;
 
-/** What the exports draw: the state, the latest answers, the drawn pose, the cycle in degrees, the scene and the strings. */
+/** The frame the linkage view drew last: its state (Play's frame applied), its pose as a point and its scene. */
+export interface ShownFrame {
+  state: AppState;
+  /** The pose on screen as a point (the plots' marker). */
+  marker: PointResponse;
+  scene: LinkageScene;
+}
+
+/** What the exports draw: the state, the latest answers, the frame on screen, the cycle in degrees and the strings. */
 export interface ExportSources {
   state: AppState;
   /** The worker's point answer (NR runs for the convergence plot). */
   point: PointResponse | null;
-  /** The pose on screen as a point (the plots' marker). */
-  marker: PointResponse;
+  /** The frame the linkage view drew last (null before its first draw): exports show what is on screen. */
+  shown: () => ShownFrame | null;
   cycle: CycleResponse | null;
   /** The solver client: the CSV asks it for the full n-point table (the cycle is solved at view resolution). */
   client: SolverClient | null;
   deg: CycleDegrees | null;
-  scene: LinkageScene;
   t: Messages;
+}
+
+/**
+ * The frame to export: the one on screen, which is the state's own or Play's a moment ahead of it. A frame
+ * drawn for other lengths or another coupler point (edited on the lab page, where no linkage is drawn) is
+ * not exported as this linkage: that throws, naming what to do.
+ */
+function exportFrame({ state, shown, t }: ExportSources): ShownFrame {
+  const frame = shown();
+  if (!frame || frame.state.linkage !== state.linkage || frame.state.coupler !== state.coupler)
+    throw new Error(t.exportNeedsLinkageView);
+  return frame;
 }
 
 /** Stable export handlers (PNG or SVG of the linkage or a plot, CSV, animation) and the canvas size report they use. */
@@ -54,7 +73,8 @@ export function useExports(sources: ExportSources): Exports {
     canvasSize.current = { width, height };
   }, []);
   const onPng = useStableCallback(async (subject: ExportSubject, size: PngSize) => {
-    const { state: s, point: p, marker, deg: d, scene, t } = sources;
+    const { point: p, deg: d, t } = sources;
+    const { state: s, marker, scene } = exportFrame(sources);
     // The PNG and CSV writers load on the first export: they are not part of the first load.
     const { angleChartPng, convergencePng, downloadPng, linkagePng } = await import('./exporters');
     const name = pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size);
@@ -78,7 +98,8 @@ export function useExports(sources: ExportSources): Exports {
     downloadPng(bytes, name);
   });
   const onSvg = useStableCallback(async (subject: ExportSubject) => {
-    const { state: s, point: p, marker, deg: d, scene, t } = sources;
+    const { point: p, deg: d, t } = sources;
+    const { state: s, marker, scene } = exportFrame(sources);
     const { angleChartSvg, convergenceSvg, downloadText, linkageSvg } = await import('./exporters');
     let text: string;
     if (subject === 'linkage') {
@@ -99,7 +120,8 @@ export function useExports(sources: ExportSources): Exports {
     downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
   });
   const onAnimation = useStableCallback(async (request: AnimationRequest) => {
-    const { state, cycle, scene, t } = sources;
+    const { cycle, t } = sources;
+    const { state, scene } = exportFrame(sources);
     if (!cycle) throw new Error('the cycle is still being solved');
     // The frame planner, the encoders and their worker load on the first animation export.
     const { exportLinkageAnimation } = await import('./animationExporter');

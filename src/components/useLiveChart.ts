@@ -1,5 +1,5 @@
-import { useCallback, useLayoutEffect, useRef, useState } from 'react';
-import type { RefCallback, RefObject } from 'react';
+import { useLayoutEffect, useRef, useState } from 'react';
+import type { RefObject } from 'react';
 import { useElementSize } from './useElementSize';
 
 /** What every chart handle (angle, rate, transmission) offers the views: new data, a new marker, a new size. */
@@ -9,27 +9,41 @@ export interface LiveChart<D, M> {
   resize(width: number, height: number): void;
 }
 
-/** The chart handle of a view, the refs to attach (the box it sizes to, its SVG), and nothing else. */
+/** The chart handle of a view, the refs to attach (the box it sizes to, its SVG, the marker box over it), and nothing else. */
 export interface LiveChartRefs<C> {
   chart: C | null;
   boxRef: RefObject<HTMLDivElement | null>;
-  svgRef: RefCallback<SVGSVGElement>;
+  svgRef: RefObject<SVGSVGElement | null>;
+  /** A box over the SVG (className "chart-marker") the marker is drawn in: Play moves it without repainting the chart. */
+  markerRef: RefObject<HTMLDivElement | null>;
 }
 
 /**
- * Creates a chart once per SVG element (create gets it at size 0: nothing drawn until sized) and keeps its
- * data, marker and size in step with the props, each through its own update so a new marker only moves
- * the marker. create must be stable (a module-level function). Texts and chart-specific options stay with
- * the view.
+ * Creates a chart once, on mount (create gets the SVG and the marker box at size 0: nothing drawn until
+ * sized), and keeps its data, marker and size in step with the props, each through its own update so a
+ * new marker only moves the marker. create must be stable (a module-level function). Texts and
+ * chart-specific options stay with the view.
  */
 export function useLiveChart<D, M, C extends LiveChart<D, M>>(
-  create: (svg: SVGSVGElement) => C,
+  create: (svg: SVGSVGElement, markerHost: HTMLDivElement | undefined) => C,
   data: D,
   marker: M,
 ): LiveChartRefs<C> {
   const boxRef = useRef<HTMLDivElement>(null);
+  const svgRef = useRef<SVGSVGElement>(null);
+  const markerRef = useRef<HTMLDivElement>(null);
   const [chart, setChart] = useState<C | null>(null);
-  const svgRef = useCallback((svg: SVGSVGElement | null) => setChart(svg ? create(svg) : null), [create]);
+  useLayoutEffect(() => {
+    const svg = svgRef.current;
+    const host = markerRef.current ?? undefined;
+    if (!svg) return;
+    // Once per mount: the element refs are read after commit, never during render.
+    setChart(create(svg, host));
+    return () => {
+      setChart(null);
+      host?.replaceChildren();
+    };
+  }, [create]);
   const { width, height } = useElementSize(boxRef);
   useLayoutEffect(() => {
     chart?.update(data);
@@ -40,5 +54,5 @@ export function useLiveChart<D, M, C extends LiveChart<D, M>>(
   useLayoutEffect(() => {
     if (width > 0 && height > 0) chart?.resize(width, height);
   }, [chart, width, height]);
-  return { chart, boxRef, svgRef };
+  return { chart, boxRef, svgRef, markerRef };
 }

@@ -4,11 +4,7 @@ import type { Action, AppState } from '../state/appState';
 import { reducer } from '../state/appState';
 import type { SolverClient, SolverMode, SolverModeReason } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
-import { usePacedValue } from './usePacedValue';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
-
-/** How often the worker's pose (numbers, NR runs) follows the input while playing, ms: about 8 times a second. */
-const PLAY_POINT_INTERVAL_MS = 125;
 
 /** Which views a layout shows for a state: only what shows is solved for. */
 export interface ShownViews {
@@ -64,14 +60,12 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   const pointNeeds = useMemo(() => ({ solver, ghost: false, newton }), [solver, newton]);
   const { cycle, error } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
   // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
-  // numbers and the NR plot, which need not follow every frame of Play.
-  const at = useMemo(() => ({ theta2Deg: state.theta2Deg, branch: state.branch }), [state.theta2Deg, state.branch]);
-  const pointAt = usePacedValue(at, state.playing, PLAY_POINT_INTERVAL_MS);
+  // numbers and the NR plot, which follow the state (a few times a second while playing, see useAnimation).
   const point = usePoint(
     client,
     state.linkage,
-    pointAt.branch,
-    pointAt.theta2Deg,
+    state.branch,
+    state.theta2Deg,
     state.samples,
     state.coupler,
     pointNeeds,

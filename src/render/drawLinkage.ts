@@ -247,15 +247,49 @@ function drawWarning(ctx: Ctx, w: WarningBox): void {
 }
 
 /**
- * Draws the linkage scene into ctx in CSS pixels (the caller scales for devicePixelRatio): grid, coupler
- * curves, ground with hatched pivots, the ghost of the other branch, the pose with its angle arcs, then the
- * labels where layoutScene placed them (never overlapping each other or the exclusion rectangles, e.g. the
- * zoom buttons from canvasToolsRect). With no pose it draws the ground, the crank at theta2 and the two
- * circles that fail to meet, with a message: never a torn linkage. With scene.vectors it also draws the
- * velocity and acceleration arrows (motionVectors.ts): their labels join the layout, their legend's corner is
- * excluded. Returns the layout it drew.
+ * The part of the scene that stays put while the linkage moves: the background, grid, coupler curves and
+ * the ground with its hatched pivots, in CSS pixels. drawLinkage draws it first; the live canvas keeps it in
+ * a bitmap and redraws it only when sameBackground says it changed.
  */
-export function drawLinkage(
+export function drawLinkageBackground(ctx: Ctx, scene: LinkageScene, view: ViewTransform): void {
+  const v = view;
+  ctx.save();
+  ctx.fillStyle = THEME.background;
+  ctx.fillRect(0, 0, v.width, v.height);
+  if (scene.showGrid) drawGrid(ctx, v);
+  if (scene.showTrace) drawCurves(ctx, scene, v);
+  const O2 = px(v, { x: 0, y: 0 });
+  const O4 = px(v, { x: scene.linkage.r1, y: 0 });
+  ctx.strokeStyle = THEME.ground;
+  ctx.lineWidth = STROKES.ground;
+  ctx.setLineDash(STROKES.groundDash);
+  ctx.beginPath();
+  ctx.moveTo(O2.x, O2.y);
+  ctx.lineTo(O4.x, O4.y);
+  ctx.stroke();
+  ctx.setLineDash([]);
+  drawGroundPivot(ctx, O2);
+  drawGroundPivot(ctx, O4);
+  ctx.restore();
+}
+
+/** Whether two scenes draw the same background (drawLinkageBackground) in the same view transform. */
+export function sameBackground(a: LinkageScene, b: LinkageScene): boolean {
+  if (a.showGrid !== b.showGrid || a.showTrace !== b.showTrace || a.showGhost !== b.showGhost) return false;
+  if (a.linkage.r1 !== b.linkage.r1) return false;
+  if (!a.showTrace) return true;
+  if (a.curves.length !== b.curves.length) return false;
+  return a.curves.every((c, i) => c.x === b.curves[i].x && c.y === b.curves[i].y && c.current === b.curves[i].current);
+}
+
+/**
+ * Draws what moves over the background (drawLinkageBackground must be under it): the ghost of the other
+ * branch, the pose with its angle arcs, the pivots, the design overlay, the motion vectors, then the labels
+ * where layoutScene placed them (never overlapping each other or the exclusion rectangles, e.g. the zoom
+ * buttons from canvasToolsRect). With no pose it draws the crank at theta2 and the two circles that fail to
+ * meet, with a message: never a torn linkage. Returns the layout it drew.
+ */
+export function drawLinkageForeground(
   ctx: Ctx,
   scene: LinkageScene,
   view: ViewTransform,
@@ -268,23 +302,7 @@ export function drawLinkage(
   const vectors = scene.vectors ? vectorOverlay(scene.vectors, scene.pose, v, measure) : null;
   const excluded = vectors ? [...exclusions, ...vectors.exclusions] : exclusions;
   const layout = layoutScene(scene, v, measure, excluded, vectors?.extras ?? null);
-  ctx.fillStyle = THEME.background;
-  ctx.fillRect(0, 0, v.width, v.height);
-  if (scene.showGrid) drawGrid(ctx, v);
-  if (scene.showTrace) drawCurves(ctx, scene, v);
-
   const { O2, O4 } = layout.joints;
-  ctx.strokeStyle = THEME.ground;
-  ctx.lineWidth = STROKES.ground;
-  ctx.setLineDash(STROKES.groundDash);
-  ctx.beginPath();
-  ctx.moveTo(O2.x, O2.y);
-  ctx.lineTo(O4.x, O4.y);
-  ctx.stroke();
-  ctx.setLineDash([]);
-  drawGroundPivot(ctx, O2);
-  drawGroundPivot(ctx, O4);
-
   if (scene.ghost && scene.showGhost) drawGhost(ctx, v, scene.ghost);
   if (layout.design) drawDesignUnder(ctx, layout.design);
   if (scene.pose) drawPose(ctx, layout);
@@ -298,4 +316,19 @@ export function drawLinkage(
   if (layout.warning) drawWarning(ctx, layout.warning);
   ctx.restore();
   return layout;
+}
+
+/**
+ * Draws the linkage scene into ctx in CSS pixels (the caller scales for devicePixelRatio): the background
+ * (grid, coupler curves, ground with hatched pivots), then the foreground (ghost, pose, arcs, design overlay,
+ * motion vectors and their legend, labels, warning). Returns the layout it drew.
+ */
+export function drawLinkage(
+  ctx: Ctx,
+  scene: LinkageScene,
+  view: ViewTransform,
+  exclusions: readonly ScreenRect[] = [],
+): SceneLayout {
+  drawLinkageBackground(ctx, scene, view);
+  return drawLinkageForeground(ctx, scene, view, exclusions);
 }

@@ -221,6 +221,8 @@ export interface Messages {
   exportConvergence: string;
   exportCsv: string;
   exportFailed: (reason: string) => string;
+  /** Why a linkage export waits: the linkage view is not on screen for these lengths (the lab page is open). */
+  exportNeedsLinkageView: string;
 
   copyLink: string;
   copyEmbed: string;

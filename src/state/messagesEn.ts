@@ -272,6 +272,7 @@ export const messagesEn: Messages = {
   exportConvergence: 'Export NR convergence plot PNG',
   exportCsv: 'Export cycle CSV',
   exportFailed: (r) => `Export failed: ${r}`,
+  exportNeedsLinkageView: 'open the Simulator tab to draw the linkage with these lengths first',
 
   copyLink: 'Copy link',
   copyEmbed: 'Copy embed code',

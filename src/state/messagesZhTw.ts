@@ -271,6 +271,7 @@ export const messagesZhTw: Messages = {
   exportConvergence: '匯出 NR 收斂圖 PNG',
   exportCsv: '匯出整圈資料 CSV',
   exportFailed: (r) => `匯出失敗：${r}`,
+  exportNeedsLinkageView: '請先開啟「模擬器」分頁，以這組桿長繪出連桿',
 
   copyLink: '複製連結',
   copyEmbed: '複製嵌入碼',

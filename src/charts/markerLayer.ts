@@ -1,0 +1,143 @@
+import { TWO_PI } from '../solver/angles';
+import { CHART_STYLE } from './chartFrame';
+
+/** One marker dot in plot pixels (x right, y down from the plot's top-left corner) and its fill. */
+export interface MarkerDotPx {
+  cx: number;
+  cy: number;
+  color: string;
+}
+
+/** Where a chart's marker goes, in plot pixels: the line's x (null hides the marker) and the dots. */
+export interface MarkerPlacement {
+  x: number | null;
+  dots: readonly MarkerDotPx[];
+}
+
+/** The plot area inside the chart's SVG: its top-left corner and its height, CSS pixels. */
+export interface PlotBox {
+  left: number;
+  top: number;
+  height: number;
+}
+
+/** A chart marker, drawn above the chart's SVG (createMarkerLayer) or inside it (createSvgMarker). */
+export interface MarkerLayer {
+  /** Shows the placement in box (the plot area) of a chart width x height; placement.x null hides the marker. */
+  draw(placement: MarkerPlacement, box: PlotBox, width: number, height: number): void;
+}
+
+/** Dot radius and ring width (CSS pixels). */
+const DOT_R = 4;
+const DOT_RING = 1.5;
+/** Line width (CSS pixels). */
+const LINE_WIDTH = 1.25;
+
+/**
+ * Draws a chart's current-θ2 marker (a line and a dot per series) on a canvas in host, a box laid over the
+ * chart's SVG at the same size. Play moves the marker every frame: inside the SVG each move repainted the
+ * whole chart, curves and axes included, and re-layered the page; a canvas only redraws its own pixels.
+ * host carries the plot-pixel placement for tests and tools: data-x (empty when hidden) and data-dots, a
+ * JSON list of { cx, cy, color } (the numbers an SVG marker's circles have).
+ */
+export function createMarkerLayer(host: HTMLElement): MarkerLayer {
+  host.setAttribute('aria-hidden', 'true');
+  const canvas = host.ownerDocument.createElement('canvas');
+  canvas.style.position = 'absolute';
+  canvas.style.inset = '0';
+  canvas.style.width = '100%';
+  canvas.style.height = '100%';
+  host.append(canvas);
+  let drawn = false;
+  return {
+    draw({ x, dots }, box, width, height) {
+      const view = host.ownerDocument.defaultView;
+      const dpr = Math.max(1, Math.min(4, view?.devicePixelRatio ?? 1));
+      const pw = Math.round(width * dpr);
+      const ph = Math.round(height * dpr);
+      if (canvas.width !== pw || canvas.height !== ph) {
+        canvas.width = pw;
+        canvas.height = ph;
+        drawn = false;
+      }
+      const ctx = canvas.getContext('2d');
+      host.dataset.x = x === null ? '' : String(x);
+      host.dataset.dots = JSON.stringify(x === null ? [] : dots);
+      if (!ctx) return;
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      if (drawn) ctx.clearRect(0, 0, pw, ph);
+      drawn = x !== null;
+      if (x === null) return;
+      ctx.setTransform(dpr, 0, 0, dpr, dpr * box.left, dpr * box.top);
+      ctx.strokeStyle = CHART_STYLE.marker;
+      ctx.lineWidth = LINE_WIDTH;
+      ctx.beginPath();
+      ctx.moveTo(x, 0);
+      ctx.lineTo(x, box.height);
+      ctx.stroke();
+      ctx.lineWidth = DOT_RING;
+      ctx.strokeStyle = CHART_STYLE.background;
+      for (const d of dots) {
+        ctx.fillStyle = d.color;
+        ctx.beginPath();
+        ctx.arc(d.cx, d.cy, DOT_R, 0, TWO_PI);
+        ctx.fill();
+        ctx.stroke();
+      }
+    },
+  };
+}
+
+/**
+ * The same marker inside the chart's SVG (g.marker in the plot group: a line and a circle per dot), for
+ * charts drawn off screen (exports), where the SVG must carry everything.
+ */
+export function createSvgMarker(plot: SVGGElement): MarkerLayer {
+  const ns = 'http://www.w3.org/2000/svg';
+  const doc = plot.ownerDocument;
+  let mark = plot.querySelector<SVGGElement>(':scope > g.marker');
+  if (!mark) {
+    mark = doc.createElementNS(ns, 'g');
+    mark.setAttribute('class', 'marker');
+    plot.append(mark);
+  }
+  const g = mark;
+  const line = doc.createElementNS(ns, 'line');
+  line.setAttribute('class', 'mline');
+  line.setAttribute('y1', '0');
+  line.setAttribute('stroke', CHART_STYLE.marker);
+  line.setAttribute('stroke-width', String(LINE_WIDTH));
+  g.append(line);
+  const circles: SVGCircleElement[] = [];
+  return {
+    draw({ x, dots }, box) {
+      if (x === null) {
+        g.setAttribute('display', 'none');
+        return;
+      }
+      g.removeAttribute('display');
+      line.setAttribute('x1', String(x));
+      line.setAttribute('x2', String(x));
+      line.setAttribute('y2', String(box.height));
+      while (circles.length > dots.length) circles.pop()?.remove();
+      while (circles.length < dots.length) {
+        const c = doc.createElementNS(ns, 'circle');
+        c.setAttribute('r', String(DOT_R));
+        c.setAttribute('stroke', CHART_STYLE.background);
+        c.setAttribute('stroke-width', String(DOT_RING));
+        g.append(c);
+        circles.push(c);
+      }
+      dots.forEach((d, i) => {
+        circles[i].setAttribute('cx', String(d.cx));
+        circles[i].setAttribute('cy', String(d.cy));
+        circles[i].setAttribute('fill', d.color);
+      });
+    },
+  };
+}
+
+/** The marker for a chart: above its SVG in host when given (on screen), else inside the plot group. */
+export function chartMarker(plot: SVGGElement, host: HTMLElement | undefined): MarkerLayer {
+  return host ? createMarkerLayer(host) : createSvgMarker(plot);
+}

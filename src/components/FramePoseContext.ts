@@ -1,0 +1,24 @@
+import { createContext, useContext } from 'react';
+import type { AppState } from '../state/appState';
+import type { PointResponse } from '../worker/protocol';
+import type { FrameMotion } from './frameMotion';
+import type { LocalPose } from './localPose';
+
+/** The frame on screen: the state with Play's frame applied, its pose (main thread), the plots' marker and its motion. */
+export interface FramePose {
+  state: AppState;
+  local: LocalPose;
+  marker: PointResponse;
+  /** Velocities and accelerations at the pose; null where it does not assemble. */
+  motion: FrameMotion | null;
+}
+
+/** The frame on screen; null outside a FramePoseProvider. */
+export const FramePoseContext = createContext<FramePose | null>(null);
+
+/** The frame on screen (the views that follow every frame of Play read it). Throws outside a FramePoseProvider. */
+export function useFramePose(): FramePose {
+  const frame = useContext(FramePoseContext);
+  if (!frame) throw new Error('useFramePose needs a FramePoseProvider above it');
+  return frame;
+}

@@ -1,0 +1,60 @@
+import { useLayoutEffect } from 'react';
+import type { ViewOffset, CouplerPoint } from '../state/appState';
+import type { CycleResponse } from '../worker/protocol';
+import { useFramePose } from './FramePoseContext';
+import { LinkageCanvas } from './LinkageCanvas';
+import { useMessages } from './MessagesContext';
+import type { DesignInfo } from './useDesignMetrics';
+import { useDesignScene } from './useDesignScene';
+import { useLinkageScene } from './useLinkageScene';
+import { useSceneVectors } from './useSceneVectors';
+import type { ShownFrame } from './useExports';
+
+/** Props of LinkageStage: the latest cycle and design facts, the canvas's callbacks and hint, and a scene report. */
+export interface LinkageStageProps {
+  cycle: CycleResponse | null;
+  design: DesignInfo | null;
+  onViewChange: (view: ViewOffset) => void;
+  /** Sets θ2 (degrees) from a drag of A or the arrow keys; omit when locked. */
+  onTheta2?: (theta2Deg: number) => void;
+  /** Moves the coupler point from a drag of P; omit when locked. */
+  onCoupler?: (coupler: CouplerPoint) => void;
+  onSize?: (width: number, height: number) => void;
+  hint: string;
+  /** Called with every frame drawn (the exports draw what is on screen). */
+  onShown?: (frame: ShownFrame) => void;
+}
+
+/**
+ * The linkage canvas for the frame on screen (useFramePose): the scene with its design overlay and motion
+ * vectors, built and drawn every frame of Play without the rest of the layout re-rendering.
+ */
+export function LinkageStage({
+  cycle,
+  design,
+  onViewChange,
+  onTheta2,
+  onCoupler,
+  onSize,
+  hint,
+  onShown,
+}: LinkageStageProps) {
+  const t = useMessages();
+  const { state, local, marker, motion } = useFramePose();
+  const designScene = useDesignScene(state, local, design, t);
+  const vectors = useSceneVectors(state, motion, t);
+  const { scene, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
+  useLayoutEffect(() => onShown?.({ state, marker, scene }), [state, marker, scene, onShown]);
+  return (
+    <LinkageCanvas
+      scene={scene}
+      view={state.view}
+      onViewChange={onViewChange}
+      onTheta2={onTheta2}
+      onCoupler={onCoupler}
+      onSize={onSize}
+      description={description}
+      hint={hint}
+    />
+  );
+}
