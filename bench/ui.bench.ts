@@ -32,8 +32,13 @@ const BASE = `http://localhost:${PORT}/`;
 const RUNS = Math.max(1, Number(process.env.BENCH_RUNS ?? 3));
 const OUT = process.env.BENCH_OUT ?? join(ROOT, 'bench', 'results', 'ui.json');
 const PLAY_SECONDS = 6;
-/** The app with every issue-9 view on: both arrow sets, the velocity plot (and so the motion panel's rates). */
+/** The app with every issue-9 view on: both arrow sets and the velocity plot (its rates solved over the cycle). */
 const MOTION_URL = `${BASE}?vel=1&acc=1&plot=vel`;
+/** The same app with them off: no arrows, the angle plots (no rates solved over the cycle). */
+const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
+/** BENCH_ONLY: a comma-separated subset of play1, play4, theta2x1, theta2x4, r3, motion (default all), for quick checks. */
+const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
+const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
 
 /** Issue 11's targets. */
@@ -191,7 +196,7 @@ async function measureDrag(browser: Browser, rate: number, kind: 'theta2' | 'r3'
         const slider = document.querySelector<HTMLInputElement>(`input[type="range"][aria-label^="${name}"]`);
         if (!slider) throw new Error(`no ${name} slider`);
         const setValue = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')!.set!;
-        const valueAt = (i: number) => (kind === 'theta2' ? 40 + 0.5 * i : Math.round((5 + 0.005 * i) * 1000) / 1000);
+        const valueAt = (i: number) => (kind === 'theta2' ? 40 + 0.5 * i : Math.round((5 + 0.01 * i) * 1000) / 1000);
         const send = (v: number) => {
           setValue.call(slider, String(v));
           slider.dispatchEvent(new Event('input', { bubbles: true }));
@@ -306,18 +311,20 @@ async function main(): Promise<void> {
     const t1: ReturnType<typeof dragSummary>[] = [];
     const t4: typeof t1 = [];
     const r3: typeof t1 = [];
-    // Issue 9: Play at 4x with the velocity/acceleration views off (BASE) and on (arrows, rate plot, motion panel).
+    // Issue 9: Play at 4x with the velocity/acceleration views off (MOTION_OFF_URL) and on (MOTION_URL).
     const motionOff: typeof play1 = [];
     const motionOn: typeof play1 = [];
     // Interleaved runs, so a slow spell of the machine spreads over every figure rather than hitting one.
     for (let run = 0; run < RUNS; run++) {
-      play1.push(await measurePlay(browser, 1));
-      play4.push(await measurePlay(browser, 4));
-      t1.push(dragSummary(await measureDrag(browser, 1, 'theta2')));
-      t4.push(dragSummary(await measureDrag(browser, 4, 'theta2')));
-      r3.push(dragSummary(await measureDrag(browser, 1, 'r3')));
-      motionOff.push(await measurePlay(browser, 4, `${BASE}?plot=vel`));
-      motionOn.push(await measurePlay(browser, 4, MOTION_URL));
+      if (wanted('play1')) play1.push(await measurePlay(browser, 1));
+      if (wanted('play4')) play4.push(await measurePlay(browser, 4));
+      if (wanted('theta2x1')) t1.push(dragSummary(await measureDrag(browser, 1, 'theta2')));
+      if (wanted('theta2x4')) t4.push(dragSummary(await measureDrag(browser, 4, 'theta2')));
+      if (wanted('r3')) r3.push(dragSummary(await measureDrag(browser, 1, 'r3')));
+      if (wanted('motion')) {
+        motionOff.push(await measurePlay(browser, 4, MOTION_OFF_URL));
+        motionOn.push(await measurePlay(browser, 4, MOTION_URL));
+      }
       console.log(`run ${run + 1}/${RUNS} done`);
     }
     const pick = <T>(xs: T[], f: (x: T) => number) => spread(xs.map(f));
@@ -338,7 +345,7 @@ async function main(): Promise<void> {
       viewport: '1280x800 @1x',
       runs: RUNS,
       play: { x1: play(play1), x4: play(play4) },
-      // Frame time (ms, from the animation-frame rate) at 4x with the rate plot shown, arrows off and on.
+      // Frame time (ms, from the animation-frame rate) at 4x with the velocity and acceleration views off and on.
       motion: {
         offFrameMs: pick(motionOff, (p) => 1000 / p.frameFps),
         onFrameMs: pick(motionOn, (p) => 1000 / p.frameFps),
@@ -413,11 +420,11 @@ async function main(): Promise<void> {
       ),
       row('first-load JS raw (KB)', f(firstLoad.rawKB)),
       row(
-        'Play frame time at 4x (ms), velocity+acceleration arrows off / on',
+        'Play frame time at 4x (ms), velocity+acceleration views off / on',
         `${s(result.motion.offFrameMs)} / ${s(result.motion.onFrameMs)}`,
       ),
       row(
-        'frame time with arrows on / off, 4x',
+        'frame time with those views on / off, 4x',
         s(result.motion.ratio, 2),
         '< 1.20',
         ok(result.motion.ratio.median < 1.2),

@@ -228,6 +228,8 @@ export function seriesPath(theta2Deg: ArrayLike<number>, valuesDeg: ArrayLike<nu
   const xs = idx.map((i) => theta2Deg[i]);
   const ys = idx.map((i) => valuesDeg[i]);
   const gen = line<[number, number]>()
+    // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+    .digits(2)
     .defined((d) => Number.isFinite(d[1]))
     .x((d) => x(d[0]))
     .y((d) => y(d[1]));

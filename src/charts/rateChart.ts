@@ -231,6 +231,8 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
     const path = (values: ArrayLike<number>) => {
       const idx = plotIndices(values, Math.max(64, Math.round(2 * frame.iw)));
       const gen = line<number>()
+        // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+        .digits(2)
         .defined((i) => Number.isFinite(values[i]))
         .x((i) => x(data.theta2Deg[i]))
         .y((i) => y(values[i]));

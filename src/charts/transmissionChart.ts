@@ -247,6 +247,8 @@ export function createTransmissionChart(svg: SVGSVGElement, options: Transmissio
     const { x, y } = f;
     const idx = plotIndices(data.muDeg, Math.max(64, Math.round(2 * f.iw)));
     const gen = line<number>()
+      // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+      .digits(2)
       .defined((i) => Number.isFinite(data.muDeg[i]))
       .x((i) => x(data.theta2Deg[i]))
       .y((i) => y(data.muDeg[i]));

@@ -5,6 +5,10 @@ import { reducer } from '../state/appState';
 import type { SolverClient, SolverMode, SolverModeReason } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
+import { useThrottledValue } from './useThrottledValue';
+
+/** How often the worker's pose answer follows a dragged length or coupler point, ms. */
+const POINT_FOLLOW_MS = 100;
 
 /** Which views a layout shows for a state: only what shows is solved for. */
 export interface ShownViews {
@@ -61,13 +65,16 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   const { cycle, error } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
   // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
   // numbers and the NR plot, which follow the state (a few times a second while playing, see useAnimation).
+  // While a length or P is dragged the pose request follows a few times a second (the cycle goes first).
+  const pointLinkage = useThrottledValue(state.linkage, POINT_FOLLOW_MS);
+  const pointCoupler = useThrottledValue(state.coupler, POINT_FOLLOW_MS);
   const point = usePoint(
     client,
-    state.linkage,
+    pointLinkage,
     state.branch,
     state.theta2Deg,
     state.samples,
-    state.coupler,
+    pointCoupler,
     pointNeeds,
   );
   return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point };

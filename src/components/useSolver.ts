@@ -1,4 +1,5 @@
 import { useEffect, useLayoutEffect, useState } from 'react';
+import { flushSync } from 'react-dom';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../solver/angles';
 import type { InputMotion } from '../solver/rates';
@@ -92,8 +93,11 @@ export function useCycle(
       .then(
         (r) => {
           if (!r) return;
-          setCycle(r);
-          setError(null);
+          // Drawn as soon as it arrives, not after a scheduler task: a drag's plots follow within a frame.
+          flushSync(() => {
+            setCycle(r);
+            setError(null);
+          });
           markWork('cycle', r.work, r.elapsedMs);
         },
         (e: unknown) => setError(e instanceof Error ? e.message : String(e)),

@@ -74,8 +74,11 @@ interface Call {
 
 /**
  * Main-thread side of the solver API. Each channel (cycle, point, table, lab) has at most one call in
- * flight and one queued; a newer call supersedes both (they resolve to null at once, a superseded lab
- * is cancelled), so a dragged slider builds no backlog and the last value is always solved. A watchdog
+ * flight and one queued; a newer call supersedes the queued one (it resolves to null at once), so a
+ * dragged slider builds no backlog and the last value is always solved. The call in flight of a cycle or
+ * point channel still resolves with its answer: it is newer than what the views show, and dropping it
+ * would leave a drag with no plot update until the worker keeps up. A table or lab call in flight is
+ * superseded too (an export must not download twice; a superseded lab is cancelled). A watchdog
  * gives the worker the summed budgets of what it holds, restarted at every message: when it misses
  * that, errors or cannot be decoded, the client restarts it once, then serves the same API on the
  * main thread, resending what was in flight.
@@ -141,6 +144,9 @@ export class SolverClient {
     this.queued.clear();
   }
 
+  /** Methods whose call in flight still delivers when a newer one is queued (see the class comment). */
+  private static readonly PROGRESSIVE: ReadonlySet<SolverMethod> = new Set<SolverMethod>(['cycle', 'point']);
+
   private call<M extends SolverMethod>(type: M, params: ParamsOf<M>, channel: string, onProgress?: Call['onProgress']) {
     const call = { id: this.nextId++, type, params, channel, onProgress, stale: false } as Call;
     call.budgetMs = budgetMs(type, params, this.watchdog);
@@ -151,7 +157,7 @@ export class SolverClient {
     else {
       const old = this.queued.get(channel);
       if (old) this.supersede(old);
-      this.supersede(busy);
+      if (!SolverClient.PROGRESSIVE.has(busy.type)) this.supersede(busy);
       this.queued.set(channel, call);
     }
     return call;
@@ -205,11 +211,13 @@ export class SolverClient {
     const reason = this.everHeard ? 'stopped' : 'unavailable';
     if (this.restarts++ === 0) this.start(this.options.createWorker ?? createSolverWorker, 'restarted', reason, detail);
     else this.start(this.options.createFallback ?? createMainThreadWorker, 'main-thread', reason, detail);
-    // Resend what the lost worker held: the call itself, or what superseded it.
+    // Resend what the lost worker held: the newest call of each channel (an older one in flight gives way).
     for (const call of [...this.inFlight.values()]) {
       this.inFlight.delete(call.channel);
-      const next = call.stale ? this.queued.get(call.channel) : call;
+      const newer = this.queued.get(call.channel);
       this.queued.delete(call.channel);
+      if (newer) this.supersede(call);
+      const next = newer ?? (call.stale ? null : call);
       if (next) this.send(next);
     }
   }

@@ -105,12 +105,26 @@ describe('SolverClient latest wins', () => {
     );
     expect(w.received).toHaveLength(1);
     await w.deliver();
-    // The first answer is stale (newer calls exist); only the newest queued call is sent next.
+    // Only the newest queued call is sent next; the ones queued between were never sent.
     expect(w.calls().map((r) => r.type === 'point' && r.params.theta2Rad)).toEqual([0.1, 0.5]);
     await w.deliver();
     await Promise.all(all);
-    expect(results.filter((r) => r !== null)).toEqual([0.5]);
+    // The answer that was in flight still arrives (it is newer than anything shown), in order, then the newest.
+    expect(results.filter((r) => r !== null)).toEqual([0.1, 0.5]);
     expect(results).toHaveLength(5);
+    client.dispose();
+  });
+
+  it('drops a table call in flight when a newer one comes (an export downloads once)', async () => {
+    const w = new FakeWorker();
+    const client = new SolverClient({ createWorker: () => w });
+    const table = (samples: number) => ({ linkage: L, samples, branch: 'open' as const, solver: SOLVER });
+    const first = client.table(table(36), 'export');
+    const second = client.table(table(72), 'export');
+    await w.deliver();
+    await w.deliver();
+    expect(await first).toBeNull();
+    expect((await second)?.theta2Deg).toHaveLength(73);
     client.dispose();
   });
 
