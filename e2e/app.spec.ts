@@ -101,6 +101,41 @@ test.describe('the simulator', () => {
     expect(changes).toBe(labels.length - 1);
   });
 
+  test('Pause keeps the pose on screen: the θ2 field, the plots and the address bar take it, nothing jumps back', async ({
+    page,
+  }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const canvas = page.locator('canvas.linkage-canvas');
+    const canvasTheta2 = async () =>
+      Number(/θ2 (-?[\d.]+)°/.exec((await canvas.getAttribute('aria-label')) ?? '')?.[1]);
+    const start = await canvasTheta2();
+    await page.getByRole('button', { name: 'Play' }).click();
+    // Well past the first commit of the playhead to the state (a few times a second).
+    await expect.poll(canvasTheta2).toBeGreaterThan(start + 40);
+    // The pose on screen at the moment of the click, read in the same task as the click.
+    const label = await page.getByRole('button', { name: 'Pause' }).evaluate((button: HTMLButtonElement) => {
+      const l = document.querySelector('canvas.linkage-canvas')?.getAttribute('aria-label') ?? '';
+      button.click();
+      return l;
+    });
+    const shown = Number(/θ2 (-?[\d.]+)°/.exec(label)?.[1]);
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    // The field and the address bar show the paused pose (the label rounds to hundredths), and the canvas stays there.
+    const field = page.getByRole('textbox', { name: /^θ2/ });
+    await expect.poll(async () => Math.abs(Number(await field.inputValue()) - shown)).toBeLessThanOrEqual(0.006);
+    await expect
+      .poll(() => Math.abs(Number(new URL(page.url()).searchParams.get('t2')) - shown))
+      .toBeLessThanOrEqual(0.006);
+    expect(await canvasTheta2()).toBe(shown);
+    // The plot marker sits at the same θ2: its x on the θ3 plot is that θ2 on the chart's own x scale.
+    const markerX = await page.locator('.chart-marker').first().getAttribute('data-x');
+    const plotWidth = await page
+      .getByRole('img', { name: 'θ3 against θ2' })
+      .evaluate((svg) => (svg.querySelector('g.axis-x path.domain') as SVGPathElement).getBBox().width);
+    expect(Math.abs((Number(markerX) / plotWidth) * 360 - shown)).toBeLessThan(0.5);
+  });
+
   test('switches to Traditional Chinese and back', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

@@ -2,6 +2,14 @@ import type { Locator, Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
 import { artifact, waitReady } from './helpers';
 
+/** The number of marker dots a live chart shows (its marker box's data-dots). */
+async function markerDots(chart: Locator): Promise<number> {
+  return chart.evaluate((svg) => {
+    const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
+    return (JSON.parse(box?.dataset.dots ?? '[]') as unknown[]).length;
+  });
+}
+
 /** For each marker dot of a chart: its distance (px) to the solid path of its own colour at the dot's x, and to the nearest other path. */
 async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other: number }>> {
   return chart.evaluate((svg: SVGSVGElement) => {
@@ -21,10 +29,10 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
       }
       return ys;
     };
-    return [...svg.querySelectorAll<SVGCircleElement>('g.marker circle')].map((c) => {
-      const cx = Number(c.getAttribute('cx'));
-      const cy = Number(c.getAttribute('cy'));
-      const fill = c.getAttribute('fill');
+    // The live chart draws its marker over the SVG and states the dots' plot-pixel centres on its box.
+    const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
+    const dots = JSON.parse(box?.dataset.dots ?? '[]') as Array<{ cx: number; cy: number; color: string }>;
+    return dots.map(({ cx, cy, color: fill }) => {
       const dist = (p: SVGPathElement) => Math.min(Infinity, ...yAt(p, cx).map((y) => Math.abs(y - cy)));
       const own = paths.filter((p) => p.getAttribute('stroke') === fill && !p.getAttribute('stroke-dasharray'));
       const others = paths.filter((p) => !own.includes(p));
@@ -91,7 +99,7 @@ test.describe('the angle and convergence charts', () => {
     const t3 = page.getByRole('img', { name: 'θ3 against θ2' });
     const t4 = page.getByRole('img', { name: 'θ4 against θ2' });
     for (const chart of [t3, t4]) {
-      await expect(chart.locator('g.marker circle')).toHaveCount(1);
+      await expect.poll(() => markerDots(chart)).toBe(1);
       for (const d of await markerOffsets(chart)) {
         expect(d.own).toBeLessThan(1.5);
         expect(d.other).toBeGreaterThan(5);
@@ -99,7 +107,7 @@ test.describe('the angle and convergence charts', () => {
     }
     await page.getByRole('radio', { name: 'Together' }).check();
     const both = page.getByRole('img', { name: 'θ3 and θ4 against θ2' });
-    await expect(both.locator('g.marker circle')).toHaveCount(2);
+    await expect.poll(() => markerDots(both)).toBe(2);
     const offsets = await markerOffsets(both);
     expect(offsets).toHaveLength(2);
     for (const d of offsets) {

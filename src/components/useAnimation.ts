@@ -35,7 +35,8 @@ export function useAnimation(
   const committed = useRef<PlayFrame[]>([]);
   const lastCommitMs = useRef(0);
   useAnimationFrame(state.playing, (dt, now) => {
-    if (!rangeDeg) return;
+    // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
+    if (!rangeDeg || !state.playing) return;
     const own = frameOf(state);
     const i = committed.current.findIndex((c) => sameFrame(c, own));
     const base = playBase(own, seen.current, playhead.get(), committed.current);

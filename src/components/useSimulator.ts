@@ -68,14 +68,6 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   // While a length or P is dragged the pose request follows a few times a second (the cycle goes first).
   const pointLinkage = useThrottledValue(state.linkage, POINT_FOLLOW_MS);
   const pointCoupler = useThrottledValue(state.coupler, POINT_FOLLOW_MS);
-  const point = usePoint(
-    client,
-    pointLinkage,
-    state.branch,
-    state.theta2Deg,
-    state.samples,
-    pointCoupler,
-    pointNeeds,
-  );
+  const point = usePoint(client, pointLinkage, state.branch, state.theta2Deg, state.samples, pointCoupler, pointNeeds);
   return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point };
 }
