@@ -11,7 +11,7 @@ async function markerDots(chart: Locator): Promise<number> {
 }
 
 /** For each marker dot of a chart: its distance (px) to the solid path of its own colour at the dot's x, and to the nearest other path. */
-async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other: number }>> {
+async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other: number; painted: boolean }>> {
   return chart.evaluate((svg: SVGSVGElement) => {
     const paths = [...svg.querySelectorAll<SVGPathElement>('g.lines path')];
     // y of a path at x: the path's own geometry, bisected along its length within each monotone-in-x piece.
@@ -32,11 +32,30 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
     // The live chart draws its marker over the SVG and states the dots' plot-pixel centres on its box.
     const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
     const dots = JSON.parse(box?.dataset.dots ?? '[]') as Array<{ cx: number; cy: number; color: string }>;
+    // The marker canvas really paints each dot there: its pixel at the dot's centre is the dot's colour.
+    const canvas = box?.querySelector('canvas');
+    const [left, top] = (
+      /translate\(([-\d.]+),([-\d.]+)\)/.exec(svg.querySelector('g.plot')?.getAttribute('transform') ?? '') ?? []
+    )
+      .slice(1)
+      .map(Number);
+    const painted = (cx: number, cy: number, color: string) => {
+      const ctx = canvas?.getContext('2d');
+      if (!canvas || !ctx) return false;
+      const k = canvas.width / svg.clientWidth;
+      const [r, g, b] = ctx.getImageData(Math.round((left + cx) * k), Math.round((top + cy) * k), 1, 1).data;
+      const want = [1, 3, 5].map((i) => parseInt(color.slice(i, i + 2), 16));
+      return Math.abs(r - want[0]) + Math.abs(g - want[1]) + Math.abs(b - want[2]) < 30;
+    };
     return dots.map(({ cx, cy, color: fill }) => {
       const dist = (p: SVGPathElement) => Math.min(Infinity, ...yAt(p, cx).map((y) => Math.abs(y - cy)));
       const own = paths.filter((p) => p.getAttribute('stroke') === fill && !p.getAttribute('stroke-dasharray'));
       const others = paths.filter((p) => !own.includes(p));
-      return { own: own.length === 1 ? dist(own[0]) : Infinity, other: Math.min(Infinity, ...others.map(dist)) };
+      return {
+        own: own.length === 1 ? dist(own[0]) : Infinity,
+        other: Math.min(Infinity, ...others.map(dist)),
+        painted: painted(cx, cy, fill),
+      };
     });
   });
 }
@@ -103,6 +122,7 @@ test.describe('the angle and convergence charts', () => {
       for (const d of await markerOffsets(chart)) {
         expect(d.own).toBeLessThan(1.5);
         expect(d.other).toBeGreaterThan(5);
+        expect(d.painted).toBe(true);
       }
     }
     await page.getByRole('radio', { name: 'Together' }).check();
@@ -113,6 +133,7 @@ test.describe('the angle and convergence charts', () => {
     for (const d of offsets) {
       expect(d.own).toBeLessThan(1.5);
       expect(d.other).toBeGreaterThan(5);
+      expect(d.painted).toBe(true);
     }
   });
 
