@@ -18,11 +18,36 @@ function fontOf(font: LabelFont): string {
   return font === 'bold' ? THEME.fontBold : THEME.font;
 }
 
-/** Text widths (CSS pixels) measured by the canvas itself, in the label fonts. */
+/** Widths each context already measured, by font and text (the labels' fonts are system fonts: a width never changes). */
+const measuredBy = new WeakMap<Ctx, Map<string, number>>();
+/** Entries kept before the cache starts over (angle labels bring new texts every frame). */
+const MEASURED_MAX = 4096;
+
+/**
+ * Text widths (CSS pixels) measured by the canvas itself, in the label fonts. Widths are cached by font and
+ * text, and the context's font is set only when it changes: setting it parses the font string every time.
+ */
 export function canvasMeasure(ctx: Ctx): MeasureText {
+  let current = '';
+  let measured = measuredBy.get(ctx);
+  if (!measured) {
+    measured = new Map();
+    measuredBy.set(ctx, measured);
+  }
+  const cache = measured;
   return (text, font) => {
-    ctx.font = fontOf(font);
-    return ctx.measureText(text).width;
+    const css = fontOf(font);
+    const key = `${css}\n${text}`;
+    const known = cache.get(key);
+    if (known !== undefined) return known;
+    if (css !== current) {
+      ctx.font = css;
+      current = css;
+    }
+    const width = ctx.measureText(text).width;
+    if (cache.size >= MEASURED_MAX) cache.clear();
+    cache.set(key, width);
+    return width;
   };
 }
 
