@@ -95,7 +95,25 @@ test.describe('SVG export', () => {
     const svg = await svgFacts(page, conv.text);
     expect(svg.parseError).toBeNull();
     expect(svg.texts.some((s) => s.startsWith('NR convergence at θ2 = 45'))).toBe(true);
-    await lookAt(page, (await downloadSvg(page, 'Export θ3 and θ4 plot SVG')).text, 'svg-angles.png');
+    const both = await downloadSvg(page, 'Export θ3 and θ4 plot SVG');
+    // The file carries its own marker at θ2 = 45° (the page draws its marker over the chart instead):
+    // the line at 45/360 of the plot width and a dot of each quantity's colour on it.
+    const marker = await page.evaluate((text) => {
+      const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+      const line = doc.querySelector('g.plot > g.marker > line.mline');
+      const domain = doc.querySelector('g.axis-x path.domain')?.getAttribute('d') ?? '';
+      const width = Number(/H([\d.]+)/.exec(domain)?.[1]) - 0.5;
+      const circles = [...doc.querySelectorAll('g.plot > g.marker > circle')];
+      return {
+        x: Number(line?.getAttribute('x1')) / width,
+        fills: circles.map((c) => c.getAttribute('fill')),
+        cx: circles.map((c) => Number(c.getAttribute('cx')) / width),
+      };
+    }, both.text);
+    expect(marker.x).toBeCloseTo(45 / 360, 3);
+    expect(marker.cx.map((x) => Math.round(x * 3600))).toEqual([450, 450]);
+    expect(new Set(marker.fills).size).toBe(2);
+    await lookAt(page, both.text, 'svg-angles.png');
   });
 
   test('the solver lab exports its diagram as SVG', async ({ page }) => {

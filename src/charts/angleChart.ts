@@ -239,8 +239,8 @@ export function seriesPath(theta2Deg: ArrayLike<number>, valuesDeg: ArrayLike<nu
 /** Where the marker goes: its line's x (null when hidden) and a dot on each solid series whose value is finite and in the y domain. */
 export function markerGeometry(
   marker: AngleMarker | null,
-  series: readonly AngleSeries[],
-  frame: AngleFrame,
+  series: readonly Pick<AngleSeries, 'color' | 'faint'>[],
+  frame: Pick<AngleFrame, 'x' | 'y'>,
 ): MarkerPlacement {
   if (!marker || !Number.isFinite(marker.theta2Deg)) return { x: null, dots: [] };
   const cx = frame.x(Math.min(360, Math.max(0, marker.theta2Deg)));

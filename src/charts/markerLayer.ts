@@ -1,5 +1,6 @@
 import { TWO_PI } from '../solver/angles';
-import { CHART_STYLE } from './chartFrame';
+import { select } from 'd3-selection';
+import { CHART_STYLE, child } from './chartFrame';
 
 /** One marker dot in plot pixels (x right, y down from the plot's top-left corner) and its fill. */
 export interface MarkerDotPx {
@@ -93,46 +94,25 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
  * charts drawn off screen (exports), where the SVG must carry everything.
  */
 export function createSvgMarker(plot: SVGGElement): MarkerLayer {
-  const ns = 'http://www.w3.org/2000/svg';
-  const doc = plot.ownerDocument;
-  let mark = plot.querySelector<SVGGElement>(':scope > g.marker');
-  if (!mark) {
-    mark = doc.createElementNS(ns, 'g');
-    mark.setAttribute('class', 'marker');
-    plot.append(mark);
-  }
-  const g = mark;
-  const line = doc.createElementNS(ns, 'line');
-  line.setAttribute('class', 'mline');
-  line.setAttribute('y1', '0');
-  line.setAttribute('stroke', CHART_STYLE.marker);
-  line.setAttribute('stroke-width', String(LINE_WIDTH));
-  g.append(line);
-  const circles: SVGCircleElement[] = [];
+  const g = child(select(plot), 'g', 'marker');
+  const line = child(g, 'line', 'mline')
+    .attr('y1', 0)
+    .attr('stroke', CHART_STYLE.marker)
+    .attr('stroke-width', LINE_WIDTH);
   return {
     draw({ x, dots }, box) {
-      if (x === null) {
-        g.setAttribute('display', 'none');
-        return;
-      }
-      g.removeAttribute('display');
-      line.setAttribute('x1', String(x));
-      line.setAttribute('x2', String(x));
-      line.setAttribute('y2', String(box.height));
-      while (circles.length > dots.length) circles.pop()?.remove();
-      while (circles.length < dots.length) {
-        const c = doc.createElementNS(ns, 'circle');
-        c.setAttribute('r', String(DOT_R));
-        c.setAttribute('stroke', CHART_STYLE.background);
-        c.setAttribute('stroke-width', String(DOT_RING));
-        g.append(c);
-        circles.push(c);
-      }
-      dots.forEach((d, i) => {
-        circles[i].setAttribute('cx', String(d.cx));
-        circles[i].setAttribute('cy', String(d.cy));
-        circles[i].setAttribute('fill', d.color);
-      });
+      g.attr('display', x === null ? 'none' : null);
+      if (x === null) return;
+      line.attr('x1', x).attr('x2', x).attr('y2', box.height);
+      g.selectAll<SVGCircleElement, MarkerDotPx>('circle')
+        .data(dots)
+        .join('circle')
+        .attr('cx', (d) => d.cx)
+        .attr('cy', (d) => d.cy)
+        .attr('r', DOT_R)
+        .attr('fill', (d) => d.color)
+        .attr('stroke', CHART_STYLE.background)
+        .attr('stroke-width', DOT_RING);
     },
   };
 }

@@ -4,8 +4,8 @@ import type { NumberValue, ScaleLinear } from 'd3-scale';
 import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
-import type { AngleChartSize } from './angleChart';
-import { angleChartSize, plotIndices } from './angleChart';
+import type { AngleChartSize, AngleFrame } from './angleChart';
+import { angleChartSize, markerGeometry, plotIndices } from './angleChart';
 import type { Margins } from './chartFrame';
 import {
   child,
@@ -147,14 +147,8 @@ export function clipMarks(
   return out;
 }
 
-interface RateFrame {
-  iw: number;
-  ih: number;
-  x: ScaleLinear<number, number>;
-  y: ScaleLinear<number, number>;
-  xTicks: number[];
-  yTicks: number[];
-}
+/** The rate chart's scales and ticks: the angle chart's frame with a rate y scale. */
+type RateFrame = AngleFrame;
 
 function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFrame {
   const m = size.margins;
@@ -275,19 +269,8 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
 
   const drawMarker = () => {
     const box = { left: size.margins.left, top: size.margins.top, height: frame.ih };
-    if (!marker || !Number.isFinite(marker.theta2Deg)) {
-      mark.draw({ x: null, dots: [] }, box, size.width, size.height);
-      return;
-    }
-    const cx = frame.x(Math.min(360, Math.max(0, marker.theta2Deg)));
-    const [y0, y1] = frame.y.domain();
-    const solid = data.series.filter((d) => !d.faint);
-    const dots = marker.values.flatMap((v, i) =>
-      i < solid.length && Number.isFinite(v) && v >= y0 && v <= y1
-        ? [{ cx, cy: frame.y(v), color: solid[i].color }]
-        : [],
-    );
-    mark.draw({ x: cx, dots }, box, size.width, size.height);
+    const at = marker ? { theta2Deg: marker.theta2Deg, valuesDeg: marker.values } : null;
+    mark.draw(markerGeometry(at, data.series, frame), box, size.width, size.height);
   };
 
   const drawText = () => {
