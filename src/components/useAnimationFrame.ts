@@ -1,4 +1,5 @@
-import { useEffect, useEffectEvent } from 'react';
+import { useEffect } from 'react';
+import { useEffectEvent } from './useEffectEvent';
 
 /** Longest frame step passed on, seconds: a backgrounded tab does not jump on return. */
 const MAX_DT_SECONDS = 0.1;

@@ -1,4 +1,5 @@
-import { useEffect, useEffectEvent, useRef } from 'react';
+import { useEffect, useRef } from 'react';
+import { useEffectEvent } from './useEffectEvent';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../state/appState';
 import { applyPatch, stateValues } from '../state/embedMessages';
