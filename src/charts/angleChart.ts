@@ -1,6 +1,4 @@
 import { axisBottom, axisLeft } from 'd3-axis';
-import type { ScaleLinear } from 'd3-scale';
-import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
@@ -21,6 +19,8 @@ import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
 import { chartMarker } from './markerLayer';
 import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
+import type { LinearScale } from './scales';
+import { linearScale } from './scales';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -86,7 +86,7 @@ export interface AngleChart {
   /** Replaces the faint theta2 rules (dead centres); nothing else is redrawn. */
   setXMarks(marks: readonly XMark[]): void;
   /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (angle degrees to plot pixels). */
-  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
+  scale(name: 'x' | 'y'): LinearScale;
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
@@ -196,8 +196,8 @@ export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChart
 export interface AngleFrame {
   iw: number;
   ih: number;
-  x: ScaleLinear<number, number>;
-  y: ScaleLinear<number, number>;
+  x: LinearScale;
+  y: LinearScale;
   xTicks: number[];
   yTicks: number[];
 }
@@ -208,9 +208,9 @@ export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize)
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
-  const x = scaleLinear().domain([0, 360]).range([0, iw]);
+  const x = linearScale([0, 360], [0, iw]);
   const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
-  const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);
+  const y = linearScale(yAxis.domain, [ih, 0]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
     x,

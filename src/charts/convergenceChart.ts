@@ -1,6 +1,4 @@
 import { axisBottom, axisLeft } from 'd3-axis';
-import type { ScaleLinear, ScaleLogarithmic } from 'd3-scale';
-import { scaleLinear, scaleLog } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
@@ -16,6 +14,8 @@ import {
   styleAxis,
 } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
+import type { LinearScale, Scale } from './scales';
+import { linearScale, logScale } from './scales';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -66,8 +66,8 @@ export interface ConvergenceChart {
   /** Sets the texts; only the texts are redrawn. */
   setText(text: ConvergenceChartText): void;
   /** A copy of the x scale (iteration to plot pixels) or the y scale (residual, log, to plot pixels). */
-  scale(name: 'x'): ScaleLinear<number, number>;
-  scale(name: 'y'): ScaleLogarithmic<number, number>;
+  scale(name: 'x'): LinearScale;
+  scale(name: 'y'): Scale;
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 64 };
@@ -117,8 +117,8 @@ interface ConvergenceSize {
 export interface ConvergenceFrame {
   iw: number;
   ih: number;
-  x: ScaleLinear<number, number>;
-  y: ScaleLogarithmic<number, number>;
+  x: LinearScale;
+  y: Scale;
   xTicks: number[];
   yTicks: number[];
 }
@@ -129,9 +129,9 @@ export function convergenceFrame(data: ConvergenceChartData, size: ConvergenceSi
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const maxIt = Math.max(1, ...data.runs.map((r) => (r.iterations.length ? r.iterations[r.iterations.length - 1] : 0)));
-  const x = scaleLinear().domain([0, maxIt]).range([0, iw]);
+  const x = linearScale([0, maxIt], [0, iw]);
   const [d0, d1] = residualDomain(data.runs, data.tolerance);
-  const y = scaleLog().domain([d0, d1]).range([ih, 0]).clamp(true);
+  const y = logScale([d0, d1], [ih, 0]);
   return {
     iw,
     ih,

@@ -1,7 +1,5 @@
 import { quantileSorted } from 'd3-array';
 import { axisBottom, axisLeft } from 'd3-axis';
-import type { NumberValue, ScaleLinear } from 'd3-scale';
-import { scaleLinear } from 'd3-scale';
 import { select } from 'd3-selection';
 import { line } from 'd3-shape';
 import type { AngleChartSize, AngleFrame } from './angleChart';
@@ -20,6 +18,8 @@ import {
 } from './chartFrame';
 import { chartMarker } from './markerLayer';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
+import type { LinearScale } from './scales';
+import { linearScale, niceLinearDomain } from './scales';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
 export interface RateSeries {
@@ -68,7 +68,7 @@ export interface RateChart {
   resize(width: number, height: number): void;
   setText(text: RateChartText): void;
   /** A copy of the x scale (theta2 degrees to pixels) or the y scale (rate to pixels). */
-  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
+  scale(name: 'x' | 'y'): LinearScale;
 }
 
 /** Quantiles the clipped domain is built on, and how many of their spreads it may reach beyond them. */
@@ -103,11 +103,7 @@ export function rateDomain(series: readonly RateSeries[], count = 6): [number, n
     hi += d;
   }
   const pad = (hi - lo) * 0.06;
-  const d = scaleLinear()
-    .domain([lo - pad, hi + pad])
-    .nice(count)
-    .domain();
-  return [d[0], d[1]];
+  return niceLinearDomain(lo - pad, hi + pad, count);
 }
 
 /** Where a curve leaves the y domain: theta2 (degrees) of the crossing or of the first sample outside, and the side. */
@@ -155,9 +151,9 @@ function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFra
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
-  const x = scaleLinear().domain([0, 360]).range([0, iw]);
+  const x = linearScale([0, 360], [0, iw]);
   const yCount = tickCount(ih, size.yTickSpacing);
-  const y = scaleLinear().domain(rateDomain(series, yCount)).range([ih, 0]);
+  const y = linearScale(rateDomain(series, yCount), [ih, 0]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
     x,
@@ -168,7 +164,7 @@ function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFra
 }
 
 /** Formats a y tick: d3's tick format for the domain, with a typographic minus. */
-function yTickFormat(y: ScaleLinear<number, number>, count: number): (d: NumberValue) => string {
+function yTickFormat(y: LinearScale, count: number): (d: number) => string {
   const f = y.tickFormat(count);
   return (d) => minus(f(d));
 }

@@ -1,9 +1,8 @@
 import { nice, tickStep, ticks } from 'd3-array';
-import { scaleLog } from 'd3-scale';
 
 /**
  * Tick values and nice domains of every chart, all from d3-array's ticks / nice / tickStep and
- * d3-scale's log ticks, so steps are 1, 2 or 5 times a power of ten (of a 30 degree unit on angle axes).
+ * d3's log-tick lattice (1, 2 and 5 times each power of ten), so steps are 1, 2 or 5 times a power of ten (of a 30 degree unit on angle axes).
  * Tick counts come from pixel lengths, so a narrow chart gets fewer ticks instead of labels that collide.
  */
 
@@ -110,21 +109,16 @@ export function decadeTicks(lo: number, hi: number, count: number, anchorExponen
   return es.map((e) => dec(1, e + anchorExponent));
 }
 
-/** True for 1, 2 or 5 times a power of ten. */
-function isOneTwoFive(v: number): boolean {
-  const m = Math.round(v / dec(1, exponentOf(v)));
-  return (m === 1 || m === 2 || m === 5) && Math.abs(v / dec(m, exponentOf(v)) - 1) < 1e-9;
-}
-
-/** 1, 2 and 5 times each power of ten in [lo, hi] (lo, hi > 0), from d3's log-scale ticks. */
+/** 1, 2 and 5 times each power of ten in [lo, hi] (lo, hi > 0): the 1-2-5 subset of d3's log-scale ticks. */
 export function oneTwoFiveTicks(lo: number, hi: number): number[] {
-  // Every decade of a log scale with more ticks than decades lists 1..9 times its power; keep 1, 2, 5.
-  const decades = Math.max(1, Math.ceil(Math.log10(hi / lo)) + 1);
-  return scaleLog()
-    .domain([lo, hi])
-    .ticks(decades + 1)
-    .filter(isOneTwoFive)
-    .map((v) => dec(Math.round(v / dec(1, exponentOf(v))), exponentOf(v)));
+  const out: number[] = [];
+  for (let e = Math.floor(Math.log10(lo)); e <= Math.ceil(Math.log10(hi)); e++) {
+    for (const m of [1, 2, 5]) {
+      const v = dec(m, e);
+      if (v >= lo && v <= hi) out.push(v);
+    }
+  }
+  return out;
 }
 
 /**
@@ -137,10 +131,9 @@ export function logTicks(domain: readonly [number, number], count: number, ancho
   return decadeTicks(lo, hi, count, anchorExponent);
 }
 
-/** [lo, hi] (lo, hi > 0) widened to whole decades by d3's scaleLog().nice(). */
+/** [lo, hi] (lo, hi > 0) widened to whole decades, as d3's scaleLog().nice(). */
 export function niceLogDomain(lo: number, hi: number): [number, number] {
-  const [a, b] = scaleLog().domain([lo, hi]).nice().domain();
-  return [a, b];
+  return [dec(1, Math.floor(Math.log10(lo))), dec(1, Math.ceil(Math.log10(hi)))];
 }
 
 /** [lo, hi] (lo, hi > 0) widened to the nearest 1, 2 or 5 times a power of ten outside it, on d3's log tick lattice. */

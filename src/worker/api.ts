@@ -1,4 +1,3 @@
-import { runWorkPrecision } from '../lab/workPrecision';
 import { computeCycle, computePoint, computeTable } from './compute';
 import type { SolverApi } from './protocol';
 
@@ -11,9 +10,15 @@ export const solverApi: SolverApi = {
   cycle: computeCycle,
   point: computePoint,
   table: computeTable,
-  /** The work-precision study; yields between stages so a cancel can arrive. Loads the 40-digit reference only now. */
+  /**
+   * The work-precision study; yields between stages so a cancel can arrive. Loads the study and the 40-digit
+   * reference only now: they stay off the first load.
+   */
   async lab(params, task) {
-    const { referencePose } = await import('../lab/reference');
+    const [{ runWorkPrecision }, { referencePose }] = await Promise.all([
+      import('../lab/workPrecision'),
+      import('../lab/reference'),
+    ]);
     return runWorkPrecision(params.linkage, {
       branch: params.branch,
       stepDeg: params.stepDeg,

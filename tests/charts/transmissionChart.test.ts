@@ -1,4 +1,3 @@
-import { scaleLinear } from 'd3-scale';
 import { describe, expect, it } from 'vitest';
 import { outsideBandRuns } from '../../src/charts/transmissionChart';
 import { xMarkPositions } from '../../src/charts/xMarks';
@@ -8,6 +7,7 @@ import { deadCentreXMarks, transmissionData } from '../../src/components/transmi
 import { designMetrics } from '../../src/solver/metrics';
 import { messagesEn } from '../../src/state/messagesEn';
 import type { CycleDegrees } from '../../src/components/chartInputs';
+import { linearScale } from '../../src/charts/scales';
 
 const deg = (r: number) => (r * 180) / Math.PI;
 const rad = (d: number) => (d * Math.PI) / 180;
@@ -90,7 +90,7 @@ describe('xMarkPositions and deadCentreXMarks', () => {
   it('places the dead-centre rules at x(theta2) and leaves out marks off the axis', () => {
     const marks = deadCentreXMarks(designMetrics({ r1: 6, r2: 2, r3: 5, r4: 5 }, 'open'), messagesEn);
     expect(marks.map((m) => m.label)).toEqual(['ext.', 'fold.']);
-    const x = scaleLinear().domain([0, 360]).range([0, 720]);
+    const x = linearScale([0, 360], [0, 720]);
     const pos = xMarkPositions(
       [...marks, { xDeg: 400, label: 'off' }, { xDeg: -10, label: 'below' }, { xDeg: Number.NaN, label: 'nan' }],
       x,
