@@ -5,13 +5,14 @@
  *     at 1x CPU and at 4x CPU slowdown (CDP Emulation.setCPUThrottlingRate), and the longest redraw gap;
  *   - drag latency from the input event to the end of the rendered frame that shows it, p95:
  *     theta2 slider at 1x and 4x (the canvas shows that theta2 or a newer one), r3 slider with the plots at
- *     3601 points at 1x (the plots and canvas show that r3 or a newer one);
+ *     3601 points at 1x (the plots show that r3 or a newer one; the canvas draws the linkage in the same commit),
+ *     and, not a target, how long the worker's cycle (coupler trace, cycle numbers) takes to follow;
  *   - inputs left without a redraw (0 expected);
  *   - JavaScript transferred on first load (entry, chunks and worker), raw and gzip -9.
  * How it sees a redraw without app code: an init script wraps CanvasRenderingContext2D.fillRect and drawImage
  * and records every full cover of the linkage canvas (its background colour, or its cached background bitmap) with the canvas's accessible label at that moment (it names the drawn θ2).
- * Plot redraws come from the app's 'fourbar:cycle-drawn' mark, which the app makes only when
- * window.__FOURBAR_BENCH__ is set (this script sets it before any page script runs).
+ * Plot redraws come from the app's 'fourbar:plot-drawn' mark, the worker cycle's from 'fourbar:cycle-drawn'; the
+ * app makes them only when window.__FOURBAR_BENCH__ is set (this script sets it before any page script runs).
  * "End of the rendered frame" is the first message posted from a later requestAnimationFrame callback, which
  * runs after that frame's paint. BENCH_DIST serves another build (e.g. the previous commit's) for a comparison.
  * Writes bench/results/ui.json and prints a table. A benchmark: it reports, it does not fail.
@@ -66,6 +67,9 @@ function spread(values: readonly number[]): Spread {
 /** What the init script records in the page. */
 interface BenchLog {
   draws: { t: number; label: string }[];
+  /** The plots drew a plotted cycle for this r3. */
+  plots: { t: number; r3: number }[];
+  /** The worker's cycle for this r3 was drawn (coupler trace, cycle numbers). */
   cycles: { t: number; r3: number }[];
   frameEnds: number[];
   runFrames: boolean;
@@ -75,7 +79,7 @@ interface BenchLog {
 function instrument(): void {
   const w = window as unknown as { __FOURBAR_BENCH__: boolean; __bench: BenchLog };
   w.__FOURBAR_BENCH__ = true;
-  const b: BenchLog = { draws: [], cycles: [], frameEnds: [], runFrames: false };
+  const b: BenchLog = { draws: [], plots: [], cycles: [], frameEnds: [], runFrames: false };
   w.__bench = b;
   // A full redraw starts by covering the canvas: with its background colour, or with the cached background
   // bitmap (the live canvas redraws only the linkage over it).
@@ -100,9 +104,10 @@ function instrument(): void {
   };
   new PerformanceObserver((list) => {
     for (const e of list.getEntries()) {
-      if (e.name !== 'fourbar:cycle-drawn') continue;
+      const log = e.name === 'fourbar:plot-drawn' ? b.plots : e.name === 'fourbar:cycle-drawn' ? b.cycles : null;
+      if (!log) continue;
       const d = (e as PerformanceMark).detail as { r3?: number } | null;
-      b.cycles.push({ t: e.startTime, r3: d?.r3 ?? Number.NaN });
+      log.push({ t: e.startTime, r3: d?.r3 ?? Number.NaN });
     }
   }).observe({ type: 'mark', buffered: false });
   // A message posted from a rAF callback is handled after that frame has been painted.
@@ -179,6 +184,8 @@ interface DragRun {
   inputs: number;
   latencies: (number | null)[];
   exactlyShown: number;
+  /** r3 drags: each input's latency to the worker's cycle (coupler trace, cycle numbers); empty for θ2. */
+  cycleLatencies: (number | null)[];
 }
 
 /**
@@ -210,6 +217,7 @@ async function measureDrag(browser: Browser, rate: number, kind: 'theta2' | 'r3'
         await new Promise((r) => setTimeout(r, 800));
         b.runFrames = true;
         const drawsFrom = b.draws.length;
+        const plotsFrom = b.plots.length;
         const cyclesFrom = b.cycles.length;
         const sent: { v: number; t0: number }[] = [];
         for (let i = 1; i <= steps; i++) {
@@ -225,23 +233,31 @@ async function measureDrag(browser: Browser, rate: number, kind: 'theta2' | 'r3'
                 const m = /θ2 (-?[\d.]+)°/.exec(d.label);
                 return { t: d.t, v: m ? Number(m[1]) : Number.NaN };
               })
-            : b.cycles.slice(cyclesFrom).map((c) => ({ t: c.t, v: c.r3 }));
+            : b.plots.slice(plotsFrom).map((c) => ({ t: c.t, v: c.r3 }));
+        const cycleShown = () => b.cycles.slice(cyclesFrom).map((c) => ({ t: c.t, v: c.r3 }));
+        const reached = (xs: { v: number }[]) => xs.some((s) => s.v >= lastValue - 1e-9);
         const deadline = performance.now() + 5000;
-        while (performance.now() < deadline && !shown().some((s) => s.v >= lastValue - 1e-9))
+        while (performance.now() < deadline && !(reached(shown()) && (kind === 'theta2' || reached(cycleShown()))))
           await new Promise((r) => setTimeout(r, 20));
         await new Promise((r) => setTimeout(r, 100));
         b.runFrames = false;
         const events = shown();
         const ends = b.frameEnds;
         // Labels round θ2 to 0.01°: a value counts as shown within half of that.
-        const latencies = sent.map(({ v, t0 }) => {
-          const e = events.find((s) => s.t >= t0 && s.v >= v - 0.005);
-          if (!e) return null;
-          const end = ends.find((f) => f > e.t);
-          return end === undefined ? null : end - t0;
-        });
+        const latenciesTo = (evs: { t: number; v: number }[]) =>
+          sent.map(({ v, t0 }) => {
+            const e = evs.find((s) => s.t >= t0 && s.v >= v - 0.005);
+            if (!e) return null;
+            const end = ends.find((f) => f > e.t);
+            return end === undefined ? null : end - t0;
+          });
         const exactlyShown = sent.filter(({ v, t0 }) => events.some((s) => s.t >= t0 && Math.abs(s.v - v) < 0.005));
-        return { inputs: sent.length, latencies, exactlyShown: exactlyShown.length };
+        return {
+          inputs: sent.length,
+          latencies: latenciesTo(events),
+          exactlyShown: exactlyShown.length,
+          cycleLatencies: kind === 'r3' ? latenciesTo(cycleShown()) : [],
+        };
       },
       { kind, steps: DRAG_STEPS },
     );
@@ -251,12 +267,16 @@ async function measureDrag(browser: Browser, rate: number, kind: 'theta2' | 'r3'
 }
 
 function dragSummary(r: DragRun) {
-  const lat = r.latencies.filter((x): x is number => x !== null).sort((a, b) => a - b);
+  const sorted = (xs: (number | null)[]) => xs.filter((x): x is number => x !== null).sort((a, b) => a - b);
+  const lat = sorted(r.latencies);
+  const cyc = sorted(r.cycleLatencies);
   return {
     p50Ms: quantile(lat, 0.5),
     p95Ms: quantile(lat, 0.95),
     withoutRedraw: r.latencies.filter((x) => x === null).length,
     exactlyShown: r.exactlyShown,
+    cycleP50Ms: cyc.length ? quantile(cyc, 0.5) : Number.NaN,
+    cycleP95Ms: cyc.length ? quantile(cyc, 0.95) : Number.NaN,
   };
 }
 
@@ -338,6 +358,8 @@ async function main(): Promise<void> {
       p95Ms: pick(xs, (d) => d.p95Ms),
       withoutRedraw: pick(xs, (d) => d.withoutRedraw),
       exactlyShown: pick(xs, (d) => d.exactlyShown),
+      cycleP50Ms: pick(xs, (d) => d.cycleP50Ms),
+      cycleP95Ms: pick(xs, (d) => d.cycleP95Ms),
     });
     const result = {
       date: new Date().toISOString(),
@@ -407,6 +429,10 @@ async function main(): Promise<void> {
         ok(r3n3600x1.p95Ms.median <= TARGETS.r3P95Ms1x),
       ),
       row('r3 drag to plots p50 (ms), n=3600, 1x', s(r3n3600x1.p50Ms)),
+      row(
+        'r3 drag to the worker cycle (trace, cycle numbers) p50 / p95 (ms), 1x',
+        `${s(r3n3600x1.cycleP50Ms)} / ${s(r3n3600x1.cycleP95Ms)}`,
+      ),
       row(`inputs without a redraw (all drags, ${RUNS} runs)`, String(missed), '0', ok(missed === 0)),
       row(
         `θ2 inputs drawn exactly (of ${DRAG_STEPS}), 1x / 4x`,

@@ -69,3 +69,29 @@ test.describe('a dying solver worker', () => {
     await expect(page.getByTestId('grashof-sums')).toContainText('P + Q = 10.5', RECOVERY);
   });
 });
+
+test.describe('the plots', () => {
+  test('are solved on the main thread: they draw and follow r3 while the worker has not even loaded', async ({
+    page,
+  }) => {
+    // Hold the worker's script: until it is released no worker exists, so whatever the plots show was solved
+    // on the main thread (the worker is never asked for plot samples).
+    let release = () => {};
+    const held = new Promise<void>((resolve) => (release = resolve));
+    await page.route(/solver\.worker[^/]*\.js$/, async (route) => {
+      await held;
+      await route.continue().catch(() => undefined);
+    });
+    try {
+      await page.goto('./');
+      await expect.poll(() => chartPath(page, 0)).toMatch(/^M[\d.]+,[\d.]+L/);
+      const before = await chartPath(page, 0);
+      await page.getByRole('textbox', { name: /^r3/ }).fill('5.5');
+      await expect.poll(() => chartPath(page, 0)).not.toBe(before);
+    } finally {
+      release();
+    }
+    await waitReady(page);
+    await expect(page.getByTestId('grashof-sums')).toContainText('P + Q = 10.5');
+  });
+});

@@ -1,6 +1,5 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
-import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
 import {
   child,
@@ -21,6 +20,7 @@ import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
 import type { LinearScale } from './scales';
 import { linearScale } from './scales';
+import { linePath } from './linePath';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -227,13 +227,14 @@ export function seriesPath(theta2Deg: ArrayLike<number>, valuesDeg: ArrayLike<nu
   const idx = plotIndices(valuesDeg, Math.max(64, Math.round(2 * frame.iw)));
   const xs = idx.map((i) => theta2Deg[i]);
   const ys = idx.map((i) => valuesDeg[i]);
-  const gen = line<[number, number]>()
-    // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
-    .digits(2)
-    .defined((d) => Number.isFinite(d[1]))
-    .x((d) => x(d[0]))
-    .y((d) => y(d[1]));
-  return gen(wrappedSegments(xs, ys)) ?? '';
+  // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+  return linePath(
+    wrappedSegments(xs, ys),
+    (d) => x(d[0]),
+    (d) => y(d[1]),
+    (d) => Number.isFinite(d[1]),
+    2,
+  );
 }
 
 /** Where the marker goes: its line's x (null when hidden) and a dot on each solid series whose value is finite and in the y domain. */

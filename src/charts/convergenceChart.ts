@@ -1,6 +1,5 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
-import { line } from 'd3-shape';
 import type { Margins } from './chartFrame';
 import {
   CHART_STYLE,
@@ -16,6 +15,7 @@ import {
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
 import type { LinearScale, Scale } from './scales';
 import { linearScale, logScale } from './scales';
+import { linePath } from './linePath';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -235,9 +235,12 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
       .text(text.toleranceLabel ?? '');
 
     const floor = (v: number) => (v > 0 && Number.isFinite(v) ? v : d0);
-    const gen = line<[number, number]>()
-      .x((d) => x(d[0]))
-      .y((d) => y(floor(d[1])));
+    const path = (r: ConvergenceRun) =>
+      linePath(
+        r.iterations,
+        (it) => x(it),
+        (_it, i) => y(floor(r.residuals[i])),
+      );
     const runSel = runsG
       .selectAll<SVGGElement, ConvergenceRun>('g.run')
       .data(data.runs)
@@ -253,7 +256,7 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
       .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
       .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
       .attr('stroke-opacity', (d) => (d.faint ? 0.6 : 1))
-      .attr('d', (d) => gen(d.iterations.map((it, i) => [it, d.residuals[i]] as [number, number])) ?? '');
+      .attr('d', path);
     runSel
       .selectAll<SVGCircleElement, RunDot>('circle')
       .data((d) => d.iterations.map((it, i): RunDot => [it, d.residuals[i], d.color, d.faint === true]))

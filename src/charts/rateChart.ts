@@ -1,7 +1,6 @@
 import { quantileSorted } from 'd3-array';
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
-import { line } from 'd3-shape';
 import type { AngleChartSize, AngleFrame } from './angleChart';
 import { angleChartSize, markerGeometry, plotIndices } from './angleChart';
 import type { Margins } from './chartFrame';
@@ -20,6 +19,7 @@ import { chartMarker } from './markerLayer';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { LinearScale } from './scales';
 import { linearScale, niceLinearDomain } from './scales';
+import { linePath } from './linePath';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
 export interface RateSeries {
@@ -220,13 +220,14 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
     const { x, y } = frame;
     const path = (values: ArrayLike<number>) => {
       const idx = plotIndices(values, Math.max(64, Math.round(2 * frame.iw)));
-      const gen = line<number>()
-        // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
-        .digits(2)
-        .defined((i) => Number.isFinite(values[i]))
-        .x((i) => x(data.theta2Deg[i]))
-        .y((i) => y(values[i]));
-      return gen(idx) ?? '';
+      // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+      return linePath(
+        idx,
+        (i) => x(data.theta2Deg[i]),
+        (i) => y(values[i]),
+        (i) => Number.isFinite(values[i]),
+        2,
+      );
     };
     lines
       .selectAll<SVGPathElement, RateSeries>('path')

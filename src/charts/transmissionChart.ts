@@ -1,6 +1,5 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
-import { line } from 'd3-shape';
 import { COLORS } from '../theme/tokens';
 import type { AngleMarker } from './angleChart';
 import { plotIndices } from './angleChart';
@@ -21,6 +20,7 @@ import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
 import type { LinearScale } from './scales';
 import { linearScale } from './scales';
+import { linePath } from './linePath';
 
 /** Transmission angle mu (degrees in [0, 180], NaN where the linkage cannot assemble) against theta2 (degrees, 0 to 360). */
 export interface TransmissionChartData {
@@ -246,13 +246,14 @@ export function createTransmissionChart(svg: SVGSVGElement, options: Transmissio
   const drawLine = () => {
     const { x, y } = f;
     const idx = plotIndices(data.muDeg, Math.max(64, Math.round(2 * f.iw)));
-    const gen = line<number>()
-      // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
-      .digits(2)
-      .defined((i) => Number.isFinite(data.muDeg[i]))
-      .x((i) => x(data.theta2Deg[i]))
-      .y((i) => y(data.muDeg[i]));
-    const d = gen(idx) ?? '';
+    // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+    const d = linePath(
+      idx,
+      (i) => x(data.theta2Deg[i]),
+      (i) => y(data.muDeg[i]),
+      (i) => Number.isFinite(data.muDeg[i]),
+      2,
+    );
     muPath.attr('d', d).attr('fill', 'none').attr('stroke', MU_COLOR).attr('stroke-width', 1.75);
     muOutPath
       .attr('d', d)

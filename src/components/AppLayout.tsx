@@ -15,13 +15,13 @@ import { LanguageSelect } from './LanguageSelect';
 import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
-import { cycleRates } from './rateInputs';
+import { plotRates } from './rateInputs';
 import { SharePanel } from './SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
 import { useAnimation } from './useAnimation';
 import { useCanvasEdits } from './useCanvasEdits';
-import { useCycleDrawnMark } from './useCycleDrawnMark';
+import { useDrawnMark } from './useDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useExports } from './useExports';
@@ -64,7 +64,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
     (s: AppState) => ({ stage: s.page !== 'lab', plotPixels: s.page !== 'lab' ? plotPixels : 0, newton: true }),
     [plotPixels],
   );
-  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point } = useSimulator(
+  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point, plot } = useSimulator(
     initial.state,
     shownFor,
   );
@@ -72,14 +72,14 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, true);
   const t = getMessages(state.locale);
   const onLab = state.page === 'lab';
-  const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
+  const { deg, rangeDeg, rocking } = useCycleFacts(cycle, plot);
   // The numbers panel follows the state (a few times a second while playing); the canvas and the plot
   // markers follow every frame through the FramePoseProvider below.
   const { local } = useLinkagePose(state, false);
   const motion = useFrameMotion(state, local);
   const design = useDesignMetrics(state.linkage, state.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const rates = useMemo(() => cycleRates(cycle, state.direction), [cycle, state.direction]);
+  const rates = useMemo(() => plotRates(plot?.plot ?? null, state.direction), [plot, state.direction]);
   const { shown, onShown } = useShownFrame();
   const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
   const [playhead] = useState(() => new Playhead());
@@ -90,7 +90,8 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
-  useCycleDrawnMark(cycle);
+  useDrawnMark('fourbar:cycle-drawn', cycle);
+  useDrawnMark('fourbar:plot-drawn', plot);
 
   return (
     <MessagesContext.Provider value={t}>

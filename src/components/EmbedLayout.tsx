@@ -19,7 +19,7 @@ import { MessagesContext } from './MessagesContext';
 import { shellMessages } from './shellMessages';
 import { useAnimation } from './useAnimation';
 import { useCanvasEdits } from './useCanvasEdits';
-import { useCycleDrawnMark } from './useCycleDrawnMark';
+import { useDrawnMark } from './useDrawnMark';
 import { useCycleFacts } from './useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useEmbedMessages } from './useEmbedMessages';
@@ -73,14 +73,14 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
     () => ({ stage: true, plotPixels: plotsShown ? plotPixels : 0, newton: numbersShown }),
     [plotsShown, plotPixels, numbersShown],
   );
-  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point } = useSimulator(
+  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point, plot } = useSimulator(
     initial.state,
     shownFor,
   );
   const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, numbersShown);
   const t = getMessages(state.locale);
-  const { deg, rangeDeg, rocking } = useCycleFacts(cycle);
+  const { deg, rangeDeg, rocking } = useCycleFacts(cycle, plot);
   const design = useDesignMetrics(state.linkage, state.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { shown, onShown } = useShownFrame();
@@ -95,7 +95,8 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
   useUrlSync(state, embed, ownsPage);
   useEmbedMessages(bridge, state, dispatch, embed.locked);
-  useCycleDrawnMark(cycle);
+  useDrawnMark('fourbar:cycle-drawn', cycle);
+  useDrawnMark('fourbar:plot-drawn', plot);
 
   // The full app lives beside embed.html; a page hosting the element has no such neighbour.
   const fullHref = ownsPage ? fullAppHref(state) : '';

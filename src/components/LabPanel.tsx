@@ -19,6 +19,7 @@ import type { SolverClient } from '../worker/client';
 import { downloadPng, downloadText } from './exporters';
 import { labPng, labSvg } from './labExport';
 import { useMessages } from './MessagesContext';
+import { labMessagesFor } from '../state/labMessages';
 import { Segmented } from './Segmented';
 import { SvgChartView } from './SvgChartView';
 import { useLab } from './useLab';
@@ -49,6 +50,7 @@ function fmtErr(x: number): string {
  */
 export function LabPanel({ client, state, dispatch }: LabPanelProps) {
   const t = useMessages();
+  const lt = labMessagesFor(state.locale);
   const lab = useLab(client, state.linkage, state.branch, state.labStepDeg);
   const [pngSize, setPngSize] = useState<PngSize>('2x');
   const [exportStatus, setExportStatus] = useState('');
@@ -58,24 +60,24 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
 
   const chartOptions = useMemo(
     () => ({
-      title: t.labDiagramTitle,
-      xLabel: t.labDiagramX,
-      yLabel: t.labDiagramY,
+      title: lt.labDiagramTitle,
+      xLabel: lt.labDiagramX,
+      yLabel: lt.labDiagramY,
       highlight,
       methodLabels,
-      defaultTolText: t.labToleranceDefault,
-      defaultLegend: t.labLegendDefault,
-      failureLegend: t.labLegendFailed,
+      defaultTolText: lt.labToleranceDefault,
+      defaultLegend: lt.labLegendDefault,
+      failureLegend: lt.labLegendFailed,
       tooltip: (s: LabSeries, p: LabPoint) =>
-        t.labPointTooltip(
+        lt.labPointTooltip(
           t.methodNames[s.method],
-          formatTol(p.tol, t.labToleranceDefault),
+          formatTol(p.tol, lt.labToleranceDefault),
           p.nsPerPoint.toFixed(0),
           fmtErr(p.maxError),
         ),
       emptyText: t.labRun + '…',
     }),
-    [t, highlight, methodLabels],
+    [t, lt, highlight, methodLabels],
   );
   const drawDiagram = useCallback(
     (svg: SVGSVGElement, width: number, height: number) =>
@@ -97,14 +99,14 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
         {
           width,
           height,
-          title: t.labCycleTitle,
+          title: lt.labCycleTitle,
           xLabel: t.axisTheta2,
-          iterationsLabel: t.labCycleIterations,
-          detJLabel: t.labCycleDetJ,
+          iterationsLabel: lt.labCycleIterations,
+          detJLabel: lt.labCycleDetJ,
         },
       );
     },
-    [result, t, state.theta2Deg],
+    [result, t, lt, state.theta2Deg],
   );
 
   const onPng = async () => {
@@ -140,10 +142,10 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
   const limitText = !result
     ? null
     : nearest
-      ? t.labNearestLimit(formatDeg(nearest.distanceDeg, 4), formatDeg(nearest.limitDeg, 4))
-      : t.labNoLimit;
+      ? lt.labNearestLimit(formatDeg(nearest.distanceDeg, 4), formatDeg(nearest.limitDeg, 4))
+      : lt.labNoLimit;
 
-  const status = labProgressStatus({ ...lab, hasResult: result !== null }, t);
+  const status = labProgressStatus({ ...lab, hasResult: result !== null }, { ...lt, methodNames: t.methodNames });
   const chosenSeries = result?.series.find((s) => s.method === state.method);
   const chosenPoint = chosenSeries?.points.find((p) => p.tol === state.tol);
 
@@ -151,44 +153,44 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
     <div className="lab" data-testid="solver-lab" data-ready={result && !lab.running ? 'true' : 'false'}>
       <section className="card lab-card" aria-labelledby="lab-title">
         <h2 id="lab-title" className="section-title">
-          {t.labTitle}
+          {lt.labTitle}
         </h2>
-        <p className="note">{t.labIntro}</p>
+        <p className="note">{lt.labIntro}</p>
         <div className="lab-toolbar">
           <Segmented<string>
-            legend={t.labStep}
+            legend={lt.labStep}
             value={String(state.labStepDeg)}
             options={LAB_STEPS_DEG.map((s) => ({ value: String(s), label: `${s}°` }))}
             onChange={(v) => dispatch({ type: 'setLabStep', stepDeg: Number(v) })}
           />
           {lab.running ? (
             <button type="button" className="btn btn-small" onClick={lab.cancel}>
-              {t.labCancel}
+              {lt.labCancel}
             </button>
           ) : (
             <button type="button" className="btn btn-small btn-primary" onClick={lab.run} disabled={!client}>
-              {result ? t.labRerun : t.labRun}
+              {result ? lt.labRerun : t.labRun}
             </button>
           )}
           <div className="lab-progress">
-            <progress max={100} value={status.percent} aria-label={t.labTitle} aria-valuetext={status.text} />
+            <progress max={100} value={status.percent} aria-label={lt.labTitle} aria-valuetext={status.text} />
             <span className="status-line" role="status" aria-live="polite">
-              {lab.running ? status.text : lab.cancelled ? t.labCancelled : (lab.error ?? '')}
+              {lab.running ? status.text : lab.cancelled ? lt.labCancelled : (lab.error ?? '')}
             </span>
           </div>
         </div>
-        <SvgChartView draw={drawDiagram} label={t.labDiagramTitle} className="lab-diagram" testId="work-precision" />
+        <SvgChartView draw={drawDiagram} label={lt.labDiagramTitle} className="lab-diagram" testId="work-precision" />
         <div className="lab-table-wrap">
           <table className="lab-table">
             <thead>
               <tr>
-                <th scope="col">{t.labTableHeaders.method}</th>
-                <th scope="col">{t.labTableHeaders.nsPerPoint}</th>
-                <th scope="col">{t.labTableHeaders.itersPerPoint}</th>
-                <th scope="col">{t.labTableHeaders.maxError}</th>
-                <th scope="col">{t.labTableHeaders.failed}</th>
-                <th scope="col">{t.labTableHeaders.wrongBranch}</th>
-                <th scope="col">{t.labTableHeaders.falseConvergence}</th>
+                <th scope="col">{lt.labTableHeaders.method}</th>
+                <th scope="col">{lt.labTableHeaders.nsPerPoint}</th>
+                <th scope="col">{lt.labTableHeaders.itersPerPoint}</th>
+                <th scope="col">{lt.labTableHeaders.maxError}</th>
+                <th scope="col">{lt.labTableHeaders.failed}</th>
+                <th scope="col">{lt.labTableHeaders.wrongBranch}</th>
+                <th scope="col">{lt.labTableHeaders.falseConvergence}</th>
               </tr>
             </thead>
             <tbody>
@@ -218,10 +220,10 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
         </div>
         <div className="lab-choose">
           <label className="field-inline">
-            <span>{t.labMethod}</span>
+            <span>{lt.labMethod}</span>
             <select
               className="select"
-              aria-label={t.labMethod}
+              aria-label={lt.labMethod}
               value={state.method}
               onChange={(e) => dispatch({ type: 'setMethod', method: e.target.value as SweepMethod, tol: state.tol })}
             >
@@ -233,10 +235,10 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
             </select>
           </label>
           <label className="field-inline">
-            <span>{t.labTolerance}</span>
+            <span>{lt.labTolerance}</span>
             <select
               className="select"
-              aria-label={t.labTolerance}
+              aria-label={lt.labTolerance}
               value={state.tol === null ? 'default' : String(state.tol)}
               disabled={state.method === 'closed-form' || state.method === 'closed-form-polish'}
               onChange={(e) =>
@@ -247,7 +249,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
                 })
               }
             >
-              <option value="default">{t.labToleranceDefault}</option>
+              <option value="default">{lt.labToleranceDefault}</option>
               {LAB_TOLERANCES.map((x) => (
                 <option key={x} value={String(x)}>
                   {formatTol(x)}
@@ -255,7 +257,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
               ))}
             </select>
           </label>
-          <p className="note note-muted">{t.labChooseNote}</p>
+          <p className="note note-muted">{lt.labChooseNote}</p>
         </div>
         {result ? (
           <>
@@ -263,11 +265,11 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
               {limitText}
             </p>
             <p className="note">
-              {t.labMinSin(formatSci(result.minSinMu.value, 3), formatDeg(result.minSinMu.theta2Deg, 2))}
+              {lt.labMinSin(formatSci(result.minSinMu.value, 3), formatDeg(result.minSinMu.theta2Deg, 2))}
             </p>
           </>
         ) : null}
-        <SvgChartView draw={drawCycle} label={t.labCycleTitle} className="lab-cycle" />
+        <SvgChartView draw={drawCycle} label={lt.labCycleTitle} className="lab-cycle" />
         <div className="export-buttons lab-export">
           <Segmented<PngSize>
             legend={t.exportSize}
@@ -280,25 +282,25 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
             onChange={setPngSize}
           />
           <button type="button" className="btn btn-small" onClick={() => void onPng()} disabled={!result}>
-            {t.exportLabPng}
+            {lt.exportLabPng}
           </button>
           <button type="button" className="btn btn-small" onClick={onSvg} disabled={!result}>
             {t.exportLabSvg}
           </button>
           <button type="button" className="btn btn-small" onClick={onCsv} disabled={!result}>
-            {t.exportLabCsv}
+            {lt.exportLabCsv}
           </button>
           <span className="status-line" role="status">
             {exportStatus}
           </span>
         </div>
-        <p className="note">{t.labWhatItMeans}</p>
+        <p className="note">{lt.labWhatItMeans}</p>
       </section>
       <section className="card lab-card" aria-labelledby="lab-hard">
         <h2 id="lab-hard" className="section-title">
-          {t.labHardCases}
+          {lt.labHardCases}
         </h2>
-        <p className="note">{t.labHardCasesIntro}</p>
+        <p className="note">{lt.labHardCasesIntro}</p>
         <ul className="hard-cases">
           {HARD_CASES.map((c) => (
             <li key={c.id}>
@@ -316,9 +318,9 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
                 }
               >
                 <span className="hard-case-name">
-                  {c.number}. {t.hardCaseNames[c.id]}
+                  {c.number}. {lt.hardCaseNames[c.id]}
                 </span>
-                <span className="hard-case-note">{t.hardCaseNotes[c.id]}</span>
+                <span className="hard-case-note">{lt.hardCaseNotes[c.id]}</span>
               </button>
             </li>
           ))}

@@ -6,7 +6,7 @@ import { radToDeg180, radToDeg360 } from '../solver/angles';
 import type { NrStart } from '../state/appState';
 import { formatDeg } from '../state/format';
 import type { Messages } from '../state/messages';
-import type { CycleResponse, PointResponse } from '../worker/protocol';
+import type { CycleResponse, PlotSeries, PointResponse } from '../worker/protocol';
 
 /** The angle charts the app shows and exports. */
 export type AngleChartKind = 'theta3' | 'theta4' | 'both';
@@ -49,14 +49,16 @@ export interface CycleDegrees {
   crossed: { theta3: Float64Array; theta4: Float64Array };
 }
 
+/** A plotted cycle's angles in wrapped degrees (a branch not solved has empty series). */
+export function plotDegrees(plot: PlotSeries): CycleDegrees {
+  const branch = (b: { theta3: Float64Array; theta4: Float64Array } | null) =>
+    b ? { theta3: toWrappedDeg(b.theta3), theta4: toWrappedDeg(b.theta4) } : { theta3: EMPTY, theta4: EMPTY };
+  return { theta2Deg: plot.theta2Deg, open: branch(plot.open), crossed: branch(plot.crossed) };
+}
+
 /** Converts a cycle's angles to wrapped degrees for plotting: its adaptive plot samples when it has them. */
 export function cycleDegrees(cycle: CycleResponse): CycleDegrees {
-  const plot = cycle.plot;
-  if (plot) {
-    const branch = (b: { theta3: Float64Array; theta4: Float64Array } | null) =>
-      b ? { theta3: toWrappedDeg(b.theta3), theta4: toWrappedDeg(b.theta4) } : { theta3: EMPTY, theta4: EMPTY };
-    return { theta2Deg: plot.theta2Deg, open: branch(plot.open), crossed: branch(plot.crossed) };
-  }
+  if (cycle.plot) return plotDegrees(cycle.plot);
   return {
     theta2Deg: cycle.theta2Deg,
     open: { theta3: toWrappedDeg(cycle.open.theta3), theta4: toWrappedDeg(cycle.open.theta4) },

@@ -4,7 +4,7 @@ import type { Branch } from '../solver/types';
 import type { LinkRates } from '../solver/rates';
 import type { Direction, PlotLayout } from '../state/appState';
 import type { Messages } from '../state/messages';
-import type { CycleResponse, RateSeries } from '../worker/protocol';
+import type { PlotSeries, RateSeries } from '../worker/protocol';
 
 /** The rate charts: ω3, ω4 or both; α3, α4 or both. */
 export type RateChartKind = 'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth';
@@ -33,12 +33,11 @@ function negated(a: Float64Array): Float64Array {
 }
 
 /**
- * The cycle's plot rates for the direction the input turns: the worker solves them for ω2 as set, and
+ * A plotted cycle's rates for the direction the input turns: they are solved for ω2 as set, and
  * reversing ω2 flips ω3 and ω4 and leaves α3 and α4 alone (they are even in ω2 for a fixed α2), so a
- * rocking input's reversal needs no new solve. Null when the cycle has no plot rates.
+ * rocking input's reversal needs no new solve. Null when the plot has no rates.
  */
-export function cycleRates(cycle: CycleResponse | null, direction: Direction): CycleRates | null {
-  const plot = cycle?.plot;
+export function plotRates(plot: PlotSeries | null, direction: Direction): CycleRates | null {
   if (!plot) return null;
   const one = (b: typeof plot.open): RateSeries | null => {
     const r = b?.rates;

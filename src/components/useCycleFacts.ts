@@ -3,7 +3,8 @@ import type { InputRangeDeg } from '../state/animation';
 import { isRocking, rangeToDeg } from '../state/animation';
 import type { CycleResponse } from '../worker/protocol';
 import type { CycleDegrees } from './chartInputs';
-import { cycleDegrees } from './chartInputs';
+import { cycleDegrees, plotDegrees } from './chartInputs';
+import type { SolvedPlot } from './usePlotSeries';
 
 /** What the views read off a solved cycle: the angles in degrees, the input range in degrees, whether it rocks. */
 export interface CycleFacts {
@@ -13,9 +14,13 @@ export interface CycleFacts {
   rocking: boolean;
 }
 
-/** The cycle's degrees, input range and rocking flag, recomputed only when a new cycle arrives. */
-export function useCycleFacts(cycle: CycleResponse | null): CycleFacts {
-  const deg = useMemo(() => (cycle ? cycleDegrees(cycle) : null), [cycle]);
+/**
+ * The plotted angles in degrees (from the main thread's plot when plots show, else from the worker's cycle), the
+ * input range in degrees and the rocking flag (from the cycle's classification), each recomputed only when its
+ * source changes.
+ */
+export function useCycleFacts(cycle: CycleResponse | null, plot: SolvedPlot | null): CycleFacts {
+  const deg = useMemo(() => (plot ? plotDegrees(plot.plot) : cycle ? cycleDegrees(cycle) : null), [cycle, plot]);
   const rangeDeg = useMemo(() => (cycle ? rangeToDeg(cycle.classification.inputRange) : null), [cycle]);
   const rocking = cycle ? isRocking(cycle.classification.inputRange) : false;
   return { deg, rangeDeg, rocking };

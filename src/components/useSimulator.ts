@@ -4,6 +4,8 @@ import type { Action, AppState } from '../state/appState';
 import { reducer } from '../state/appState';
 import type { SolverClient, SolverMode, SolverModeReason } from '../worker/client';
 import type { CycleResponse, PointResponse } from '../worker/protocol';
+import type { SolvedPlot } from './usePlotSeries';
+import { usePlotSeries } from './usePlotSeries';
 import { useCycle, usePoint, useSolverClient } from './useSolver';
 import { useThrottledValue } from './useThrottledValue';
 
@@ -31,11 +33,14 @@ export interface Simulator {
   cycle: CycleResponse | null;
   cycleError: string | null;
   point: PointResponse | null;
+  /** The plotted cycle, solved on the main thread for the state's lengths; null when no plot shows. */
+  plot: SolvedPlot | null;
 }
 
 /**
  * The simulator's state (the app reducer, starting from initial) and the solver's answers for it: the cycle
- * and the point at theta2, requested for what shownFor(state) says is on screen (latest wins).
+ * and the point at theta2, requested for what shownFor(state) says is on screen (latest wins), and the plotted
+ * cycle, solved on the main thread in the same render as the state.
  */
 export function useSimulator(initial: AppState, shownFor: (state: AppState) => ShownViews): Simulator {
   const [state, dispatch] = useReducer(reducer, initial);
@@ -49,16 +54,16 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
     [ratePlot, state.omega2RadPerS, state.alpha2RadPerS2],
   );
   const cycleNeeds = useMemo(
-    () => ({
-      solver,
-      branch: state.branch,
-      otherBranch: state.showGhost,
-      curves: state.showTrace && stage,
-      plotPixels,
-      rates,
-    }),
-    [solver, state.branch, state.showGhost, state.showTrace, stage, plotPixels, rates],
+    () => ({ solver, branch: state.branch, otherBranch: state.showGhost, curves: state.showTrace && stage }),
+    [solver, state.branch, state.showGhost, state.showTrace, stage],
   );
+  const plot = usePlotSeries(state.linkage, {
+    plotPixels,
+    branch: state.branch,
+    otherBranch: state.showGhost,
+    solver,
+    rates,
+  });
   // The worker's pose answer feeds the numbers and the NR runs only: the canvas draws a pose solved on the
   // main thread (useLinkagePose), ghost included, so the worker need not solve the ghost.
   const pointNeeds = useMemo(() => ({ solver, ghost: false, newton }), [solver, newton]);
@@ -69,5 +74,5 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   const pointLinkage = useThrottledValue(state.linkage, POINT_FOLLOW_MS);
   const pointCoupler = useThrottledValue(state.coupler, POINT_FOLLOW_MS);
   const point = usePoint(client, pointLinkage, state.branch, state.theta2Deg, state.samples, pointCoupler, pointNeeds);
-  return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point };
+  return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point, plot };
 }

@@ -2,7 +2,6 @@ import { useEffect, useLayoutEffect, useState } from 'react';
 import { flushSync } from 'react-dom';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../solver/angles';
-import type { InputMotion } from '../solver/rates';
 import type { Branch, Linkage } from '../solver/types';
 import type { CouplerPoint } from '../state/appState';
 import type { Messages } from '../state/messages';
@@ -43,7 +42,10 @@ export function solverStatusText(
   return null;
 }
 
-/** What the visible views need from a cycle solve (anything not shown is not computed). */
+/**
+ * What the visible views need from the worker's cycle solve (anything not shown is not computed). The plots are
+ * solved on the main thread (usePlotSeries), so the worker is never asked for plot samples.
+ */
 export interface CycleNeeds {
   solver: MethodChoice;
   branch: Branch;
@@ -51,13 +53,12 @@ export interface CycleNeeds {
   otherBranch: boolean;
   /** The coupler trace is drawn. */
   curves: boolean;
-  /** Device-pixel width of the visible angle plots, 0 when none is visible. */
-  plotPixels: number;
-  /** Input motion of a visible rate plot (rad/s, rad/s²); absent or null when no rate plot shows. */
-  rates?: InputMotion | null;
 }
 
-/** The latest solved cycle (view resolution) for these inputs (latest wins while they change), and the last error. */
+/**
+ * The latest solved cycle (view resolution: NR statistics, coupler curves, classification) for these inputs (latest
+ * wins while they change), and the last error.
+ */
 export function useCycle(
   client: SolverClient | null,
   linkage: Linkage,
@@ -72,9 +73,7 @@ export function useCycle(
   const { method, tol } = needs.solver;
   // With both branches wanted the branch choice does not change the request: no re-solve on a branch switch.
   const branch: Branch = needs.otherBranch ? 'open' : needs.branch;
-  const { otherBranch, curves, plotPixels } = needs;
-  const omega2 = needs.rates ? needs.rates.omega2 : null;
-  const alpha2 = needs.rates ? needs.rates.alpha2 : null;
+  const { otherBranch, curves } = needs;
   // A layout effect posts the request before the browser paints: a passive effect would wait a frame.
   useLayoutEffect(() => {
     if (!client) return;
@@ -87,8 +86,8 @@ export function useCycle(
         branch,
         otherBranch,
         curves,
-        plotPixels,
-        rates: omega2 !== null && alpha2 !== null ? { omega2, alpha2 } : null,
+        plotPixels: 0,
+        rates: null,
       })
       .then(
         (r) => {
@@ -102,24 +101,7 @@ export function useCycle(
         },
         (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
       );
-  }, [
-    client,
-    r1,
-    r2,
-    r3,
-    r4,
-    samples,
-    distance,
-    angleDeg,
-    method,
-    tol,
-    branch,
-    otherBranch,
-    curves,
-    plotPixels,
-    omega2,
-    alpha2,
-  ]);
+  }, [client, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves]);
   return { cycle, error };
 }
 

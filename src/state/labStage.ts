@@ -1,6 +1,10 @@
 import { LAB_METHODS } from '../lab/workPrecision';
 import type { SweepMethod } from '../solver/types';
+import type { LabMessages } from './labMessages';
 import type { Messages } from './messages';
+
+/** The strings the lab's progress line needs: the method names and the lab's own. */
+export type LabStageMessages = Pick<Messages, 'methodNames'> & LabMessages;
 
 /**
  * A stage of the lab's study, read from the English text the study reports
@@ -54,7 +58,7 @@ function tolText(tol: number | null): string | null {
 }
 
 /** The stage in the UI's language, with the method's translated name; unknown text is shown as it came. */
-export function labStageText(stage: LabStage, t: Messages): string {
+export function labStageText(stage: LabStage, t: LabStageMessages): string {
   switch (stage.kind) {
     case 'idle':
       return '';
@@ -79,7 +83,7 @@ export function labStageText(stage: LabStage, t: Messages): string {
  * What the progress bar says and shows: its accessible value text and its value in [0, 100]. Running gives the
  * translated stage and percent; otherwise failed, cancelled, finished or not run yet, in that order of precedence.
  */
-export function labProgressStatus(lab: LabProgressView, t: Messages): { text: string; percent: number } {
+export function labProgressStatus(lab: LabProgressView, t: LabStageMessages): { text: string; percent: number } {
   if (lab.running) {
     const percent = Math.round(Math.min(1, Math.max(0, lab.progress?.fraction ?? 0)) * 100);
     // Before the first report the study is starting on its first stage, the reference solution.

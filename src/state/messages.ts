@@ -2,7 +2,6 @@ import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../sol
 import type { PlotKind } from './appState';
 import type { OmegaUnit } from './inputMotion';
 import type { FieldError, FieldName } from './validate';
-import type { HardCaseId } from './hardCases';
 import type { PresetId } from './presets';
 
 /** Every UI string of one language; functions take already formatted numbers (strings). */
@@ -246,67 +245,10 @@ export interface Messages {
   /** Tail of a long list: how many more were ignored. */
   urlIgnoredMore: (count: string) => string;
   urlNoticeDismiss: string;
-
-  /** Short names of the hard cases (lab presets). */
-  hardCaseNames: Record<HardCaseId, string>;
-  /** One sentence per hard case: what makes it hard. */
-  hardCaseNotes: Record<HardCaseId, string>;
   viewSimulator: string;
   viewLab: string;
-  labTitle: string;
-  labIntro: string;
   labRun: string;
-  labRerun: string;
-  labCancel: string;
-  /** Progress line; percent is a formatted number without the % sign. */
-  labProgress: (stage: string, percent: string) => string;
-  labCancelled: string;
-  /** Stages of the lab's study as the progress line names them (see state/labStage.ts). */
-  labStageReference: string;
-  labStageSolve: (method: string, tol: string | null) => string;
-  labStageTiming: (pass: string, passes: string, what: string) => string;
-  labStageDone: string;
-  /** Short states of the lab's progress bar (its accessible value text). */
-  labStatusIdle: string;
-  labStatusDone: string;
-  labStatusCancelled: string;
-  labStatusFailed: string;
-  labStep: string;
-  labMethod: string;
-  labTolerance: string;
-  labToleranceDefault: string;
   methodNames: Record<SweepMethod, string>;
-  labTableHeaders: {
-    method: string;
-    nsPerPoint: string;
-    itersPerPoint: string;
-    maxError: string;
-    p99Error: string;
-    failed: string;
-    wrongBranch: string;
-    falseConvergence: string;
-  };
-  labDiagramTitle: string;
-  labDiagramX: string;
-  labDiagramY: string;
-  /** Legend entry for the diamond marking a method's default settings. */
-  labLegendDefault: string;
-  /** Legend entry for the red outline of configurations that failed somewhere on the cycle. */
-  labLegendFailed: string;
-  /** Tooltip of one diagram point; all arguments already formatted. */
-  labPointTooltip: (method: string, tol: string, nsPerPoint: string, maxError: string) => string;
-  labCycleTitle: string;
-  labCycleIterations: string;
-  labCycleDetJ: string;
-  labNearestLimit: (deg: string, atDeg: string) => string;
-  labNoLimit: string;
-  labMinSin: (value: string, atDeg: string) => string;
-  labHardCases: string;
-  labHardCasesIntro: string;
-  labChooseNote: string;
-  exportLabPng: string;
-  exportLabCsv: string;
-  labWhatItMeans: string;
   /** Status line: the solver worker stopped (missed its deadline or died) and was restarted. */
   solverRestarted: string;
   /** Status line: the worker stopped a second time, so the solver runs on the main thread. */

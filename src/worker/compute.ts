@@ -1,11 +1,9 @@
 import {
   DEFAULT_TOLERANCE,
   SEED_TOLERANCE,
-  adaptiveGrid,
   classify,
   couplerPoint,
   degToRad,
-  radToDeg,
   seedFirstGuess,
   solveClosedForm,
   solveNewton,
@@ -19,6 +17,7 @@ import {
 import type { InputMotion } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
+import { plotSeries, sweepOptions } from './plotSeries';
 import { encodeStatuses } from './statusCodes';
 import type {
   BranchCycle,
@@ -27,7 +26,6 @@ import type {
   CycleResponse,
   MethodChoice,
   NewtonSummary,
-  PlotSeries,
   PointParams,
   TableMotion,
   PointResponse,
@@ -81,11 +79,6 @@ function skippedCycle(n: number): BranchCycle {
   };
 }
 
-/** Sweep options for a method choice: an explicit tolerance turns polishing off, so the tolerance shows. */
-function sweepOptions(branch: Branch, solver: MethodChoice) {
-  return { branch, method: solver.method, tol: solver.tol ?? undefined, polish: solver.tol === null };
-}
-
 function branchCycle(
   l: Linkage,
   theta2Rad: Float64Array,
@@ -118,24 +111,6 @@ function branchCycle(
     okCount,
     skipped: false,
   };
-}
-
-function plotSeries(
-  l: Linkage,
-  pixels: number,
-  branches: Branch[],
-  solver: MethodChoice,
-  rates: InputMotion | null,
-): PlotSeries {
-  const grid = adaptiveGrid(l, { pixels, branches });
-  const one = (b: Branch) => {
-    if (!branches.includes(b)) return null;
-    const r = sweep(l, grid, sweepOptions(b, solver));
-    if (!rates) return { theta3: r.theta3, theta4: r.theta4 };
-    const w = sweepRates(l, grid, r.theta3, r.theta4, (i) => r.status[i] === 'ok', rates);
-    return { theta3: r.theta3, theta4: r.theta4, rates: w };
-  };
-  return { theta2Deg: grid.map(radToDeg), open: one('open'), crossed: one('crossed') };
 }
 
 /**

@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { frameMotion } from '../../src/components/frameMotion';
 import { localPose } from '../../src/components/localPose';
-import { cycleRates } from '../../src/components/rateInputs';
+import { plotRates } from '../../src/components/rateInputs';
 import { classify } from '../../src/solver/classify';
 import type { Branch } from '../../src/solver/types';
 import { advanceTheta2, rangeToDeg } from '../../src/state/animation';
 import type { Direction } from '../../src/state/appState';
 import { effectiveInputMotion } from '../../src/state/inputMotion';
-import type { CycleResponse } from '../../src/worker/protocol';
+import type { PlotSeries } from '../../src/worker/protocol';
 import { referenceAngles } from '../oracle/reference';
 
 /** A triple rocker: the input rocks between two limits (the e2e export case). */
@@ -60,32 +60,31 @@ describe('the rocking input reverses ω2 in step with the animation', () => {
   });
 });
 
-describe('cycleRates', () => {
+describe('plotRates', () => {
   const rates = {
     omega3: Float64Array.of(1, -2),
     omega4: Float64Array.of(3, Number.NaN),
     alpha3: Float64Array.of(5, 6),
     alpha4: Float64Array.of(-7, 8),
   };
-  const cycle = {
-    plot: {
-      theta2Deg: Float64Array.of(0, 1),
-      open: { theta3: rates.omega3, theta4: rates.omega3, rates },
-      crossed: null,
-    },
-  } as unknown as CycleResponse;
+  const plot: PlotSeries = {
+    theta2Deg: Float64Array.of(0, 1),
+    open: { theta3: rates.omega3, theta4: rates.omega3, rates },
+    crossed: null,
+  };
 
   it('keeps the rates as solved for the counter-clockwise direction', () => {
-    expect(cycleRates(cycle, 1)?.open).toBe(rates);
+    expect(plotRates(plot, 1)?.open).toBe(rates);
   });
   it('flips ω3 and ω4 and keeps α3 and α4 for the clockwise direction (α is even in ω2)', () => {
-    const r = cycleRates(cycle, -1)?.open;
+    const r = plotRates(plot, -1)?.open;
     expect([...r!.omega3]).toEqual([-1, 2]);
     expect([...r!.omega4]).toEqual([-3, Number.NaN]);
     expect(r!.alpha3).toBe(rates.alpha3);
     expect(r!.alpha4).toBe(rates.alpha4);
   });
   it('is null without plot rates', () => {
-    expect(cycleRates({ plot: null } as unknown as CycleResponse, 1)).toBeNull();
+    expect(plotRates(null, 1)).toBeNull();
+    expect(plotRates({ ...plot, open: { theta3: plot.theta2Deg, theta4: plot.theta2Deg } }, 1)).toBeNull();
   });
 });

@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import type { Messages } from '../../src/state/messages';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { messagesEn as appEn } from '../../src/state/messagesEn';
+import { messagesZhTw as appZhTw } from '../../src/state/messagesZhTw';
+import type { LabMessages } from '../../src/state/labMessages';
+import { labMessagesEn } from '../../src/state/labMessagesEn';
+import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+
+/** Every UI string of a language: the app's and the solver lab's. */
+const messagesEn = { ...appEn, ...labMessagesEn };
+const messagesZhTw = { ...appZhTw, ...labMessagesZhTw };
 
 /**
  * The mechanism glossary, English to Traditional Chinese as taught in Taiwan (教育部 機構學 terms):
@@ -26,7 +33,13 @@ const GLOSSARY: ReadonlyArray<{ en: RegExp; zh: readonly string[] }> = [
 ];
 
 /** Exact terms for named messages, including pairs that a swap must break (Open/Crossed, cw/ccw, ...). */
-const TERMS: ReadonlyArray<{ key: string; pick: (m: Messages) => string; en: RegExp; zh: string; notZh?: string[] }> = [
+const TERMS: ReadonlyArray<{
+  key: string;
+  pick: (m: Messages & LabMessages) => string;
+  en: RegExp;
+  zh: string;
+  notZh?: string[];
+}> = [
   { key: 'branchOpen', pick: (m) => m.branchOpen, en: /^Open$/, zh: '開放', notZh: ['交叉'] },
   { key: 'branchCrossed', pick: (m) => m.branchCrossed, en: /^Crossed$/, zh: '交叉', notZh: ['開放'] },
   { key: 'ccw', pick: (m) => m.ccw, en: /^Counter-clockwise$/, zh: '逆時針', notZh: ['順時針'] },

@@ -3,8 +3,8 @@ import { classify, degToRad } from '../../src/solver';
 import type { InputRange } from '../../src/solver';
 import type { HardCaseId } from '../../src/state/hardCases';
 import { HARD_CASES, getHardCase } from '../../src/state/hardCases';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { labMessagesEn } from '../../src/state/labMessagesEn';
+import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
 
 /** The class column of the hard-case table, as Barker classes (Norton); 'none' = cannot be assembled. */
 const EXPECTED_BARKER: Record<number, string> = {
@@ -102,7 +102,7 @@ describe('HARD_CASES', () => {
 
 describe('hard-case strings', () => {
   it('names and explains every case in both languages', () => {
-    for (const m of [messagesEn, messagesZhTw]) {
+    for (const m of [labMessagesEn, labMessagesZhTw]) {
       for (const c of HARD_CASES) {
         expect(m.hardCaseNames[c.id].trim(), c.id).not.toBe('');
         expect(m.hardCaseNotes[c.id].trim(), c.id).not.toBe('');

@@ -9,6 +9,9 @@ import {
 } from '../../src/state/i18n';
 import { messagesEn } from '../../src/state/messagesEn';
 import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { labMessagesFor } from '../../src/state/labMessages';
+import { labMessagesEn } from '../../src/state/labMessagesEn';
+import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
 
 function shape(o: unknown): unknown {
   if (typeof o === 'function') return 'fn';
@@ -24,6 +27,14 @@ function shape(o: unknown): unknown {
 describe('messages', () => {
   it('has the same keys in English and Traditional Chinese', () => {
     expect(shape(messagesZhTw)).toEqual(shape(messagesEn));
+    expect(shape(labMessagesZhTw)).toEqual(shape(labMessagesEn));
+  });
+
+  it('gives the lab its strings in the language asked for, and never a key twice across the two tables', () => {
+    expect(labMessagesFor('en')).toBe(labMessagesEn);
+    expect(labMessagesFor('zh-TW')).toBe(labMessagesZhTw);
+    const app = new Set(Object.keys(messagesEn));
+    expect(Object.keys(labMessagesEn).filter((k) => app.has(k))).toEqual([]);
   });
 
   it('has no empty string in either language', () => {
@@ -33,6 +44,8 @@ describe('messages', () => {
     };
     walk(messagesEn, 'en');
     walk(messagesZhTw, 'zh-TW');
+    walk(labMessagesEn, 'lab en');
+    walk(labMessagesZhTw, 'lab zh-TW');
   });
 
   it('starts the English field labels with r1..r4 and θ2, and export buttons with Export', () => {

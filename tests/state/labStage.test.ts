@@ -2,8 +2,14 @@ import { describe, expect, it } from 'vitest';
 import { LAB_METHODS, runWorkPrecision } from '../../src/lab/workPrecision';
 import { solveClosedForm } from '../../src/solver';
 import { labProgressStatus, labStageText, parseLabStage } from '../../src/state/labStage';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { messagesEn as appEn } from '../../src/state/messagesEn';
+import { messagesZhTw as appZhTw } from '../../src/state/messagesZhTw';
+import { labMessagesEn } from '../../src/state/labMessagesEn';
+import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+
+/** Every UI string of a language: the app's and the solver lab's. */
+const messagesEn = { ...appEn, ...labMessagesEn };
+const messagesZhTw = { ...appZhTw, ...labMessagesZhTw };
 
 /** Every stage text the lab reports on a coarse study (a fake clock keeps the timing passes short); run once. */
 let cached: Promise<string[]> | null = null;
