@@ -38,6 +38,9 @@ test.describe('exports', () => {
       ['Export θ3 plot PNG', 'theta3-vs-theta2', 1280, 720],
       ['Export θ4 plot PNG', 'theta4-vs-theta2', 1280, 720],
       ['Export θ3 and θ4 plot PNG', 'theta3-theta4-vs-theta2', 1280, 720],
+      // The rate plots export whichever plot shows: here the angle plots do.
+      ['Export ω3 and ω4 plot PNG', 'omega3-omega4-vs-theta2', 1280, 720],
+      ['Export α3 and α4 plot PNG', 'alpha3-alpha4-vs-theta2', 1280, 720],
       ['Export NR convergence plot PNG', 'nr-convergence', 1120, 680],
     ];
     for (const [name, subject, pw, ph] of charts) {

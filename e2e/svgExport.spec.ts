@@ -78,6 +78,8 @@ test.describe('SVG export', () => {
       ['Export θ3 plot SVG', 'theta3-vs-theta2', 'θ3 against θ2'],
       ['Export θ4 plot SVG', 'theta4-vs-theta2', 'θ4 against θ2'],
       ['Export θ3 and θ4 plot SVG', 'theta3-theta4-vs-theta2', 'θ3 and θ4 against θ2'],
+      ['Export ω3 and ω4 plot SVG', 'omega3-omega4-vs-theta2', 'ω3 and ω4 against θ2'],
+      ['Export α3 and α4 plot SVG', 'alpha3-alpha4-vs-theta2', 'α3 and α4 against θ2'],
     ];
     for (const [button, stem, title] of plots) {
       const file = await downloadSvg(page, button);
@@ -95,24 +97,33 @@ test.describe('SVG export', () => {
     const svg = await svgFacts(page, conv.text);
     expect(svg.parseError).toBeNull();
     expect(svg.texts.some((s) => s.startsWith('NR convergence at θ2 = 45'))).toBe(true);
-    const both = await downloadSvg(page, 'Export θ3 and θ4 plot SVG');
-    // The file carries its own marker at θ2 = 45° (the page draws its marker over the chart instead):
+    // Each exported plot carries its own marker at θ2 = 45° (the page draws its marker over the chart instead):
     // the line at 45/360 of the plot width and a dot of each quantity's colour on it.
-    const marker = await page.evaluate((text) => {
-      const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
-      const line = doc.querySelector('g.plot > g.marker > line.mline');
-      const domain = doc.querySelector('g.axis-x path.domain')?.getAttribute('d') ?? '';
-      const width = Number(/H([\d.]+)/.exec(domain)?.[1]) - 0.5;
-      const circles = [...doc.querySelectorAll('g.plot > g.marker > circle')];
-      return {
-        x: Number(line?.getAttribute('x1')) / width,
-        fills: circles.map((c) => c.getAttribute('fill')),
-        cx: circles.map((c) => Number(c.getAttribute('cx')) / width),
-      };
-    }, both.text);
-    expect(marker.x).toBeCloseTo(45 / 360, 3);
-    expect(marker.cx.map((x) => Math.round(x * 3600))).toEqual([450, 450]);
-    expect(new Set(marker.fills).size).toBe(2);
+    const markerOf = (text: string) =>
+      page.evaluate((svgText) => {
+        const doc = new DOMParser().parseFromString(svgText, 'image/svg+xml');
+        const line = doc.querySelector('g.plot > g.marker > line.mline');
+        const domain = doc.querySelector('g.axis-x path.domain')?.getAttribute('d') ?? '';
+        const width = Number(/H([\d.]+)/.exec(domain)?.[1]) - 0.5;
+        const circles = [...doc.querySelectorAll('g.plot > g.marker > circle')];
+        return {
+          x: Number(line?.getAttribute('x1')) / width,
+          fills: circles.map((c) => c.getAttribute('fill')),
+          cx: circles.map((c) => Number(c.getAttribute('cx')) / width),
+        };
+      }, text);
+    const both = await downloadSvg(page, 'Export θ3 and θ4 plot SVG');
+    for (const button of ['Export θ3 and θ4 plot SVG', 'Export ω3 and ω4 plot SVG', 'Export α3 and α4 plot SVG']) {
+      const marker = await markerOf(
+        button === 'Export θ3 and θ4 plot SVG' ? both.text : (await downloadSvg(page, button)).text,
+      );
+      expect(marker.x, button).toBeCloseTo(45 / 360, 3);
+      expect(
+        marker.cx.map((x) => Math.round(x * 3600)),
+        button,
+      ).toEqual([450, 450]);
+      expect(new Set(marker.fills).size, button).toBe(2);
+    }
     await lookAt(page, both.text, 'svg-angles.png');
   });
 

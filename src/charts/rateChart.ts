@@ -322,3 +322,19 @@ export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): 
     },
   };
 }
+
+/**
+ * Draws a complete rate chart into svg in one call (the off-screen path of PNG and SVG export) and returns its
+ * handle: createRateChart, update(data), setMarker(marker).
+ */
+export function drawRateChart(
+  svg: SVGSVGElement,
+  data: RateChartData,
+  marker: RateMarker | null,
+  options: RateChartOptions,
+): RateChart {
+  const chart = createRateChart(svg, options);
+  chart.update(data);
+  chart.setMarker(marker);
+  return chart;
+}

@@ -29,6 +29,8 @@ function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false }: 
     { subject: 'theta3', label: t.exportTheta3, svgLabel: t.exportTheta3Svg },
     { subject: 'theta4', label: t.exportTheta4, svgLabel: t.exportTheta4Svg },
     { subject: 'both', label: t.exportBoth, svgLabel: t.exportBothSvg },
+    { subject: 'omega', label: t.exportOmega, svgLabel: t.exportOmegaSvg },
+    { subject: 'alpha', label: t.exportAlpha, svgLabel: t.exportAlphaSvg },
     { subject: 'convergence', label: t.exportConvergence, svgLabel: t.exportConvergenceSvg },
   ];
   const shown = compact ? items.filter((i) => i.subject === 'linkage' || i.subject === 'both') : items;

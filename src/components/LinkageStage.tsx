@@ -44,7 +44,7 @@ export function LinkageStage({
   const designScene = useDesignScene(state, local, design, t);
   const vectors = useSceneVectors(state, motion, t);
   const { scene, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
-  useLayoutEffect(() => onShown?.({ state, marker, scene }), [state, marker, scene, onShown]);
+  useLayoutEffect(() => onShown?.({ state, marker, motion, scene }), [state, marker, motion, scene, onShown]);
   return (
     <LinkageCanvas
       scene={scene}

@@ -1,6 +1,8 @@
 import { drawAngleChart } from '../charts/angleChart';
 import type { AngleMarker } from '../charts/angleChart';
 import { drawConvergenceChart } from '../charts/convergenceChart';
+import type { RateMarker } from '../charts/rateChart';
+import { drawRateChart } from '../charts/rateChart';
 import { canvasToPngBytes, downloadBlob } from '../render/download';
 import { drawLinkage } from '../render/drawLinkage';
 import { withPngDpi } from '../render/png';
@@ -14,6 +16,7 @@ import { cycleToCsv } from '../state/csv';
 import type { PngSize } from '../state/fileNames';
 import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
 import type { AngleChartInputs, ConvergenceInputs } from './chartInputs';
+import type { RateChartInputs } from './rateInputs';
 
 /** Draws the linkage scene at width x height CSS pixels into a new canvas at the export size; returns PNG bytes with DPI. */
 export async function linkagePng(
@@ -54,6 +57,14 @@ export function angleChartSvg(inputs: AngleChartInputs, marker: AngleMarker, wid
   return svgToText(svg);
 }
 
+/** A rate chart (ω or α against θ2) drawn off screen at width x height CSS pixels, as SVG text. */
+export function rateChartSvg(inputs: RateChartInputs, marker: RateMarker, width: number, height: number): string {
+  const svg = detachedSvg();
+  const { data, ...text } = inputs;
+  drawRateChart(svg, data, marker, { ...text, width, height });
+  return svgToText(svg);
+}
+
 /** The convergence chart drawn off screen at width x height CSS pixels, as SVG text. */
 export function convergenceSvg(inputs: ConvergenceInputs, width: number, height: number): string {
   const svg = detachedSvg();
@@ -83,6 +94,20 @@ export async function angleChartPng(
     xLabel: inputs.xLabel,
     yLabel: inputs.yLabel,
   });
+  return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
+}
+
+/** Renders a rate chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
+export async function rateChartPng(
+  inputs: RateChartInputs,
+  marker: RateMarker,
+  width: number,
+  height: number,
+  size: PngSize,
+): Promise<Uint8Array> {
+  const svg = detachedSvg();
+  const { data, ...text } = inputs;
+  drawRateChart(svg, data, marker, { ...text, width, height });
   return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
 }
 

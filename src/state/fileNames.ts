@@ -13,13 +13,15 @@ export const PNG_DPI: Record<PngSize, number> = { screen: 96, '2x': 192, print: 
 const SUFFIX: Record<PngSize, string> = { screen: 'screen', '2x': '2x', print: '300dpi' };
 
 /** What an exported file shows. */
-export type ExportSubject = 'linkage' | 'theta3' | 'theta4' | 'both' | 'convergence';
+export type ExportSubject = 'linkage' | 'theta3' | 'theta4' | 'both' | 'omega' | 'alpha' | 'convergence';
 
 const SUBJECT: Record<ExportSubject, string> = {
   linkage: 'linkage',
   theta3: 'theta3-vs-theta2',
   theta4: 'theta4-vs-theta2',
   both: 'theta3-theta4-vs-theta2',
+  omega: 'omega3-omega4-vs-theta2',
+  alpha: 'alpha3-alpha4-vs-theta2',
   convergence: 'nr-convergence',
 };
 

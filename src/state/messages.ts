@@ -38,6 +38,8 @@ export interface Messages {
   exportTheta3Svg: string;
   exportTheta4Svg: string;
   exportBothSvg: string;
+  exportOmegaSvg: string;
+  exportAlphaSvg: string;
   exportConvergenceSvg: string;
   exportLabSvg: string;
   sectionShare: string;
@@ -217,6 +219,9 @@ export interface Messages {
   exportTheta3: string;
   exportTheta4: string;
   exportBoth: string;
+  /** The ω3-and-ω4 and α3-and-α4 plots (both links in one chart). */
+  exportOmega: string;
+  exportAlpha: string;
   exportConvergence: string;
   exportCsv: string;
   exportFailed: (reason: string) => string;

@@ -58,6 +58,8 @@ describe('messages', () => {
       'exportTheta3',
       'exportTheta4',
       'exportBoth',
+      'exportOmega',
+      'exportAlpha',
       'exportConvergence',
       'exportCsv',
     ] as const) {
