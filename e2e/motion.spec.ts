@@ -107,6 +107,8 @@ test.describe('velocity and acceleration', () => {
         'data-dots',
         /^\[\{"cx":[^}]*\}\]$/,
       );
+      // The dead centres of this crank-rocker, as on the angle plots: the rocker stops there (ω4 = 0).
+      await expect(svg.locator('g.x-mark text')).toHaveText(['ext.', 'fold.']);
     }
     await page.getByRole('radio', { name: 'Accelerations' }).check();
     await expect(page.getByRole('img', { name: 'α4 against θ2' })).toBeVisible();

@@ -1,5 +1,6 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
+import type { Selection } from 'd3-selection';
 import type { Margins } from './chartFrame';
 import {
   child,
@@ -73,21 +74,8 @@ export interface AngleMarker {
   valuesDeg: number[];
 }
 
-/** A live angle chart made by createAngleChart; every method redraws only what its change touches. */
-export interface AngleChart {
-  /** Replaces the curves; the axes are redrawn only when the y domain changes. */
-  update(data: AngleChartData): void;
-  /** Moves the current-theta2 marker (null hides it); nothing else is redrawn. */
-  setMarker(marker: AngleMarker | null): void;
-  /** Sets the chart size in CSS pixels; a no-op when unchanged. */
-  resize(width: number, height: number): void;
-  /** Sets the title and axis labels; a no-op when unchanged. */
-  setText(text: AngleChartText): void;
-  /** Replaces the faint theta2 rules (dead centres); nothing else is redrawn. */
-  setXMarks(marks: readonly XMark[]): void;
-  /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (angle degrees to plot pixels). */
-  scale(name: 'x' | 'y'): LinearScale;
-}
+/** A live angle chart made by createAngleChart. */
+export type AngleChart = Theta2Chart<AngleSeries, AngleMarker>;
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
 const DEFAULT_X_TICK_SPACING = 40;
@@ -256,20 +244,60 @@ export function markerGeometry(
   return { x: cx, dots };
 }
 
-const EMPTY_DATA: AngleChartData = { theta2Deg: [], series: [] };
+/** What the θ2 charts (angle and rate) draw: θ2 samples (degrees) and the curves. */
+export interface Theta2ChartData<S> {
+  theta2Deg: ArrayLike<number>;
+  series: S[];
+}
+
+/** A live chart against θ2; every method redraws only what its change touches. */
+export interface Theta2Chart<S, M> {
+  /** Replaces the curves; the axes are redrawn only when their domain, ticks or size change. */
+  update(data: Theta2ChartData<S>): void;
+  /** Moves the current-theta2 marker (null hides it); nothing else is redrawn. */
+  setMarker(marker: M | null): void;
+  /** Sets the chart size in CSS pixels; a no-op when unchanged. */
+  resize(width: number, height: number): void;
+  /** Sets the title and axis labels; a no-op when unchanged. */
+  setText(text: AngleChartText): void;
+  /** Replaces the faint theta2 rules (dead centres); nothing else is redrawn. */
+  setXMarks(marks: readonly XMark[]): void;
+  /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (the quantity to plot pixels). */
+  scale(name: 'x' | 'y'): LinearScale;
+}
+
+/** What makes a θ2 chart an angle chart or a rate chart: its y axis, its curves and its marker. */
+export interface Theta2ChartSpec<S extends Pick<AngleSeries, 'label' | 'color' | 'faint'>, M> {
+  /** Scales and ticks for these curves at this size. */
+  frame(series: readonly S[], size: AngleChartSize): AngleFrame;
+  /** The y tick labels of a frame. */
+  yTickFormat(frame: AngleFrame): (value: number) => string;
+  /** SVG path data of one curve in plot pixels. */
+  path(series: S, theta2Deg: ArrayLike<number>, frame: AngleFrame): string;
+  /** The marker as the angle chart's: θ2 and each solid series' value. */
+  marker(marker: M): AngleMarker;
+  /** Clips the curves to the plot and calls this after drawing them (the rate chart's out-of-range marks). */
+  clipped?: (g: Selection<SVGGElement, unknown, null, undefined>, data: Theta2ChartData<S>, frame: AngleFrame) => void;
+}
+
+let clipCounter = 0;
 
 /**
- * Creates an angle chart in svg (curves of output angle against theta2 with axes, grid, legend and a
- * current-theta2 marker) and returns its handle; the scales live in the handle. Options are read once
- * here; resize and setText change size and texts later. Draws nothing while width or height is 0.
+ * Creates a chart of curves against θ2 in svg (axes, grid, legend, dead-centre rules and a current-theta2
+ * marker) and returns its handle; the scales live in the handle. The spec says what is plotted. Options are
+ * read once here; resize and setText change size and texts later. Draws nothing while width or height is 0.
  */
-export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions): AngleChart {
+export function createTheta2Chart<S extends Pick<AngleSeries, 'label' | 'color' | 'faint'>, M>(
+  svg: SVGSVGElement,
+  options: AngleChartOptions,
+  spec: Theta2ChartSpec<S, M>,
+): Theta2Chart<S, M> {
   let size = angleChartSize(options);
   let text: AngleChartText = { title: options.title, xLabel: options.xLabel, yLabel: options.yLabel };
-  let data = EMPTY_DATA;
-  let marker: AngleMarker | null = null;
+  let data: Theta2ChartData<S> = { theta2Deg: [], series: [] };
+  let marker: M | null = null;
   let xMarks: readonly XMark[] = options.xMarks ?? [];
-  let frame = angleFrame(data.series, size);
+  let frame = spec.frame(data.series, size);
   // What the axes and legend were last drawn for: they are redrawn only when this changes.
   let xAxisKey = '';
   let yAxisKey = '';
@@ -278,6 +306,9 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
 
   const s = select(svg);
   child(s, 'rect', 'bg'); // first child, so the background stays under the plot
+  const clipId = `theta2-clip-${++clipCounter}`;
+  const clipPath = spec.clipped ? child(child(s, 'defs', 'defs'), 'clipPath', 'clip').attr('id', clipId) : null;
+  const clipRect = clipPath ? child(clipPath, 'rect', 'clip-rect') : null;
   const plot = child(s, 'g', 'plot');
   const gridX = child(plot, 'g', 'grid-x');
   const gridY = child(plot, 'g', 'grid-y');
@@ -285,10 +316,13 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   const ay = child(plot, 'g', 'axis-y');
   const marksG = child(plot, 'g', 'x-marks');
   const lines = child(plot, 'g', 'lines');
+  const after = spec.clipped ? child(plot, 'g', 'clip-marks') : null;
+  if (clipPath) lines.attr('clip-path', `url(#${clipId})`);
   const mark = chartMarker(plot.node() as SVGGElement, options.markerHost);
 
   const drawAxes = () => {
     const { iw, ih, x, y, xTicks, yTicks } = frame;
+    clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
     const xKey = `${iw} ${ih} ${xTicks.join(',')}`;
     if (xKey !== xAxisKey) {
       xAxisKey = xKey;
@@ -305,19 +339,14 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
     if (yKey !== yAxisKey) {
       yAxisKey = yKey;
       drawGridY(gridY, iw, yTicks, y);
-      ay.call(
-        axisLeft(y)
-          .tickValues(yTicks)
-          .tickFormat((d) => minus(`${d}`))
-          .tickSizeOuter(0),
-      );
+      ay.call(axisLeft(y).tickValues(yTicks).tickFormat(spec.yTickFormat(frame)).tickSizeOuter(0));
       styleAxis(ay);
     }
   };
 
   const drawLines = () => {
     lines
-      .selectAll<SVGPathElement, AngleSeries>('path')
+      .selectAll<SVGPathElement, S>('path')
       .data(data.series)
       .join('path')
       .attr('fill', 'none')
@@ -326,7 +355,8 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
       .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
       .attr('stroke-opacity', (d) => (d.faint ? 0.55 : 1))
       .attr('stroke-linejoin', 'round')
-      .attr('d', (d) => seriesPath(data.theta2Deg, d.valuesDeg, frame));
+      .attr('d', (d) => spec.path(d, data.theta2Deg, frame));
+    if (after) spec.clipped?.(after, data, frame);
     const key = data.series.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
     if (key !== legendKey) {
       legendKey = key;
@@ -336,7 +366,8 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
 
   const drawMarker = () => {
     const { left, top } = size.margins;
-    mark.draw(markerGeometry(marker, data.series, frame), { left, top, height: frame.ih }, size.width, size.height);
+    const at = marker === null ? null : spec.marker(marker);
+    mark.draw(markerGeometry(at, data.series, frame), { left, top, height: frame.ih }, size.width, size.height);
   };
 
   const drawText = () => {
@@ -366,7 +397,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
   return {
     update(next) {
       data = next;
-      frame = angleFrame(data.series, size);
+      frame = spec.frame(data.series, size);
       if (!laidOut()) return;
       drawAxes();
       drawLines();
@@ -379,7 +410,7 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
     resize(width, height) {
       if (width === size.width && height === size.height) return;
       size = angleChartSize({ ...size, width, height });
-      frame = angleFrame(data.series, size);
+      frame = spec.frame(data.series, size);
       drawAll();
     },
     setText(next) {
@@ -398,17 +429,35 @@ export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions)
 }
 
 /**
- * Draws a complete angle chart into svg in one call (the off-screen path of PNG export) and returns
- * its handle: createAngleChart, update(data), setMarker(marker).
+ * Creates an angle chart in svg (curves of output angle against theta2 with axes, grid, legend, dead-centre
+ * rules and a current-theta2 marker) and returns its handle.
  */
+export function createAngleChart(svg: SVGSVGElement, options: AngleChartOptions): AngleChart {
+  return createTheta2Chart<AngleSeries, AngleMarker>(svg, options, {
+    frame: angleFrame,
+    yTickFormat: () => (d) => minus(`${d}`),
+    path: (series, theta2Deg, frame) => seriesPath(theta2Deg, series.valuesDeg, frame),
+    marker: (m) => m,
+  });
+}
+
+/** Draws a whole chart in one call (the off-screen path of PNG and SVG export): its update and marker. */
+export function drawChart<D, M, C extends { update(data: D): void; setMarker(marker: M | null): void }>(
+  chart: C,
+  data: D,
+  marker: M | null,
+): C {
+  chart.update(data);
+  chart.setMarker(marker);
+  return chart;
+}
+
+/** Draws a complete angle chart into svg in one call (the off-screen path of PNG export) and returns its handle. */
 export function drawAngleChart(
   svg: SVGSVGElement,
   data: AngleChartData,
   marker: AngleMarker | null,
   options: AngleChartOptions,
 ): AngleChart {
-  const chart = createAngleChart(svg, options);
-  chart.update(data);
-  chart.setMarker(marker);
-  return chart;
+  return drawChart(createAngleChart(svg, options), data, marker);
 }

@@ -1,21 +1,9 @@
 import { quantileSorted } from 'd3-array';
-import { axisBottom, axisLeft } from 'd3-axis';
-import { select } from 'd3-selection';
-import type { AngleChartSize, AngleFrame } from './angleChart';
-import { angleChartSize, markerGeometry, plotIndices } from './angleChart';
+import type { Selection } from 'd3-selection';
+import type { AngleChartSize, AngleFrame, Theta2Chart } from './angleChart';
+import { createTheta2Chart, drawChart, plotIndices } from './angleChart';
 import type { Margins } from './chartFrame';
-import {
-  child,
-  drawChartText,
-  drawGridX,
-  drawGridY,
-  drawLegend,
-  estimateTextWidth,
-  minus,
-  prepareSvg,
-  styleAxis,
-} from './chartFrame';
-import { chartMarker } from './markerLayer';
+import { estimateTextWidth, minus } from './chartFrame';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { LinearScale } from './scales';
 import { linearScale, niceLinearDomain } from './scales';
@@ -61,15 +49,8 @@ export interface RateMarker {
   values: number[];
 }
 
-/** A live rate chart; the same handle as the angle chart's: each method redraws only what its change touches. */
-export interface RateChart {
-  update(data: RateChartData): void;
-  setMarker(marker: RateMarker | null): void;
-  resize(width: number, height: number): void;
-  setText(text: RateChartText): void;
-  /** A copy of the x scale (theta2 degrees to pixels) or the y scale (rate to pixels). */
-  scale(name: 'x' | 'y'): LinearScale;
-}
+/** A live rate chart: the angle chart's handle (createTheta2Chart) for rate curves. */
+export type RateChart = Theta2Chart<RateSeries, RateMarker>;
 
 /** Quantiles the clipped domain is built on, and how many of their spreads it may reach beyond them. */
 export const ROBUST_QUANTILES = [0.05, 0.95] as const;
@@ -169,8 +150,44 @@ function yTickFormat(y: LinearScale, count: number): (d: number) => string {
   return (d) => minus(f(d));
 }
 
-const EMPTY_DATA: RateChartData = { theta2Deg: [], series: [] };
-let clipCounter = 0;
+/** SVG path data of a rate curve in plot pixels: gaps where NaN, at most two samples per pixel. */
+function ratePath(values: ArrayLike<number>, theta2Deg: ArrayLike<number>, frame: RateFrame): string {
+  const { x, y } = frame;
+  const idx = plotIndices(values, Math.max(64, Math.round(2 * frame.iw)));
+  // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+  return linePath(
+    idx,
+    (i) => x(theta2Deg[i]),
+    (i) => y(values[i]),
+    (i) => Number.isFinite(values[i]),
+    2,
+  );
+}
+
+/** A small triangle on the edge each solid curve leaves the plot through, pointing outwards (clipMarks). */
+function drawClipMarks(
+  g: Selection<SVGGElement, unknown, null, undefined>,
+  data: RateChartData,
+  frame: RateFrame,
+): void {
+  const { x, ih } = frame;
+  const domain = frame.y.domain();
+  const marks = data.series
+    .filter((d) => !d.faint)
+    .flatMap((d) => clipMarks(data.theta2Deg, d.values, domain).map((m) => ({ ...m, color: d.color })));
+  g.selectAll<SVGPathElement, ClipMark & { color: string }>('path')
+    .data(marks)
+    .join('path')
+    .attr('fill', (d) => d.color)
+    .attr('d', (d) => {
+      const cx = x(d.theta2Deg);
+      return d.side === 'above'
+        ? `M${cx - 4},6L${cx + 4},6L${cx},0Z`
+        : `M${cx - 4},${ih - 6}L${cx + 4},${ih - 6}L${cx},${ih}Z`;
+    });
+  const svg = g.node()?.ownerSVGElement;
+  if (svg) svg.dataset.clipMarks = String(marks.length);
+}
 
 /**
  * Creates a rate chart in svg: curves of ω or α against theta2 with axes, grid, legend and a current-theta2
@@ -178,163 +195,21 @@ let clipCounter = 0;
  * plot and a small triangle marks each place a solid curve leaves it (clipMarks). Returns the handle.
  */
 export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): RateChart {
-  let size = angleChartSize(options);
-  let text: RateChartText = { title: options.title, xLabel: options.xLabel, yLabel: options.yLabel };
-  let data = EMPTY_DATA;
-  let marker: RateMarker | null = null;
-  let frame = rateFrame(data.series, size);
-  let legendKey = '';
-  const laidOut = () => size.width > 0 && size.height > 0;
-  const clipId = `rate-clip-${++clipCounter}`;
-
-  const s = select(svg);
-  child(s, 'rect', 'bg');
-  const defs = child(s, 'defs', 'defs');
-  const clipRect = child(child(defs, 'clipPath', 'clip').attr('id', clipId), 'rect', 'clip-rect');
-  const plot = child(s, 'g', 'plot');
-  const gridX = child(plot, 'g', 'grid-x');
-  const gridY = child(plot, 'g', 'grid-y');
-  const ax = child(plot, 'g', 'axis-x');
-  const ay = child(plot, 'g', 'axis-y');
-  const lines = child(plot, 'g', 'lines').attr('clip-path', `url(#${clipId})`);
-  const clips = child(plot, 'g', 'clip-marks');
-  const mark = chartMarker(plot.node() as SVGGElement, options.markerHost);
-
-  const drawAxes = () => {
-    const { iw, ih, x, y, xTicks, yTicks } = frame;
-    clipRect.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
-    drawGridX(gridX, ih, xTicks, x);
-    ax.attr('transform', `translate(0,${ih})`).call(
-      axisBottom(x)
-        .tickValues(xTicks)
-        .tickFormat((d) => `${d}`)
-        .tickSizeOuter(0),
-    );
-    styleAxis(ax);
-    drawGridY(gridY, iw, yTicks, y);
-    ay.call(axisLeft(y).tickValues(yTicks).tickFormat(yTickFormat(y, yTicks.length)).tickSizeOuter(0));
-    styleAxis(ay);
-  };
-
-  const drawLines = () => {
-    const { x, y } = frame;
-    const path = (values: ArrayLike<number>) => {
-      const idx = plotIndices(values, Math.max(64, Math.round(2 * frame.iw)));
-      // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
-      return linePath(
-        idx,
-        (i) => x(data.theta2Deg[i]),
-        (i) => y(values[i]),
-        (i) => Number.isFinite(values[i]),
-        2,
-      );
-    };
-    lines
-      .selectAll<SVGPathElement, RateSeries>('path')
-      .data(data.series)
-      .join('path')
-      .attr('fill', 'none')
-      .attr('stroke', (d) => d.color)
-      .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
-      .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
-      .attr('stroke-opacity', (d) => (d.faint ? 0.55 : 1))
-      .attr('stroke-linejoin', 'round')
-      .attr('d', (d) => path(d.values));
-    const domain = y.domain() as [number, number];
-    const marks = data.series
-      .filter((d) => !d.faint)
-      .flatMap((d) => clipMarks(data.theta2Deg, d.values, domain).map((m) => ({ ...m, color: d.color })));
-    clips
-      .selectAll<SVGPathElement, ClipMark & { color: string }>('path')
-      .data(marks)
-      .join('path')
-      .attr('fill', (d) => d.color)
-      .attr('d', (d) => {
-        const cx = x(d.theta2Deg);
-        // A small triangle on the edge the curve leaves through, pointing outwards.
-        return d.side === 'above'
-          ? `M${cx - 4},6L${cx + 4},6L${cx},0Z`
-          : `M${cx - 4},${frame.ih - 6}L${cx + 4},${frame.ih - 6}L${cx},${frame.ih}Z`;
-      });
-    svg.dataset.clipMarks = String(marks.length);
-    const key = data.series.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-    if (key !== legendKey) {
-      legendKey = key;
-      drawLegend(s, data.series, 14, 33);
-    }
-  };
-
-  const drawMarker = () => {
-    const box = { left: size.margins.left, top: size.margins.top, height: frame.ih };
-    const at = marker ? { theta2Deg: marker.theta2Deg, valuesDeg: marker.values } : null;
-    mark.draw(markerGeometry(at, data.series, frame), box, size.width, size.height);
-  };
-
-  const drawText = () => {
-    const m = size.margins;
-    drawChartText(
-      s,
-      { title: text.title, xLabel: text.xLabel, yLabels: [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }] },
-      m.left,
-      frame.iw,
-      size.width,
-      size.height,
-    );
-  };
-
-  const drawAll = () => {
-    if (!laidOut()) return;
-    prepareSvg(svg, size.width, size.height);
-    plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
-    drawAxes();
-    drawLines();
-    drawText();
-    drawMarker();
-  };
-
-  drawAll();
-  return {
-    update(next) {
-      data = next;
-      frame = rateFrame(data.series, size);
-      if (!laidOut()) return;
-      drawAxes();
-      drawLines();
-      drawMarker();
-    },
-    setMarker(next) {
-      marker = next;
-      if (laidOut()) drawMarker();
-    },
-    resize(width, height) {
-      if (width === size.width && height === size.height) return;
-      size = angleChartSize({ ...size, width, height });
-      frame = rateFrame(data.series, size);
-      drawAll();
-    },
-    setText(next) {
-      if (next.title === text.title && next.xLabel === text.xLabel && next.yLabel === text.yLabel) return;
-      text = { ...next };
-      if (laidOut()) drawText();
-    },
-    scale(name) {
-      return (name === 'x' ? frame.x : frame.y).copy();
-    },
-  };
+  return createTheta2Chart<RateSeries, RateMarker>(svg, options, {
+    frame: rateFrame,
+    yTickFormat: (frame) => yTickFormat(frame.y, frame.yTicks.length),
+    path: (series, theta2Deg, frame) => ratePath(series.values, theta2Deg, frame),
+    marker: (m) => ({ theta2Deg: m.theta2Deg, valuesDeg: m.values }),
+    clipped: drawClipMarks,
+  });
 }
 
-/**
- * Draws a complete rate chart into svg in one call (the off-screen path of PNG and SVG export) and returns its
- * handle: createRateChart, update(data), setMarker(marker).
- */
+/** Draws a complete rate chart into svg in one call (the off-screen path of PNG and SVG export). */
 export function drawRateChart(
   svg: SVGSVGElement,
   data: RateChartData,
   marker: RateMarker | null,
   options: RateChartOptions,
 ): RateChart {
-  const chart = createRateChart(svg, options);
-  chart.update(data);
-  chart.setMarker(marker);
-  return chart;
+  return drawChart(createRateChart(svg, options), data, marker);
 }

@@ -1,15 +1,17 @@
 import './SvgChartView.css';
 import { useLayoutEffect } from 'react';
 import { createAngleChart } from '../charts/angleChart';
-import type { AngleMarker } from '../charts/angleChart';
+import type { AngleChartText, AngleMarker, Theta2Chart, Theta2ChartData } from '../charts/angleChart';
 import type { XMark } from '../charts/xMarks';
 import type { AngleChartInputs } from './chartInputs';
 import { useLiveChart } from './useLiveChart';
 
-/** Props of AngleChartView: everything the chart shows; it sizes itself to its box. */
-export interface AngleChartViewProps {
-  inputs: AngleChartInputs;
-  marker: AngleMarker;
+/** Props of a chart against θ2: everything it shows (it sizes itself to its box) and how to make it. */
+export interface Theta2ChartViewProps<S, M> {
+  /** Makes the chart at size 0 (drawn once the view knows its box); a stable, module-level function. */
+  create: (svg: SVGSVGElement, markerHost: HTMLElement | undefined) => Theta2Chart<S, M>;
+  inputs: AngleChartText & { data: Theta2ChartData<S> };
+  marker: M;
   /** Accessible name of the chart figure. */
   label: string;
   /** Faint theta2 rules (dead centres); default none. */
@@ -18,17 +20,20 @@ export interface AngleChartViewProps {
 
 const NO_MARKS: readonly XMark[] = [];
 
-/** A new angle chart at size 0 (drawn once the view knows its box). */
-const newAngleChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
-  createAngleChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost });
-
 /**
- * A live angle chart: the chart is created once per SVG element; new data redraw the curves (the axes
- * only when their domain changes), a new marker only moves the marker, a new size redraws everything.
+ * A live chart against θ2 (angle or rate): the chart is created once per SVG element; new data redraw the
+ * curves (the axes only when their domain changes), a new marker only moves the marker, a new size redraws
+ * everything.
  */
-export function AngleChartView({ inputs, marker, label, xMarks = NO_MARKS }: AngleChartViewProps) {
+export function Theta2ChartView<S, M>({
+  create,
+  inputs,
+  marker,
+  label,
+  xMarks = NO_MARKS,
+}: Theta2ChartViewProps<S, M>) {
   const { data, title, xLabel, yLabel } = inputs;
-  const { chart, boxRef, svgRef, markerRef } = useLiveChart(newAngleChart, data, marker);
+  const { chart, boxRef, svgRef, markerRef } = useLiveChart(create, data, marker);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel });
@@ -43,4 +48,17 @@ export function AngleChartView({ inputs, marker, label, xMarks = NO_MARKS }: Ang
       <div className="chart-marker" ref={markerRef} />
     </div>
   );
+}
+
+/** A new angle chart at size 0. */
+const newAngleChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
+  createAngleChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost });
+
+/** A live angle chart (θ3, θ4 or both against θ2). */
+export function AngleChartView(
+  props: Omit<Theta2ChartViewProps<unknown, AngleMarker>, 'create' | 'inputs'> & {
+    inputs: AngleChartInputs;
+  },
+) {
+  return <Theta2ChartView create={newAngleChart} {...props} />;
 }

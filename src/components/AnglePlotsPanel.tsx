@@ -80,6 +80,7 @@ function AnglePlotsPanelImpl({
             branch={branch}
             showOther={showOther}
             layout={layout}
+            xMarks={xMarks}
           />
         </Suspense>
       ) : (

@@ -1,6 +1,7 @@
 import { useMemo } from 'react';
 import type { LinkRates } from '../solver/rates';
 import type { Branch } from '../solver/types';
+import type { XMark } from '../charts/xMarks';
 import type { PlotLayout } from '../state/appState';
 import { useMessages } from './MessagesContext';
 import type { CycleRates, RateChartKind } from './rateInputs';
@@ -17,6 +18,8 @@ export interface RatePlotsProps {
   branch: Branch;
   showOther: boolean;
   layout: PlotLayout;
+  /** Faint theta2 rules (dead centres: ω4 is zero there). */
+  xMarks?: readonly XMark[];
 }
 
 function OneRateChart({
@@ -26,6 +29,7 @@ function OneRateChart({
   theta2Deg,
   branch,
   showOther,
+  xMarks,
 }: Omit<RatePlotsProps, 'kind' | 'layout'> & { chart: RateChartKind }) {
   const t = useMessages();
   const inputs = useMemo(
@@ -33,7 +37,7 @@ function OneRateChart({
     [chart, rates, branch, showOther, t],
   );
   const marker = useMemo(() => rateMarker(chart, theta2Deg, current), [chart, theta2Deg, current]);
-  return <RateChartView inputs={inputs} marker={marker} label={t.chartRates[chart]} />;
+  return <RateChartView inputs={inputs} marker={marker} label={t.chartRates[chart]} xMarks={xMarks} />;
 }
 
 /** ω3/ω4 or α3/α4 against θ2 (loaded only when chosen), in two charts or one, with the clipping footnote. */
