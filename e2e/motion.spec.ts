@@ -115,6 +115,22 @@ test.describe('velocity and acceleration', () => {
     await expect(page).toHaveURL(/[?&]plot=acc/);
   });
 
+  test("near a triple rocker's limits the rate plots clip their runaway curves and mark where they leave", async ({
+    page,
+  }) => {
+    await page.goto('./?r1=4&r2=3&r3=3.5&r4=3&plot=vel');
+    await waitReady(page);
+    for (const name of ['ω3 against θ2', 'ω4 against θ2']) {
+      const svg = page.getByRole('img', { name });
+      // ω grows without bound at the input's limits: the curves are clipped to the plot, and a triangle marks
+      // each place a solid curve leaves it (two limits, each left on one side).
+      await expect(svg.locator('g.lines')).toHaveAttribute('clip-path', /^url\(#theta2-clip-\d+\)$/);
+      await expect(svg).toHaveAttribute('data-clip-marks', /^[1-9]\d*$/);
+      const marks = await svg.locator('g.clip-marks path').count();
+      expect(marks).toBe(Number(await svg.getAttribute('data-clip-marks')));
+    }
+  });
+
   test('the CSV carries the motion columns, true to the oracle', async ({ page }) => {
     const input = { omega2: 12, alpha2: -3 };
     await page.goto(`./?w2=${input.omega2}&a2=${input.alpha2}`);
