@@ -15,8 +15,113 @@ import type { CycleTable } from '../state/csv';
 import { cycleToCsv } from '../state/csv';
 import type { PngSize } from '../state/fileNames';
 import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
-import type { AngleChartInputs, ConvergenceInputs } from './chartInputs';
+import { radToDeg360 } from '../solver/angles';
+import type { Branch } from '../solver/types';
+import type { ExportSubject } from '../state/fileNames';
+import { csvFileName, pngFileName, svgFileName } from '../state/fileNames';
+import type { Messages } from '../state/messages';
+import { plotSeries } from '../worker/plotSeries';
+import type { PointResponse, TableResponse } from '../worker/protocol';
+import { decodeStatuses } from '../worker/statusCodes';
+import type { AngleChartInputs, ConvergenceInputs, CycleDegrees } from './chartInputs';
+import { angleChartInputs, angleMarker, convergenceInputs } from './chartInputs';
+import type { RateChartKind } from './rateInputs';
+import { plotRates, rateChartInputs, rateMarker } from './rateInputs';
+import type { ShownFrame } from './useExports';
 import type { RateChartInputs } from './rateInputs';
+
+/** Logical (CSS pixel) size of exported angle and rate plots. */
+export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
+/** Device pixels the exported rate curves are solved at: the 640 px chart at 2x. */
+const RATE_EXPORT_PIXELS = 2 * ANGLE_EXPORT_SIZE.width;
+/** Logical (CSS pixel) size of the exported convergence plot. */
+export const CONVERGENCE_EXPORT_SIZE = { width: 560, height: 340 } as const;
+
+/** What a PNG or SVG export draws: the frame on screen, the NR runs, the plotted angles, the strings, the canvas size. */
+export interface ExportContext {
+  frame: ShownFrame;
+  /** The worker's point answer (NR runs for the convergence plot). */
+  point: PointResponse | null;
+  deg: CycleDegrees | null;
+  t: Messages;
+  /** The linkage PNG and SVG are drawn at the on-screen canvas size (CSS pixels). */
+  canvasSize: { width: number; height: number };
+}
+
+/**
+ * The exported ω or α plot (both links in one chart, as the page's "Together" layout) for the frame on screen: the
+ * curves solved on the main thread at the export's resolution (they are not solved while no rate plot shows), for
+ * the input motion as set and the direction the input turns, the other branch faint when the ghost shows.
+ */
+export function rateExport(subject: 'omega' | 'alpha', frame: ShownFrame, t: Messages) {
+  const s = frame.state;
+  const chart: RateChartKind = subject === 'omega' ? 'omegaBoth' : 'alphaBoth';
+  const branches: Branch[] = s.showGhost ? ['open', 'crossed'] : [s.branch];
+  const input = { omega2: s.omega2RadPerS, alpha2: s.alpha2RadPerS2 };
+  const plot = plotSeries(s.linkage, RATE_EXPORT_PIXELS, branches, { method: s.method, tol: s.tol }, input);
+  return {
+    inputs: rateChartInputs(chart, plotRates(plot, s.direction), s.branch, s.showGhost, t),
+    marker: rateMarker(chart, radToDeg360(frame.marker.theta2Rad), frame.motion ? frame.motion.rates : null),
+  };
+}
+
+/** Builds and downloads the PNG of a subject at a size: the linkage as on screen, a plot at its export size. */
+export async function exportPng(subject: ExportSubject, size: PngSize, c: ExportContext): Promise<void> {
+  const { state: s, marker, scene } = c.frame;
+  let bytes: Uint8Array;
+  if (subject === 'linkage') {
+    bytes = await linkagePng(scene, s.view, c.canvasSize.width, c.canvasSize.height, size);
+  } else if (subject === 'convergence') {
+    const { width, height } = CONVERGENCE_EXPORT_SIZE;
+    bytes = await convergencePng(convergenceInputs(c.point, s.nrStart, c.t), width, height, size);
+  } else if (subject === 'omega' || subject === 'alpha') {
+    const { width, height } = ANGLE_EXPORT_SIZE;
+    const r = rateExport(subject, c.frame, c.t);
+    bytes = await rateChartPng(r.inputs, r.marker, width, height, size);
+  } else {
+    const { width, height } = ANGLE_EXPORT_SIZE;
+    const inputs = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
+    bytes = await angleChartPng(inputs, angleMarker(subject, marker), width, height, size);
+  }
+  downloadPng(bytes, pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size));
+}
+
+/** Builds and downloads the SVG of a subject (text as text). */
+export function exportSvg(subject: ExportSubject, c: ExportContext): void {
+  const { state: s, marker, scene } = c.frame;
+  let text: string;
+  if (subject === 'linkage') {
+    text = linkageSvg(scene, s.view, c.canvasSize.width, c.canvasSize.height);
+  } else if (subject === 'convergence') {
+    const { width, height } = CONVERGENCE_EXPORT_SIZE;
+    text = convergenceSvg(convergenceInputs(c.point, s.nrStart, c.t), width, height);
+  } else if (subject === 'omega' || subject === 'alpha') {
+    const { width, height } = ANGLE_EXPORT_SIZE;
+    const r = rateExport(subject, c.frame, c.t);
+    text = rateChartSvg(r.inputs, r.marker, width, height);
+  } else {
+    const { width, height } = ANGLE_EXPORT_SIZE;
+    const inputs = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
+    text = angleChartSvg(inputs, angleMarker(subject, marker), width, height);
+  }
+  downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
+}
+
+/** Downloads the full n-point table as the cycle CSV. */
+export function exportCsv(tbl: TableResponse): void {
+  downloadCsv(
+    {
+      theta2Deg: tbl.theta2Deg,
+      theta3Rad: tbl.theta3Rad,
+      theta4Rad: tbl.theta4Rad,
+      status: decodeStatuses(tbl.statusCodes),
+      iterations: tbl.iterations,
+      residual: tbl.residual,
+      motion: tbl.motion ?? null,
+    },
+    csvFileName(tbl.linkage, tbl.branch, tbl.samples),
+  );
+}
 
 /** Draws the linkage scene at width x height CSS pixels into a new canvas at the export size; returns PNG bytes with DPI. */
 export async function linkagePng(

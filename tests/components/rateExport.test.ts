@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { frameMotion } from '../../src/components/frameMotion';
 import { localPose } from '../../src/components/localPose';
 import type { ShownFrame } from '../../src/components/useExports';
-import { rateExport } from '../../src/components/useExports';
+import { rateExport } from '../../src/components/exporters';
 import { degToRad } from '../../src/solver/angles';
 import { DEFAULT_STATE } from '../../src/state/appState';
 import type { AppState } from '../../src/state/appState';
