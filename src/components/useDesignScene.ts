@@ -37,7 +37,8 @@ export function useDesignScene(state: AppState, local: LocalPose, design: Design
       deadCentres: dead,
       swingText,
       instantCentres: centres,
-      offscreenText: (name, x, y) => t.offscreenCentre(name, formatNumber(x, 3), formatNumber(y, 3)),
+      offscreenText: (name, at) =>
+        at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3)) : t.centreAtInfinity(name),
     }),
     [muBandLoDeg, muBandHiDeg, dead, swingText, centres, t],
   );

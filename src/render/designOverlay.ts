@@ -1,7 +1,8 @@
 /**
  * The design overlay of the linkage canvas (issue 10): faint outlines of the two dead-centre poses with the
  * rocker's swing arc, and the instant centres I13 and I24 with their construction lines, each off-screen
- * centre shown by an arrow at the canvas edge. layoutDesign places it in CSS pixels, designLabels asks the
+ * centre shown by an arrow at the canvas edge (a centre at infinity, where its two lines are parallel, by an
+ * arrow along them). layoutDesign places it in CSS pixels, designLabels asks the
  * scene's label placement for its texts, drawDesignUnder / drawDesignOver paint it below and above the pose.
  */
 import type { DrawContext } from './drawContext';
@@ -31,8 +32,8 @@ export interface SceneDesign {
   swingText: string;
   /** Instant centres of the pose (length unit, null at infinity); null hides them. */
   instantCentres: { I13: Point | null; I24: Point | null } | null;
-  /** Label of an off-screen centre at the canvas edge, from its name and world coordinates. */
-  offscreenText: (name: CentreName, x: number, y: number) => string;
+  /** Label of an off-screen centre at the canvas edge, from its name and world point (null: at infinity). */
+  offscreenText: (name: CentreName, at: Point | null) => string;
 }
 
 /** An off-screen point's marker: where on the inset canvas edge it sits and the direction (screen radians) to the point. */
@@ -41,10 +42,13 @@ export interface EdgeMarker {
   dirRad: number;
 }
 
-/** One instant centre on screen: its point (CSS pixels), world point, its construction lines and edge marker. */
+/**
+ * One instant centre on screen: its point (CSS pixels), world point, its construction lines and edge marker. A
+ * centre at infinity (world null) has a point far along its parallel lines, so it always has an edge marker.
+ */
 export interface CentreLayout {
   name: CentreName;
-  world: Point;
+  world: Point | null;
   p: Px;
   /** Null when the point is on the canvas (inside the edge inset). */
   edge: EdgeMarker | null;
@@ -170,9 +174,24 @@ export function layoutDesign(
   if (ic && joints.B) {
     const B = joints.B;
     const add = (name: CentreName, world: Point | null, pairs: [Px, Px][]) => {
-      if (!world) return;
-      const p = px(v, world);
       const lines: [Px, Px][] = [];
+      if (!world) {
+        // At infinity: the two lines are parallel. Draw them across the canvas; the marker points along them.
+        const [a, b] = pairs[0];
+        const len = Math.hypot(b.x - a.x, b.y - a.y);
+        if (!(len > 0)) return;
+        const reach = (2 * (clipRect.width + clipRect.height)) / len;
+        for (const [c, d] of pairs) {
+          const s = clipLine(c, d, clipRect, -reach, reach);
+          if (s) lines.push(s);
+        }
+        const far = 1e7 / len;
+        const mid = { x: rect.x + rect.width / 2, y: rect.y + rect.height / 2 };
+        const p = { x: mid.x + (b.x - a.x) * far, y: mid.y + (b.y - a.y) * far };
+        centres.push({ name, world: null, p, edge: edgeMarker(p, rect, STROKES.edgeInset), lines });
+        return;
+      }
+      const p = px(v, world);
       for (const [a, b] of pairs) {
         const s = spanClipped(a, b, p, clipRect);
         if (s) lines.push(s);
@@ -232,14 +251,15 @@ export function designLabels(design: SceneDesign, layout: DesignLayout): DesignL
     });
   }
   for (const c of layout.centres) {
-    const text = c.edge ? design.offscreenText(c.name, c.world.x, c.world.y) : c.name;
+    const text = c.edge ? design.offscreenText(c.name, c.world) : c.name;
     out.push({
       id: c.name,
       text,
       color: THEME.instantCentre,
       candidates: (w, h) => {
         if (!c.edge) return ring(c.p, STROKES.instantCentreRadius + 2, w, h);
-        // Beside the arrow, pulled inwards (opposite the direction to the point) so the box stays on the canvas.
+        // Beside the arrow, pulled inwards (opposite the direction to the point) so the box stays on the canvas,
+        // then slid to either side of the arrow when the linkage is in the way.
         const ux = -Math.cos(c.edge.dirRad);
         const uy = -Math.sin(c.edge.dirRad);
         const pts: Px[] = [];
@@ -247,6 +267,7 @@ export function designLabels(design: SceneDesign, layout: DesignLayout): DesignL
           const d = gap + halfExtentAlong(ux, uy, w, h);
           const base = { x: c.edge.at.x + ux * d, y: c.edge.at.y + uy * d };
           pts.push(base, ...ring(c.edge.at, STROKES.edgeArrow, w, h));
+          for (const slide of [16, -16, 32, -32, 56, -56]) pts.push({ x: base.x - uy * slide, y: base.y + ux * slide });
         }
         return pts;
       },

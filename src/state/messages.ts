@@ -94,6 +94,8 @@ export interface Messages {
   swingLabel: (deg: string) => string;
   /** Canvas edge marker of an off-screen instant centre: "I13 (12.3, −4.5)". */
   offscreenCentre: (name: string, x: string, y: string) => string;
+  /** Canvas label of an instant centre at infinity (its two lines are parallel), beside the arrow along them. */
+  centreAtInfinity: (name: string) => string;
   sectionPlots: string;
 
   /** Accessible names of the fields and sliders; English ones begin with r1..r4 and θ2. */

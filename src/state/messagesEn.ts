@@ -84,6 +84,7 @@ export const messagesEn: Messages = {
   markFolded: 'fold.',
   swingLabel: (deg) => `swing ${deg}`,
   offscreenCentre: (name, x, y) => `${name} (${x}, ${y})`,
+  centreAtInfinity: (name) => `${name} at ∞`,
   sectionPlots: 'Plots',
 
   fieldLabels: {

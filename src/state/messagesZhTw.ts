@@ -84,6 +84,7 @@ export const messagesZhTw: Messages = {
   markFolded: '摺疊',
   swingLabel: (deg) => `擺角 ${deg}`,
   offscreenCentre: (name, x, y) => `${name}（${x}, ${y}）`,
+  centreAtInfinity: (name) => `${name} 在無窮遠`,
   sectionPlots: '圖表',
 
   fieldLabels: {

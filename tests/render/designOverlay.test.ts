@@ -74,7 +74,7 @@ function designFor(t: (typeof LINKAGES)[number], dc: boolean): SceneDesign {
     deadCentres: dc && m.output ? [m.output.extended, m.output.folded] : null,
     swingText: 'swing 48.54°',
     instantCentres: null,
-    offscreenText: (n, x, y) => `${n} (${x.toFixed(1)}, ${y.toFixed(1)})`,
+    offscreenText: (n, at) => (at ? `${n} (${at.x.toFixed(1)}, ${at.y.toFixed(1)})` : `${n} at ∞`),
   };
 }
 
@@ -130,6 +130,39 @@ describe('layoutScene with the design overlay', () => {
     }
     expect(offscreen).toBeGreaterThan(0);
     expect(onscreen).toBeGreaterThan(0);
+  });
+
+  it('shows the centres of a parallelogram at infinity: lines parallel to their links, an arrow along them, a label', () => {
+    const para = LINKAGES[2];
+    let checked = 0;
+    for (const s0 of sweepScenes(para, 'open', 'en', 20)) {
+      if (!s0.pose) continue;
+      const ic = instantCenters(para.linkage, s0.theta2, s0.pose);
+      // Crank parallel to rocker and coupler parallel to ground (the open branch is a parallelogram up to its
+      // change point at 180 degrees, an antiparallelogram after it): both centres at infinity.
+      if (ic.I13 !== null || ic.I24 !== null) continue;
+      const s = { ...s0, design: { ...designFor(para, false), instantCentres: ic } };
+      const v = fitView(s.bounds, 652, 368, { zoom: 1, panX: 0, panY: 0 });
+      const lay = layoutScene(s, v, measureModel);
+      const centres = lay.design!.centres;
+      expect(centres.map((c) => c.name)).toEqual(['I13', 'I24']);
+      for (const c of centres) {
+        expect(c.world).toBeNull();
+        expect(c.edge).not.toBeNull();
+        // Independent direction: I13 lies along the crank O2A, I24 along the coupler AB (screen y down).
+        const A = { x: para.linkage.r2 * Math.cos(s0.theta2), y: para.linkage.r2 * Math.sin(s0.theta2) };
+        const dir = c.name === 'I13' ? Math.atan2(-A.y, A.x) : Math.atan2(-(s0.pose.B.y - A.y), s0.pose.B.x - A.x);
+        expect(Math.abs(Math.sin(c.edge!.dirRad - dir))).toBeLessThan(1e-9);
+        expect(c.lines).toHaveLength(2);
+        for (const [p, q] of c.lines)
+          expect(Math.abs(Math.sin(Math.atan2(q.y - p.y, q.x - p.x) - dir))).toBeLessThan(1e-9);
+        const label = lay.labels.find((l) => l.id === c.name);
+        expect(label?.text).toBe(`${c.name} at ∞`);
+        expect(lay.dropped).not.toContain(c.name);
+      }
+      checked++;
+    }
+    expect(checked).toBeGreaterThan(6);
   });
 
   it('turns the mu label to the warning colour exactly when mu leaves the band', () => {
