@@ -3,9 +3,9 @@
  * (6-2-5-5, open) for a run of r3 values, then times the JavaScript of updating the two separate angle
  * plots (inputs, curves and marker) for each step, the way AnglePlotsPanel does when an r3 answer arrives.
  */
-import { cycleDegrees } from '../../src/components/chartInputs';
+import { plotDegrees } from '../../src/components/chartInputs';
 import { adaptiveGrid, degToRad, radToDeg, solveClosedForm, sweep } from '../../src/solver';
-import type { CycleResponse, PointResponse } from '../../src/worker/protocol';
+import type { PlotSeries, PointResponse } from '../../src/worker/protocol';
 import { makeAnglePlots } from './plots';
 
 /** Result of one run: milliseconds of JS per r3 step. */
@@ -13,19 +13,22 @@ export interface BenchRun {
   msPerUpdate: number[];
 }
 
-function fakeCycle(r3: number, pixels: number): { cycle: CycleResponse; point: PointResponse } {
+function fakeCycle(r3: number, pixels: number): { plot: PlotSeries; point: PointResponse } {
   const l = { r1: 6, r2: 2, r3, r4: 5 };
   const grid = adaptiveGrid(l, { pixels, branches: ['open'] });
   const r = sweep(l, grid, { branch: 'open', method: 'closed-form' });
-  const plot = { theta2Deg: grid.map(radToDeg), open: { theta3: r.theta3, theta4: r.theta4 }, crossed: null };
+  const plot: PlotSeries = {
+    theta2Deg: grid.map(radToDeg),
+    open: { theta3: r.theta3, theta4: r.theta4 },
+    crossed: null,
+  };
   const theta2Rad = degToRad(45);
   const pose = solveClosedForm(l, theta2Rad, 'open');
-  const cycle = { plot } as unknown as CycleResponse;
   const point = {
     theta2Rad,
     pose: pose ? { theta3: pose.theta3, theta4: pose.theta4 } : null,
   } as unknown as PointResponse;
-  return { cycle, point };
+  return { plot, point };
 }
 
 async function run(steps: number, width: number, height: number): Promise<BenchRun> {
@@ -35,7 +38,7 @@ async function run(steps: number, width: number, height: number): Promise<BenchR
   const msPerUpdate: number[] = [];
   for (const c of cases) {
     const t0 = performance.now();
-    plots.update(cycleDegrees(c.cycle), c.point);
+    plots.update(plotDegrees(c.plot), c.point);
     msPerUpdate.push(performance.now() - t0);
     // One frame between steps, as between two worker answers.
     await new Promise((r) => requestAnimationFrame(r));

@@ -56,9 +56,8 @@ export function plotDegrees(plot: PlotSeries): CycleDegrees {
   return { theta2Deg: plot.theta2Deg, open: branch(plot.open), crossed: branch(plot.crossed) };
 }
 
-/** Converts a cycle's angles to wrapped degrees for plotting: its adaptive plot samples when it has them. */
+/** A cycle's angles on its view grid in wrapped degrees (what the plots show while no plot is solved). */
 export function cycleDegrees(cycle: CycleResponse): CycleDegrees {
-  if (cycle.plot) return plotDegrees(cycle.plot);
   return {
     theta2Deg: cycle.theta2Deg,
     open: { theta3: toWrappedDeg(cycle.open.theta3), theta4: toWrappedDeg(cycle.open.theta4) },

@@ -44,7 +44,7 @@ export function solverStatusText(
 
 /**
  * What the visible views need from the worker's cycle solve (anything not shown is not computed). The plots are
- * solved on the main thread (usePlotSeries), so the worker is never asked for plot samples.
+ * solved on the main thread (usePlotSeries).
  */
 export interface CycleNeeds {
   solver: MethodChoice;
@@ -86,8 +86,6 @@ export function useCycle(
         branch,
         otherBranch,
         curves,
-        plotPixels: 0,
-        rates: null,
       })
       .then(
         (r) => {

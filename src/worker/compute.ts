@@ -17,7 +17,7 @@ import {
 import type { InputMotion } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
-import { plotSeries, sweepOptions } from './plotSeries';
+import { sweepOptions } from './plotSeries';
 import { encodeStatuses } from './statusCodes';
 import type {
   BranchCycle,
@@ -115,16 +115,14 @@ function branchCycle(
 
 /**
  * Solves the cycle the view draws: the classification, the chosen branch (and the other when shown or
- * when the input rocks) on a uniform grid of min(samples, VIEW_SAMPLES_MAX) intervals, the coupler
- * curves and the plot samples. The whole samples + 1 table is computeTable's. Throws for bad params.
+ * when the input rocks) on a uniform grid of min(samples, VIEW_SAMPLES_MAX) intervals, and the coupler
+ * curves. The plots are solved on the main thread (plotSeries); the whole samples + 1 table is computeTable's.
+ * Throws for bad params.
  */
 export function computeCycle(req: CycleParams): CycleResponse {
   const t0 = performance.now();
   const classification = classify(req.linkage);
   checkSamples(req.samples);
-  if (!(req.plotPixels >= 0 && req.plotPixels <= 100_000)) {
-    throw new Error(`plotPixels must be a pixel count from 0 to 100000, got ${String(req.plotPixels)}`);
-  }
   const n = Math.min(req.samples, VIEW_SAMPLES_MAX);
   const { deg: theta2Deg, rad: theta2Rad } = uniformGrid(n);
   // The other branch only when something shows it; a rocking input needs both (it changes branch at its limits).
@@ -138,9 +136,6 @@ export function computeCycle(req: CycleParams): CycleResponse {
     : skippedCycle(n + 1);
   // The curves follow the screen, not the samples the user chose: always VIEW_SAMPLES_MAX per turn.
   const curves = req.curves ? couplerCurves(req.linkage, classification, req.coupler, VIEW_SAMPLES_MAX) : [];
-  const branches = (['open', 'crossed'] as const).filter((b) => b === req.branch || req.otherBranch);
-  const plot =
-    req.plotPixels > 0 ? plotSeries(req.linkage, req.plotPixels, branches, req.solver, req.rates ?? null) : null;
   let points = 0;
   let iterations = 0;
   for (const b of [open, crossed]) {
@@ -148,7 +143,6 @@ export function computeCycle(req: CycleParams): CycleResponse {
     iterations += b.totalIterations;
   }
   for (const c of curves) points += c.x.length;
-  if (plot) points += plot.theta2Deg.length * branches.length;
   return {
     linkage: { ...req.linkage },
     coupler: { ...req.coupler },
@@ -158,7 +152,6 @@ export function computeCycle(req: CycleParams): CycleResponse {
     open,
     crossed,
     curves,
-    plot,
     solver: { ...req.solver },
     work: { points, iterations },
     elapsedMs: performance.now() - t0,

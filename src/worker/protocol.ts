@@ -40,10 +40,6 @@ export interface CycleParams {
   otherBranch: boolean;
   /** Coupler curves only when the trace is shown. */
   curves: boolean;
-  /** Device-pixel width of the angle plots; 0 when no plot is visible (no plot sampling at all). */
-  plotPixels: number;
-  /** Input motion of the rate plots (rad/s, rad/s²): the plot samples get rates only when given and plotPixels > 0. */
-  rates?: InputMotion | null;
 }
 
 /** One pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
@@ -111,7 +107,10 @@ export interface PlotBranch {
   rates?: RateSeries | null;
 }
 
-/** Angle plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). */
+/**
+ * Plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). Solved
+ * on the main thread (worker/plotSeries.ts, usePlotSeries), not asked of the worker.
+ */
 export interface PlotSeries {
   theta2Deg: Float64Array;
   /** Null when that branch is not shown. */
@@ -148,8 +147,6 @@ export interface CycleResponse {
   open: BranchCycle;
   crossed: BranchCycle;
   curves: CouplerCurve[];
-  /** Plot samples, or null when no plot is visible. */
-  plot: PlotSeries | null;
   solver: MethodChoice;
   work: WorkCount;
   elapsedMs: number;

@@ -13,13 +13,13 @@ export interface WatchdogOptions {
 /** Default budgets: generous, so a busy laptop never trips them; a dead worker is noticed within seconds. */
 export const DEFAULT_WATCHDOG: WatchdogOptions = { startMs: 5000, baseMs: 1500, perPointMs: 0.02, labStageMs: 20_000 };
 
-/** Watchdog budget of a call (ms), from an upper bound of the points it solves (the plot grid refines up to 8x). */
+/** Watchdog budget of a call (ms), from an upper bound of the points it solves (both branches of a cycle). */
 export function budgetMs(type: SolverMethod, params: unknown, w: WatchdogOptions): number {
   if (type === 'lab') return w.labStageMs;
   const p = params as Partial<CycleParams & TableParams>;
   const samples = Number(p.samples) || 0;
   const points =
-    type === 'cycle' ? 2 * (samples + 1) + 16 * (Number(p.plotPixels) || 0) : type === 'table' ? samples : 8;
+    type === 'cycle' ? 2 * (samples + 1) : type === 'table' ? samples : 8;
   return w.baseMs + w.perPointMs * points;
 }
 

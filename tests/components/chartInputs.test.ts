@@ -2,11 +2,17 @@ import { describe, expect, it } from 'vitest';
 import type { AngleSeries } from '../../src/charts/angleChart';
 import { angleChartSize, angleFrame, markerGeometry, seriesPath } from '../../src/charts/angleChart';
 import type { AngleChartKind } from '../../src/components/chartInputs';
-import { angleChartInputs, angleMarker, convergenceInputs, cycleDegrees } from '../../src/components/chartInputs';
+import {
+  angleChartInputs,
+  angleMarker,
+  convergenceInputs,
+  cycleDegrees,
+  plotDegrees,
+} from '../../src/components/chartInputs';
 import type { Branch } from '../../src/solver/types';
 import { messagesEn } from '../../src/state/messagesEn';
 import { COLORS } from '../../src/theme/tokens';
-import type { CycleResponse, NewtonSummary, PointResponse } from '../../src/worker/protocol';
+import type { CycleResponse, NewtonSummary, PlotSeries, PointResponse } from '../../src/worker/protocol';
 import type { LinkLengths, Sigma } from '../oracle/reference';
 import { deg, exactToDeg, referenceAngles } from '../oracle/reference';
 
@@ -42,15 +48,23 @@ function oracleDeg(l: LinkLengths, theta2Deg: number, branch: Branch, key: 'thet
   return Number.isNaN(r) ? Number.NaN : exactToDeg(r);
 }
 
-/** A cycle answer as the worker sends it, its angles from the oracle; the fields the charts do not read are left out. */
-function oracleCycle(l: LinkLengths, withPlot: boolean): CycleResponse {
-  const branch = (b: Branch) => ({
+/** Both branches' angles on the grid from the oracle (radians). */
+function oracleBranch(l: LinkLengths, b: Branch) {
+  return {
     theta3: GRID_DEG.map((t) => oracleRad(l, t, b, 'theta3')),
     theta4: GRID_DEG.map((t) => oracleRad(l, t, b, 'theta4')),
-  });
-  const cycle = { theta2Deg: GRID_DEG, open: branch('open'), crossed: branch('crossed'), plot: null };
-  const plot = { theta2Deg: GRID_DEG, open: branch('open'), crossed: branch('crossed') };
-  return { ...cycle, plot: withPlot ? plot : null } as unknown as CycleResponse;
+  };
+}
+
+/** A cycle answer as the worker sends it, its angles from the oracle; the fields the charts do not read are left out. */
+function oracleCycle(l: LinkLengths): CycleResponse {
+  const cycle = { theta2Deg: GRID_DEG, open: oracleBranch(l, 'open'), crossed: oracleBranch(l, 'crossed') };
+  return cycle as unknown as CycleResponse;
+}
+
+/** Plot samples as the main thread solves them, on the same grid, from the oracle. */
+function oraclePlot(l: LinkLengths): PlotSeries {
+  return { theta2Deg: GRID_DEG, open: oracleBranch(l, 'open'), crossed: oracleBranch(l, 'crossed') };
 }
 
 /** A pose answer at theta2 degrees with the oracle's angles on the branch; no NR runs. */
@@ -86,7 +100,7 @@ describe('angleChartInputs', () => {
     ['double rocker', DOUBLE_ROCKER],
   ] as const) {
     for (const withPlot of [false, true]) {
-      const deg3 = cycleDegrees(oracleCycle(l, withPlot));
+      const deg3 = withPlot ? plotDegrees(oraclePlot(l)) : cycleDegrees(oracleCycle(l));
       const source = withPlot ? 'plot samples' : 'cycle table';
       it(`feeds the theta3 chart theta3 and the theta4 chart theta4 (${name}, ${source})`, () => {
         for (const branch of ['open', 'crossed'] as const) {
@@ -103,7 +117,7 @@ describe('angleChartInputs', () => {
   }
 
   it('puts theta3 then theta4 in the combined chart, each the other branch faint first when asked', () => {
-    const d = cycleDegrees(oracleCycle(CRANK_ROCKER, true));
+    const d = plotDegrees(oraclePlot(CRANK_ROCKER));
     const both = angleChartInputs('both', d, 'crossed', true, messagesEn).data.series;
     expect(both.map((s) => [s.label.startsWith('θ3') ? 'θ3' : 'θ4', s.faint === true])).toEqual([
       ['θ3', true],
@@ -118,7 +132,7 @@ describe('angleChartInputs', () => {
   });
 
   it('draws theta3 in the coupler colour and theta4 in the rocker colour, as the links are drawn', () => {
-    const d = cycleDegrees(oracleCycle(CRANK_ROCKER, false));
+    const d = cycleDegrees(oracleCycle(CRANK_ROCKER));
     const both = angleChartInputs('both', d, 'open', false, messagesEn).data.series;
     expect(both.map((s) => s.color)).toEqual([COLORS.coupler, COLORS.rocker]);
     expect(angleChartInputs('theta4', d, 'open', false, messagesEn).data.series[0].color).toBe(COLORS.rocker);
@@ -193,7 +207,7 @@ describe('angle chart marker (angleChartInputs, angleMarker, markerGeometry)', (
   for (const kind of ['theta3', 'theta4', 'both'] as AngleChartKind[]) {
     for (const branch of ['open', 'crossed'] as const) {
       it(`lies on its own curve in the ${kind} chart (${branch}, other branch shown)`, () => {
-        const inputs = angleChartInputs(kind, cycleDegrees(oracleCycle(CRANK_ROCKER, true)), branch, true, messagesEn);
+        const inputs = angleChartInputs(kind, plotDegrees(oraclePlot(CRANK_ROCKER)), branch, true, messagesEn);
         const series: AngleSeries[] = inputs.data.series;
         const frame = angleFrame(series, size);
         const paths = series.map((s) => seriesPath(inputs.data.theta2Deg, s.valuesDeg, frame));

@@ -27,7 +27,6 @@ const CYCLE = {
   branch: 'open' as const,
   otherBranch: true,
   curves: true,
-  plotPixels: 0,
 };
 const LAB = { linkage: L, branch: 'open' as const, stepDeg: 1 };
 
@@ -256,7 +255,6 @@ describe('SolverClient watchdog', () => {
     const w = DEFAULT_WATCHDOG;
     expect(budgetMs('point', point(1), w)).toBeGreaterThanOrEqual(w.baseMs);
     expect(budgetMs('cycle', { ...CYCLE, samples: 3600 }, w)).toBeGreaterThan(budgetMs('cycle', CYCLE, w));
-    expect(budgetMs('cycle', { ...CYCLE, plotPixels: 2000 }, w)).toBeGreaterThan(budgetMs('cycle', CYCLE, w));
     expect(budgetMs('table', { linkage: L, samples: 36000, branch: 'open', solver: SOLVER }, w)).toBeGreaterThan(
       budgetMs('table', { linkage: L, samples: 360, branch: 'open', solver: SOLVER }, w),
     );

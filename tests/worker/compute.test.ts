@@ -11,7 +11,6 @@ const NEEDS = {
   branch: 'open' as const,
   otherBranch: true,
   curves: true,
-  plotPixels: 0,
 };
 const POINT_NEEDS = { solver: { method: 'newton' as const, tol: null }, ghost: true, newton: true };
 
@@ -90,9 +89,6 @@ describe('bad params', () => {
       /r1 .*got 0/,
     );
     expect(() => computeCycle({ linkage: L, samples: 2.5, coupler: C, ...NEEDS })).toThrow(/samples .*got 2\.5/);
-    expect(() => computeCycle({ linkage: L, samples: 36, coupler: C, ...NEEDS, plotPixels: -1 })).toThrow(
-      /plotPixels .*got -1/,
-    );
     expect(() => computeTable({ linkage: L, samples: 0, branch: 'open', solver: NEEDS.solver })).toThrow(
       /samples .*got 0/,
     );
@@ -160,7 +156,7 @@ describe('computeTable', () => {
 });
 
 describe('computeCycle computes only what the view shows', () => {
-  it('skips the other branch, the coupler curves and the plot samples when nothing shows them', () => {
+  it('skips the other branch and the coupler curves when nothing shows them', () => {
     const lean = computeCycle({
       linkage: L,
       samples: 360,
@@ -169,23 +165,14 @@ describe('computeCycle computes only what the view shows', () => {
       otherBranch: false,
       curves: false,
     });
-    const full = computeCycle({
-      linkage: L,
-      samples: 360,
-      coupler: C,
-      ...NEEDS,
-      plotPixels: 600,
-    });
+    const full = computeCycle({ linkage: L, samples: 360, coupler: C, ...NEEDS });
     expect(lean.crossed.skipped).toBe(true);
     expect(lean.crossed.okCount).toBe(0);
     expect(lean.curves).toEqual([]);
-    expect(lean.plot).toBeNull();
-    expect(full.plot).not.toBeNull();
-    // About one plot sample per pixel for a benign crank-rocker.
-    expect(full.plot!.theta2Deg.length).toBeGreaterThanOrEqual(601);
-    expect(full.plot!.theta2Deg.length).toBeLessThan(1200);
+    expect(full.crossed.skipped).toBe(false);
+    expect(full.curves.length).toBeGreaterThan(0);
     expect(lean.work.points).toBe(361);
-    expect(full.work.points).toBeGreaterThan(2 * 361 + 2 * 600);
+    expect(full.work.points).toBeGreaterThan(2 * 361);
   });
 
   it('still sweeps both branches of a rocking input, which changes branch at its limits', () => {
@@ -198,20 +185,6 @@ describe('computeCycle computes only what the view shows', () => {
     });
     expect(r.open.skipped).toBe(false);
     expect(r.crossed.skipped).toBe(false);
-  });
-
-  it('puts the exact input limits of a triple rocker into the plot samples', () => {
-    const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
-    const r = computeCycle({
-      linkage: l,
-      samples: 360,
-      coupler: C,
-      ...NEEDS,
-      plotPixels: 400,
-    });
-    const limitDeg = 135.9513743259; // hard case 10
-    const nearest = Math.min(...Array.from(r.plot!.theta2Deg, (d) => Math.abs(d - limitDeg)));
-    expect(nearest).toBeLessThan(1e-8);
   });
 
   it('sweeps with the chosen method: the report’s NR costs more iterations than the polished continuation', () => {

@@ -10,7 +10,6 @@ const NEEDS = {
   branch: 'open' as const,
   otherBranch: false,
   curves: true,
-  plotPixels: 0,
 };
 
 /** Below this |sin(theta4 - theta3)| a pose is at a limit, where the two branches meet: either sign is right. */

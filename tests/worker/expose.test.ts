@@ -38,15 +38,15 @@ describe('expose', () => {
   it('answers { type, id, value } with every buffer of the value in the transfer list', async () => {
     const { ep, posted, send } = endpoint();
     expose(solverApi, ep);
-    const params = { ...CYCLE, otherBranch: true, curves: true, plotPixels: 300 };
+    const params = { ...CYCLE, otherBranch: true, curves: true };
     await send({ type: 'cycle', id: 4, params });
     expect(posted).toHaveLength(1);
     const { message, transfer } = posted[0];
     if (message.type !== 'cycle') throw new Error(message.type);
     expect(message.id).toBe(4);
     const arrays = typedArrays(message.value);
-    // 2 branches x 7 arrays, 2 curves x 2, the grid, the plot grid and 2 plot branches x 2.
-    expect(arrays).toHaveLength(2 * 7 + 2 * 2 + 1 + 1 + 2 * 2);
+    // 2 branches x 7 arrays, 2 curves x 2 and the grid.
+    expect(arrays).toHaveLength(2 * 7 + 2 * 2 + 1);
     for (const a of arrays) expect(transfer).toContain(a.buffer);
     expect(new Set(transfer).size).toBe(transfer.length);
   });
