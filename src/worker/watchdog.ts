@@ -18,8 +18,7 @@ export function budgetMs(type: SolverMethod, params: unknown, w: WatchdogOptions
   if (type === 'lab') return w.labStageMs;
   const p = params as Partial<CycleParams & TableParams>;
   const samples = Number(p.samples) || 0;
-  const points =
-    type === 'cycle' ? 2 * (samples + 1) : type === 'table' ? samples : 8;
+  const points = type === 'cycle' ? 2 * (samples + 1) : type === 'table' ? samples : 8;
   return w.baseMs + w.perPointMs * points;
 }
 
