@@ -14,7 +14,7 @@ import { Icon } from './Icon';
 import { MotionControls } from './MotionControls';
 import { NumberControl } from './NumberControl';
 import { Segmented } from './Segmented';
-import { Toggle } from './Toggle';
+import { FlagToggles } from './Toggle';
 
 /** Props of ControlsPanel: the state, its dispatcher, locked parameters and what the layout shows. */
 export interface ControlsPanelProps {
@@ -216,38 +216,11 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
           <h2 id="sec-display" className="section-title">
             {t.sectionDisplay}
           </h2>
-          <div className="toggles">
-            <Toggle
-              label={t.showGrid}
-              checked={state.showGrid}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGrid', value: v })}
-            />
-            <Toggle
-              label={t.showAngles}
-              checked={state.showAngles}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showAngles', value: v })}
-            />
-            <Toggle
-              label={t.showGhost}
-              checked={state.showGhost}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showGhost', value: v })}
-            />
-            <Toggle
-              label={t.showTrace}
-              checked={state.showTrace}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showTrace', value: v })}
-            />
-            <Toggle
-              label={t.showDeadCentres}
-              checked={state.showDeadCentres}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showDeadCentres', value: v })}
-            />
-            <Toggle
-              label={t.showInstantCentres}
-              checked={state.showInstantCentres}
-              onChange={(v) => dispatch({ type: 'setFlag', flag: 'showInstantCentres', value: v })}
-            />
-          </div>
+          <FlagToggles
+            flags={['showGrid', 'showAngles', 'showGhost', 'showTrace', 'showDeadCentres', 'showInstantCentres']}
+            state={state}
+            dispatch={dispatch}
+          />
           <label className="inline-field">
             <span>{t.samples}</span>
             <select

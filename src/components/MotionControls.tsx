@@ -5,7 +5,7 @@ import type { OmegaUnit } from '../state/inputMotion';
 import { ALPHA_SLIDER, OMEGA_SLIDER, OMEGA_UNITS, omegaFromUnit, omegaToUnit } from '../state/inputMotion';
 import { useMessages } from './MessagesContext';
 import { NumberControl } from './NumberControl';
-import { Toggle } from './Toggle';
+import { FlagToggles } from './Toggle';
 
 /** Props of MotionControls: the state and its dispatcher. */
 export interface MotionControlsProps {
@@ -62,18 +62,7 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
         step={ALPHA_SLIDER.step}
         onCommit={(v) => dispatch({ type: 'setInputMotion', alpha2RadPerS2: v })}
       />
-      <div className="toggles">
-        <Toggle
-          label={t.showVelocity}
-          checked={state.showVelocity}
-          onChange={(v) => dispatch({ type: 'setFlag', flag: 'showVelocity', value: v })}
-        />
-        <Toggle
-          label={t.showAcceleration}
-          checked={state.showAcceleration}
-          onChange={(v) => dispatch({ type: 'setFlag', flag: 'showAcceleration', value: v })}
-        />
-      </div>
+      <FlagToggles flags={['showVelocity', 'showAcceleration']} state={state} dispatch={dispatch} />
     </section>
   );
 }
