@@ -107,20 +107,22 @@ export function exportSvg(subject: ExportSubject, c: ExportContext): void {
   downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
 }
 
+/** The CSV writer's table from the worker's full n-point table (statuses decoded). */
+export function cycleTableOf(tbl: TableResponse): CycleTable {
+  return {
+    theta2Deg: tbl.theta2Deg,
+    theta3Rad: tbl.theta3Rad,
+    theta4Rad: tbl.theta4Rad,
+    status: decodeStatuses(tbl.statusCodes),
+    iterations: tbl.iterations,
+    residual: tbl.residual,
+    motion: tbl.motion ?? null,
+  };
+}
+
 /** Downloads the full n-point table as the cycle CSV. */
 export function exportCsv(tbl: TableResponse): void {
-  downloadCsv(
-    {
-      theta2Deg: tbl.theta2Deg,
-      theta3Rad: tbl.theta3Rad,
-      theta4Rad: tbl.theta4Rad,
-      status: decodeStatuses(tbl.statusCodes),
-      iterations: tbl.iterations,
-      residual: tbl.residual,
-      motion: tbl.motion ?? null,
-    },
-    csvFileName(tbl.linkage, tbl.branch, tbl.samples),
-  );
+  downloadCsv(cycleTableOf(tbl), csvFileName(tbl.linkage, tbl.branch, tbl.samples));
 }
 
 /** Draws the linkage scene at width x height CSS pixels into a new canvas at the export size; returns PNG bytes with DPI. */

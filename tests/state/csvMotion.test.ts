@@ -2,7 +2,7 @@ import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
 import { CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../src/state/csv';
 import { computeTable } from '../../src/worker/compute';
-import { decodeStatuses } from '../../src/worker/statusCodes';
+import { cycleTableOf } from '../../src/components/exporters';
 import { referenceMotion } from '../oracle/rates';
 
 /** The CSV the export writes for a table request with motion (the same path as useExports). */
@@ -15,15 +15,7 @@ function exportCsv(linkage: { r1: number; r2: number; r3: number; r4: number }, 
     solver: { method: 'newton', tol: null },
     motion: { input, coupler },
   });
-  const text = cycleToCsv({
-    theta2Deg: tbl.theta2Deg,
-    theta3Rad: tbl.theta3Rad,
-    theta4Rad: tbl.theta4Rad,
-    status: decodeStatuses(tbl.statusCodes),
-    iterations: tbl.iterations,
-    residual: tbl.residual,
-    motion: tbl.motion,
-  });
+  const text = cycleToCsv(cycleTableOf(tbl));
   const rows = csvParseRows(text).filter((r) => r.length > 1);
   return { header: rows[0], data: rows.slice(1), coupler, input };
 }
