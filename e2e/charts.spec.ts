@@ -137,6 +137,21 @@ test.describe('the angle and convergence charts', () => {
     }
   });
 
+  for (const br of ['open', 'crossed'] as const) {
+    test(`with the other branch hidden, the one curve drawn is the ${br} branch the marker lies on`, async ({
+      page,
+    }) => {
+      await page.goto(`./?br=${br}&ghost=0`);
+      await waitReady(page);
+      for (const name of ['θ3 against θ2', 'θ4 against θ2']) {
+        const chart = page.getByRole('img', { name });
+        await expect(chart.locator('g.lines path')).toHaveCount(1);
+        await expect.poll(() => markerDots(chart)).toBe(1);
+        for (const d of await markerOffsets(chart)) expect(d.own, `${br} ${name}`).toBeLessThan(1.5);
+      }
+    });
+  }
+
   test('r3 steps redraw the curves but not the theta2 axis', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

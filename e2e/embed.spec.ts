@@ -51,6 +51,31 @@ test.describe('the embed widget', () => {
     await expect(page.getByRole('button', { name: /^Export/ }).first()).toBeVisible();
   });
 
+  test('its plot chooser works: a link asking for velocities shows them, Angles goes back', async ({ page }) => {
+    await page.goto('./embed.html?panels=plots&plot=vel');
+    await waitReady(page);
+    const omega3 = page.getByRole('img', { name: 'ω3 against θ2' });
+    await expect(omega3).toBeVisible();
+    await expect(omega3.locator('g.lines path').last()).toHaveAttribute('d', /^M.+L/);
+    await page.getByRole('radio', { name: 'Angles' }).check();
+    await expect(page.getByRole('img', { name: 'θ3 against θ2' })).toBeVisible();
+    await expect(omega3).toHaveCount(0);
+  });
+
+  test('on a phone the plots card holds both stacked charts', async ({ page }) => {
+    await page.setViewportSize({ width: 390, height: 844 });
+    for (const plot of ['angles', 'acc']) {
+      await page.goto(`./embed.html?panels=plots&plot=${plot}`);
+      await waitReady(page);
+      const card = await page.locator('.embed-plots').boundingBox();
+      const charts = page.locator('.embed-plots svg.chart-svg');
+      await expect(charts).toHaveCount(2);
+      for (const box of [await charts.nth(0).boundingBox(), await charts.nth(1).boundingBox()]) {
+        expect(box!.y + box!.height, plot).toBeLessThanOrEqual(card!.y + card!.height);
+      }
+    }
+  });
+
   test('the app copies an embed code for a sandboxed iframe', async ({ page, context }) => {
     await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: ORIGIN });
     await page.goto('./');

@@ -33,10 +33,7 @@ export interface AngleSeries {
 }
 
 /** Data of an angle chart: theta2 samples in degrees (0 to 360) and the curves. */
-export interface AngleChartData {
-  theta2Deg: ArrayLike<number>;
-  series: AngleSeries[];
-}
+export type AngleChartData = Theta2ChartData<AngleSeries>;
 
 /** Texts of an angle chart. */
 export interface AngleChartText {

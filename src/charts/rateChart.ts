@@ -1,8 +1,7 @@
 import { quantileSorted } from 'd3-array';
 import type { Selection } from 'd3-selection';
-import type { AngleChartSize, AngleFrame, Theta2Chart } from './angleChart';
+import type { AngleChartOptions, AngleChartSize, AngleFrame, Theta2Chart, Theta2ChartData } from './angleChart';
 import { createTheta2Chart, drawChart, plotIndices } from './angleChart';
-import type { Margins } from './chartFrame';
 import { estimateTextWidth, minus } from './chartFrame';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { LinearScale } from './scales';
@@ -19,29 +18,10 @@ export interface RateSeries {
 }
 
 /** Data of a rate chart: theta2 samples in degrees (0 to 360) and the curves. */
-export interface RateChartData {
-  theta2Deg: ArrayLike<number>;
-  series: RateSeries[];
-}
+export type RateChartData = Theta2ChartData<RateSeries>;
 
-/** Texts of a rate chart. */
-export interface RateChartText {
-  title: string;
-  xLabel: string;
-  yLabel: string;
-}
-
-/** Options of createRateChart; sizes in CSS pixels, defaults as the angle chart's (angleChartSize). */
-export interface RateChartOptions extends RateChartText {
-  width: number;
-  height: number;
-  margins?: Margins;
-  xTickSpacing?: number;
-  xMaxTicks?: number;
-  yTickSpacing?: number;
-  /** A box laid over the SVG to draw the marker in (on screen); default inside the SVG. */
-  markerHost?: HTMLElement;
-}
+/** Options of createRateChart: the angle chart's (sizes in CSS pixels, its defaults). */
+export type RateChartOptions = AngleChartOptions;
 
 /** The marker: current theta2 (degrees) and each solid series' current value (NaN when undetermined). */
 export interface RateMarker {

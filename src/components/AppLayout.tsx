@@ -15,7 +15,6 @@ import { LanguageSelect } from './LanguageSelect';
 import { MotionPanel } from './MotionPanel';
 import { MessagesContext } from './MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
-import { plotRates } from './rateInputs';
 import { SharePanel } from './SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
@@ -72,14 +71,13 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, true);
   const t = getMessages(state.locale);
   const onLab = state.page === 'lab';
-  const { deg, rangeDeg, rocking } = useCycleFacts(cycle, plot);
+  const { deg, rates, rangeDeg, rocking } = useCycleFacts(cycle, plot, state.direction);
   // The numbers panel follows the state (a few times a second while playing); the canvas and the plot
   // markers follow every frame through the FramePoseProvider below.
   const { local } = useLinkagePose(state, false);
   const motion = useFrameMotion(state, local);
   const design = useDesignMetrics(state.linkage, state.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const rates = useMemo(() => plotRates(plot?.plot ?? null, state.direction), [plot, state.direction]);
   const { shown, onShown } = useShownFrame();
   const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
   const [playhead] = useState(() => new Playhead());

@@ -80,7 +80,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, numbersShown);
   const t = getMessages(state.locale);
-  const { deg, rangeDeg, rocking } = useCycleFacts(cycle, plot);
+  const { deg, rates, rangeDeg, rocking } = useCycleFacts(cycle, plot, state.direction);
   const design = useDesignMetrics(state.linkage, state.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { shown, onShown } = useShownFrame();
@@ -174,6 +174,8 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
                   layout={state.plotLayout}
                   dispatch={dispatch}
                   xMarks={xMarks}
+                  kind={state.plotKind}
+                  rates={rates}
                 />
               </section>
             ) : null}

@@ -30,19 +30,21 @@ export interface SolvedPlot {
  */
 export function usePlotSeries(linkage: Linkage, needs: PlotNeeds): SolvedPlot | null {
   const { r1, r2, r3, r4 } = linkage;
-  const { plotPixels, branch, otherBranch, rates } = needs;
+  const { plotPixels, rates } = needs;
+  // With both branches drawn the branch choice does not change the solve: no re-solve on a branch switch.
+  const only: Branch | null = needs.otherBranch ? null : needs.branch;
   const { method, tol } = needs.solver;
   const omega2 = rates ? rates.omega2 : null;
   const alpha2 = rates ? rates.alpha2 : null;
   return useMemo(() => {
     if (!(plotPixels > 0)) return null;
     const l = { r1, r2, r3, r4 };
-    const branches: Branch[] = otherBranch ? ['open', 'crossed'] : [branch];
+    const branches: Branch[] = only ? [only] : ['open', 'crossed'];
     const motion = omega2 !== null && alpha2 !== null ? { omega2, alpha2 } : null;
     try {
       return { linkage: l, plot: plotSeries(l, plotPixels, branches, { method, tol }, motion) };
     } catch {
       return null;
     }
-  }, [r1, r2, r3, r4, plotPixels, branch, otherBranch, method, tol, omega2, alpha2]);
+  }, [r1, r2, r3, r4, plotPixels, only, method, tol, omega2, alpha2]);
 }
