@@ -64,7 +64,7 @@ test.describe('the embed widget', () => {
 
   test('on a phone the plots card holds both stacked charts', async ({ page }) => {
     await page.setViewportSize({ width: 390, height: 844 });
-    for (const plot of ['angles', 'acc']) {
+    for (const plot of ['ang', 'acc']) {
       await page.goto(`./embed.html?panels=plots&plot=${plot}`);
       await waitReady(page);
       const card = await page.locator('.embed-plots').boundingBox();
