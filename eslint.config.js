@@ -50,7 +50,7 @@ export default tseslint.config(
     },
   },
   {
-    files: ['src/solver/**/*.ts', 'src/lab/**/*.ts'],
+    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/lab/**/*.ts'],
     rules: {
       'no-restricted-imports': [
         'error',

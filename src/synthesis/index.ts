@@ -1,0 +1,6 @@
+/**
+ * Four-bar synthesis: function, motion and path generation, built on src/solver. Pure TypeScript: no DOM, React,
+ * d3 or worker globals. Radians throughout; lengths in any one unit. See docs/synthesis.md.
+ */
+export type { PathSolution, PathTask, PlacedFourBar, PlacedJoints, Pose } from './types';
+export { checkPlaced, fourBarFromJoints, placedCouplerPoint, placedJoints } from './placed';
