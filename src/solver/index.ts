@@ -21,7 +21,7 @@ export type {
   SweepOptions,
   SweepResult,
 } from './types';
-export { angleDiff, degToRad, radToDeg, wrapAngle } from './angles';
+export { PI, TWO_PI, angleDiff, degToRad, radToDeg, wrapAngle } from './angles';
 export { classify, inputRange } from './classify';
 export { solveClosedForm } from './closedForm';
 export { couplerPoint, jointPositions, loopResidual, transmissionAngle, velocityRatios } from './kinematics';
