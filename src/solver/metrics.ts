@@ -10,7 +10,7 @@
  * limit (s = |r3 - r4|, mu = 0), and at theta2 = pi (s = r1 + r2) or at an upper limit (s = r3 + r4,
  * mu = pi). mu does not depend on the branch: both branches close the same triangle.
  */
-import { PI, TWO_PI, wrapAngle } from './angles';
+import { PI, TWO_PI } from './angles';
 import { inputRange } from './classify';
 import { branchSign } from './closedForm';
 import { crankRockerStroke, isCrankRocker } from './deadCentres';
@@ -42,7 +42,12 @@ export interface DesignMetrics {
   timeRatio: number | null;
 }
 
-/** The reachable |theta2| (rad) as one interval [lo, hi] within [0, pi], or null when nothing assembles. */
+/**
+ * The reachable |theta2| (rad) as one interval [lo, hi] within [0, pi], or null when nothing assembles.
+ * Each bound is an end of inputRange as it is (an input angle the closed form assembles at), never a
+ * wrapped one: an end beyond pi is 2 pi - t for the other end t of its interval (the range is symmetric),
+ * and wrapping it would round at the ulp of 2 pi, far from t when t is small and possibly unreachable.
+ */
 function reachableAbs(range: InputRange): { lo: number; hi: number } | null {
   if (range.full) return { lo: 0, hi: PI };
   if (range.intervals.length === 0) return null;
@@ -53,7 +58,8 @@ function reachableAbs(range: InputRange): { lo: number; hi: number } | null {
     if (contains(0) || contains(TWO_PI) || contains(-TWO_PI)) lo = 0;
     if (contains(PI) || contains(-PI)) hi = PI;
     for (const end of [iv.lo, iv.hi]) {
-      const a = Math.abs(wrapAngle(end));
+      if (!(end >= -PI && end <= PI)) continue;
+      const a = Math.abs(end);
       lo = Math.min(lo, a);
       hi = Math.max(hi, a);
     }

@@ -8,6 +8,8 @@ import Decimal from 'decimal.js';
 import { describe, expect, it } from 'vitest';
 import type { Angles, Branch, Linkage } from '../../src/solver';
 import { designMetrics, instantCenters, solveClosedForm, velocityRatios } from '../../src/solver';
+import { referenceTransmission } from '../oracle/metrics';
+import { angleTol } from '../oracle/metricsTolerance';
 import { angleDiff, deg, referenceRockerSwing, toDeg } from '../oracle/reference';
 import { EPS } from '../oracle/tolerance';
 import { BRANCHES, CASES, sigmaOf } from './helpers';
@@ -210,6 +212,31 @@ describe('designMetrics', () => {
     expectNear(toDeg(m11.transmission.theta2AtMin), 57.9494901188, 1e-9, 'lower limit (deg)');
     expectNear(toDeg(m11.transmission.max), 154.2378459017 - 8.9299764871, 2e-10, 'mu at t2 = 180 (deg)');
     expect(m11.transmission.theta2AtMax).toBe(Math.PI);
+  });
+
+  it('puts theta2AtMin and theta2AtMax on the exact limits, at input angles where the linkage assembles', () => {
+    // A lower limit tMin gives the interval [tMin, 2 pi - tMin]; its mirror end, wrapped, is rounded at the
+    // ulp of 2 pi (8.9e-16), which for l = (2, 1, 3, 1.999999999999) is 1e5 ulps of tMin = 1e-6 and lands
+    // where the loop does not close. The limit is the half-angle form of triangle.ts (each factor an
+    // exactly rounded sum of the lengths), so it has a triangle angle's accuracy: angleTol (16 eps of the
+    // value) covers it and the one or two ulps inputRange moves it inward to where the closed form closes.
+    const family: Linkage[] = [CASES[11], CASES[12], CASES[10]];
+    for (let k = 1; k <= 13; k++) family.push({ r1: 2, r2: 1, r3: 3, r4: 2 - 10 ** -k });
+    family.push({ r1: 2, r2: 1, r3: 3, r4: 1.999999999999 });
+    for (const l of family) {
+      const tr = referenceTransmission(l)!;
+      const m = designMetrics(l, 'open').transmission;
+      const ctx = describeLinkage(l, 'open');
+      for (const [got, ref] of [
+        [m.theta2AtMin, tr.theta2AtMin],
+        [m.theta2AtMax, tr.theta2AtMax],
+      ]) {
+        expectNear(got, ref, angleTol(ref), `${ctx} theta2 of a transmission extreme`);
+        for (const b of BRANCHES) {
+          expect(solveClosedForm(l, got, b), `${ctx}: assembles at ${got} ${b}`).not.toBeNull();
+        }
+      }
+    }
   });
 
   it('handles a chain that only assembles flat and one that never assembles', () => {
