@@ -4,3 +4,18 @@
  */
 export type { PathSolution, PathTask, PlacedFourBar, PlacedJoints, Pose } from './types';
 export { checkPlaced, fourBarFromJoints, placedCouplerPoint, placedJoints } from './placed';
+export {
+  DEFAULT_BUDGET_MS,
+  DEFAULT_ROUNDS,
+  mergePathCandidates,
+  pathSynthesis,
+  pathSynthesisPart,
+} from './pathSynthesis';
+export type {
+  AbortSignalLike,
+  PathSynthesisOptions,
+  PathSynthesisPartOptions,
+  PathSynthesisPartResult,
+} from './pathSynthesis';
+export type { PathCandidate } from './globalSearch';
+export { MODEL_SIZE, couplerLocal } from './pathModel';

@@ -1,0 +1,185 @@
+/**
+ * A bounded, projected Levenberg–Marquardt method for small dense least-squares problems (tens of variables).
+ * Box bounds are handled by an active set: a variable at a bound whose descent direction points out of the box
+ * is frozen for the step, so the method converges quadratically on a face of the box as well as inside it. Other
+ * convex constraints are a projection the problem supplies; nonlinear ones are a feasibility test that rejects a
+ * trial point (the step is then shortened, then the damping raised). Marquardt's diagonal scaling makes the
+ * method invariant to the variables' units.
+ */
+
+/** A least-squares problem: minimise Σ r_i(x)² over x in a box, a convex set (project) and a feasible set. */
+export interface LeastSquaresProblem {
+  /** Number of variables. */
+  m: number;
+  /** Number of residuals. */
+  k: number;
+  /** Writes r(x) and, when J is given, the Jacobian (row-major, k × m); false where r is undefined. */
+  evaluate(x: Float64Array, r: Float64Array, J: Float64Array | null): boolean;
+  /** Box bounds per variable (±Infinity for none). */
+  lo: Float64Array;
+  hi: Float64Array;
+  /** Projects x (already inside the box) onto the problem's other convex constraints, in place. */
+  project?: (x: Float64Array) => void;
+  /** Nonlinear constraints: false rejects x. */
+  feasible?: (x: Float64Array) => boolean;
+}
+
+/** Options of levenbergMarquardt. */
+export interface LevenbergMarquardtOptions {
+  /** Iteration cap (default 200). */
+  maxIterations?: number;
+  /** Stop once Σr² is at or below this (default 0: iterate until no progress). */
+  fTarget?: number;
+}
+
+/** Result of levenbergMarquardt: the last accepted point, its Σr², and the work done. */
+export interface LevenbergMarquardtResult {
+  x: Float64Array;
+  f: number;
+  iterations: number;
+  /** Residual evaluations (Jacobians included). */
+  evaluations: number;
+}
+
+/** Cholesky solve of the m × m SPD system M y = b in place (b becomes y); false when M is not positive definite. */
+function choleskySolve(M: Float64Array, b: Float64Array, m: number): boolean {
+  for (let j = 0; j < m; j++) {
+    let d = M[j * m + j];
+    for (let k = 0; k < j; k++) d -= M[j * m + k] * M[j * m + k];
+    if (!(d > 0)) return false;
+    const l = Math.sqrt(d);
+    M[j * m + j] = l;
+    for (let i = j + 1; i < m; i++) {
+      let s = M[i * m + j];
+      for (let k = 0; k < j; k++) s -= M[i * m + k] * M[j * m + k];
+      M[i * m + j] = s / l;
+    }
+  }
+  for (let i = 0; i < m; i++) {
+    let s = b[i];
+    for (let k = 0; k < i; k++) s -= M[i * m + k] * b[k];
+    b[i] = s / M[i * m + i];
+  }
+  for (let i = m - 1; i >= 0; i--) {
+    let s = b[i];
+    for (let k = i + 1; k < m; k++) s -= M[k * m + i] * b[k];
+    b[i] = s / M[i * m + i];
+  }
+  return true;
+}
+
+function sumSquares(r: Float64Array): number {
+  let f = 0;
+  for (let i = 0; i < r.length; i++) f += r[i] * r[i];
+  return f;
+}
+
+/**
+ * Minimises Σ r(x)² from x0 (projected onto the constraints first). Returns the best feasible point found;
+ * f is Infinity when x0 itself cannot be evaluated. Never throws for an expected outcome.
+ */
+export function levenbergMarquardt(
+  p: LeastSquaresProblem,
+  x0: Float64Array,
+  options: LevenbergMarquardtOptions = {},
+): LevenbergMarquardtResult {
+  const { m, k, lo, hi } = p;
+  const maxIterations = options.maxIterations ?? 200;
+  const fTarget = options.fTarget ?? 0;
+  const x = Float64Array.from(x0);
+  const place = (y: Float64Array): void => {
+    for (let i = 0; i < m; i++) y[i] = Math.min(hi[i], Math.max(lo[i], y[i]));
+    p.project?.(y);
+  };
+  place(x);
+  let r = new Float64Array(k);
+  const J = new Float64Array(k * m);
+  let evaluations = 1;
+  if ((p.feasible && !p.feasible(x)) || !p.evaluate(x, r, J)) return { x, f: Infinity, iterations: 0, evaluations };
+  let f = sumSquares(r);
+  if (!Number.isFinite(f)) return { x, f: Infinity, iterations: 0, evaluations };
+  let rt = new Float64Array(k);
+  const xt = new Float64Array(m);
+  const g = new Float64Array(m);
+  const A = new Float64Array(m * m);
+  const M = new Float64Array(m * m);
+  const step = new Float64Array(m);
+  const free: number[] = [];
+  let lambda = 1e-3;
+  let stalls = 0;
+  let iterations = 0;
+  for (; iterations < maxIterations && f > fTarget; iterations++) {
+    g.fill(0);
+    A.fill(0);
+    for (let row = 0; row < k; row++) {
+      const o = row * m;
+      const ri = r[row];
+      for (let i = 0; i < m; i++) {
+        const ji = J[o + i];
+        if (ji === 0) continue;
+        g[i] += ji * ri;
+        for (let j = i; j < m; j++) A[i * m + j] += ji * J[o + j];
+      }
+    }
+    if (!g.every(Number.isFinite) || !A.every(Number.isFinite)) break;
+    free.length = 0;
+    let dMax = 0;
+    for (let i = 0; i < m; i++) {
+      const atLo = x[i] <= lo[i] && g[i] > 0;
+      const atHi = x[i] >= hi[i] && g[i] < 0;
+      if (!atLo && !atHi) free.push(i);
+      dMax = Math.max(dMax, A[i * m + i]);
+    }
+    const nf = free.length;
+    if (nf === 0 || dMax === 0) break;
+    const floor = 1e-14 * dMax;
+    let accepted = false;
+    const fOld = f;
+    while (lambda < 1e16) {
+      for (let a = 0; a < nf; a++) {
+        const i = free[a];
+        for (let b = a; b < nf; b++) {
+          const j = free[b];
+          const v = i <= j ? A[i * m + j] : A[j * m + i];
+          M[a * nf + b] = v;
+          M[b * nf + a] = v;
+        }
+        M[a * nf + a] += lambda * Math.max(A[i * m + i], floor) + floor;
+        step[a] = -g[i];
+      }
+      if (!choleskySolve(M, step, nf)) {
+        lambda *= 4;
+        continue;
+      }
+      // Full step first; where it leaves the feasible set, shorter steps along it.
+      for (let t = 1; t >= 0.1; t *= 0.5) {
+        xt.set(x);
+        for (let a = 0; a < nf; a++) xt[free[a]] += t * step[a];
+        place(xt);
+        evaluations++;
+        if (p.feasible && !p.feasible(xt)) continue;
+        if (!p.evaluate(xt, rt, null)) continue;
+        const ft = sumSquares(rt);
+        if (ft < f) {
+          accepted = true;
+          f = ft;
+          break;
+        }
+        break;
+      }
+      if (accepted) break;
+      lambda *= 4;
+    }
+    if (!accepted) break;
+    x.set(xt);
+    [r, rt] = [rt, r];
+    evaluations++;
+    if (!p.evaluate(x, r, J)) break;
+    f = sumSquares(r);
+    lambda = Math.max(lambda / 5, 1e-15);
+    if (fOld - f <= 1e-12 * fOld) {
+      if (++stalls >= 4) break;
+    } else stalls = 0;
+  }
+  return { x, f, iterations, evaluations };
+}

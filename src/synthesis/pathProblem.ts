@@ -1,0 +1,225 @@
+/**
+ * The path-synthesis least-squares problem over one design's variables, in normalised units (pathTask.ts):
+ * [O2x, O2y, ground angle (absent when the placement is fixed), r1, r2, r3, r4, u, v, timing…] where (u, v) is the
+ * coupler point in the coupler frame (u along AB) and the timing variables are
+ * - free: θ2 of the first target, then the advances δ2..δn ≥ 0 (Σδ ≤ 2π) in the run's turning direction;
+ * - step: θ2 of the first target;
+ * - given: none.
+ * Residuals are the 2n coordinate differences P(θ2_i) − T_i with the exact Jacobian of pathModel.ts.
+ */
+import { TWO_PI, inputRange } from '../solver';
+import type { LeastSquaresProblem } from './levenbergMarquardt';
+import { MODEL_SIZE, couplerLocal } from './pathModel';
+import type { NormalisedTask } from './pathTask';
+
+/** Variable layout of a path problem: index of each group in x. */
+export interface PathLayout {
+  /** Index of O2x (O2y and the ground angle follow), or -1 when the placement is fixed. */
+  place: number;
+  /** Index of r1 (r2, r3, r4, u, v follow). */
+  links: number;
+  /** Index of the first timing variable. */
+  timing: number;
+  /** Number of variables. */
+  m: number;
+}
+
+/** A path problem for one branch and turning direction, with the helpers that read a design off x. */
+export interface PathProblem {
+  lsq: LeastSquaresProblem;
+  layout: PathLayout;
+  /** +1 open, −1 crossed. */
+  sigma: number;
+  /** Turning direction of free timing: +1 counter-clockwise, −1 clockwise. */
+  dir: number;
+  /** θ2 at every target (radians, unwrapped, in order of travel) for the variables x. */
+  thetas(x: Float64Array, out: Float64Array): void;
+  /** O2 (normalised) and ground angle of x. */
+  placementOf(x: Float64Array): { x: number; y: number; angle: number };
+}
+
+/** The layout of a task's variables. */
+export function pathLayout(t: NormalisedTask): PathLayout {
+  const place = t.placement ? -1 : 0;
+  const links = t.placement ? 0 : 3;
+  const timing = links + 6;
+  const nt = t.timing === 'free' ? t.n : t.timing === 'step' ? 1 : 0;
+  return { place, links, timing, m: timing + nt };
+}
+
+/** Relative margin kept from the Grashof equality (a change point is not a crank: it can flip branch). */
+const CRANK_MARGIN = 1e-9;
+
+/** True when the input of r1..r4 turns fully with a margin (no limit position: Grashof, r1 or r2 shortest). */
+export function turnsFully(r1: number, r2: number, r3: number, r4: number): boolean {
+  const e = CRANK_MARGIN * (r1 + r2 + r3 + r4);
+  const t3 = r3 + r4 - r1 - r2;
+  const t1 = r1 + r3 - r2 - r4;
+  const t2 = r1 + r4 - r2 - r3;
+  return t3 > e && ((t1 > e && t2 > e) || (t1 < -e && t2 < -e));
+}
+
+/**
+ * True when every input angle from lo to hi (radians, lo ≤ hi) lies strictly inside one reachable interval of the
+ * input of r1..r4, so the motion through them meets no limit position (always true for a full turn).
+ */
+export function sweepWithinRange(r1: number, r2: number, r3: number, r4: number, lo: number, hi: number): boolean {
+  const range = inputRange({ r1, r2, r3, r4 });
+  if (range.full) return true;
+  for (const iv of range.intervals) {
+    if (!(iv.hi > iv.lo)) continue;
+    const k = Math.floor((lo - iv.lo) / TWO_PI);
+    for (const kk of [k - 1, k, k + 1]) {
+      const a = iv.lo + kk * TWO_PI;
+      const b = iv.hi + kk * TWO_PI;
+      if (lo > a && hi < b) return true;
+    }
+  }
+  return false;
+}
+
+/** The path problem of task t on branch sigma (+1 open, −1 crossed), free timing turning dir (±1). */
+export function createPathProblem(t: NormalisedTask, sigma: number, dir: number): PathProblem {
+  const layout = pathLayout(t);
+  const { m, links: L, timing: T, place } = layout;
+  const n = t.n;
+  const k = 2 * n;
+  const lo = new Float64Array(m).fill(-Infinity);
+  const hi = new Float64Array(m).fill(Infinity);
+  if (place >= 0) {
+    lo[place] = t.pivotMin.x;
+    hi[place] = t.pivotMax.x;
+    lo[place + 1] = t.pivotMin.y;
+    hi[place + 1] = t.pivotMax.y;
+  }
+  for (let j = 0; j < 4; j++) {
+    lo[L + j] = t.lenMin;
+    hi[L + j] = t.lenMax;
+  }
+  if (Number.isFinite(t.coupler)) {
+    lo[L + 4] = lo[L + 5] = -t.coupler;
+    hi[L + 4] = hi[L + 5] = t.coupler;
+  }
+  if (t.timing === 'free') {
+    for (let i = 1; i < n; i++) {
+      lo[T + i] = 0;
+      hi[T + i] = TWO_PI;
+    }
+  }
+  const placementOf = (x: Float64Array) =>
+    t.placement ? t.placement : { x: x[place], y: x[place + 1], angle: x[place + 2] };
+  const thetas = (x: Float64Array, out: Float64Array): void => {
+    if (t.timing === 'given') out.set(t.given);
+    else if (t.timing === 'step') for (let i = 0; i < n; i++) out[i] = x[T] + i * t.step;
+    else {
+      let a = x[T];
+      out[0] = a;
+      for (let i = 1; i < n; i++) out[i] = a += dir * x[T + i];
+    }
+  };
+  const th = new Float64Array(n);
+  const model = new Float64Array(MODEL_SIZE);
+  const evaluate = (x: Float64Array, r: Float64Array, J: Float64Array | null): boolean => {
+    const pl = placementOf(x);
+    const cg = Math.cos(pl.angle);
+    const sg = Math.sin(pl.angle);
+    const r1 = x[L];
+    const r2 = x[L + 1];
+    const r3 = x[L + 2];
+    const r4 = x[L + 3];
+    const u = x[L + 4];
+    const v = x[L + 5];
+    thetas(x, th);
+    if (J) J.fill(0);
+    for (let i = 0; i < n; i++) {
+      if (!couplerLocal(r1, r2, r3, r4, u, v, th[i], sigma, model)) return false;
+      const px = model[0];
+      const py = model[1];
+      r[2 * i] = pl.x + cg * px - sg * py - t.tx[i];
+      r[2 * i + 1] = pl.y + sg * px + cg * py - t.ty[i];
+      if (!J) continue;
+      const ox = 2 * i * m;
+      const oy = ox + m;
+      if (place >= 0) {
+        J[ox + place] = 1;
+        J[oy + place + 1] = 1;
+        J[ox + place + 2] = -sg * px - cg * py;
+        J[oy + place + 2] = cg * px - sg * py;
+      }
+      for (let j = 0; j < 6; j++) {
+        const dx = model[2 + 2 * j];
+        const dy = model[3 + 2 * j];
+        J[ox + L + j] = cg * dx - sg * dy;
+        J[oy + L + j] = sg * dx + cg * dy;
+      }
+      const dthx = cg * model[14] - sg * model[15];
+      const dthy = sg * model[14] + cg * model[15];
+      if (t.timing === 'step') {
+        J[ox + T] = dthx;
+        J[oy + T] = dthy;
+      } else if (t.timing === 'free') {
+        // θ_i = θ_1 + dir Σ_{j ≤ i} δ_j.
+        J[ox + T] = dthx;
+        J[oy + T] = dthy;
+        for (let j = 1; j <= i; j++) {
+          J[ox + T + j] = dir * dthx;
+          J[oy + T + j] = dir * dthy;
+        }
+      }
+    }
+    return true;
+  };
+  const project = (x: Float64Array): void => {
+    if (Number.isFinite(t.coupler)) {
+      const d = Math.hypot(x[L + 4], x[L + 5]);
+      if (d > t.coupler) {
+        x[L + 4] *= t.coupler / d;
+        x[L + 5] *= t.coupler / d;
+      }
+    }
+    if (t.timing === 'free' && n > 1) projectCappedSimplex(x, T + 1, n - 1, TWO_PI);
+  };
+  const feasible = (x: Float64Array): boolean => {
+    const r1 = x[L];
+    const r2 = x[L + 1];
+    const r3 = x[L + 2];
+    const r4 = x[L + 3];
+    if (t.crank) return turnsFully(r1, r2, r3, r4);
+    if (t.timing === 'given') {
+      thetas(x, th);
+      let a = Infinity;
+      let b = -Infinity;
+      for (const v of th) {
+        a = Math.min(a, v);
+        b = Math.max(b, v);
+      }
+      return sweepWithinRange(r1, r2, r3, r4, a, b);
+    }
+    thetas(x, th);
+    return sweepWithinRange(r1, r2, r3, r4, Math.min(th[0], th[n - 1]), Math.max(th[0], th[n - 1]));
+  };
+  return { lsq: { m, k, evaluate, lo, hi, project, feasible }, layout, sigma, dir, thetas, placementOf };
+}
+
+/** Projects x[from .. from+count) (each already in [0, cap]) onto { δ ≥ 0, Σδ ≤ cap } (Euclidean), in place. */
+export function projectCappedSimplex(x: Float64Array, from: number, count: number, cap: number): void {
+  let sum = 0;
+  for (let i = 0; i < count; i++) sum += Math.max(0, x[from + i]);
+  if (sum <= cap) {
+    for (let i = 0; i < count; i++) x[from + i] = Math.max(0, x[from + i]);
+    return;
+  }
+  // The projection onto the simplex Σδ = cap: δ_i = max(0, x_i − τ) with τ from the sorted values.
+  const v = Array.from(x.subarray(from, from + count)).sort((a, b) => b - a);
+  let acc = 0;
+  let tau = 0;
+  for (let i = 0; i < count; i++) {
+    acc += v[i];
+    const tt = (acc - cap) / (i + 1);
+    if (i === count - 1 || v[i + 1] <= tt) {
+      tau = tt;
+      break;
+    }
+  }
+  for (let i = 0; i < count; i++) x[from + i] = Math.max(0, x[from + i] - tau);
+}

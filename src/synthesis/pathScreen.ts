@@ -1,0 +1,136 @@
+/**
+ * From the global stage's local minima to answers: polish the best, read each off as a placed four-bar in the
+ * user's units, and keep only designs that honestly do the job. Each is checked with the solver itself (it
+ * assembles at every θ2 on its branch; the input turns fully when asked, or else the motion through the targets
+ * stays inside one reachable interval), held to the bounds, and its error recomputed from the design with
+ * placedCouplerPoint. Answers come best first, distinct, at most MAX_SOLUTIONS.
+ */
+import { classify, wrapAngle } from '../solver';
+import type { Point } from '../solver';
+import type { PathCandidate } from './globalSearch';
+import { EXACT_F } from './globalSearch';
+import { levenbergMarquardt } from './levenbergMarquardt';
+import { placedCouplerPoint } from './placed';
+import { createPathProblem, pathLayout, sweepWithinRange } from './pathProblem';
+import type { NormalisedTask } from './pathTask';
+import type { PathSolution, PathTask, PlacedFourBar } from './types';
+
+/** Most answers returned. */
+export const MAX_SOLUTIONS = 10;
+/** Candidates polished with a longer local solve before screening. */
+const POLISHED = 24;
+/** Iteration cap of the polishing solve. */
+const POLISH_ITERATIONS = 400;
+/** Two designs closer than this (relative to the target size, and in radians) are the same linkage. */
+const SAME_DESIGN = 1e-7;
+
+/** The user-unit design and θ2 (radians, unwrapped) of a candidate. */
+function designOf(t: NormalisedTask, task: PathTask, c: PathCandidate): { design: PlacedFourBar; theta2: number[] } {
+  const problem = createPathProblem(t, c.sigma, c.dir);
+  const x = Float64Array.from(c.x);
+  const L = problem.layout.links;
+  const pl = problem.placementOf(x);
+  const s = t.scale;
+  const b = task.bounds;
+  const clampLen = (v: number) => (b?.length ? Math.min(b.length[1], Math.max(b.length[0], v)) : v);
+  const links = {
+    r1: clampLen(s * x[L]),
+    r2: clampLen(s * x[L + 1]),
+    r3: clampLen(s * x[L + 2]),
+    r4: clampLen(s * x[L + 3]),
+  };
+  let pDist = s * Math.hypot(x[L + 4], x[L + 5]);
+  if (b?.coupler !== undefined) pDist = Math.min(pDist, b.coupler);
+  let O2: Point = task.placement
+    ? { x: task.placement.O2.x, y: task.placement.O2.y }
+    : { x: t.centre.x + s * pl.x, y: t.centre.y + s * pl.y };
+  if (b?.pivot && !task.placement) {
+    O2 = {
+      x: Math.min(b.pivot.max.x, Math.max(b.pivot.min.x, O2.x)),
+      y: Math.min(b.pivot.max.y, Math.max(b.pivot.min.y, O2.y)),
+    };
+  }
+  const th = new Float64Array(t.n);
+  problem.thetas(x, th);
+  const design: PlacedFourBar = {
+    links,
+    branch: c.sigma > 0 ? 'open' : 'crossed',
+    O2,
+    groundAngle: task.placement ? task.placement.groundAngle : wrapAngle(pl.angle),
+    pDist,
+    pAngle: pDist === 0 ? 0 : Math.atan2(x[L + 5], x[L + 4]),
+  };
+  return { design, theta2: Array.from(th) };
+}
+
+/** The solution of a candidate, or null when the design fails a check (bounds, input, assembly). */
+function solutionOf(t: NormalisedTask, task: PathTask, c: PathCandidate): PathSolution | null {
+  const { design, theta2 } = designOf(t, task, c);
+  const { r1, r2, r3, r4 } = design.links;
+  if (![r1, r2, r3, r4, design.pDist, design.O2.x, design.O2.y].every(Number.isFinite)) return null;
+  if (!(r1 > 0 && r2 > 0 && r3 > 0 && r4 > 0)) return null;
+  if (t.crank) {
+    if (!classify(design.links).inputIsCrank) return null;
+  } else if (!sweepWithinRange(r1, r2, r3, r4, Math.min(...theta2), Math.max(...theta2))) return null;
+  let error = 0;
+  let maxDistance = 0;
+  for (let i = 0; i < t.n; i++) {
+    const P = placedCouplerPoint(design, theta2[i]);
+    if (!P) return null;
+    const d = Math.hypot(P.x - task.targets[i].x, P.y - task.targets[i].y);
+    error += d * d;
+    maxDistance = Math.max(maxDistance, d);
+  }
+  return { design, theta2: theta2.map((a) => wrapAngle(a)), error, maxDistance };
+}
+
+/** True when a and b are the same linkage to rounding (size: the target set's size in the user's unit). */
+export function sameDesign(a: PlacedFourBar, b: PlacedFourBar, size: number): boolean {
+  if (a.branch !== b.branch) return false;
+  const tol = SAME_DESIGN * size;
+  const close = (p: number, q: number) => Math.abs(p - q) <= tol;
+  const closeAngle = (p: number, q: number) => Math.abs(wrapAngle(p - q)) <= SAME_DESIGN;
+  return (
+    close(a.links.r1, b.links.r1) &&
+    close(a.links.r2, b.links.r2) &&
+    close(a.links.r3, b.links.r3) &&
+    close(a.links.r4, b.links.r4) &&
+    close(a.O2.x, b.O2.x) &&
+    close(a.O2.y, b.O2.y) &&
+    closeAngle(a.groundAngle, b.groundAngle) &&
+    close(a.pDist, b.pDist) &&
+    (a.pDist <= tol || closeAngle(a.pAngle, b.pAngle))
+  );
+}
+
+/**
+ * Merges candidate lists (from one run or from several workers' slices), polishes the best, and returns the
+ * checked, distinct answers best first (at most MAX_SOLUTIONS). Deterministic in its input.
+ */
+export function screenCandidates(t: NormalisedTask, task: PathTask, lists: PathCandidate[][]): PathSolution[] {
+  const all = lists.flat().filter((c) => Number.isFinite(c.f));
+  all.sort((a, b) => a.f - b.f || a.sigma - b.sigma || a.dir - b.dir);
+  const m = pathLayout(t).m;
+  const polished: PathCandidate[] = [];
+  for (const c of all) {
+    if (polished.length >= POLISHED) break;
+    if (c.x.length !== m) continue;
+    // Skip near-copies before spending a polish on them.
+    if (polished.some((p) => p.sigma === c.sigma && p.x.every((v, i) => Math.abs(v - c.x[i]) <= 1e-6))) continue;
+    const problem = createPathProblem(t, c.sigma, c.dir);
+    const r = levenbergMarquardt(problem.lsq, Float64Array.from(c.x), {
+      maxIterations: POLISH_ITERATIONS,
+      fTarget: EXACT_F,
+    });
+    polished.push(r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c);
+  }
+  const out: PathSolution[] = [];
+  for (const c of polished) {
+    const sol = solutionOf(t, task, c);
+    if (!sol || !Number.isFinite(sol.error)) continue;
+    if (out.some((o) => sameDesign(o.design, sol.design, t.scale))) continue;
+    out.push(sol);
+  }
+  out.sort((a, b) => a.error - b.error);
+  return out.slice(0, MAX_SOLUTIONS);
+}
