@@ -262,8 +262,8 @@ function placeShape(
   x[L + 1] = k * s.r2;
   x[L + 2] = k * s.r3;
   x[L + 3] = k * s.r4;
-  x[L + 4] = k * s.u;
-  x[L + 5] = k * s.v;
+  x[L + 4] = k * Math.hypot(s.u, s.v);
+  x[L + 5] = Math.atan2(s.v, s.u);
   const T = lay.timing;
   if (t.timing === 'step') x[T] = th[0];
   else if (t.timing === 'free') {

@@ -30,6 +30,8 @@ export interface LevenbergMarquardtOptions {
   maxIterations?: number;
   /** Stop once Σr² is at or below this (default 0: iterate until no progress). */
   fTarget?: number;
+  /** Stop after the iteration that passes this time (Date.now(), ms; default never). */
+  deadline?: number;
 }
 
 /** Result of levenbergMarquardt: the last accepted point, its Σr², and the work done. */
@@ -86,6 +88,7 @@ export function levenbergMarquardt(
   const { m, k, lo, hi } = p;
   const maxIterations = options.maxIterations ?? 200;
   const fTarget = options.fTarget ?? 0;
+  const deadline = options.deadline ?? Infinity;
   const x = Float64Array.from(x0);
   const place = (y: Float64Array): void => {
     for (let i = 0; i < m; i++) y[i] = Math.min(hi[i], Math.max(lo[i], y[i]));
@@ -109,6 +112,7 @@ export function levenbergMarquardt(
   let stalls = 0;
   let iterations = 0;
   for (; iterations < maxIterations && f > fTarget; iterations++) {
+    if (deadline < Infinity && Date.now() > deadline) break;
     g.fill(0);
     A.fill(0);
     for (let row = 0; row < k; row++) {

@@ -1,7 +1,8 @@
 /**
  * The path-synthesis least-squares problem over one design's variables, in normalised units (pathTask.ts):
- * [O2x, O2y, ground angle (absent when the placement is fixed), r1, r2, r3, r4, u, v, timing…] where (u, v) is the
- * coupler point in the coupler frame (u along AB) and the timing variables are
+ * [O2x, O2y, ground angle (absent when the placement is fixed), r1, r2, r3, r4, ρ, φ, timing…] where ρ = |AP| and
+ * φ its angle from AB (polar, so that the bound ρ ≤ coupler is a box face the active set can hold exactly) and the
+ * timing variables are
  * - free: θ2 of the first target, then the advances δ2..δn ≥ 0 (Σδ ≤ 2π) in the run's turning direction;
  * - step: θ2 of the first target;
  * - given: none.
@@ -16,7 +17,7 @@ import type { NormalisedTask } from './pathTask';
 export interface PathLayout {
   /** Index of O2x (O2y and the ground angle follow), or -1 when the placement is fixed. */
   place: number;
-  /** Index of r1 (r2, r3, r4, u, v follow). */
+  /** Index of r1 (r2, r3, r4, ρ = |AP|, φ = angle of AP from AB follow). */
   links: number;
   /** Index of the first timing variable. */
   timing: number;
@@ -96,10 +97,8 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
     lo[L + j] = t.lenMin;
     hi[L + j] = t.lenMax;
   }
-  if (Number.isFinite(t.coupler)) {
-    lo[L + 4] = lo[L + 5] = -t.coupler;
-    hi[L + 4] = hi[L + 5] = t.coupler;
-  }
+  lo[L + 4] = 0;
+  hi[L + 4] = t.coupler;
   if (t.timing === 'free') {
     for (let i = 1; i < n; i++) {
       lo[T + i] = 0;
@@ -127,8 +126,11 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
     const r2 = x[L + 1];
     const r3 = x[L + 2];
     const r4 = x[L + 3];
-    const u = x[L + 4];
-    const v = x[L + 5];
+    const rho = x[L + 4];
+    const cphi = Math.cos(x[L + 5]);
+    const sphi = Math.sin(x[L + 5]);
+    const u = rho * cphi;
+    const v = rho * sphi;
     thetas(x, th);
     if (J) J.fill(0);
     for (let i = 0; i < n; i++) {
@@ -146,12 +148,21 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
         J[ox + place + 2] = -sg * px - cg * py;
         J[oy + place + 2] = cg * px - sg * py;
       }
-      for (let j = 0; j < 6; j++) {
+      for (let j = 0; j < 4; j++) {
         const dx = model[2 + 2 * j];
         const dy = model[3 + 2 * j];
         J[ox + L + j] = cg * dx - sg * dy;
         J[oy + L + j] = sg * dx + cg * dy;
       }
+      // (u, v) = ρ (cos φ, sin φ): ∂/∂ρ = cos φ ∂/∂u + sin φ ∂/∂v, ∂/∂φ = −v ∂/∂u + u ∂/∂v.
+      const drx = cphi * model[10] + sphi * model[12];
+      const dry = cphi * model[11] + sphi * model[13];
+      const dfx = -v * model[10] + u * model[12];
+      const dfy = -v * model[11] + u * model[13];
+      J[ox + L + 4] = cg * drx - sg * dry;
+      J[oy + L + 4] = sg * drx + cg * dry;
+      J[ox + L + 5] = cg * dfx - sg * dfy;
+      J[oy + L + 5] = sg * dfx + cg * dfy;
       const dthx = cg * model[14] - sg * model[15];
       const dthy = sg * model[14] + cg * model[15];
       if (t.timing === 'step') {
@@ -170,13 +181,6 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
     return true;
   };
   const project = (x: Float64Array): void => {
-    if (Number.isFinite(t.coupler)) {
-      const d = Math.hypot(x[L + 4], x[L + 5]);
-      if (d > t.coupler) {
-        x[L + 4] *= t.coupler / d;
-        x[L + 5] *= t.coupler / d;
-      }
-    }
     if (t.timing === 'free' && n > 1) projectCappedSimplex(x, T + 1, n - 1, TWO_PI);
   };
   const feasible = (x: Float64Array): boolean => {

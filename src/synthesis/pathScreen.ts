@@ -19,8 +19,11 @@ import type { PathSolution, PathTask, PlacedFourBar } from './types';
 export const MAX_SOLUTIONS = 10;
 /** Candidates polished with a longer local solve before screening. */
 const POLISHED = 24;
-/** Iteration cap of the polishing solve. */
-const POLISH_ITERATIONS = 400;
+/** Iteration cap of the polishing solve of the best few: long, because a best fit often lies along a flat valley. */
+const POLISH_LONG_ITERATIONS = 4000;
+/** How many of the best candidates get the long polish; the rest get POLISH_ITERATIONS. */
+const POLISH_LONG = 4;
+const POLISH_ITERATIONS = 300;
 /** Two designs closer than this (relative to the target size, and in radians) are the same linkage. */
 const SAME_DESIGN = 1e-7;
 
@@ -39,7 +42,7 @@ function designOf(t: NormalisedTask, task: PathTask, c: PathCandidate): { design
     r3: clampLen(s * x[L + 2]),
     r4: clampLen(s * x[L + 3]),
   };
-  let pDist = s * Math.hypot(x[L + 4], x[L + 5]);
+  let pDist = s * x[L + 4];
   if (b?.coupler !== undefined) pDist = Math.min(pDist, b.coupler);
   let O2: Point = task.placement
     ? { x: task.placement.O2.x, y: task.placement.O2.y }
@@ -58,7 +61,7 @@ function designOf(t: NormalisedTask, task: PathTask, c: PathCandidate): { design
     O2,
     groundAngle: task.placement ? task.placement.groundAngle : wrapAngle(pl.angle),
     pDist,
-    pAngle: pDist === 0 ? 0 : Math.atan2(x[L + 5], x[L + 4]),
+    pAngle: pDist === 0 ? 0 : wrapAngle(x[L + 5]),
   };
   return { design, theta2: Array.from(th) };
 }
@@ -74,14 +77,16 @@ function solutionOf(t: NormalisedTask, task: PathTask, c: PathCandidate): PathSo
   } else if (!sweepWithinRange(r1, r2, r3, r4, Math.min(...theta2), Math.max(...theta2))) return null;
   let error = 0;
   let maxDistance = 0;
+  // The error of the θ2 returned (wrapped), so that a caller recomputing it gets the same sum.
+  const wrapped = theta2.map((a) => wrapAngle(a));
   for (let i = 0; i < t.n; i++) {
-    const P = placedCouplerPoint(design, theta2[i]);
+    const P = placedCouplerPoint(design, wrapped[i]);
     if (!P) return null;
     const d = Math.hypot(P.x - task.targets[i].x, P.y - task.targets[i].y);
     error += d * d;
     maxDistance = Math.max(maxDistance, d);
   }
-  return { design, theta2: theta2.map((a) => wrapAngle(a)), error, maxDistance };
+  return { design, theta2: wrapped, error, maxDistance };
 }
 
 /** True when a and b are the same linkage to rounding (size: the target set's size in the user's unit). */
@@ -105,9 +110,15 @@ export function sameDesign(a: PlacedFourBar, b: PlacedFourBar, size: number): bo
 
 /**
  * Merges candidate lists (from one run or from several workers' slices), polishes the best, and returns the
- * checked, distinct answers best first (at most MAX_SOLUTIONS). Deterministic in its input.
+ * checked, distinct answers best first (at most MAX_SOLUTIONS). Deterministic in its input unless the deadline
+ * (Date.now(), ms) cuts the polishing short.
  */
-export function screenCandidates(t: NormalisedTask, task: PathTask, lists: PathCandidate[][]): PathSolution[] {
+export function screenCandidates(
+  t: NormalisedTask,
+  task: PathTask,
+  lists: PathCandidate[][],
+  deadline = Infinity,
+): PathSolution[] {
   const all = lists.flat().filter((c) => Number.isFinite(c.f));
   all.sort((a, b) => a.f - b.f || a.sigma - b.sigma || a.dir - b.dir);
   const m = pathLayout(t).m;
@@ -119,8 +130,9 @@ export function screenCandidates(t: NormalisedTask, task: PathTask, lists: PathC
     if (polished.some((p) => p.sigma === c.sigma && p.x.every((v, i) => Math.abs(v - c.x[i]) <= 1e-6))) continue;
     const problem = createPathProblem(t, c.sigma, c.dir);
     const r = levenbergMarquardt(problem.lsq, Float64Array.from(c.x), {
-      maxIterations: POLISH_ITERATIONS,
+      maxIterations: polished.length < POLISH_LONG ? POLISH_LONG_ITERATIONS : POLISH_ITERATIONS,
       fTarget: EXACT_F,
+      deadline,
     });
     polished.push(r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c);
   }

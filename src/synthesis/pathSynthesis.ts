@@ -56,6 +56,8 @@ export const DEFAULT_ROUNDS = 400;
 const MIN_ROUNDS_AFTER_EXACT = 2;
 /** Candidates a part keeps (best first). */
 const KEEP = 64;
+/** Most time the final polish may take past the budget (ms). */
+const MERGE_MS = 200;
 /** Work between yields to the event loop (ms), so an abort posted from another thread is seen. */
 const YIELD_MS = 25;
 
@@ -148,9 +150,12 @@ export async function pathSynthesisPart(
   return { candidates, rounds, evaluations };
 }
 
-/** Merges the candidates of one or more parts into checked, distinct answers, best first (at most 10). */
-export function mergePathCandidates(task: PathTask, parts: PathCandidate[][]): PathSolution[] {
-  return screenCandidates(normaliseTask(task), task, parts);
+/**
+ * Merges the candidates of one or more parts into checked, distinct answers, best first (at most 10); the polishing
+ * stops at deadline (Date.now(), ms; default none, which makes the merge deterministic).
+ */
+export function mergePathCandidates(task: PathTask, parts: PathCandidate[][], deadline = Infinity): PathSolution[] {
+  return screenCandidates(normaliseTask(task), task, parts, deadline);
 }
 
 /**
@@ -159,8 +164,14 @@ export function mergePathCandidates(task: PathTask, parts: PathCandidate[][]): P
  * (default 3000), signal, onProgress, rounds (default 400). Throws an Error naming the value for a bad task or options.
  */
 export async function pathSynthesis(task: PathTask, options: PathSynthesisOptions = {}): Promise<PathSolution[]> {
+  const start = Date.now();
   const run = await pathSynthesisPart(task, { ...options, part: 0, parts: 1 });
-  const solutions = mergePathCandidates(task, [run.candidates]);
+  // The merge's polish gets a tenth of the budget (at most MERGE_MS) past it, or MERGE_MS after an abort.
+  const budgetMs = options.budgetMs ?? DEFAULT_BUDGET_MS;
+  const deadline = options.signal?.aborted
+    ? Date.now() + MERGE_MS
+    : Math.max(Date.now(), start + budgetMs) + Math.min(MERGE_MS, 0.1 * budgetMs);
+  const solutions = mergePathCandidates(task, [run.candidates], options.rounds !== undefined ? Infinity : deadline);
   options.onProgress?.({ fraction: 1, best: Math.min(solutions[0]?.error ?? Infinity, bestOf(run, task)) });
   return solutions;
 }
