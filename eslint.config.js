@@ -1,6 +1,13 @@
 import reactHooks from 'eslint-plugin-react-hooks';
 import tseslint from 'typescript-eslint';
 
+/** Every feature folder under src/features: each may import only itself, src/shared and the numerics. */
+const FEATURES = ['simulator', 'lab', 'export', 'share', 'synthesis', 'forces'];
+/** A relative import that reaches the app's layers (from a numerics folder). */
+const APP_LAYERS = '^(\\.\\./)+(app|features|shared|workers)(/|$)';
+/** A relative import from src/shared that reaches above it. */
+const ABOVE_SHARED = '^(\\.\\./)+(app|features|workers)(/|$)';
+
 /** Lint: the solver's import boundary (STYLE.md principle 1), type-only imports, hooks rules. */
 export default tseslint.config(
   {
@@ -32,7 +39,7 @@ export default tseslint.config(
   {
     // Temporary, until its owner's rewrite lands (see the app-shell report): useSolverClient stores the
     // client it creates in an effect.
-    files: ['src/components/useSolver.ts'],
+    files: ['src/shared/jobs/useSolver.ts'],
     rules: { 'react-hooks/set-state-in-effect': 'off' },
   },
   {
@@ -50,22 +57,51 @@ export default tseslint.config(
     },
   },
   {
-    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/lab/**/*.ts'],
+    // Numerics (the solver, synthesis, the lab's study): pure, testable in Node, importing nothing of the app.
+    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/study/**/*.ts'],
     rules: {
       'no-restricted-imports': [
         'error',
         {
           patterns: [
-            { group: ['react', 'react-dom', 'react/*', 'react-dom/*'], message: 'The solver is pure: no React.' },
-            { group: ['d3-*', 'd3'], message: 'The solver is pure: no d3.' },
-            {
-              group: ['../components/*', '../render/*', '../charts/*', '../worker/*', '../state/*'],
-              message: 'The solver depends on nothing in the app.',
-            },
+            { group: ['react', 'react-dom', 'react/*', 'react-dom/*'], message: 'Numerics are pure: no React.' },
+            { group: ['d3-*', 'd3'], message: 'Numerics are pure: no d3.' },
+            { regex: APP_LAYERS, message: 'Numerics depend on nothing in the app (app, features, shared, workers).' },
           ],
         },
       ],
       'no-restricted-globals': ['error', 'window', 'document', 'self', 'navigator', 'postMessage', 'performance'],
     },
   },
+  {
+    // Kits every feature uses: they never know the features, the shell or the workers' entries.
+    files: ['src/shared/**/*.{ts,tsx}'],
+    rules: {
+      'no-restricted-imports': [
+        'error',
+        {
+          patterns: [
+            { regex: ABOVE_SHARED, message: 'shared/ never imports a feature, the app shell or a worker entry.' },
+          ],
+        },
+      ],
+    },
+  },
+  ...FEATURES.map((feature) => ({
+    // One feature never imports another (they meet in src/app) nor the shell above it.
+    files: [`src/features/${feature}/**/*.{ts,tsx}`],
+    rules: {
+      'no-restricted-imports': [
+        'error',
+        {
+          patterns: [
+            {
+              regex: `^(\\.\\./)+(${FEATURES.filter((f) => f !== feature).join('|')})(/|$)|(^|/)features/|(^|/)app(/|$)`,
+              message: `features/${feature} imports only shared kits, numerics and itself; features meet in src/app.`,
+            },
+          ],
+        },
+      ],
+    },
+  })),
 );

@@ -22,7 +22,7 @@ export default defineConfig({
     cssCodeSplit: false,
     assetsInlineLimit: Number.MAX_SAFE_INTEGER,
     lib: {
-      entry: resolve(import.meta.dirname, 'src/element.tsx'),
+      entry: resolve(import.meta.dirname, 'src/app/element.tsx'),
       formats: ['iife'],
       name: 'FourbarLab',
       fileName: () => 'fourbar-lab.js',

@@ -1,8 +1,8 @@
 /**
  * Animation export benchmark (Node): GIF size and encode time of one cycle of a linkage-like drawing.
  * Frames come from the planner (planAnimationFrames, the motion of Play) and a small anti-aliased rasterizer
- * (tests/export/raster.ts: grid, coupler trace, links, joints), encoded by the export's own GIF writer
- * (src/export/gifEncoder.ts: one global palette from sampled frames, unchanged pixels transparent).
+ * (tests/features/export/animation/raster.ts: grid, coupler trace, links, joints), encoded by the export's own GIF writer
+ * (src/features/export/animation/gifEncoder.ts: one global palette from sampled frames, unchanged pixels transparent).
  * Cases: 360 frames at 640x360 (the issue's target: under 4 MB) for a crank-rocker and a triple rocker,
  * and 120 frames at 1280x720. Rasterizing is timed apart from encoding. Prints a table and writes
  * bench/results/animation.json. A benchmark, not a test: it reports, it does not fail.
@@ -11,13 +11,13 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { planAnimationFrames } from '../src/export/animationFrames';
-import { createGifWriter } from '../src/export/gifEncoder';
-import { gifFrameDelaysCs } from '../src/export/gifTiming';
+import { planAnimationFrames } from '../src/features/export/animation/animationFrames';
+import { createGifWriter } from '../src/features/export/animation/gifEncoder';
+import { gifFrameDelaysCs } from '../src/features/export/animation/gifTiming';
 import { classify } from '../src/solver';
 import type { Linkage } from '../src/solver';
-import { rangeToDeg } from '../src/state/animation';
-import { couplerTrace, drawLinkageFrame } from '../tests/export/raster';
+import { rangeToDeg } from '../src/shared/state/animation';
+import { couplerTrace, drawLinkageFrame } from '../tests/features/export/animation/raster';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
 const FPS = 30;

@@ -4,16 +4,16 @@
  * layout and the drawing into a recording 2D context, without vectors and with velocity and acceleration
  * vectors (frameMotion, vectorOverlay and the extra labels). Prints microseconds per frame for each.
  */
-import { frameMotion } from '../src/components/frameMotion';
-import { localPose } from '../src/components/localPose';
-import { drawLinkage } from '../src/render/drawLinkage';
-import type { SceneVectors } from '../src/render/motionVectors';
-import { arrowScale } from '../src/render/motionVectors';
-import { sceneBounds, scenePose } from '../src/render/scene';
-import type { LinkageScene } from '../src/render/scene';
-import { fitView } from '../src/render/view';
-import { effectiveInputMotion } from '../src/state/inputMotion';
-import { RecordingContext, sceneText } from '../tests/render/fixtures';
+import { frameMotion } from '../src/shared/linkage/frameMotion';
+import { localPose } from '../src/shared/linkage/localPose';
+import { drawLinkage } from '../src/shared/linkage/drawLinkage';
+import type { SceneVectors } from '../src/shared/linkage/motionVectors';
+import { arrowScale } from '../src/shared/linkage/motionVectors';
+import { sceneBounds, scenePose } from '../src/shared/linkage/scene';
+import type { LinkageScene } from '../src/shared/linkage/scene';
+import { fitView } from '../src/shared/canvas/view';
+import { effectiveInputMotion } from '../src/shared/state/inputMotion';
+import { RecordingContext, sceneText } from '../tests/shared/linkage/fixtures';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const COUPLER = { distance: 2.5, angleDeg: 30 };

@@ -11,8 +11,8 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { LAB_TOLERANCES } from '../src/lab/options';
-import { medianTime, scoreSweep } from '../src/lab/workPrecision';
+import { LAB_TOLERANCES } from '../src/study/options';
+import { medianTime, scoreSweep } from '../src/study/workPrecision';
 import { sweep, theta2Grid } from '../src/solver';
 import type { Linkage, SweepMethod } from '../src/solver';
 import { classify } from '../src/solver';

@@ -1,6 +1,6 @@
 import type { Frame, Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
-import { canvasToolsRect } from '../src/render/canvasTools';
+import { canvasToolsRect } from '../src/shared/canvas/canvasTools';
 import { ORIGIN, artifact, waitReady } from './helpers';
 
 // Every screen a student meets: a phone, a tablet, a laptop, and the embed widget inside a course page's

@@ -1,7 +1,8 @@
 import type { Plugin } from 'vite';
 
-/** The expression in src/worker/client.ts that starts the solver worker from its own file. */
-export const WORKER_FROM_FILE = "new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' })";
+/** The expression in src/shared/jobs/client.ts that starts the solver worker from its own file. */
+export const WORKER_FROM_FILE =
+  "new Worker(new URL('../../workers/solver.worker.ts', import.meta.url), { type: 'module' })";
 
 /**
  * For the offline file and the custom element: starts the solver worker from a blob inlined in the bundle
@@ -15,10 +16,11 @@ export function inlineSolverWorker(): Plugin {
     name: 'fourbar-inline-solver-worker',
     enforce: 'pre',
     transform(code, id) {
-      if (!/[\\/]src[\\/]worker[\\/]client\.ts$/.test(id)) return null;
-      if (!code.includes(WORKER_FROM_FILE)) this.error(`src/worker/client.ts no longer contains ${WORKER_FROM_FILE}`);
+      if (!/[\\/]src[\\/]shared[\\/]jobs[\\/]client\.ts$/.test(id)) return null;
+      if (!code.includes(WORKER_FROM_FILE))
+        this.error(`src/shared/jobs/client.ts no longer contains ${WORKER_FROM_FILE}`);
       return (
-        "import InlineSolverWorker from './solver.worker.ts?worker&inline';\n" +
+        "import InlineSolverWorker from '../../workers/solver.worker.ts?worker&inline';\n" +
         code.replace(WORKER_FROM_FILE, 'new InlineSolverWorker()')
       );
     },

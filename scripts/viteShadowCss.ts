@@ -1,6 +1,6 @@
 import type { Plugin } from 'vite';
 
-/** The string in src/element.tsx that the element build replaces with the widget's CSS. */
+/** The string in src/app/element.tsx that the element build replaces with the widget's CSS. */
 export const CSS_PLACEHOLDER = '__FOURBAR_LAB_CSS__';
 
 const SIZE_QUERY = /^\s*\((min|max)-(width|height):[^)]*\)(\s*and\s*\((min|max)-(width|height):[^)]*\))*\s*$/;

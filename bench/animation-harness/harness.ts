@@ -3,17 +3,17 @@
  * one cycle of a linkage drawn by the app's own drawLinkage through exportAnimation, so Chromium runs the
  * real module worker, gifenc chunk and MediaRecorder. Exposes window.__animationHarness.run.
  */
-import type { AnimationSize } from '../../src/export/exportSize';
-import { exportSizePx } from '../../src/export/exportSize';
-import { planAnimationFrames } from '../../src/export/animationFrames';
-import type { RenderFrame } from '../../src/export/types';
-import { drawLinkage } from '../../src/render/drawLinkage';
-import type { LinkageScene, SceneCurve } from '../../src/render/scene';
-import { sceneBounds, scenePose } from '../../src/render/scene';
-import { fitView } from '../../src/render/view';
+import type { AnimationSize } from '../../src/features/export/animation/exportSize';
+import { exportSizePx } from '../../src/features/export/animation/exportSize';
+import { planAnimationFrames } from '../../src/features/export/animation/animationFrames';
+import type { RenderFrame } from '../../src/features/export/animation/types';
+import { drawLinkage } from '../../src/shared/linkage/drawLinkage';
+import type { LinkageScene, SceneCurve } from '../../src/shared/linkage/scene';
+import { sceneBounds, scenePose } from '../../src/shared/linkage/scene';
+import { fitView } from '../../src/shared/canvas/view';
 import { classify, solveClosedForm, transmissionAngle } from '../../src/solver';
 import type { Linkage } from '../../src/solver';
-import { rangeToDeg } from '../../src/state/animation';
+import { rangeToDeg } from '../../src/shared/state/animation';
 
 /** What one harness run exports. */
 export interface HarnessRequest {
@@ -98,7 +98,7 @@ function toBase64(bytes: Uint8Array): string {
 }
 
 async function run(req: HarnessRequest): Promise<HarnessResult> {
-  const { exportAnimation } = await import('../../src/export/animationExport');
+  const { exportAnimation } = await import('../../src/features/export/animation/animationExport');
   const l = req.linkage;
   const range = rangeToDeg(classify(l).inputRange);
   const plan = planAnimationFrames({

@@ -3,9 +3,9 @@
  * (6-2-5-5, open) for a run of r3 values, then times the JavaScript of updating the two separate angle
  * plots (inputs, curves and marker) for each step, the way AnglePlotsPanel does when an r3 answer arrives.
  */
-import { plotDegrees } from '../../src/components/chartInputs';
+import { plotDegrees } from '../../src/shared/charts/chartInputs';
 import { adaptiveGrid, degToRad, radToDeg, solveClosedForm, sweep } from '../../src/solver';
-import type { PlotSeries, PointResponse } from '../../src/worker/protocol';
+import type { PlotSeries, PointResponse } from '../../src/shared/jobs/protocol';
 import { makeAnglePlots } from './plots';
 
 /** Result of one run: milliseconds of JS per r3 step. */

@@ -1,8 +1,8 @@
-import { createAngleChart } from '../../src/charts/angleChart';
-import type { CycleDegrees } from '../../src/components/chartInputs';
-import { angleChartInputs, angleMarker } from '../../src/components/chartInputs';
-import { messagesEn } from '../../src/state/messagesEn';
-import type { PointResponse } from '../../src/worker/protocol';
+import { createAngleChart } from '../../src/shared/charts/theta2Chart';
+import type { CycleDegrees } from '../../src/shared/charts/chartInputs';
+import { angleChartInputs, angleMarker } from '../../src/shared/charts/chartInputs';
+import { messagesEn } from '../../src/shared/i18n/messagesEn';
+import type { PointResponse } from '../../src/shared/jobs/protocol';
 
 /** The two separate angle plots of the main page, driven the way AngleChartView drives them: update, then setMarker. */
 export function makeAnglePlots(svgs: SVGSVGElement[], width: number, height: number) {

@@ -1,48 +1,50 @@
 import './AppLayout.css';
 import { Suspense, lazy, useCallback, useMemo, useState } from 'react';
-import type { AppState } from '../state/appState';
-import { Playhead } from '../state/playhead';
-import { getMessages } from '../state/i18n';
-import type { ParsedUrl } from '../state/url';
-import { AnalysisPanel } from './AnalysisPanel';
-import { AnglePlotsPanel } from './AnglePlotsPanel';
+import type { AppState } from '../shared/state/appState';
+import { Playhead } from '../shared/state/playhead';
+import { getMessages } from '../shared/i18n/i18n';
+import type { ParsedUrl } from '../shared/url/url';
+import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
+import { AnglePlotsPanel } from '../features/simulator/PlotsPanel';
 import { Brand } from './Brand';
-import { ControlsPanel } from './ControlsPanel';
-import { ConvergencePanel } from './ConvergencePanel';
-import { DesignPanel } from './DesignPanel';
-import { ExportPanel } from './ExportPanel';
+import { ControlsPanel } from '../features/simulator/ControlsPanel';
+import { ConvergencePanel } from '../features/simulator/ConvergencePanel';
+import { DesignPanel } from '../features/simulator/DesignPanel';
+import { ExportPanel } from '../features/export/ExportPanel';
 import { LanguageSelect } from './LanguageSelect';
-import { MotionPanel } from './MotionPanel';
-import { MessagesContext } from './MessagesContext';
+import { MotionPanel } from '../features/simulator/MotionPanel';
+import { MessagesContext } from '../shared/i18n/MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
-import { SharePanel } from './SharePanel';
+import { SharePanel } from '../features/share/SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
-import { useAnimation } from './useAnimation';
-import { useCanvasEdits } from './useCanvasEdits';
-import { useDrawnMark } from './useDrawnMark';
-import { useCycleFacts } from './useCycleFacts';
+import { useAnimation } from '../features/simulator/useAnimation';
+import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
+import { useDrawnMark } from '../features/simulator/useDrawnMark';
+import { useCycleFacts } from '../features/simulator/useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
-import { useExports } from './useExports';
-import { useFrameMotion } from './useFrameMotion';
-import { FramePoseProvider } from './FramePoseProvider';
-import { LinkageStage } from './LinkageStage';
-import { useShownFrame } from './useShownFrame';
-import { useLinkagePose } from './useLinkagePose';
-import { usePlotPixels } from './usePlotPixels';
-import { useSimulator } from './useSimulator';
-import { useStableCallback } from './useStableCallback';
+import { useExports } from '../features/export/useExports';
+import { useFrameMotion } from '../features/simulator/useFrameMotion';
+import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
+import { LinkageStage } from '../features/simulator/LinkageStage';
+import { useShownFrame } from '../shared/linkage/useShownFrame';
+import { useLinkagePose } from '../features/simulator/useLinkagePose';
+import { usePlotPixels } from '../features/simulator/usePlotPixels';
+import { useSimulator } from '../features/simulator/useSimulator';
+import { useStableCallback } from '../shared/hooks/useStableCallback';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
-import { SolverStatus } from './SolverStatus';
-import { useCycleTable } from './useSolver';
-import { useDesignMetrics } from './useDesignMetrics';
-import { deadCentreXMarks } from './transmissionInputs';
+import { SolverStatus } from '../shared/jobs/SolverStatus';
+import { useCycleTable } from '../shared/jobs/useSolver';
+import { useDesignMetrics } from '../features/simulator/useDesignMetrics';
+import { deadCentreXMarks } from '../shared/charts/transmissionInputs';
 
 // The solver lab (its charts and tables) loads only when it is opened.
-const LabPanel = lazy(() => import('./LabPanel').then((m) => ({ default: m.LabPanel })));
+const LabPanel = lazy(() => import('../features/lab/LabPanel').then((m) => ({ default: m.LabPanel })));
 // The transmission plot (its chart module) loads after the first paint.
-const TransmissionPanel = lazy(() => import('./TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })));
+const TransmissionPanel = lazy(() =>
+  import('../features/simulator/TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })),
+);
 
 /** Props of AppLayout: the state parsed from the URL. */
 export interface AppLayoutProps {

@@ -1,4 +1,4 @@
-import { useMessages } from './MessagesContext';
+import { useMessages } from '../shared/i18n/MessagesContext';
 
 /** The app's logo (a four-bar drawn in four strokes), title and subtitle, for the top bar. */
 export function Brand() {

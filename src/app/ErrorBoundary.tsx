@@ -1,7 +1,7 @@
 import './ErrorBoundary.css';
 import { Component } from 'react';
 import type { ErrorInfo, ReactNode } from 'react';
-import type { Messages } from '../state/messages';
+import type { Messages } from '../shared/i18n/messages';
 
 /** Props of ErrorBoundary: the strings to show and what Reset does. */
 export interface ErrorBoundaryProps {

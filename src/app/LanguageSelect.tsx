@@ -1,10 +1,10 @@
 import { memo } from 'react';
 import type { Dispatch } from 'react';
-import type { Action, Locale } from '../state/appState';
-import { LOCALES, loadMessages } from '../state/i18n';
-import { LOCALE_STORAGE_KEY, writeStorage } from '../state/storage';
-import { Icon } from './Icon';
-import { useMessages } from './MessagesContext';
+import type { Action, Locale } from '../shared/state/appState';
+import { LOCALES, loadMessages } from '../shared/i18n/i18n';
+import { LOCALE_STORAGE_KEY, writeStorage } from '../shared/storage';
+import { Icon } from '../shared/ui/Icon';
+import { useMessages } from '../shared/i18n/MessagesContext';
 
 /** Props of LanguageSelect: the current language and the dispatcher that changes it. */
 export interface LanguageSelectProps {

@@ -1,7 +1,7 @@
 import { memo, useRef } from 'react';
 import type { Dispatch, KeyboardEvent } from 'react';
-import type { Action, Page } from '../state/appState';
-import { useMessages } from './MessagesContext';
+import type { Action, Page } from '../shared/state/appState';
+import { useMessages } from '../shared/i18n/MessagesContext';
 
 /** Props of PageTabs: the page shown, the dispatcher, and the id of the tab panel the tabs control. */
 export interface PageTabsProps {

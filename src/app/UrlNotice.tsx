@@ -1,7 +1,7 @@
 import { useState } from 'react';
-import type { IgnoredParam } from '../state/url';
-import { ignoredNoticeText } from '../state/ignoredNotice';
-import { useMessages } from './MessagesContext';
+import type { IgnoredParam } from '../shared/url/url';
+import { ignoredNoticeText } from '../shared/url/ignoredNotice';
+import { useMessages } from '../shared/i18n/MessagesContext';
 
 /** Props of UrlNotice: the parameters the URL parser ignored (ParsedUrl.ignored). */
 export interface UrlNoticeProps {

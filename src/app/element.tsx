@@ -1,17 +1,17 @@
-import './components/base.css';
-import './components/embedLayout.css';
+import './base.css';
+import './embedPage.css';
 import { StrictMode } from 'react';
 import type { Root } from 'react-dom/client';
 import { createRoot } from 'react-dom/client';
-import type { EmbedBridge, PatchSource } from './components/embedBridge';
-import { EmbedLayout } from './components/EmbedLayout';
-import { ErrorBoundary } from './components/ErrorBoundary';
-import type { EmbedValue } from './state/embedMessages';
-import { getMessages } from './state/i18n';
-import { initialState } from './state/initial';
-import type { ParsedUrl } from './state/url';
-import { URL_KEYS } from './state/urlKeys';
-import { cssVariables } from './theme/tokens';
+import type { EmbedBridge, PatchSource } from '../features/share/embedBridge';
+import { EmbedLayout } from './EmbedLayout';
+import { ErrorBoundary } from './ErrorBoundary';
+import type { EmbedValue } from '../features/share/embedMessages';
+import { getMessages } from '../shared/i18n/i18n';
+import { initialState } from './initialState';
+import type { ParsedUrl } from '../shared/url/url';
+import { URL_KEYS } from '../shared/url/urlKeys';
+import { cssVariables } from '../shared/theme/tokens';
 
 /**
  * The stylesheets of the widget, put here by the element build (scripts/viteShadowCss.ts) with page-level

@@ -1,8 +1,8 @@
-import './components/base.css';
-import './components/embedLayout.css';
-import { EmbedLayout } from './components/EmbedLayout';
+import './base.css';
+import './embedPage.css';
+import { EmbedLayout } from './EmbedLayout';
 import { mount } from './mount';
-import { applyTokens } from './theme/applyTokens';
+import { applyTokens } from '../shared/theme/applyTokens';
 
 applyTokens(document.documentElement.style);
 void mount(EmbedLayout);

@@ -1,8 +1,8 @@
-import type { AppState } from './appState';
-import { DEFAULT_STATE } from './appState';
-import { detectLocale, parseLocale } from './i18n';
-import type { ParsedUrl } from './url';
-import { parseUrl } from './url';
+import type { AppState } from '../shared/state/appState';
+import { DEFAULT_STATE } from '../shared/state/appState';
+import { detectLocale, parseLocale } from '../shared/i18n/i18n';
+import type { ParsedUrl } from '../shared/url/url';
+import { parseUrl } from '../shared/url/url';
 
 /**
  * The state to start from: defaults, the language from the stored choice or the browser's preferences,

@@ -1,8 +1,8 @@
-import './components/base.css';
-import './components/layout.css';
-import { AppLayout } from './components/AppLayout';
+import './base.css';
+import './layout.css';
+import { AppLayout } from './AppLayout';
 import { mount } from './mount';
-import { applyTokens } from './theme/applyTokens';
+import { applyTokens } from '../shared/theme/applyTokens';
 
 applyTokens(document.documentElement.style);
 void mount(AppLayout);

@@ -1,11 +1,11 @@
 import { StrictMode } from 'react';
 import type { ComponentType } from 'react';
 import { createRoot } from 'react-dom/client';
-import { ErrorBoundary } from './components/ErrorBoundary';
-import { getMessages, loadMessages } from './state/i18n';
-import { initialState } from './state/initial';
-import { LOCALE_STORAGE_KEY, readStorage } from './state/storage';
-import type { ParsedUrl } from './state/url';
+import { ErrorBoundary } from './ErrorBoundary';
+import { getMessages, loadMessages } from '../shared/i18n/i18n';
+import { initialState } from './initialState';
+import { LOCALE_STORAGE_KEY, readStorage } from '../shared/storage';
+import type { ParsedUrl } from '../shared/url/url';
 
 /** Props every top-level layout takes: the state and embed options parsed from the URL. */
 export interface LayoutProps {

@@ -1,4 +1,4 @@
-import type { Locale } from '../state/appState';
+import type { Locale } from '../shared/state/appState';
 
 /** Strings of the app shell that the message tables do not have yet (to move into src/state/messages*.ts). */
 export interface ShellMessages {

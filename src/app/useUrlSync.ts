@@ -1,7 +1,7 @@
 import { useEffect } from 'react';
-import type { AppState } from '../state/appState';
-import type { EmbedOptions } from '../state/url';
-import { serializeState } from '../state/url';
+import type { AppState } from '../shared/state/appState';
+import type { EmbedOptions } from '../shared/url/url';
+import { serializeState } from '../shared/url/url';
 
 /** Wait after the last change before the address bar is rewritten (ms). */
 const URL_DEBOUNCE_MS = 250;

@@ -44,7 +44,7 @@ export function formatSci(x: number, digits = 2): string {
 
 /**
  * Formats the input's reachable intervals (radians) as degree ranges in (−180°, 180°] joined by a separator.
- * @deprecated The θ2 slider runs 0°–360°: use formatInputRange (state/inputRange.ts), which says it that way.
+ * @deprecated The θ2 slider runs 0°–360°: use formatInputRange (shared/state/inputRange.ts), which says it that way.
  */
 export function formatIntervalsDeg(
   intervals: readonly AngleInterval[],

@@ -1,5 +1,5 @@
 import { computeCycle, computePoint, computeTable } from './compute';
-import type { SolverApi } from './protocol';
+import type { SolverApi } from '../shared/jobs/protocol';
 
 /**
  * The solver's one API object. The worker exposes it (solver.worker.ts), and when no worker can run
@@ -16,8 +16,8 @@ export const solverApi: SolverApi = {
    */
   async lab(params, task) {
     const [{ runWorkPrecision }, { referencePose }] = await Promise.all([
-      import('../lab/workPrecision'),
-      import('../lab/reference'),
+      import('../study/workPrecision'),
+      import('../study/reference'),
     ]);
     return runWorkPrecision(params.linkage, {
       branch: params.branch,

@@ -17,8 +17,8 @@ import {
 import type { InputMotion } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
-import { sweepOptions } from './plotSeries';
-import { encodeStatuses } from './statusCodes';
+import { sweepOptions } from '../shared/jobs/plotSeries';
+import { encodeStatuses } from '../shared/jobs/statusCodes';
 import type {
   BranchCycle,
   CouplerSpec,
@@ -32,7 +32,7 @@ import type {
   PoseAngles,
   TableParams,
   TableResponse,
-} from './protocol';
+} from '../shared/jobs/protocol';
 
 /** Most intervals of the cycle's view grid (half a degree): enough for bounds and a smooth coupler curve on screen. */
 export const VIEW_SAMPLES_MAX = 720;

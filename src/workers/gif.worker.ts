@@ -1,6 +1,6 @@
 /// <reference lib="webworker" />
-import type { GifWorkerRequest } from './gifProtocol';
-import { createGifSession } from './gifSession';
+import type { GifWorkerRequest } from '../features/export/animation/gifProtocol';
+import { createGifSession } from '../features/export/animation/gifSession';
 
 declare const self: DedicatedWorkerGlobalScope;
 

@@ -1,11 +1,11 @@
 import { createElement } from 'react';
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { MessagesContext } from '../../src/components/MessagesContext';
-import { UrlNotice } from '../../src/components/UrlNotice';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
-import { parseUrl } from '../../src/state/url';
+import { MessagesContext } from '../../src/shared/i18n/MessagesContext';
+import { UrlNotice } from '../../src/app/UrlNotice';
+import { DEFAULT_STATE } from '../../src/shared/state/appState';
+import { messagesZhTw } from '../../src/shared/i18n/messagesZhTw';
+import { parseUrl } from '../../src/shared/url/url';
 
 const quiet = () => undefined;
 

@@ -15,7 +15,7 @@
  * Nothing here imports from src.
  */
 import Decimal from 'decimal.js';
-import { exact } from './reference';
+import { exact, exactAngle } from './reference';
 import type { LinkLengths, Sigma } from './reference';
 
 const D = Decimal.clone({ precision: 60, rounding: Decimal.ROUND_HALF_EVEN, minE: -9e15, maxE: 9e15 });
@@ -187,7 +187,7 @@ export function referenceInstantCenters(
   theta4: number,
 ): { I13: ReferenceCenter | null; I24: ReferenceCenter | null } {
   const [r1, r2, r3, r4] = [l.r1, l.r2, l.r3, l.r4].map(exact);
-  const [t2, t3, t4] = [theta2, theta3, theta4].map(exact);
+  const [t2, t3, t4] = [theta2, theta3, theta4].map(exactAngle);
   const O2 = [new D(0), new D(0)];
   const O4 = [r1, new D(0)];
   const A = [r2.times(D.cos(t2)), r2.times(D.sin(t2))];

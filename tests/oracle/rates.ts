@@ -20,6 +20,7 @@
  * ground, sigma = +1 open (sin(theta4 - theta3) > 0), rates counter-clockwise positive.
  */
 import Decimal from 'decimal.js';
+import { reducedAngleDigits } from './reference';
 import type { LinkLengths, Sigma } from './reference';
 import { EPS, K } from './tolerance';
 
@@ -83,6 +84,12 @@ function exactIn(Dk: DecCtor, x: number, field: string): Dec {
   return new Dk(mantissa.toString()).times(new Dk(2).pow(exponent)).times(sign);
 }
 
+/** An angle in the given Decimal precision: the exact double reduced modulo 2 pi (reference.ts reducedAngleDigits). */
+function angleIn(Dk: DecCtor, x: number, field: string): Dec {
+  if (!Number.isFinite(x)) throw new Error(`oracle needs a finite ${field}, got ${x}`);
+  return new Dk(reducedAngleDigits(x));
+}
+
 interface V {
   x: Dec;
   y: Dec;
@@ -103,7 +110,8 @@ export function referenceRatesAtPose(
   const D = D60;
   const ex = (x: number, f: string) => exactIn(D, x, f);
   const [r2, r3, r4] = [ex(l.r2, 'r2'), ex(l.r3, 'r3'), ex(l.r4, 'r4')];
-  const [t2, t3, t4] = [ex(theta2, 'theta2'), ex(pose.theta3, 'theta3'), ex(pose.theta4, 'theta4')];
+  const ang = (x: number, f: string) => angleIn(D, x, f);
+  const [t2, t3, t4] = [ang(theta2, 'theta2'), ang(pose.theta3, 'theta3'), ang(pose.theta4, 'theta4')];
   const w2 = ex(input.omega2, 'omega2');
   const a2 = ex(input.alpha2, 'alpha2');
   const a: V = { x: r2.times(D.cos(t2)), y: r2.times(D.sin(t2)) };
@@ -150,16 +158,17 @@ export function referencePointAtPose(
   const D = D60;
   const ex = (x: number, f: string) => exactIn(D, x, f);
   const r2 = ex(l.r2, 'r2');
-  const t2 = ex(theta2, 'theta2');
-  const phi = ex(pose.theta3, 'theta3').plus(ex(pAngle, 'pAngle'));
+  const ang = (x: number, f: string) => angleIn(D, x, f);
+  const t2 = ang(theta2, 'theta2');
+  const phi = ang(pose.theta3, 'theta3').plus(ang(pAngle, 'pAngle'));
   const p = ex(pDist, 'pDist');
   const w2 = ex(input.omega2, 'omega2');
   const a2 = ex(input.alpha2, 'alpha2');
   // The rates again at 60 digits (rounded to double they would lose digits for this sum).
   const r3 = ex(l.r3, 'r3');
   const r4 = ex(l.r4, 'r4');
-  const t3 = ex(pose.theta3, 'theta3');
-  const t4 = ex(pose.theta4, 'theta4');
+  const t3 = ang(pose.theta3, 'theta3');
+  const t4 = ang(pose.theta4, 'theta4');
   const av: V = { x: r2.times(D.cos(t2)), y: r2.times(D.sin(t2)) };
   const b: V = { x: r3.times(D.cos(t3)), y: r3.times(D.sin(t3)) };
   const c: V = { x: r4.times(D.cos(t4)), y: r4.times(D.sin(t4)) };
@@ -265,7 +274,7 @@ export function referenceMotion(
   const { D, H, cosH, sinH } = differentiator(l);
   const ex = (x: number, f: string) => exactIn(D, x, f);
   const [r1, r2, r3, r4] = [ex(l.r1, 'r1'), ex(l.r2, 'r2'), ex(l.r3, 'r3'), ex(l.r4, 'r4')];
-  const t2 = ex(theta2, 'theta2');
+  const t2 = angleIn(D, theta2, 'theta2');
   const w2 = ex(input.omega2, 'omega2');
   const a2 = ex(input.alpha2, 'alpha2');
   const c2 = D.cos(t2);
@@ -294,7 +303,7 @@ export function referenceMotion(
   });
   // Coupler point: P = A + (pDist / r3) R(pAngle) u.
   const kP = ex(pDist, 'pDist').div(r3);
-  const beta = ex(pAngle, 'pAngle');
+  const beta = angleIn(D, pAngle, 'pAngle');
   const cb = pAngle === 0 ? new D(1) : D.cos(beta);
   const sb = pAngle === 0 ? new D(0) : D.sin(beta);
   const P = (q: Assembly): V => ({

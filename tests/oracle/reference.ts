@@ -76,7 +76,7 @@ export function referenceSolve(l: LinkLengths, theta2: number, sigma: Sigma): Re
   const r2 = exact(l.r2);
   const r3 = exact(l.r3);
   const r4 = exact(l.r4);
-  const t2 = exact(theta2);
+  const t2 = exactAngle(theta2);
   const c2 = D.cos(t2);
   const ax = r2.times(c2);
   const ay = r2.times(D.sin(t2));
@@ -130,7 +130,7 @@ export function referenceSlack(l: LinkLengths, theta2: number): number {
   const r2 = exact(l.r2);
   const r3 = exact(l.r3);
   const r4 = exact(l.r4);
-  const t2 = exact(theta2);
+  const t2 = exactAngle(theta2);
   const s2 = r1
     .pow(2)
     .plus(r2.pow(2))
@@ -145,9 +145,9 @@ export function referenceResidual(l: LinkLengths, theta2: number, theta3: number
   const r2 = exact(l.r2);
   const r3 = exact(l.r3);
   const r4 = exact(l.r4);
-  const t2 = exact(theta2);
-  const t3 = exact(theta3);
-  const t4 = exact(theta4);
+  const t2 = exactAngle(theta2);
+  const t3 = exactAngle(theta3);
+  const t4 = exactAngle(theta4);
   const f1 = r2
     .times(D.cos(t2))
     .plus(r3.times(D.cos(t3)))
@@ -262,16 +262,37 @@ function wideExact(x: number): InstanceType<typeof WIDE> {
   return new WIDE(mantissa.toString()).times(new WIDE(2).pow(e)).times(bits >> 63n ? -1 : 1);
 }
 
+/** The exact a - b modulo 2 pi into (-pi, pi], at 420 digits. */
+function wideReduced(a: number, b: number): InstanceType<typeof WIDE> {
+  const x = wideExact(a).minus(wideExact(b));
+  const turn = WIDE_PI.times(2);
+  let r = x.minus(x.div(turn).round().times(turn));
+  if (r.lessThanOrEqualTo(WIDE_PI.neg())) r = r.plus(turn);
+  if (r.greaterThan(WIDE_PI)) r = r.minus(turn);
+  return r;
+}
+
+/**
+ * The exact double x (radians) reduced modulo 2 pi at 420 digits, as a decimal string any Decimal clone
+ * reads to its own precision: its cos and sin are those of x. The oracles take angles through this
+ * because a 60-digit context holds a double exactly only below about 1e60 (1e100 has 101 digits), and a
+ * rounded huge angle has an unrelated cosine.
+ */
+export function reducedAngleDigits(x: number): string {
+  if (!Number.isFinite(x)) throw new Error(`oracle needs a finite angle, got ${x}`);
+  return wideReduced(x, 0).toString();
+}
+
+/** An angle for the 60-digit oracle: the exact double reduced modulo 2 pi (see reducedAngleDigits). */
+export function exactAngle(x: number): Dec {
+  return new D(reducedAngleDigits(x));
+}
+
 /**
  * The exact a - b (doubles taken as exact) reduced modulo 2 pi into (-pi, pi], rounded once to a
  * double; b defaults to 0 (then it is the exact wrap of a). The double nearest to a value just above
  * -pi is -fl(pi); reported here as it falls, the caller decides how to compare at the seam.
  */
 export function referenceWrap(a: number, b = 0): number {
-  const x = wideExact(a).minus(wideExact(b));
-  const turn = WIDE_PI.times(2);
-  let r = x.minus(x.div(turn).round().times(turn));
-  if (r.lessThanOrEqualTo(WIDE_PI.neg())) r = r.plus(turn);
-  if (r.greaterThan(WIDE_PI)) r = r.minus(turn);
-  return r.toNumber();
+  return wideReduced(a, b).toNumber();
 }

@@ -1,6 +1,6 @@
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
-import { CSV_HEADER, csvNumber, cycleToCsv } from '../../src/state/csv';
+import { CSV_HEADER, csvNumber, cycleToCsv } from '../../src/shared/csv';
 
 describe('cycleToCsv', () => {
   const table = {

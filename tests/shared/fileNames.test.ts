@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { animationFileName, labSvgFileName, svgFileName } from '../../src/state/fileNames';
+import { animationFileName, labSvgFileName, svgFileName } from '../../src/shared/fileNames';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { csvFileName, pngFileName } from '../../src/state/fileNames';
-import { SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../src/state/appState';
+import { csvFileName, pngFileName } from '../../src/shared/fileNames';
+import { SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../src/shared/state/appState';
 import {
   THETA2_DECIMALS,
   fieldText,
@@ -10,9 +10,9 @@ import {
   formatNumber,
   formatSci,
   truncateText,
-} from '../../src/state/format';
-import { lengthSliderRange, needsNewRange, niceCeil, sliderShows } from '../../src/state/sliderRange';
-import { parseField } from '../../src/state/validate';
+} from '../../src/shared/format';
+import { lengthSliderRange, needsNewRange, niceCeil, sliderShows } from '../../src/features/simulator/sliderRange';
+import { parseField } from '../../src/shared/ui/validateNumber';
 
 describe('formatNumber', () => {
   it('shows six significant digits, exponent form for extreme scales, a dash for non-finite', () => {

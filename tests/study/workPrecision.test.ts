@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { nearestLimitDeg } from '../../src/lab/limits';
-import { referencePose } from '../../src/lab/reference';
+import { nearestLimitDeg } from '../../src/study/limits';
+import { referencePose } from '../../src/study/reference';
 import {
   distanceToNearestLimitDeg,
   GROSS_ERROR_RAD,
   LAB_METHODS,
   runWorkPrecision,
   scoreSweep,
-} from '../../src/lab/workPrecision';
+} from '../../src/study/workPrecision';
 import { sweep, theta2Grid } from '../../src/solver';
 import type { Linkage } from '../../src/solver';
 import { referenceAngles } from '../oracle/reference';

@@ -1,13 +1,13 @@
 import './AnimationExportControls.css';
 import { useEffect, useId, useRef, useState } from 'react';
 // The planner's bounds and types only: the encoders load on the first export.
-import { FRAMES_PER_CYCLE_DEFAULT, FRAMES_PER_CYCLE_MAX, FRAMES_PER_CYCLE_MIN } from '../export/framesPerCycle';
-import type { AnimationSize } from '../export/exportSize';
-import type { AnimationExportResult, AnimationFormat } from '../export/types';
+import { FRAMES_PER_CYCLE_DEFAULT, FRAMES_PER_CYCLE_MAX, FRAMES_PER_CYCLE_MIN } from './animation/framesPerCycle';
+import type { AnimationSize } from './animation/exportSize';
+import type { AnimationExportResult, AnimationFormat } from './animation/types';
 import type { AnimationRequest } from './animationExporter';
-import { useMessages } from './MessagesContext';
-import { Segmented } from './Segmented';
-import { Toggle } from './Toggle';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Segmented } from '../../shared/ui/Segmented';
+import { Toggle } from '../../shared/ui/Toggle';
 
 const FRAMES_PER_CYCLE = { min: FRAMES_PER_CYCLE_MIN, max: FRAMES_PER_CYCLE_MAX, initial: FRAMES_PER_CYCLE_DEFAULT };
 

@@ -1,10 +1,10 @@
 import { memo, useState } from 'react';
-import type { AnimationExportResult } from '../export/types';
-import type { ExportSubject, PngSize } from '../state/fileNames';
+import type { AnimationExportResult } from './animation/types';
+import type { ExportSubject, PngSize } from '../../shared/fileNames';
 import type { AnimationRequest } from './animationExporter';
 import { AnimationExportControls } from './AnimationExportControls';
-import { useMessages } from './MessagesContext';
-import { Segmented } from './Segmented';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Segmented } from '../../shared/ui/Segmented';
 
 /** Props of ExportPanel: handlers that build and download each file; they reject with a reason on failure. */
 export interface ExportPanelProps {

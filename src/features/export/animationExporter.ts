@@ -1,19 +1,19 @@
 // Loaded with a dynamic import on the first animation export: the encoders stay out of the first load.
-import { exportAnimation, MAX_FPS } from '../export/animationExport';
-import { planAnimationFrames, playbackFps } from '../export/animationFrames';
-import type { AnimationSize } from '../export/exportSize';
-import { exportSizePx } from '../export/exportSize';
-import type { AnimationExportResult, AnimationFormat, ExportProgress, RenderFrame } from '../export/types';
-import { downloadBlob } from '../render/download';
-import { drawLinkage } from '../render/drawLinkage';
-import type { LinkageScene } from '../render/scene';
-import { fitView } from '../render/view';
-import type { AppState } from '../state/appState';
-import { rangeToDeg } from '../state/animation';
-import { animationFileName } from '../state/fileNames';
-import type { Messages } from '../state/messages';
-import type { CycleResponse } from '../worker/protocol';
-import { sceneAtFrame } from './frameScene';
+import { exportAnimation, MAX_FPS } from './animation/animationExport';
+import { planAnimationFrames, playbackFps } from './animation/animationFrames';
+import type { AnimationSize } from './animation/exportSize';
+import { exportSizePx } from './animation/exportSize';
+import type { AnimationExportResult, AnimationFormat, ExportProgress, RenderFrame } from './animation/types';
+import { downloadBlob } from '../../shared/canvas/download';
+import { drawLinkage } from '../../shared/linkage/drawLinkage';
+import type { LinkageScene } from '../../shared/linkage/scene';
+import { fitView } from '../../shared/canvas/view';
+import type { AppState } from '../../shared/state/appState';
+import { rangeToDeg } from '../../shared/state/animation';
+import { animationFileName } from '../../shared/fileNames';
+import type { Messages } from '../../shared/i18n/messages';
+import type { CycleResponse } from '../../shared/jobs/protocol';
+import { sceneAtFrame } from '../../shared/linkage/frameScene';
 
 /** What the user chose in the Export panel for one animation export. */
 export interface AnimationRequest {

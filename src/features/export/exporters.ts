@@ -1,34 +1,34 @@
-import { drawAngleChart } from '../charts/angleChart';
-import type { AngleMarker } from '../charts/angleChart';
-import { drawConvergenceChart } from '../charts/convergenceChart';
-import type { RateMarker } from '../charts/rateChart';
-import { drawRateChart } from '../charts/rateChart';
-import { canvasToPngBytes, downloadBlob } from '../render/download';
-import { drawLinkage } from '../render/drawLinkage';
-import { withPngDpi } from '../render/png';
-import { svgToPngBytes, svgToText } from '../render/rasterize';
-import type { LinkageScene } from '../render/scene';
-import { SvgContext } from '../render/svgContext';
-import { fitView } from '../render/view';
-import type { ViewOffset } from '../state/appState';
-import type { CycleTable } from '../state/csv';
-import { cycleToCsv } from '../state/csv';
-import type { PngSize } from '../state/fileNames';
-import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
-import { radToDeg360 } from '../solver/angles';
-import type { Branch } from '../solver/types';
-import type { ExportSubject } from '../state/fileNames';
-import { csvFileName, pngFileName, svgFileName } from '../state/fileNames';
-import type { Messages } from '../state/messages';
-import { plotSeries } from '../worker/plotSeries';
-import type { PointResponse, TableResponse } from '../worker/protocol';
-import { decodeStatuses } from '../worker/statusCodes';
-import type { AngleChartInputs, ConvergenceInputs, CycleDegrees } from './chartInputs';
-import { angleChartInputs, angleMarker, convergenceInputs } from './chartInputs';
-import type { RateChartKind } from './rateInputs';
-import { plotRates, rateChartInputs, rateMarker } from './rateInputs';
-import type { ShownFrame } from './useExports';
-import type { RateChartInputs } from './rateInputs';
+import { drawAngleChart } from '../../shared/charts/theta2Chart';
+import type { AngleMarker } from '../../shared/charts/theta2Chart';
+import { drawConvergenceChart } from '../../shared/charts/convergenceChart';
+import type { RateMarker } from '../../shared/charts/rateChart';
+import { drawRateChart } from '../../shared/charts/rateChart';
+import { canvasToPngBytes, downloadCsv, downloadPng, downloadText } from '../../shared/canvas/download';
+import { detachedSvg } from '../../shared/canvas/svgContext';
+import { drawLinkage } from '../../shared/linkage/drawLinkage';
+import { withPngDpi } from '../../shared/canvas/png';
+import { svgToPngBytes, svgToText } from '../../shared/canvas/rasterize';
+import type { LinkageScene } from '../../shared/linkage/scene';
+import { SvgContext } from '../../shared/canvas/svgContext';
+import { fitView } from '../../shared/canvas/view';
+import type { ViewOffset } from '../../shared/state/appState';
+import type { CycleTable } from '../../shared/csv';
+import type { PngSize } from '../../shared/fileNames';
+import { PNG_DPI, PNG_SCALE } from '../../shared/fileNames';
+import { radToDeg360 } from '../../solver/angles';
+import type { Branch } from '../../solver/types';
+import type { ExportSubject } from '../../shared/fileNames';
+import { csvFileName, pngFileName, svgFileName } from '../../shared/fileNames';
+import type { Messages } from '../../shared/i18n/messages';
+import { plotSeries } from '../../shared/jobs/plotSeries';
+import type { PointResponse, TableResponse } from '../../shared/jobs/protocol';
+import { decodeStatuses } from '../../shared/jobs/statusCodes';
+import type { AngleChartInputs, ConvergenceInputs, CycleDegrees } from '../../shared/charts/chartInputs';
+import { angleChartInputs, angleMarker, convergenceInputs } from '../../shared/charts/chartInputs';
+import type { RateChartKind } from '../../shared/charts/rateInputs';
+import { plotRates, rateChartInputs, rateMarker } from '../../shared/charts/rateInputs';
+import type { ShownFrame } from '../../shared/linkage/shownFrame';
+import type { RateChartInputs } from '../../shared/charts/rateInputs';
 
 /** Logical (CSS pixel) size of exported angle and rate plots. */
 export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
@@ -180,11 +180,6 @@ export function convergenceSvg(inputs: ConvergenceInputs, width: number, height:
   return svgToText(svg);
 }
 
-/** A new SVG element outside the document, for off-screen chart rendering. */
-export function detachedSvg(): SVGSVGElement {
-  return document.createElementNS('http://www.w3.org/2000/svg', 'svg');
-}
-
 /** Renders an angle chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
 export async function angleChartPng(
   inputs: AngleChartInputs,
@@ -229,19 +224,4 @@ export async function convergencePng(
   const { runs, tolerance, ...text } = inputs;
   drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height });
   return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
-}
-
-/** Downloads PNG bytes under fileName. */
-export function downloadPng(bytes: Uint8Array, fileName: string): void {
-  downloadBlob(new Blob([bytes as BlobPart], { type: 'image/png' }), fileName);
-}
-
-/** Downloads the cycle as CSV (d3-dsv formatting) under fileName. */
-export function downloadCsv(table: CycleTable, fileName: string): void {
-  downloadBlob(new Blob([cycleToCsv(table)], { type: 'text/csv;charset=utf-8' }), fileName);
-}
-
-/** Downloads text (CSV) under fileName with the given MIME type. */
-export function downloadText(text: string, fileName: string, type: string): void {
-  downloadBlob(new Blob([text], { type }), fileName);
 }

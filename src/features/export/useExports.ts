@@ -1,28 +1,17 @@
 import { useCallback, useRef } from 'react';
-import type { AnimationExportResult } from '../export/types';
-import type { LinkageScene } from '../render/scene';
-import type { AppState } from '../state/appState';
-import type { ExportSubject, PngSize } from '../state/fileNames';
-import { degToRad } from '../solver/angles';
-import { effectiveInputMotion } from '../state/inputMotion';
-import type { Messages } from '../state/messages';
-import type { SolverClient } from '../worker/client';
-import type { CycleResponse, PointResponse } from '../worker/protocol';
+import type { AnimationExportResult } from './animation/types';
+import type { ShownFrame } from '../../shared/linkage/shownFrame';
+import type { AppState } from '../../shared/state/appState';
+import type { ExportSubject, PngSize } from '../../shared/fileNames';
+import { degToRad } from '../../solver/angles';
+import { effectiveInputMotion } from '../../shared/state/inputMotion';
+import type { Messages } from '../../shared/i18n/messages';
+import type { SolverClient } from '../../shared/jobs/client';
+import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
 import type { AnimationRequest } from './animationExporter';
 import type { ExportContext } from './exporters';
-import type { CycleDegrees } from './chartInputs';
-import type { FrameMotion } from './frameMotion';
-import { useStableCallback } from './useStableCallback';
-
-/** The frame the linkage view drew last: its state (Play's frame applied), its pose as a point and its scene. */
-export interface ShownFrame {
-  state: AppState;
-  /** The pose on screen as a point (the plots' marker). */
-  marker: PointResponse;
-  /** Its velocities and accelerations (the rate plots' marker); null where it does not assemble. */
-  motion: FrameMotion | null;
-  scene: LinkageScene;
-}
+import type { CycleDegrees } from '../../shared/charts/chartInputs';
+import { useStableCallback } from '../../shared/hooks/useStableCallback';
 
 /** What the exports draw: the state, the latest answers, the frame on screen, the cycle in degrees and the strings. */
 export interface ExportSources {

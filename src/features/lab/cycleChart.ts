@@ -2,9 +2,9 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import type { ScaleContinuousNumeric } from 'd3-scale';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import { curveStep, line } from 'd3-shape';
-import type { SweepMethod } from '../solver/types';
-import { CHART_COLORS } from '../theme/tokens';
-import type { Margins } from './chartFrame';
+import type { SweepMethod } from '../../solver/types';
+import { CHART_COLORS } from '../../shared/theme/tokens';
+import type { Margins } from '../../shared/charts/chartFrame';
 import {
   CHART_STYLE,
   child,
@@ -14,7 +14,7 @@ import {
   styleAxis,
   drawGridLines,
   drawChartText,
-} from './chartFrame';
+} from '../../shared/charts/chartFrame';
 import {
   angleTicks,
   fittedTicks,
@@ -25,7 +25,7 @@ import {
   niceCountDomain,
   niceLogDomain,
   tickCount,
-} from './ticks';
+} from '../../shared/charts/ticks';
 import { LEGEND_ROW, METHOD_COLORS, drawMethodLegend } from './workPrecisionChart';
 
 /** NR iterations at each theta2 sample of one method. */

@@ -1,5 +1,5 @@
-import { radToDeg } from '../solver/angles';
-import type { Branch, Linkage } from '../solver/types';
+import { radToDeg } from '../../solver/angles';
+import type { Branch, Linkage } from '../../solver/types';
 
 /** Identifiers of the 23 hard cases, in table order. */
 export type HardCaseId =

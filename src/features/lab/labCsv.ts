@@ -1,6 +1,6 @@
 import { csvFormatRows } from 'd3-dsv';
-import type { LabResult } from '../lab/workPrecision';
-import { csvNumber } from './csv';
+import type { LabResult } from '../../study/workPrecision';
+import { csvNumber } from '../../shared/csv';
 
 /** Column names of the solver lab's CSV: one row per method and tolerance (errors in radians, time in ns). */
 export const LAB_CSV_HEADER = [

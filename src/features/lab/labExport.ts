@@ -1,11 +1,11 @@
-import { drawWorkPrecisionChart } from '../charts/workPrecisionChart';
-import type { WorkPrecisionChartOptions } from '../charts/workPrecisionChart';
-import type { LabSeries } from '../lab/workPrecision';
-import { withPngDpi } from '../render/png';
-import { svgToPngBytes, svgToText } from '../render/rasterize';
-import type { PngSize } from '../state/fileNames';
-import { PNG_DPI, PNG_SCALE } from '../state/fileNames';
-import { detachedSvg } from './exporters';
+import { drawWorkPrecisionChart } from './workPrecisionChart';
+import type { WorkPrecisionChartOptions } from './workPrecisionChart';
+import type { LabSeries } from '../../study/workPrecision';
+import { withPngDpi } from '../../shared/canvas/png';
+import { svgToPngBytes, svgToText } from '../../shared/canvas/rasterize';
+import type { PngSize } from '../../shared/fileNames';
+import { PNG_DPI, PNG_SCALE } from '../../shared/fileNames';
+import { detachedSvg } from '../../shared/canvas/svgContext';
 
 /** Renders the work-precision diagram off screen at opts.width x opts.height CSS pixels; PNG bytes at the export size. */
 export async function labPng(

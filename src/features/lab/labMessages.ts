@@ -1,10 +1,10 @@
-import type { Locale } from './appState';
+import type { Locale } from '../../shared/state/appState';
 import type { HardCaseId } from './hardCases';
 import { labMessagesEn } from './labMessagesEn';
 import { labMessagesZhTw } from './labMessagesZhTw';
 
 /**
- * The solver lab's strings, apart from the app's (state/messages.ts): only the lab page reads them, so they load
+ * The solver lab's strings, apart from the app's (shared/i18n/messages.ts): only the lab page reads them, so they load
  * with it, both languages together (about 3 KB gzip off the first load, issue 11).
  */
 export interface LabMessages {
@@ -19,7 +19,7 @@ export interface LabMessages {
   /** Progress line; percent is a formatted number without the % sign. */
   labProgress: (stage: string, percent: string) => string;
   labCancelled: string;
-  /** Stages of the lab's study as the progress line names them (see state/labStage.ts). */
+  /** Stages of the lab's study as the progress line names them (see features/lab/labStage.ts). */
   labStageReference: string;
   labStageSolve: (method: string, tol: string | null) => string;
   labStageTiming: (pass: string, passes: string, what: string) => string;

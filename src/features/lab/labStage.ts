@@ -1,14 +1,14 @@
-import { LAB_METHODS } from '../lab/workPrecision';
-import type { SweepMethod } from '../solver/types';
+import { LAB_METHODS } from '../../study/workPrecision';
+import type { SweepMethod } from '../../solver/types';
 import type { LabMessages } from './labMessages';
-import type { Messages } from './messages';
+import type { Messages } from '../../shared/i18n/messages';
 
 /** The strings the lab's progress line needs: the method names and the lab's own. */
 export type LabStageMessages = Pick<Messages, 'methodNames'> & LabMessages;
 
 /**
  * A stage of the lab's study, read from the English text the study reports
- * (src/lab/workPrecision.ts runWorkPrecision: 'reference', '<label>', '<label>, tol <tol>',
+ * (src/study/workPrecision.ts runWorkPrecision: 'reference', '<label>', '<label>, tol <tol>',
  * 'timing <k>/<n>: <label>[, tol <tol>]', 'done'). Anything else is kept as text.
  */
 export type LabStage =

@@ -1,7 +1,7 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
-import type { LabResult } from '../lab/workPrecision';
-import type { Branch, Linkage } from '../solver/types';
-import type { SolverClient } from '../worker/client';
+import type { LabResult } from '../../study/workPrecision';
+import type { Branch, Linkage } from '../../solver/types';
+import type { SolverClient } from '../../shared/jobs/client';
 
 /** State of the solver lab's study: the last finished result, and progress while one runs. */
 export interface LabState {

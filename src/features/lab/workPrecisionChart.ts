@@ -1,10 +1,10 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLog } from 'd3-scale';
 import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
-import type { LabPoint, LabSeries } from '../lab/workPrecision';
-import type { SweepMethod } from '../solver/types';
-import { CHART_COLORS } from '../theme/tokens';
-import type { Margins, SvgSel } from './chartFrame';
+import type { LabPoint, LabSeries } from '../../study/workPrecision';
+import type { SweepMethod } from '../../solver/types';
+import { CHART_COLORS } from '../../shared/theme/tokens';
+import type { Margins, SvgSel } from '../../shared/charts/chartFrame';
 import {
   CHART_STYLE,
   child,
@@ -14,8 +14,8 @@ import {
   styleAxis,
   drawGridLines,
   drawChartText,
-} from './chartFrame';
-import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from './ticks';
+} from '../../shared/charts/chartFrame';
+import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from '../../shared/charts/ticks';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {

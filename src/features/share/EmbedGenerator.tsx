@@ -1,11 +1,11 @@
-import type { EmbedPresetId } from '../state/embedSnippet';
-import { DEFAULT_EMBED_PRESET, EMBED_PRESETS } from '../state/embedSnippet';
-import type { EmbedOptions, EmbedPanel, LockableParam } from '../state/url';
-import { EMBED_PANELS, LOCKABLE_PARAMS } from '../state/url';
+import type { EmbedPresetId } from './embedSnippet';
+import { DEFAULT_EMBED_PRESET, EMBED_PRESETS } from './embedSnippet';
+import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
+import { EMBED_PANELS, LOCKABLE_PARAMS } from '../../shared/url/url';
 import { EmbedPreview } from './EmbedPreview';
-import { useMessages } from './MessagesContext';
-import { Segmented } from './Segmented';
-import { Toggle } from './Toggle';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Segmented } from '../../shared/ui/Segmented';
+import { Toggle } from '../../shared/ui/Toggle';
 
 /** Props of EmbedGenerator: the chosen options, the widget URL and snippet for them, and how to change them. */
 export interface EmbedGeneratorProps {

@@ -1,7 +1,7 @@
 import { useRef } from 'react';
-import type { EmbedPreset } from '../state/embedSnippet';
-import { EMBED_SANDBOX } from '../state/embedSnippet';
-import { useElementSize } from './useElementSize';
+import type { EmbedPreset } from './embedSnippet';
+import { EMBED_SANDBOX } from './embedSnippet';
+import { useElementSize } from '../../shared/hooks/useElementSize';
 
 /** Props of EmbedPreview: the widget's URL, the frame's size preset and the frame's accessible title. */
 export interface EmbedPreviewProps {

@@ -1,12 +1,12 @@
 import './SharePanel.css';
 import { Suspense, lazy, memo, useState } from 'react';
-import type { AppState } from '../state/appState';
-import type { EmbedPresetId } from '../state/embedSnippet';
-import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from '../state/embedSnippet';
-import type { EmbedOptions, EmbedPanel, LockableParam } from '../state/url';
-import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS, embedUrl, serializeState } from '../state/url';
-import { copyText } from './clipboard';
-import { useMessages } from './MessagesContext';
+import type { AppState } from '../../shared/state/appState';
+import type { EmbedPresetId } from './embedSnippet';
+import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from './embedSnippet';
+import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
+import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS, embedUrl, serializeState } from '../../shared/url/url';
+import { copyText } from '../../shared/ui/clipboard';
+import { useMessages } from '../../shared/i18n/MessagesContext';
 
 /** Props of SharePanel: how to read the state to share when a copy button is pressed. */
 export interface SharePanelProps {

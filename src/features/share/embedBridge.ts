@@ -1,5 +1,5 @@
-import type { EmbedValue } from '../state/embedMessages';
-import { EMBED_MESSAGE_TAG, readSetState } from '../state/embedMessages';
+import type { EmbedValue } from './embedMessages';
+import { EMBED_MESSAGE_TAG, readSetState } from './embedMessages';
 
 /** Where a patch of URL keys came from: the parent window's set-state command, or the element's attributes. */
 export type PatchSource = 'parent' | 'attribute';

@@ -1,9 +1,9 @@
-import type { AppState } from './appState';
-import type { LockableParam } from './embedOptions';
-import { DEFAULT_EMBED } from './embedOptions';
-import { serializeState } from './url';
-import type { UrlTarget } from './urlKeys';
-import { URL_CONSTRAINTS, URL_KEYS } from './urlKeys';
+import type { AppState } from '../../shared/state/appState';
+import type { LockableParam } from '../../shared/url/embedOptions';
+import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
+import { serializeState } from '../../shared/url/url';
+import type { UrlTarget } from '../../shared/url/urlKeys';
+import { URL_CONSTRAINTS, URL_KEYS } from '../../shared/url/urlKeys';
 
 /** The tag on every message the widget posts (`source`) and on every command it accepts (`target`). */
 export const EMBED_MESSAGE_TAG = 'fourbar-lab';

@@ -1,9 +1,9 @@
 import { useEffect, useRef } from 'react';
-import { useEffectEvent } from './useEffectEvent';
+import { useEffectEvent } from '../../shared/hooks/useEffectEvent';
 import type { Dispatch } from 'react';
-import type { Action, AppState } from '../state/appState';
-import { applyPatch, stateValues } from '../state/embedMessages';
-import type { LockableParam } from '../state/embedOptions';
+import type { Action, AppState } from '../../shared/state/appState';
+import { applyPatch, stateValues } from './embedMessages';
+import type { LockableParam } from '../../shared/url/embedOptions';
 import type { EmbedBridge, PatchSource } from './embedBridge';
 
 /** Longest wait between a state change and its event, ms: at most five events a second, the last state always sent. */

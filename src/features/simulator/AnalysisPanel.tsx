@@ -1,13 +1,13 @@
 import './AnalysisPanel.css';
 import { memo } from 'react';
-import type { Branch } from '../solver/types';
-import type { NrStart } from '../state/appState';
-import { radToDeg, radToDeg180, radToDeg360 } from '../solver/angles';
-import { formatDeg, formatSci } from '../state/format';
-import { grashofSumsText } from '../state/grashofText';
-import { formatInputRange } from '../state/inputRange';
-import type { CycleResponse, PointResponse, TableResponse } from '../worker/protocol';
-import { useMessages } from './MessagesContext';
+import type { Branch } from '../../solver/types';
+import type { NrStart } from '../../shared/state/appState';
+import { radToDeg, radToDeg180, radToDeg360 } from '../../solver/angles';
+import { formatDeg, formatSci } from '../../shared/format';
+import { grashofSumsText } from './grashofText';
+import { formatInputRange } from '../../shared/state/inputRange';
+import type { CycleResponse, PointResponse, TableResponse } from '../../shared/jobs/protocol';
+import { useMessages } from '../../shared/i18n/MessagesContext';
 
 /** Props of AnalysisPanel: the latest cycle and point answers, the branch and the chosen NR start. */
 export interface AnalysisPanelProps {

@@ -1,20 +1,20 @@
 import './ControlsPanel.css';
 import { memo, useState } from 'react';
 import type { Dispatch } from 'react';
-import type { Linkage } from '../solver/types';
-import type { Action, AppState, Direction } from '../state/appState';
-import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../state/appState';
-import { THETA2_DECIMALS } from '../state/format';
-import type { PresetId } from '../state/presets';
-import { PRESETS, getPreset, matchPreset } from '../state/presets';
-import { lengthSliderRange, needsNewRange } from '../state/sliderRange';
-import type { LockableParam } from '../state/url';
-import { useMessages } from './MessagesContext';
-import { Icon } from './Icon';
+import type { Linkage } from '../../solver/types';
+import type { Action, AppState, Direction } from '../../shared/state/appState';
+import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../shared/state/appState';
+import { THETA2_DECIMALS } from '../../shared/format';
+import type { PresetId } from '../../shared/state/presets';
+import { PRESETS, getPreset, matchPreset } from '../../shared/state/presets';
+import { lengthSliderRange, needsNewRange } from './sliderRange';
+import type { LockableParam } from '../../shared/url/url';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Icon } from '../../shared/ui/Icon';
 import { MotionControls } from './MotionControls';
-import { NumberControl } from './NumberControl';
-import { Segmented } from './Segmented';
-import { FlagToggles } from './Toggle';
+import { NumberControl } from '../../shared/ui/NumberControl';
+import { Segmented } from '../../shared/ui/Segmented';
+import { FlagToggles } from '../../shared/ui/Toggle';
 
 /** Props of ControlsPanel: the state, its dispatcher, locked parameters and what the layout shows. */
 export interface ControlsPanelProps {

@@ -1,12 +1,12 @@
 import './ConvergencePanel.css';
 import type { Dispatch } from 'react';
 import { memo, useMemo } from 'react';
-import type { Action, NrStart } from '../state/appState';
-import type { PointResponse } from '../worker/protocol';
-import { convergenceInputs } from './chartInputs';
-import { ConvergenceChartView } from './ConvergenceChartView';
-import { useMessages } from './MessagesContext';
-import { Segmented } from './Segmented';
+import type { Action, NrStart } from '../../shared/state/appState';
+import type { PointResponse } from '../../shared/jobs/protocol';
+import { convergenceInputs } from '../../shared/charts/chartInputs';
+import { ConvergenceChartView } from '../../shared/charts/ConvergenceChartView';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Segmented } from '../../shared/ui/Segmented';
 
 /** Props of ConvergencePanel: the latest pose's NR runs and the chosen start. */
 export interface ConvergencePanelProps {

@@ -1,12 +1,12 @@
 import './DesignPanel.css';
 import { memo, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
-import type { Action } from '../state/appState';
-import type { DesignStop } from '../state/designFacts';
-import { designFacts } from '../state/designFacts';
+import type { Action } from '../../shared/state/appState';
+import type { DesignStop } from '../../shared/linkage/designFacts';
+import { designFacts } from '../../shared/linkage/designFacts';
 import type { DesignInfo } from './useDesignMetrics';
-import { useMessages } from './MessagesContext';
-import { NumberControl } from './NumberControl';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { NumberControl } from '../../shared/ui/NumberControl';
 
 /** Props of DesignPanel: the design metrics (null when the lengths are refused), the μ band and the dispatcher. */
 export interface DesignPanelProps {

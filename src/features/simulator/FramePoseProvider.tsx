@@ -1,9 +1,9 @@
 import type { ReactNode } from 'react';
 import { useMemo, useSyncExternalStore } from 'react';
-import type { AppState } from '../state/appState';
-import type { Playhead } from '../state/playhead';
-import { withFrame } from '../state/playhead';
-import { FramePoseContext } from './FramePoseContext';
+import type { AppState } from '../../shared/state/appState';
+import type { Playhead } from '../../shared/state/playhead';
+import { withFrame } from '../../shared/state/playhead';
+import { FramePoseContext } from '../../shared/linkage/FramePoseContext';
 import { useFrameMotion } from './useFrameMotion';
 import { useLinkagePose } from './useLinkagePose';
 

@@ -2,20 +2,20 @@ import './LinkageCanvas.css';
 import { memo, useEffect, useId, useLayoutEffect, useRef, useState } from 'react';
 import type { PointerEvent as ReactPointerEvent } from 'react';
 import { flushSync } from 'react-dom';
-import { radToDeg360, wrapDeg360 } from '../solver/angles';
-import { canvasToolsRect } from '../render/canvasTools';
-import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../render/drawLinkage';
-import type { LinkageScene } from '../render/scene';
-import type { Bounds, ViewTransform } from '../render/view';
-import { fitView, toScreenX, toScreenY, zoomAbout } from '../render/view';
-import type { CouplerPoint, ViewOffset } from '../state/appState';
-import { benchMark } from '../worker/benchMarks';
-import type { ScreenPoint } from './canvasGestures';
-import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from './canvasGestures';
-import { Icon } from './Icon';
-import { useMessages } from './MessagesContext';
-import { useElementSize } from './useElementSize';
-import { useEffectEvent } from './useEffectEvent';
+import { radToDeg360, wrapDeg360 } from '../../solver/angles';
+import { canvasToolsRect } from '../../shared/canvas/canvasTools';
+import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../../shared/linkage/drawLinkage';
+import type { LinkageScene } from '../../shared/linkage/scene';
+import type { Bounds, ViewTransform } from '../../shared/canvas/view';
+import { fitView, toScreenX, toScreenY, zoomAbout } from '../../shared/canvas/view';
+import type { CouplerPoint, ViewOffset } from '../../shared/state/appState';
+import { benchMark } from '../../shared/jobs/benchMarks';
+import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
+import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from '../../shared/canvas/canvasGestures';
+import { Icon } from '../../shared/ui/Icon';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { useElementSize } from '../../shared/hooks/useElementSize';
+import { useEffectEvent } from '../../shared/hooks/useEffectEvent';
 
 /** Props of LinkageCanvas: the scene, the user's pan and zoom, what can be dragged, and a size report for exports. */
 export interface LinkageCanvasProps {

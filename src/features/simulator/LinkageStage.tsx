@@ -1,14 +1,14 @@
 import { useLayoutEffect } from 'react';
-import type { ViewOffset, CouplerPoint } from '../state/appState';
-import type { CycleResponse } from '../worker/protocol';
-import { useFramePose } from './FramePoseContext';
+import type { ViewOffset, CouplerPoint } from '../../shared/state/appState';
+import type { CycleResponse } from '../../shared/jobs/protocol';
+import { useFramePose } from '../../shared/linkage/FramePoseContext';
 import { LinkageCanvas } from './LinkageCanvas';
-import { useMessages } from './MessagesContext';
+import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { DesignInfo } from './useDesignMetrics';
 import { useDesignScene } from './useDesignScene';
 import { useLinkageScene } from './useLinkageScene';
 import { useSceneVectors } from './useSceneVectors';
-import type { ShownFrame } from './useExports';
+import type { ShownFrame } from '../../shared/linkage/shownFrame';
 
 /** Props of LinkageStage: the latest cycle and design facts, the canvas's callbacks and hint, and a scene report. */
 export interface LinkageStageProps {

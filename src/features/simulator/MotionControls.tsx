@@ -1,11 +1,11 @@
 import { useState } from 'react';
 import type { Dispatch } from 'react';
-import type { Action, AppState } from '../state/appState';
-import type { OmegaUnit } from '../state/inputMotion';
-import { ALPHA_SLIDER, OMEGA_SLIDER, OMEGA_UNITS, omegaFromUnit, omegaToUnit } from '../state/inputMotion';
-import { useMessages } from './MessagesContext';
-import { NumberControl } from './NumberControl';
-import { FlagToggles } from './Toggle';
+import type { Action, AppState } from '../../shared/state/appState';
+import type { OmegaUnit } from '../../shared/state/inputMotion';
+import { ALPHA_SLIDER, OMEGA_SLIDER, OMEGA_UNITS, omegaFromUnit, omegaToUnit } from '../../shared/state/inputMotion';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { NumberControl } from '../../shared/ui/NumberControl';
+import { FlagToggles } from '../../shared/ui/Toggle';
 
 /** Props of MotionControls: the state and its dispatcher. */
 export interface MotionControlsProps {

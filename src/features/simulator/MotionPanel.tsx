@@ -1,9 +1,9 @@
 import './AnalysisPanel.css';
 import { memo } from 'react';
-import { radToDeg360 } from '../solver/angles';
-import { formatDeg } from '../state/format';
-import type { FrameMotion } from './frameMotion';
-import { useMessages } from './MessagesContext';
+import { radToDeg360 } from '../../solver/angles';
+import { formatDeg } from '../../shared/format';
+import type { FrameMotion } from '../../shared/linkage/frameMotion';
+import { useMessages } from '../../shared/i18n/MessagesContext';
 import { motionFacts } from './motionFacts';
 
 /** Props of MotionPanel: this frame's motion (null when the linkage does not assemble) and its theta2 (radians). */

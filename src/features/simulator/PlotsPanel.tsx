@@ -1,15 +1,15 @@
-import './AnglePlotsPanel.css';
+import './PlotsPanel.css';
 import type { Dispatch } from 'react';
 import { Suspense, lazy, memo, useMemo } from 'react';
-import type { XMark } from '../charts/xMarks';
-import type { Action, PlotKind, PlotLayout } from '../state/appState';
-import { AngleChartView } from './AngleChartView';
-import type { CycleDegrees } from './chartInputs';
-import { angleChartInputs, angleMarker } from './chartInputs';
-import { useFramePose } from './FramePoseContext';
-import { useMessages } from './MessagesContext';
-import type { CycleRates } from './rateInputs';
-import { Segmented } from './Segmented';
+import type { XMark } from '../../shared/charts/xMarks';
+import type { Action, PlotKind, PlotLayout } from '../../shared/state/appState';
+import { AngleChartView } from '../../shared/charts/Theta2ChartView';
+import type { CycleDegrees } from '../../shared/charts/chartInputs';
+import { angleChartInputs, angleMarker } from '../../shared/charts/chartInputs';
+import { useFramePose } from '../../shared/linkage/FramePoseContext';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import type { CycleRates } from '../../shared/charts/rateInputs';
+import { Segmented } from '../../shared/ui/Segmented';
 
 // The rate charts load only when a rate plot is chosen: they are not part of the first load.
 const RatePlots = lazy(() => import('./RatePlots').then((m) => ({ default: m.RatePlots })));

@@ -1,12 +1,12 @@
 import { useMemo } from 'react';
-import type { LinkRates } from '../solver/rates';
-import type { Branch } from '../solver/types';
-import type { XMark } from '../charts/xMarks';
-import type { PlotLayout } from '../state/appState';
-import { useMessages } from './MessagesContext';
-import type { CycleRates, RateChartKind } from './rateInputs';
-import { rateChartInputs, rateChartKinds, rateMarker } from './rateInputs';
-import { RateChartView } from './RateChartView';
+import type { LinkRates } from '../../solver/rates';
+import type { Branch } from '../../solver/types';
+import type { XMark } from '../../shared/charts/xMarks';
+import type { PlotLayout } from '../../shared/state/appState';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import type { CycleRates, RateChartKind } from '../../shared/charts/rateInputs';
+import { rateChartInputs, rateChartKinds, rateMarker } from '../../shared/charts/rateInputs';
+import { RateChartView } from '../../shared/charts/RateChartView';
 
 /** Props of RatePlots: the plot kind, the cycle's rates, this frame's rates and theta2, and the display choices. */
 export interface RatePlotsProps {

@@ -1,11 +1,11 @@
 import './TransmissionPanel.css';
-import type { XMark } from '../charts/xMarks';
+import type { XMark } from '../../shared/charts/xMarks';
 import { useMemo } from 'react';
-import type { CycleDegrees } from './chartInputs';
-import { useFramePose } from './FramePoseContext';
-import { useMessages } from './MessagesContext';
-import { TransmissionChartView } from './TransmissionChartView';
-import { muMarker, transmissionData, transmissionInputs } from './transmissionInputs';
+import type { CycleDegrees } from '../../shared/charts/chartInputs';
+import { useFramePose } from '../../shared/linkage/FramePoseContext';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { TransmissionChartView } from '../../shared/charts/TransmissionChartView';
+import { muMarker, transmissionData, transmissionInputs } from '../../shared/charts/transmissionInputs';
 
 /** Props of TransmissionPanel: the cycle in degrees, the band (degrees) and the dead-centre rules (the marker is the frame on screen). */
 export interface TransmissionPanelProps {

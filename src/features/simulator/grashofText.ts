@@ -1,6 +1,6 @@
-import { sumOfProducts } from '../solver/exact';
-import type { Classification } from '../solver/types';
-import { formatNumber } from './format';
+import { sumOfProducts } from '../../solver/exact';
+import type { Classification } from '../../solver/types';
+import { formatNumber } from '../../shared/format';
 
 /** The Grashof line's parts: both sums as shown, the relation the classification decided, and the exact excess when needed. */
 export interface GrashofSums {

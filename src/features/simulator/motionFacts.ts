@@ -1,7 +1,7 @@
-import { radToDeg360 } from '../solver/angles';
-import { formatDeg, formatNumber } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { FrameMotion, PointRates } from './frameMotion';
+import { radToDeg360 } from '../../solver/angles';
+import { formatDeg, formatNumber } from '../../shared/format';
+import type { Messages } from '../../shared/i18n/messages';
+import type { FrameMotion, PointRates } from '../../shared/linkage/frameMotion';
 
 /** One line of the motion panel: a stable key (for tests), its label and its formatted value with unit. */
 export interface MotionFact {

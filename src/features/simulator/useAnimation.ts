@@ -1,13 +1,13 @@
 import type { Dispatch } from 'react';
 import { startTransition, useEffect, useRef } from 'react';
-import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../state/animation';
-import type { InputRangeDeg } from '../state/animation';
-import type { Action, AppState } from '../state/appState';
-import { normalizeTheta2Deg } from '../state/appState';
-import type { PlayFrame, Playhead } from '../state/playhead';
-import { frameOf, playBase, sameFrame } from '../state/playhead';
-import { useAnimationFrame } from './useAnimationFrame';
-import { useStableCallback } from './useStableCallback';
+import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../../shared/state/animation';
+import type { InputRangeDeg } from '../../shared/state/animation';
+import type { Action, AppState } from '../../shared/state/appState';
+import { normalizeTheta2Deg } from '../../shared/state/appState';
+import type { PlayFrame, Playhead } from '../../shared/state/playhead';
+import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
+import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
+import { useStableCallback } from '../../shared/hooks/useStableCallback';
 
 /**
  * How often Play commits its frame to the app state, ms. Every frame moves the playhead (canvas and plot

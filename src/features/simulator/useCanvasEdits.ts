@@ -1,6 +1,6 @@
 import { useCallback } from 'react';
 import type { Dispatch } from 'react';
-import type { Action, CouplerPoint } from '../state/appState';
+import type { Action, CouplerPoint } from '../../shared/state/appState';
 
 /** Handlers for what the canvas edits directly: theta2 (dragging A, arrow keys) and the coupler point (dragging P). */
 export interface CanvasEdits {

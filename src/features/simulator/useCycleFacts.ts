@@ -1,12 +1,12 @@
 import { useMemo } from 'react';
-import type { InputRangeDeg } from '../state/animation';
-import type { Direction } from '../state/appState';
-import { isRocking, rangeToDeg } from '../state/animation';
-import type { CycleResponse } from '../worker/protocol';
-import type { CycleDegrees } from './chartInputs';
-import { cycleDegrees, plotDegrees } from './chartInputs';
-import type { CycleRates } from './rateInputs';
-import { plotRates } from './rateInputs';
+import type { InputRangeDeg } from '../../shared/state/animation';
+import type { Direction } from '../../shared/state/appState';
+import { isRocking, rangeToDeg } from '../../shared/state/animation';
+import type { CycleResponse } from '../../shared/jobs/protocol';
+import type { CycleDegrees } from '../../shared/charts/chartInputs';
+import { cycleDegrees, plotDegrees } from '../../shared/charts/chartInputs';
+import type { CycleRates } from '../../shared/charts/rateInputs';
+import { plotRates } from '../../shared/charts/rateInputs';
 import type { SolvedPlot } from './usePlotSeries';
 
 /** What the views read off a solved cycle: the angles in degrees, the input range in degrees, whether it rocks. */

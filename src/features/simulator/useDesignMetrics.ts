@@ -1,9 +1,9 @@
 import { useMemo } from 'react';
 // The solver's modules themselves, not its barrel: the barrel would pull the sweep and NR into the main bundle.
-import { inputRange } from '../solver/classify';
-import type { DesignMetrics } from '../solver/metrics';
-import { designMetrics } from '../solver/metrics';
-import type { Branch, InputRange, Linkage } from '../solver/types';
+import { inputRange } from '../../solver/classify';
+import type { DesignMetrics } from '../../solver/metrics';
+import { designMetrics } from '../../solver/metrics';
+import type { Branch, InputRange, Linkage } from '../../solver/types';
 
 /** The design metrics of the linkage on its branch and the input's reachable range (radians). */
 export interface DesignInfo {

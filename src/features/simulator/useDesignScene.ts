@@ -1,12 +1,12 @@
 import { useMemo } from 'react';
-import { degToRad, radToDeg } from '../solver/angles';
+import { degToRad, radToDeg } from '../../solver/angles';
 // The module itself, not the solver's barrel (which would pull the sweep and NR into the main bundle).
-import { instantCenters } from '../solver/instantCenters';
-import type { SceneDesign } from '../render/designOverlay';
-import type { AppState } from '../state/appState';
-import { formatDeg, formatNumber } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { LocalPose } from './localPose';
+import { instantCenters } from '../../solver/instantCenters';
+import type { SceneDesign } from '../../shared/linkage/designOverlay';
+import type { AppState } from '../../shared/state/appState';
+import { formatDeg, formatNumber } from '../../shared/format';
+import type { Messages } from '../../shared/i18n/messages';
+import type { LocalPose } from '../../shared/linkage/localPose';
 import type { DesignInfo } from './useDesignMetrics';
 
 /**

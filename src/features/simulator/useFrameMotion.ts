@@ -1,9 +1,9 @@
 import { useMemo } from 'react';
-import type { AppState } from '../state/appState';
-import { effectiveInputMotion } from '../state/inputMotion';
-import type { FrameMotion } from './frameMotion';
-import { frameMotion } from './frameMotion';
-import type { LocalPose } from './localPose';
+import type { AppState } from '../../shared/state/appState';
+import { effectiveInputMotion } from '../../shared/state/inputMotion';
+import type { FrameMotion } from '../../shared/linkage/frameMotion';
+import { frameMotion } from '../../shared/linkage/frameMotion';
+import type { LocalPose } from '../../shared/linkage/localPose';
 
 /**
  * This frame's velocities and accelerations (main thread, from the frame's own pose), for the input motion

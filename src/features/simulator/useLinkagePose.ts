@@ -1,8 +1,8 @@
 import { useMemo } from 'react';
-import type { AppState } from '../state/appState';
-import type { PointResponse } from '../worker/protocol';
-import type { LocalPose } from './localPose';
-import { localPose, poseAsPoint } from './localPose';
+import type { AppState } from '../../shared/state/appState';
+import type { PointResponse } from '../../shared/jobs/protocol';
+import type { LocalPose } from '../../shared/linkage/localPose';
+import { localPose, poseAsPoint } from '../../shared/linkage/localPose';
 
 /** This render's pose, and the same pose as a point answer for the plots' marker. */
 export interface FramePose {

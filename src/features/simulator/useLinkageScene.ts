@@ -1,17 +1,17 @@
 import { useMemo } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { radToDeg, radToDeg360 } from '../solver/angles';
-import type { Branch } from '../solver/types';
-import type { SceneDesign } from '../render/designOverlay';
-import type { SceneVectors } from '../render/motionVectors';
-import type { BranchExtent, LinkageScene, SceneText } from '../render/scene';
-import { sceneBounds, sceneCurves, scenePose } from '../render/scene';
-import type { AppState } from '../state/appState';
-import { formatDeg, formatNumber } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { CycleResponse } from '../worker/protocol';
-import { sceneWarning } from './frameScene';
-import type { LocalPose } from './localPose';
+import { radToDeg, radToDeg360 } from '../../solver/angles';
+import type { Branch } from '../../solver/types';
+import type { SceneDesign } from '../../shared/linkage/designOverlay';
+import type { SceneVectors } from '../../shared/linkage/motionVectors';
+import type { BranchExtent, LinkageScene, SceneText } from '../../shared/linkage/scene';
+import { sceneBounds, sceneCurves, scenePose } from '../../shared/linkage/scene';
+import type { AppState } from '../../shared/state/appState';
+import { formatDeg, formatNumber } from '../../shared/format';
+import type { Messages } from '../../shared/i18n/messages';
+import type { CycleResponse } from '../../shared/jobs/protocol';
+import { sceneWarning } from '../../shared/linkage/frameScene';
+import type { LocalPose } from '../../shared/linkage/localPose';
 
 /** The scene to draw and its accessible description (the angles, or why it cannot assemble). */
 export interface LinkageSceneView {

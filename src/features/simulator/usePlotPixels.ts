@@ -1,5 +1,5 @@
 import { useMemo, useState } from 'react';
-import { useElementSize } from './useElementSize';
+import { useElementSize } from '../../shared/hooks/useElementSize';
 
 /** The plots' width in device pixels (0 until laid out), and the callback ref to put on the plots' card. */
 export interface PlotPixels {

@@ -1,10 +1,10 @@
 import { useMemo } from 'react';
-import type { SceneVectors, VectorText, WorldVector } from '../render/motionVectors';
-import { arrowScale } from '../render/motionVectors';
-import type { AppState } from '../state/appState';
-import { formatNumber } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { FrameMotion, PointRates } from './frameMotion';
+import type { SceneVectors, VectorText, WorldVector } from '../../shared/linkage/motionVectors';
+import { arrowScale } from '../../shared/linkage/motionVectors';
+import type { AppState } from '../../shared/state/appState';
+import { formatNumber } from '../../shared/format';
+import type { Messages } from '../../shared/i18n/messages';
+import type { FrameMotion, PointRates } from '../../shared/linkage/frameMotion';
 
 function velocities(m: FrameMotion): Record<'A' | 'B' | 'P', WorldVector> {
   const v = (p: PointRates) => ({ x: p.vx, y: p.vy });

@@ -1,7 +1,7 @@
-import { radToDeg, wrapDeg180, wrapDeg360 } from '../solver/angles';
-import type { LinkageScene } from '../render/scene';
-import type { ViewTransform } from '../render/view';
-import { toScreenX, toScreenY, toWorld, zoomAbout } from '../render/view';
+import { radToDeg, wrapDeg180, wrapDeg360 } from '../../solver/angles';
+import type { LinkageScene } from '../linkage/scene';
+import type { ViewTransform } from './view';
+import { toScreenX, toScreenY, toWorld, zoomAbout } from './view';
 import type { CouplerPoint, ViewOffset } from '../state/appState';
 
 /** A point on the canvas in CSS pixels from its top-left corner. */

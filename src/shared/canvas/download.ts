@@ -1,3 +1,6 @@
+import type { CycleTable } from '../csv';
+import { cycleToCsv } from '../csv';
+
 /** Saves a blob through a real browser download with the given file name. */
 export function downloadBlob(blob: Blob, fileName: string): void {
   const url = URL.createObjectURL(blob);
@@ -24,4 +27,19 @@ export function canvasToPngBytes(canvas: HTMLCanvasElement): Promise<Uint8Array>
       blob.arrayBuffer().then((b) => resolve(new Uint8Array(b)), reject);
     }, 'image/png');
   });
+}
+
+/** Downloads PNG bytes under fileName. */
+export function downloadPng(bytes: Uint8Array, fileName: string): void {
+  downloadBlob(new Blob([bytes as BlobPart], { type: 'image/png' }), fileName);
+}
+
+/** Downloads the cycle as CSV (d3-dsv formatting) under fileName. */
+export function downloadCsv(table: CycleTable, fileName: string): void {
+  downloadBlob(new Blob([cycleToCsv(table)], { type: 'text/csv;charset=utf-8' }), fileName);
+}
+
+/** Downloads text (CSV) under fileName with the given MIME type. */
+export function downloadText(text: string, fileName: string, type: string): void {
+  downloadBlob(new Blob([text], { type }), fileName);
 }

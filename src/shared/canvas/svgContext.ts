@@ -1,4 +1,4 @@
-import { PI, TWO_PI, radToDeg } from '../solver/angles';
+import { PI, TWO_PI, radToDeg } from '../../solver/angles';
 import type { DrawContext } from './drawContext';
 
 /** Text width in CSS pixels of text in a CSS font shorthand (e.g. '600 12px system-ui'). */
@@ -405,4 +405,9 @@ export class SvgContext implements DrawContext {
 
 function xy(p: { x: number; y: number }): [number, number] {
   return [p.x, p.y];
+}
+
+/** A new SVG element outside the document, for off-screen chart rendering. */
+export function detachedSvg(): SVGSVGElement {
+  return document.createElementNS('http://www.w3.org/2000/svg', 'svg');
 }

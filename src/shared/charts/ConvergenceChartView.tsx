@@ -1,8 +1,8 @@
 import { useCallback, useLayoutEffect, useRef, useState } from 'react';
-import { createConvergenceChart } from '../charts/convergenceChart';
-import type { ConvergenceChart } from '../charts/convergenceChart';
+import { createConvergenceChart } from './convergenceChart';
+import type { ConvergenceChart } from './convergenceChart';
 import type { ConvergenceInputs } from './chartInputs';
-import { useElementSize } from './useElementSize';
+import { useElementSize } from '../hooks/useElementSize';
 
 /** Props of ConvergenceChartView: the runs and labels; it sizes itself to its box. */
 export interface ConvergenceChartViewProps {

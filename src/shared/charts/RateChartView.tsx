@@ -1,7 +1,7 @@
-import { createRateChart } from '../charts/rateChart';
-import type { RateMarker } from '../charts/rateChart';
-import type { XMark } from '../charts/xMarks';
-import { Theta2ChartView } from './AngleChartView';
+import { createRateChart } from './rateChart';
+import type { RateMarker } from './rateChart';
+import type { XMark } from './xMarks';
+import { Theta2ChartView } from './Theta2ChartView';
 import type { RateChartInputs } from './rateInputs';
 
 /** Props of RateChartView: everything the chart shows; it sizes itself to its box. */

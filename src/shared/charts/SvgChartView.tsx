@@ -1,6 +1,6 @@
 import './SvgChartView.css';
 import { useLayoutEffect, useRef } from 'react';
-import { useElementSize } from './useElementSize';
+import { useElementSize } from '../hooks/useElementSize';
 
 /** Props of SvgChartView: a draw function called with the SVG and its size in CSS pixels. */
 export interface SvgChartViewProps {

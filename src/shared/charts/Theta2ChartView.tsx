@@ -1,8 +1,8 @@
 import './SvgChartView.css';
 import { useLayoutEffect } from 'react';
-import { createAngleChart } from '../charts/angleChart';
-import type { AngleChartText, AngleMarker, Theta2Chart, Theta2ChartData } from '../charts/angleChart';
-import type { XMark } from '../charts/xMarks';
+import { createAngleChart } from './theta2Chart';
+import type { AngleChartText, AngleMarker, Theta2Chart, Theta2ChartData } from './theta2Chart';
+import type { XMark } from './xMarks';
 import type { AngleChartInputs } from './chartInputs';
 import { useLiveChart } from './useLiveChart';
 

@@ -1,7 +1,7 @@
 import './SvgChartView.css';
 import { useLayoutEffect } from 'react';
-import type { AngleMarker } from '../charts/angleChart';
-import { createTransmissionChart } from '../charts/transmissionChart';
+import type { AngleMarker } from './theta2Chart';
+import { createTransmissionChart } from './transmissionChart';
 import type { TransmissionChartInputs } from './transmissionInputs';
 import { useLiveChart } from './useLiveChart';
 

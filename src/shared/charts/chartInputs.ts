@@ -1,12 +1,12 @@
-import type { AngleChartData, AngleMarker } from '../charts/angleChart';
-import { CHART_STYLE } from '../charts/chartFrame';
-import type { ConvergenceRun } from '../charts/convergenceChart';
-import type { Branch } from '../solver/types';
-import { radToDeg180, radToDeg360 } from '../solver/angles';
+import type { AngleChartData, AngleMarker } from './theta2Chart';
+import { CHART_STYLE } from './chartFrame';
+import type { ConvergenceRun } from './convergenceChart';
+import type { Branch } from '../../solver/types';
+import { radToDeg180, radToDeg360 } from '../../solver/angles';
 import type { NrStart } from '../state/appState';
-import { formatDeg } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { CycleResponse, PlotSeries, PointResponse } from '../worker/protocol';
+import { formatDeg } from '../format';
+import type { Messages } from '../i18n/messages';
+import type { CycleResponse, PlotSeries, PointResponse } from '../jobs/protocol';
 
 /** The angle charts the app shows and exports. */
 export type AngleChartKind = 'theta3' | 'theta4' | 'both';

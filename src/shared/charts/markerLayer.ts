@@ -1,4 +1,4 @@
-import { TWO_PI } from '../solver/angles';
+import { TWO_PI } from '../../solver/angles';
 import { select } from 'd3-selection';
 import { CHART_STYLE, child } from './chartFrame';
 

@@ -1,7 +1,7 @@
 import { quantileSorted } from 'd3-array';
 import type { Selection } from 'd3-selection';
-import type { AngleChartOptions, AngleChartSize, AngleFrame, Theta2Chart, Theta2ChartData } from './angleChart';
-import { createTheta2Chart, drawChart, plotIndices } from './angleChart';
+import type { AngleChartOptions, AngleChartSize, AngleFrame, Theta2Chart, Theta2ChartData } from './theta2Chart';
+import { createTheta2Chart, drawChart, plotIndices } from './theta2Chart';
 import { estimateTextWidth, minus } from './chartFrame';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { LinearScale } from './scales';

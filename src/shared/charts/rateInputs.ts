@@ -1,10 +1,10 @@
-import { CHART_STYLE } from '../charts/chartFrame';
-import type { RateChartData, RateMarker } from '../charts/rateChart';
-import type { Branch } from '../solver/types';
-import type { LinkRates } from '../solver/rates';
+import { CHART_STYLE } from './chartFrame';
+import type { RateChartData, RateMarker } from './rateChart';
+import type { Branch } from '../../solver/types';
+import type { LinkRates } from '../../solver/rates';
 import type { Direction, PlotLayout } from '../state/appState';
-import type { Messages } from '../state/messages';
-import type { PlotSeries, RateSeries } from '../worker/protocol';
+import type { Messages } from '../i18n/messages';
+import type { PlotSeries, RateSeries } from '../jobs/protocol';
 
 /** The rate charts: ω3, ω4 or both; α3, α4 or both. */
 export type RateChartKind = 'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth';

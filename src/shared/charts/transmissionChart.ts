@@ -1,8 +1,8 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
 import { COLORS } from '../theme/tokens';
-import type { AngleMarker } from './angleChart';
-import { plotIndices } from './angleChart';
+import type { AngleMarker } from './theta2Chart';
+import { plotIndices } from './theta2Chart';
 import type { Margins } from './chartFrame';
 import {
   child,

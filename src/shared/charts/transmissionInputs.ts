@@ -1,13 +1,13 @@
-import type { AngleMarker } from '../charts/angleChart';
-import type { MuBand, TransmissionChartData, TransmissionChartText } from '../charts/transmissionChart';
-import type { XMark } from '../charts/xMarks';
-import { radToDeg, radToDeg360, wrapDeg180 } from '../solver/angles';
-import type { Branch } from '../solver/types';
-import type { DesignMetrics } from '../solver/metrics';
-import { deadCentreMarks } from '../state/designFacts';
-import { formatNumber } from '../state/format';
-import type { Messages } from '../state/messages';
-import type { PointResponse } from '../worker/protocol';
+import type { AngleMarker } from './theta2Chart';
+import type { MuBand, TransmissionChartData, TransmissionChartText } from './transmissionChart';
+import type { XMark } from './xMarks';
+import { radToDeg, radToDeg360, wrapDeg180 } from '../../solver/angles';
+import type { Branch } from '../../solver/types';
+import type { DesignMetrics } from '../../solver/metrics';
+import { deadCentreMarks } from '../linkage/designFacts';
+import { formatNumber } from '../format';
+import type { Messages } from '../i18n/messages';
+import type { PointResponse } from '../jobs/protocol';
 import type { CycleDegrees } from './chartInputs';
 
 /** Everything the transmission chart shows but its size and marker. */

@@ -1,6 +1,6 @@
 import { useLayoutEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
-import { useElementSize } from './useElementSize';
+import { useElementSize } from '../hooks/useElementSize';
 
 /** What every chart handle (angle, rate, transmission) offers the views: new data, a new marker, a new size. */
 export interface LiveChart<D, M> {

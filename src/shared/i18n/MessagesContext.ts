@@ -1,6 +1,6 @@
 import { createContext, useContext } from 'react';
-import type { Messages } from '../state/messages';
-import { messagesEn } from '../state/messagesEn';
+import type { Messages } from './messages';
+import { messagesEn } from './messagesEn';
 
 /** The current language's strings; English until a provider says otherwise. */
 export const MessagesContext = createContext<Messages>(messagesEn);

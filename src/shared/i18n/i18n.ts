@@ -1,4 +1,4 @@
-import type { Locale } from './appState';
+import type { Locale } from '../state/appState';
 import type { Messages } from './messages';
 import { messagesEn } from './messagesEn';
 

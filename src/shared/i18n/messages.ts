@@ -1,8 +1,8 @@
-import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../solver/types';
-import type { PlotKind } from './appState';
-import type { OmegaUnit } from './inputMotion';
-import type { FieldError, FieldName } from './validate';
-import type { PresetId } from './presets';
+import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../../solver/types';
+import type { PlotKind } from '../state/appState';
+import type { OmegaUnit } from '../state/inputMotion';
+import type { FieldError, FieldName } from '../ui/validateNumber';
+import type { PresetId } from '../state/presets';
 
 /** Every UI string of one language; functions take already formatted numbers (strings). */
 export interface Messages {

@@ -1,5 +1,5 @@
-import type { SolverMode, SolverModeReason } from '../worker/client';
-import { useMessages } from './MessagesContext';
+import type { SolverMode, SolverModeReason } from './client';
+import { useMessages } from '../i18n/MessagesContext';
 import { solverStatusText } from './useSolver';
 
 /** Props of SolverStatus: where the solver runs and why it left the worker. */

@@ -1,4 +1,4 @@
-import type { LabResult } from '../lab/workPrecision';
+import type { LabResult } from '../../study/workPrecision';
 import { createMainThreadWorker } from './mainThread';
 import type { WatchdogOptions } from './watchdog';
 import { DEFAULT_WATCHDOG, armTimer, budgetMs } from './watchdog';
@@ -56,7 +56,8 @@ export class SolverError extends Error {
 
 /** Makes the module worker that serves the API object. */
 export function createSolverWorker(): WorkerLike {
-  return new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' }) as unknown as WorkerLike;
+  const worker = new Worker(new URL('../../workers/solver.worker.ts', import.meta.url), { type: 'module' });
+  return worker as unknown as WorkerLike;
 }
 
 interface Call {

@@ -28,7 +28,7 @@ export function createMainThreadWorker(): WorkerLike {
       toApi = listener;
     },
   };
-  Promise.all([import('./api'), import('./expose')]).then(
+  Promise.all([import('../../workers/api'), import('./expose')]).then(
     ([{ solverApi }, { expose }]) => {
       stop = expose(solverApi, endpoint);
       for (const m of waiting) if (toApi) later(toApi, m);

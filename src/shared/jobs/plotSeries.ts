@@ -1,11 +1,11 @@
 // The solver's modules one by one: the main thread draws the plots with this, and the barrel would pull the
 // whole solver into the main bundle.
-import { radToDeg } from '../solver/angles';
-import type { InputMotion } from '../solver/rates';
-import { sweepRates } from '../solver/rates';
-import { adaptiveGrid } from '../solver/sampling';
-import { sweep } from '../solver/sweep';
-import type { Branch, Linkage } from '../solver/types';
+import { radToDeg } from '../../solver/angles';
+import type { InputMotion } from '../../solver/rates';
+import { sweepRates } from '../../solver/rates';
+import { adaptiveGrid } from '../../solver/sampling';
+import { sweep } from '../../solver/sweep';
+import type { Branch, Linkage } from '../../solver/types';
 import type { MethodChoice, PlotSeries } from './protocol';
 
 /** Sweep options for a method choice: an explicit tolerance turns polishing off, so the tolerance shows. */

@@ -1,5 +1,5 @@
-import type { LabResult } from '../lab/workPrecision';
-import type { InputMotion } from '../solver/rates';
+import type { LabResult } from '../../study/workPrecision';
+import type { InputMotion } from '../../solver/rates';
 import type {
   Angles,
   Branch,
@@ -8,7 +8,7 @@ import type {
   Linkage,
   NewtonStatus,
   SweepMethod,
-} from '../solver/types';
+} from '../../solver/types';
 
 /** The solver method and NR tolerance the main view uses (chosen in the solver lab); tol null = the method's default. */
 export interface MethodChoice {
@@ -109,7 +109,7 @@ export interface PlotBranch {
 
 /**
  * Plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). Solved
- * on the main thread (worker/plotSeries.ts, usePlotSeries), not asked of the worker.
+ * on the main thread (shared/jobs/plotSeries.ts, usePlotSeries), not asked of the worker.
  */
 export interface PlotSeries {
   theta2Deg: Float64Array;

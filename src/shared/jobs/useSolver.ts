@@ -1,14 +1,14 @@
 import { useEffect, useLayoutEffect, useState } from 'react';
 import { flushSync } from 'react-dom';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { degToRad } from '../solver/angles';
-import type { Branch, Linkage } from '../solver/types';
+import { degToRad } from '../../solver/angles';
+import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../state/appState';
-import type { Messages } from '../state/messages';
-import { benchMark } from '../worker/benchMarks';
-import type { SolverMode, SolverModeReason } from '../worker/client';
-import { SolverClient } from '../worker/client';
-import type { CycleResponse, MethodChoice, PointResponse, TableResponse, WorkCount } from '../worker/protocol';
+import type { Messages } from '../i18n/messages';
+import { benchMark } from './benchMarks';
+import type { SolverMode, SolverModeReason } from './client';
+import { SolverClient } from './client';
+import type { CycleResponse, MethodChoice, PointResponse, TableResponse, WorkCount } from './protocol';
 
 /** The app's solver client, where it solves (worker, restarted worker or main thread) and why; client null until mounted. */
 export function useSolverClient(): { client: SolverClient | null; mode: SolverMode; reason: SolverModeReason | null } {

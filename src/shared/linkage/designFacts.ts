@@ -1,9 +1,9 @@
-import { radToDeg, wrapDeg360 } from '../solver/angles';
-import type { DesignMetrics } from '../solver/metrics';
-import type { InputRange } from '../solver/types';
-import { LIMIT_INSET_DEG, rangeToDeg } from './animation';
-import { formatDeg, formatNumber } from './format';
-import { sliderIntervals } from './inputRange';
+import { radToDeg, wrapDeg360 } from '../../solver/angles';
+import type { DesignMetrics } from '../../solver/metrics';
+import type { InputRange } from '../../solver/types';
+import { LIMIT_INSET_DEG, rangeToDeg } from '../state/animation';
+import { formatDeg, formatNumber } from '../format';
+import { sliderIntervals } from '../state/inputRange';
 
 /** Decimals of the angles in the design panel (a designer compares them with a textbook's three). */
 export const DESIGN_DECIMALS = 3;

@@ -5,17 +5,17 @@
  * arrow along them). layoutDesign places it in CSS pixels, designLabels asks the
  * scene's label placement for its texts, drawDesignUnder / drawDesignOver paint it below and above the pose.
  */
-import type { DrawContext } from './drawContext';
-import { PI, TWO_PI, angleDiff } from '../solver/angles';
-import type { Point } from '../solver/kinematics';
-import type { Linkage } from '../solver/types';
+import type { DrawContext } from '../canvas/drawContext';
+import { PI, TWO_PI, angleDiff } from '../../solver/angles';
+import type { Point } from '../../solver/kinematics';
+import type { Linkage } from '../../solver/types';
 import { STROKES } from '../theme/tokens';
-import type { Px, ScreenRect } from './rect';
-import { halfExtentAlong } from './rect';
+import type { Px, ScreenRect } from '../canvas/rect';
+import { halfExtentAlong } from '../canvas/rect';
 import type { SceneArc } from './sceneLayout';
-import { THEME } from './theme';
-import type { ViewTransform } from './view';
-import { toScreenX, toScreenY } from './view';
+import { THEME } from '../canvas/canvasTheme';
+import type { ViewTransform } from '../canvas/view';
+import { toScreenX, toScreenY } from '../canvas/view';
 
 type Ctx = DrawContext;
 

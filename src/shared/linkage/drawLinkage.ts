@@ -1,15 +1,15 @@
-import { TWO_PI } from '../solver/angles';
+import { TWO_PI } from '../../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
-import type { DrawContext } from './drawContext';
+import type { DrawContext } from '../canvas/drawContext';
 import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
-import type { Px, ScreenRect } from './rect';
+import type { Px, ScreenRect } from '../canvas/rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
 import { GRID_TARGET_PX, WARNING_BOX, layoutScene } from './sceneLayout';
-import { THEME } from './theme';
-import type { ViewTransform } from './view';
-import { gridLines, toScreenX, toScreenY } from './view';
+import { THEME } from '../canvas/canvasTheme';
+import type { ViewTransform } from '../canvas/view';
+import { gridLines, toScreenX, toScreenY } from '../canvas/view';
 
 // Any DrawContext: a canvas's 2D context, or SvgContext for the vector export.
 type Ctx = DrawContext;

@@ -1,6 +1,6 @@
 // The rates module itself, not the solver's barrel: the barrel would pull the sweep and NR into the main bundle.
-import { couplerPointMotion, linkRates } from '../solver/rates';
-import type { InputMotion, LinkRates } from '../solver/rates';
+import { couplerPointMotion, linkRates } from '../../solver/rates';
+import type { InputMotion, LinkRates } from '../../solver/rates';
 import type { LocalPose } from './localPose';
 
 /** Velocity (length/s) and acceleration (length/s²) of a point, world axes (y up); NaN at a limit position. */

@@ -1,13 +1,13 @@
-import { radToDeg, radToDeg360 } from '../solver/angles';
-import type { Branch } from '../solver/types';
-import type { LinkageScene } from '../render/scene';
-import { sceneCurves, scenePose } from '../render/scene';
+import { radToDeg, radToDeg360 } from '../../solver/angles';
+import type { Branch } from '../../solver/types';
+import type { LinkageScene } from './scene';
+import { sceneCurves, scenePose } from './scene';
 import type { CouplerPoint } from '../state/appState';
-import { formatDeg } from '../state/format';
+import { formatDeg } from '../format';
 import { formatInputRange } from '../state/inputRange';
-import type { Messages } from '../state/messages';
-import type { Classification } from '../solver/types';
-import type { CouplerCurve } from '../worker/protocol';
+import type { Messages } from '../i18n/messages';
+import type { Classification } from '../../solver/types';
+import type { CouplerCurve } from '../jobs/protocol';
 import { localPose } from './localPose';
 
 /** The canvas's message when the linkage cannot be drawn assembled, and a hint where it can be; both null when assembled. */

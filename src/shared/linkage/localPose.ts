@@ -1,10 +1,10 @@
 // The solver's modules themselves, not its barrel: the barrel would pull the sweep and NR into the main bundle.
-import { degToRad } from '../solver/angles';
-import { solveClosedForm } from '../solver/closedForm';
-import { transmissionAngle } from '../solver/kinematics';
-import type { Branch, Linkage } from '../solver/types';
+import { degToRad } from '../../solver/angles';
+import { solveClosedForm } from '../../solver/closedForm';
+import { transmissionAngle } from '../../solver/kinematics';
+import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../state/appState';
-import type { CouplerSpec, MethodChoice, PointResponse, PoseAngles } from '../worker/protocol';
+import type { CouplerSpec, MethodChoice, PointResponse, PoseAngles } from '../jobs/protocol';
 
 /** A pose solved on the main thread for the frame being drawn: the inputs it was solved for and the angles. */
 export interface LocalPose {

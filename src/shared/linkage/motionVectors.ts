@@ -1,15 +1,15 @@
-import type { DrawContext } from './drawContext';
-import { PI } from '../solver/angles';
+import type { DrawContext } from '../canvas/drawContext';
+import { PI } from '../../solver/angles';
 import { FONT_SIZES, STROKES } from '../theme/tokens';
-import type { Obstacle } from './labelPlacement';
-import type { Px, ScreenRect } from './rect';
-import { halfExtentAlong } from './rect';
+import type { Obstacle } from '../canvas/labelPlacement';
+import type { Px, ScreenRect } from '../canvas/rect';
+import { halfExtentAlong } from '../canvas/rect';
 import type { ScenePose } from './scene';
 import type { ExtraLabel, MeasureText, SceneExtras } from './sceneLayout';
 import { LABEL_PAD_Y } from './sceneLayout';
-import { THEME } from './theme';
-import type { ViewTransform } from './view';
-import { toScreenX, toScreenY } from './view';
+import { THEME } from '../canvas/canvasTheme';
+import type { ViewTransform } from '../canvas/view';
+import { toScreenX, toScreenY } from '../canvas/view';
 
 type Ctx = DrawContext;
 

@@ -1,12 +1,12 @@
-import { TWO_PI } from '../solver/angles';
-import { couplerPoint, jointPositions } from '../solver/kinematics';
-import type { Point } from '../solver/kinematics';
-import type { Linkage } from '../solver/types';
+import { TWO_PI } from '../../solver/angles';
+import { couplerPoint, jointPositions } from '../../solver/kinematics';
+import type { Point } from '../../solver/kinematics';
+import type { Linkage } from '../../solver/types';
 import type { SceneVectors } from './motionVectors';
-import type { CouplerCurve, PoseAngles } from '../worker/protocol';
+import type { CouplerCurve, PoseAngles } from '../jobs/protocol';
 import type { SceneDesign } from './designOverlay';
-import type { Bounds } from './view';
-import { emptyBounds, extendBounds, extendBoundsCircle } from './view';
+import type { Bounds } from '../canvas/view';
+import { emptyBounds, extendBounds, extendBoundsCircle } from '../canvas/view';
 
 /** Joint positions (length unit) and angles (radians) of one assembled pose. */
 export interface ScenePose {

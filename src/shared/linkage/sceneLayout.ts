@@ -1,15 +1,15 @@
-import { PI, TWO_PI, angleDiff, radToDeg } from '../solver/angles';
+import { PI, TWO_PI, angleDiff, radToDeg } from '../../solver/angles';
 import { FONT_SIZES, STROKES } from '../theme/tokens';
 import type { DesignLayout } from './designOverlay';
 import { designLabels, layoutDesign, muOutsideBand } from './designOverlay';
-import type { LabelRequest, Obstacle } from './labelPlacement';
-import { placeLabels } from './labelPlacement';
-import type { Px, ScreenRect } from './rect';
-import { halfExtentAlong, rectAround } from './rect';
+import type { LabelRequest, Obstacle } from '../canvas/labelPlacement';
+import { placeLabels } from '../canvas/labelPlacement';
+import type { Px, ScreenRect } from '../canvas/rect';
+import { halfExtentAlong, rectAround } from '../canvas/rect';
 import type { LinkageScene, ScenePose } from './scene';
-import { THEME } from './theme';
-import type { ViewTransform } from './view';
-import { gridLines, toScreenX, toScreenY } from './view';
+import { THEME } from '../canvas/canvasTheme';
+import type { ViewTransform } from '../canvas/view';
+import { gridLines, toScreenX, toScreenY } from '../canvas/view';
 
 /** Every text the canvas may draw, in placement order (most important first). */
 export type LabelId =

@@ -1,5 +1,5 @@
 import { useCallback, useRef } from 'react';
-import type { ShownFrame } from './useExports';
+import type { ShownFrame } from './shownFrame';
 
 /** The frame the linkage view drew last, for the exports: a getter, and the report to give LinkageStage. */
 export function useShownFrame(): { shown: () => ShownFrame | null; onShown: (frame: ShownFrame) => void } {

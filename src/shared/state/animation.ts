@@ -1,5 +1,5 @@
-import { radToDeg } from '../solver/angles';
-import type { AngleInterval, Branch } from '../solver/types';
+import { radToDeg } from '../../solver/angles';
+import type { AngleInterval, Branch } from '../../solver/types';
 import type { AppState, Direction } from './appState';
 import { NOMINAL_FPS, normalizeTheta2Deg } from './appState';
 

@@ -1,5 +1,5 @@
-import { wrapDeg360 } from '../solver/angles';
-import type { Branch, Linkage, SweepMethod } from '../solver/types';
+import { wrapDeg360 } from '../../solver/angles';
+import type { Branch, Linkage, SweepMethod } from '../../solver/types';
 
 /** UI languages: English (default) and Traditional Chinese. */
 export type Locale = 'en' | 'zh-TW';

@@ -1,6 +1,6 @@
 // The rates module alone: the solver's barrel would pull the sweep and NR into the main bundle.
-import { degPerSToRadPerS, radPerSToDegPerS, radPerSToRpm, rpmToRadPerS } from '../solver/angles';
-import type { InputMotion } from '../solver/rates';
+import { degPerSToRadPerS, radPerSToDegPerS, radPerSToRpm, rpmToRadPerS } from '../../solver/angles';
+import type { InputMotion } from '../../solver/rates';
 import type { Direction } from './appState';
 
 /** Units the ω2 control offers; the state always stores rad/s. */

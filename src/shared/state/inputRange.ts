@@ -1,8 +1,8 @@
-import { wrapDeg360 } from '../solver/angles';
-import type { AngleInterval } from '../solver/types';
+import { wrapDeg360 } from '../../solver/angles';
+import type { AngleInterval } from '../../solver/types';
 import { inputTurnsFully, rangeToDeg } from './animation';
-import { formatDeg } from './format';
-import type { Messages } from './messages';
+import { formatDeg } from '../format';
+import type { Messages } from '../i18n/messages';
 
 /**
  * A reachable input interval in the θ2 slider's convention: loDeg in [0, 360); when it wraps, the interval

@@ -1,4 +1,4 @@
-import type { Branch } from '../solver/types';
+import type { Branch } from '../../solver/types';
 import type { AppState, Direction } from './appState';
 
 /** What Play moves every frame: the input angle (degrees, [0, 360)), its direction and the branch (a rocking input switches it). */

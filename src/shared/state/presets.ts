@@ -1,4 +1,4 @@
-import type { Branch, Linkage } from '../solver/types';
+import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './appState';
 
 /** Identifiers of the built-in linkages. */

@@ -7,7 +7,7 @@ export interface CustomPropertyTarget {
 
 /**
  * Sets every CSS custom property of the design tokens (cssVariables) on target, so the stylesheets read
- * their colours, fonts and tool sizes from src/theme/tokens.ts. Call once at startup, before the first render.
+ * their colours, fonts and tool sizes from src/shared/theme/tokens.ts. Call once at startup, before the first render.
  */
 export function applyTokens(target: CustomPropertyTarget): void {
   for (const [name, value] of Object.entries(cssVariables())) target.setProperty(name, value);

@@ -1,6 +1,6 @@
 /**
  * Design tokens: the one source of colours, fonts and line widths. The CSS variables (see cssVariables),
- * the canvas drawing (render/theme.ts) and the d3 charts (charts/chartFrame.ts) all read from here.
+ * the canvas drawing (shared/canvas/canvasTheme.ts) and the d3 charts (shared/charts/chartFrame.ts) all read from here.
  * Colours are CSS colour strings; sizes are CSS pixels.
  */
 
@@ -12,7 +12,7 @@ export const FONTS = {
 
 /**
  * Colours shared by the page, the canvas and the charts. Canvas text colours reach 4.5:1 against the canvas
- * background and its line colours 3:1 (WCAG 1.4.3 / 1.4.11), checked by tests/render/contrast.test.ts;
+ * background and its line colours 3:1 (WCAG 1.4.3 / 1.4.11), checked by tests/shared/linkage/contrast.test.ts;
  * grid lines, fills and halos are the only exceptions.
  */
 export const COLORS = {
@@ -149,7 +149,7 @@ export const FONT_SIZES = {
   chartTitle: 12.5,
 } as const;
 
-/** The CSS custom properties fed from the tokens (set on :root at startup by theme/applyTokens.ts). */
+/** The CSS custom properties fed from the tokens (set on :root at startup by shared/theme/applyTokens.ts). */
 export function cssVariables(): Record<string, string> {
   return {
     '--bg': COLORS.pageBackground,

@@ -1,9 +1,9 @@
 import './NumberControl.css';
 import { useId, useState } from 'react';
-import type { FieldName } from '../state/validate';
-import { parseField } from '../state/validate';
-import { fieldText, formatNumber, truncateText } from '../state/format';
-import { useMessages } from './MessagesContext';
+import type { FieldName } from './validateNumber';
+import { parseField } from './validateNumber';
+import { fieldText, formatNumber, truncateText } from '../format';
+import { useMessages } from '../i18n/MessagesContext';
 
 /** Props of NumberControl: the field, its value (field units) and slider range; onCommit gets only valid values. */
 export interface NumberControlProps {

@@ -1,6 +1,6 @@
 import './Segmented.css';
 import { useId } from 'react';
-import { useMessages } from './MessagesContext';
+import { useMessages } from '../i18n/MessagesContext';
 
 /** One choice of a Segmented control. */
 export interface SegmentedOption<T extends string> {

@@ -1,7 +1,7 @@
 import './Toggle.css';
 import type { Dispatch } from 'react';
 import type { Action, AppState, ViewFlag } from '../state/appState';
-import { useMessages } from './MessagesContext';
+import { useMessages } from '../i18n/MessagesContext';
 /** Props of Toggle: a labelled checkbox. */
 export interface ToggleProps {
   label: string;

@@ -1,4 +1,4 @@
-import type { Messages } from './messages';
+import type { Messages } from '../i18n/messages';
 import type { IgnoredParam } from './url';
 
 /** Most ignored parameters a notice names one by one; the rest are counted ("and 3 more"). */

@@ -1,8 +1,8 @@
-import type { AppState } from './appState';
-import { DEFAULT_STATE } from './appState';
+import type { AppState } from '../state/appState';
+import { DEFAULT_STATE } from '../state/appState';
 import type { EmbedOptions } from './embedOptions';
 import { DEFAULT_EMBED } from './embedOptions';
-import { truncateText } from './format';
+import { truncateText } from '../format';
 import type { UrlTarget } from './urlKeys';
 import { URL_CONSTRAINTS, URL_KEYS } from './urlKeys';
 

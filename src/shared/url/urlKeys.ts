@@ -1,12 +1,12 @@
-import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../lab/options';
-import { wrapDeg180 } from '../solver/angles';
-import { SWEEP_METHODS } from '../solver/methods';
-import type { Linkage } from '../solver/types';
-import type { AppState, CouplerPoint, ViewOffset } from './appState';
-import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg } from './appState';
+import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../study/options';
+import { wrapDeg180 } from '../../solver/angles';
+import { SWEEP_METHODS } from '../../solver/methods';
+import type { Linkage } from '../../solver/types';
+import type { AppState, CouplerPoint, ViewOffset } from '../state/appState';
+import { DEFAULT_STATE, SAMPLES_MAX, SAMPLES_MIN, normalizeTheta2Deg } from '../state/appState';
 import type { EmbedOptions } from './embedOptions';
 import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
-import { LOCALES } from './i18n';
+import { LOCALES } from '../i18n/i18n';
 import type { Codec } from './urlCodec';
 import { boolCodec, choiceCodec, enumCodec, integerCodec, listCodec, nullableCodec, numberCodec } from './urlCodec';
 

@@ -1,9 +1,9 @@
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
-import { CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../src/state/csv';
-import { computeTable } from '../../src/worker/compute';
-import { cycleTableOf } from '../../src/components/exporters';
-import { referenceMotion } from '../oracle/rates';
+import { CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../../src/shared/csv';
+import { computeTable } from '../../../src/workers/compute';
+import { cycleTableOf } from '../../../src/features/export/exporters';
+import { referenceMotion } from '../../oracle/rates';
 
 /** The CSV the export writes for a table request with motion (the same path as useExports). */
 function exportCsv(linkage: { r1: number; r2: number; r3: number; r4: number }, input = { omega2: 10, alpha2: 0 }) {

@@ -1,15 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { frameMotion } from '../../src/components/frameMotion';
-import { localPose } from '../../src/components/localPose';
-import type { ShownFrame } from '../../src/components/useExports';
-import { rateExport } from '../../src/components/exporters';
-import { degToRad } from '../../src/solver/angles';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import type { AppState } from '../../src/state/appState';
-import { effectiveInputMotion } from '../../src/state/inputMotion';
-import { messagesEn } from '../../src/state/messagesEn';
-import type { PointResponse } from '../../src/worker/protocol';
-import { referenceMotion } from '../oracle/rates';
+import { frameMotion } from '../../../src/shared/linkage/frameMotion';
+import { localPose } from '../../../src/shared/linkage/localPose';
+import type { ShownFrame } from '../../../src/shared/linkage/shownFrame';
+import { rateExport } from '../../../src/features/export/exporters';
+import { degToRad } from '../../../src/solver/angles';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import type { AppState } from '../../../src/shared/state/appState';
+import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import type { PointResponse } from '../../../src/shared/jobs/protocol';
+import { referenceMotion } from '../../oracle/rates';
 
 /** The frame an export reads: this state's pose at its θ2, with its motion (scene not needed by rate exports). */
 function frameOf(state: AppState): ShownFrame {

@@ -7,7 +7,7 @@ import {
   spacedTicks,
   toAxisDeg,
   unassembledRuns,
-} from '../../src/charts/cycleChart';
+} from '../../../src/features/lab/cycleChart';
 
 describe('toAxisDeg', () => {
   it('maps limits in (-180, 180] onto the 0..360 axis', () => {

@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { classify, degToRad } from '../../src/solver';
-import type { InputRange } from '../../src/solver';
-import type { HardCaseId } from '../../src/state/hardCases';
-import { HARD_CASES, getHardCase } from '../../src/state/hardCases';
-import { labMessagesEn } from '../../src/state/labMessagesEn';
-import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+import { classify, degToRad } from '../../../src/solver';
+import type { InputRange } from '../../../src/solver';
+import type { HardCaseId } from '../../../src/features/lab/hardCases';
+import { HARD_CASES, getHardCase } from '../../../src/features/lab/hardCases';
+import { labMessagesEn } from '../../../src/features/lab/labMessagesEn';
+import { labMessagesZhTw } from '../../../src/features/lab/labMessagesZhTw';
 
 /** The class column of the hard-case table, as Barker classes (Norton); 'none' = cannot be assembled. */
 const EXPECTED_BARKER: Record<number, string> = {

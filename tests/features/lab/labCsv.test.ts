@@ -1,8 +1,8 @@
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
-import { referencePose } from '../../src/lab/reference';
-import { runWorkPrecision } from '../../src/lab/workPrecision';
-import { LAB_CSV_HEADER, labToCsv } from '../../src/state/labCsv';
+import { referencePose } from '../../../src/study/reference';
+import { runWorkPrecision } from '../../../src/study/workPrecision';
+import { LAB_CSV_HEADER, labToCsv } from '../../../src/features/lab/labCsv';
 
 describe('labToCsv', () => {
   it('writes a header and one parseable row per method and tolerance, nothing NaN', async () => {

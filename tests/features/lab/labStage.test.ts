@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { LAB_METHODS, runWorkPrecision } from '../../src/lab/workPrecision';
-import { solveClosedForm } from '../../src/solver';
-import { labProgressStatus, labStageText, parseLabStage } from '../../src/state/labStage';
-import { messagesEn as appEn } from '../../src/state/messagesEn';
-import { messagesZhTw as appZhTw } from '../../src/state/messagesZhTw';
-import { labMessagesEn } from '../../src/state/labMessagesEn';
-import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+import { LAB_METHODS, runWorkPrecision } from '../../../src/study/workPrecision';
+import { solveClosedForm } from '../../../src/solver';
+import { labProgressStatus, labStageText, parseLabStage } from '../../../src/features/lab/labStage';
+import { messagesEn as appEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw as appZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import { labMessagesEn } from '../../../src/features/lab/labMessagesEn';
+import { labMessagesZhTw } from '../../../src/features/lab/labMessagesZhTw';
 
 /** Every UI string of a language: the app's and the solver lab's. */
 const messagesEn = { ...appEn, ...labMessagesEn };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { LabPoint, LabSeries } from '../../src/lab/workPrecision';
+import type { LabPoint, LabSeries } from '../../../src/study/workPrecision';
 import {
   ERROR_FLOOR,
   METHOD_COLORS,
@@ -12,7 +12,7 @@ import {
   placeLabels,
   plottedError,
   workPrecisionDomains,
-} from '../../src/charts/workPrecisionChart';
+} from '../../../src/features/lab/workPrecisionChart';
 
 function pt(tol: number | null, nsPerPoint: number, maxError: number, failures = 0): LabPoint {
   return {

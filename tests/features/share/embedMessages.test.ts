@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import type { AppState } from '../../src/state/appState';
-import { applyPatch, readSetState, stateEvent, stateValues } from '../../src/state/embedMessages';
-import { parseUrl, serializeState } from '../../src/state/url';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import type { AppState } from '../../../src/shared/state/appState';
+import { applyPatch, readSetState, stateEvent, stateValues } from '../../../src/features/share/embedMessages';
+import { parseUrl, serializeState } from '../../../src/shared/url/url';
 
 const quiet = () => undefined;
 

@@ -7,8 +7,8 @@ import {
   RESPONSIVE_MIN_HEIGHT,
   embedSnippet,
   escapeAttribute,
-} from '../../src/state/embedSnippet';
-import type { EmbedPreset } from '../../src/state/embedSnippet';
+} from '../../../src/features/share/embedSnippet';
+import type { EmbedPreset } from '../../../src/features/share/embedSnippet';
 
 // Independent oracle: a tiny reader of double-quoted attributes that undoes the five entities HTML defines
 // for them. If the snippet left a raw quote or angle bracket in a value, the reader would split it wrongly.

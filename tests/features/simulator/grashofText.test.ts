@@ -1,9 +1,9 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { classify } from '../../src/solver';
-import type { Linkage } from '../../src/solver';
-import { grashofSums, grashofSumsText } from '../../src/state/grashofText';
-import { exact } from '../oracle/reference';
+import { classify } from '../../../src/solver';
+import type { Linkage } from '../../../src/solver';
+import { grashofSums, grashofSumsText } from '../../../src/features/simulator/grashofText';
+import { exact } from '../../oracle/reference';
 
 /** The shown number read back (the display uses U+2212 for minus). */
 function readBack(s: string): number {

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from '../../src/components/canvasGestures';
-import { couplerPoint } from '../../src/solver/kinematics';
-import type { LinkageScene } from '../../src/render/scene';
-import { scenePose } from '../../src/render/scene';
-import { fitView, toScreenX, toScreenY, toWorld } from '../../src/render/view';
+import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from '../../../src/shared/canvas/canvasGestures';
+import { couplerPoint } from '../../../src/solver/kinematics';
+import type { LinkageScene } from '../../../src/shared/linkage/scene';
+import { scenePose } from '../../../src/shared/linkage/scene';
+import { fitView, toScreenX, toScreenY, toWorld } from '../../../src/shared/canvas/view';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const D = Math.PI / 180;

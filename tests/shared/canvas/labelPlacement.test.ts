@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import type { LabelRequest, Obstacle } from '../../src/render/labelPlacement';
-import { placeLabels } from '../../src/render/labelPlacement';
+import type { LabelRequest, Obstacle } from '../../../src/shared/canvas/labelPlacement';
+import { placeLabels } from '../../../src/shared/canvas/labelPlacement';
 
 const BOUNDS = { x: 0, y: 0, width: 200, height: 100 };
 

@@ -1,6 +1,6 @@
 import { deflateSync } from 'node:zlib';
 import { describe, expect, it } from 'vitest';
-import { PNG_SIGNATURE, crc32, isPng, pngDpi, pngSize, withPngDpi } from '../../src/render/png';
+import { PNG_SIGNATURE, crc32, isPng, pngDpi, pngSize, withPngDpi } from '../../../src/shared/canvas/png';
 
 function chunk(type: string, data: Uint8Array): Uint8Array {
   const out = new Uint8Array(12 + data.length);

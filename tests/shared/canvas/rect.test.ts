@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { halfExtentAlong, segmentHitsBox } from '../../src/render/rect';
+import { halfExtentAlong, segmentHitsBox } from '../../../src/shared/canvas/rect';
 
 /** Park-Miller generator: a reproducible stream in [0, 1). */
 function seeded(seed: number): () => number {

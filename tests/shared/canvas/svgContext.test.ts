@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { drawLinkage } from '../../src/render/drawLinkage';
-import type { DrawContext } from '../../src/render/drawContext';
-import { SvgContext, escapeXml, parseFont } from '../../src/render/svgContext';
-import { fitView } from '../../src/render/view';
-import { LINKAGES, RecordingContext, measureModel, sweepScenes } from './fixtures';
+import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
+import type { DrawContext } from '../../../src/shared/canvas/drawContext';
+import { SvgContext, escapeXml, parseFont } from '../../../src/shared/canvas/svgContext';
+import { fitView } from '../../../src/shared/canvas/view';
+import { LINKAGES, RecordingContext, measureModel, sweepScenes } from '../linkage/fixtures';
 
 // Coordinates are written with 3 decimals: compare to 1e-3 CSS pixel.
 const PX_TOL = 1e-3;

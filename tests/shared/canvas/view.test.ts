@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { FIT_MIN_PAD_PX, fitView, niceStep, toScreenX, toScreenY, toWorld, zoomAbout } from '../../src/render/view';
+import {
+  FIT_MIN_PAD_PX,
+  fitView,
+  niceStep,
+  toScreenX,
+  toScreenY,
+  toWorld,
+  zoomAbout,
+} from '../../../src/shared/canvas/view';
 
 const NO_OFFSET = { zoom: 1, panX: 0, panY: 0 };
 

@@ -7,9 +7,9 @@ import {
   plotIndices,
   seriesPath,
   wrappedSegments,
-} from '../../src/charts/angleChart';
-import { estimateTextWidth, minus } from '../../src/charts/chartFrame';
-import { FONT_SIZES } from '../../src/theme/tokens';
+} from '../../../src/shared/charts/theta2Chart';
+import { estimateTextWidth, minus } from '../../../src/shared/charts/chartFrame';
+import { FONT_SIZES } from '../../../src/shared/theme/tokens';
 
 describe('wrappedSegments', () => {
   it('turns NaN samples into gaps', () => {

@@ -1,20 +1,20 @@
 import { describe, expect, it } from 'vitest';
-import type { AngleSeries } from '../../src/charts/angleChart';
-import { angleChartSize, angleFrame, markerGeometry, seriesPath } from '../../src/charts/angleChart';
-import type { AngleChartKind } from '../../src/components/chartInputs';
+import type { AngleSeries } from '../../../src/shared/charts/theta2Chart';
+import { angleChartSize, angleFrame, markerGeometry, seriesPath } from '../../../src/shared/charts/theta2Chart';
+import type { AngleChartKind } from '../../../src/shared/charts/chartInputs';
 import {
   angleChartInputs,
   angleMarker,
   convergenceInputs,
   cycleDegrees,
   plotDegrees,
-} from '../../src/components/chartInputs';
-import type { Branch } from '../../src/solver/types';
-import { messagesEn } from '../../src/state/messagesEn';
-import { COLORS } from '../../src/theme/tokens';
-import type { CycleResponse, NewtonSummary, PlotSeries, PointResponse } from '../../src/worker/protocol';
-import type { LinkLengths, Sigma } from '../oracle/reference';
-import { deg, exactToDeg, referenceAngles } from '../oracle/reference';
+} from '../../../src/shared/charts/chartInputs';
+import type { Branch } from '../../../src/solver/types';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { COLORS } from '../../../src/shared/theme/tokens';
+import type { CycleResponse, NewtonSummary, PlotSeries, PointResponse } from '../../../src/shared/jobs/protocol';
+import type { LinkLengths, Sigma } from '../../oracle/reference';
+import { deg, exactToDeg, referenceAngles } from '../../oracle/reference';
 
 /** Grashof crank-rocker (the app's default): the crank turns fully. */
 const CRANK_ROCKER: LinkLengths = { r1: 6, r2: 2, r3: 5, r4: 5 };

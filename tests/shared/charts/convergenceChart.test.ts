@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { convergenceFrame, formatPowerOfTen, residualDomain } from '../../src/charts/convergenceChart';
+import { convergenceFrame, formatPowerOfTen, residualDomain } from '../../../src/shared/charts/convergenceChart';
 
 describe('residualDomain', () => {
   it('spans whole decades with room for exact zeros below the smallest residual', () => {

@@ -1,7 +1,7 @@
 import { line } from 'd3-shape';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { linePath } from '../../src/charts/linePath';
+import { linePath } from '../../../src/shared/charts/linePath';
 
 // Oracle: d3-shape's line() (the lab's charts still use it), which linePath stands in for on the first load.
 

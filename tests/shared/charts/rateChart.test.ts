@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { clipMarks, rateDomain } from '../../src/charts/rateChart';
+import { clipMarks, rateDomain } from '../../../src/shared/charts/rateChart';
 
 const series = (values: number[]) => [{ label: 'ω3', color: '#000', values }];
 

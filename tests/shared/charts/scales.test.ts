@@ -1,10 +1,10 @@
 import { scaleLinear, scaleLog } from 'd3-scale';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { linearScale, logScale, niceLinearDomain } from '../../src/charts/scales';
-import { niceLogDomain, oneTwoFiveTicks } from '../../src/charts/ticks';
+import { linearScale, logScale, niceLinearDomain } from '../../../src/shared/charts/scales';
+import { niceLogDomain, oneTwoFiveTicks } from '../../../src/shared/charts/ticks';
 
-// Oracle: d3-scale itself (the lab's charts still use it), which charts/scales.ts stands in for on the first load.
+// Oracle: d3-scale itself (the lab's charts still use it), which shared/charts/scales.ts stands in for on the first load.
 
 /** d3-format writes a typographic minus; the charts add their own, so compare with a hyphen. */
 const hyphen = (s: string) => s.replace(/\u2212/g, '-');

@@ -11,7 +11,7 @@ import {
   niceOneTwoFiveDomain,
   oneTwoFiveTicks,
   tickCount,
-} from '../../src/charts/ticks';
+} from '../../../src/shared/charts/ticks';
 
 /** Oracle: every multiple of step in [lo, hi], by enumeration from an integer index (no accumulated error). */
 function multiples(lo: number, hi: number, step: number): number[] {

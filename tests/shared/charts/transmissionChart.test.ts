@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { outsideBandRuns } from '../../src/charts/transmissionChart';
-import { xMarkPositions } from '../../src/charts/xMarks';
-import { solveClosedForm } from '../../src/solver/closedForm';
-import { transmissionAngle } from '../../src/solver/kinematics';
-import { deadCentreXMarks, transmissionData } from '../../src/components/transmissionInputs';
-import { designMetrics } from '../../src/solver/metrics';
-import { messagesEn } from '../../src/state/messagesEn';
-import type { CycleDegrees } from '../../src/components/chartInputs';
-import { linearScale } from '../../src/charts/scales';
+import { outsideBandRuns } from '../../../src/shared/charts/transmissionChart';
+import { xMarkPositions } from '../../../src/shared/charts/xMarks';
+import { solveClosedForm } from '../../../src/solver/closedForm';
+import { transmissionAngle } from '../../../src/solver/kinematics';
+import { deadCentreXMarks, transmissionData } from '../../../src/shared/charts/transmissionInputs';
+import { designMetrics } from '../../../src/solver/metrics';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import type { CycleDegrees } from '../../../src/shared/charts/chartInputs';
+import { linearScale } from '../../../src/shared/charts/scales';
 
 const deg = (r: number) => (r * 180) / Math.PI;
 const rad = (d: number) => (d * Math.PI) / 180;

@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import type { Messages } from '../../src/state/messages';
-import { messagesEn as appEn } from '../../src/state/messagesEn';
-import { messagesZhTw as appZhTw } from '../../src/state/messagesZhTw';
-import type { LabMessages } from '../../src/state/labMessages';
-import { labMessagesEn } from '../../src/state/labMessagesEn';
-import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+import type { Messages } from '../../../src/shared/i18n/messages';
+import { messagesEn as appEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw as appZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import type { LabMessages } from '../../../src/features/lab/labMessages';
+import { labMessagesEn } from '../../../src/features/lab/labMessagesEn';
+import { labMessagesZhTw } from '../../../src/features/lab/labMessagesZhTw';
 
 /** Every UI string of a language: the app's and the solver lab's. */
 const messagesEn = { ...appEn, ...labMessagesEn };

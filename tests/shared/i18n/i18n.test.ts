@@ -6,12 +6,12 @@ import {
   matchLocale,
   messagesLoaded,
   parseLocale,
-} from '../../src/state/i18n';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
-import { labMessagesFor } from '../../src/state/labMessages';
-import { labMessagesEn } from '../../src/state/labMessagesEn';
-import { labMessagesZhTw } from '../../src/state/labMessagesZhTw';
+} from '../../../src/shared/i18n/i18n';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import { labMessagesFor } from '../../../src/features/lab/labMessages';
+import { labMessagesEn } from '../../../src/features/lab/labMessagesEn';
+import { labMessagesZhTw } from '../../../src/features/lab/labMessagesZhTw';
 
 function shape(o: unknown): unknown {
   if (typeof o === 'function') return 'fn';

@@ -1,10 +1,10 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { solverApi } from '../../src/worker/api';
-import { SolverClient, SolverError } from '../../src/worker/client';
-import { DEFAULT_WATCHDOG, budgetMs } from '../../src/worker/watchdog';
-import type { SolverMode, SolverModeReason, WorkerLike } from '../../src/worker/client';
-import { expose } from '../../src/worker/expose';
-import type { CallRequest, SolverApi, SolverRequest, SolverResponse } from '../../src/worker/protocol';
+import { solverApi } from '../../../src/workers/api';
+import { SolverClient, SolverError } from '../../../src/shared/jobs/client';
+import { DEFAULT_WATCHDOG, budgetMs } from '../../../src/shared/jobs/watchdog';
+import type { SolverMode, SolverModeReason, WorkerLike } from '../../../src/shared/jobs/client';
+import { expose } from '../../../src/shared/jobs/expose';
+import type { CallRequest, SolverApi, SolverRequest, SolverResponse } from '../../../src/shared/jobs/protocol';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const C = { distance: 2.5, angleRad: Math.PI / 6 };

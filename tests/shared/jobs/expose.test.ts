@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { solverApi } from '../../src/worker/api';
-import { expose, transferablesOf } from '../../src/worker/expose';
-import type { Endpoint } from '../../src/worker/expose';
-import type { SolverApi, SolverResponse } from '../../src/worker/protocol';
+import { solverApi } from '../../../src/workers/api';
+import { expose, transferablesOf } from '../../../src/shared/jobs/expose';
+import type { Endpoint } from '../../../src/shared/jobs/expose';
+import type { SolverApi, SolverResponse } from '../../../src/shared/jobs/protocol';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const C = { distance: 2.5, angleRad: Math.PI / 6 };

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { degToRad } from '../../src/solver/angles';
-import { plotSeries } from '../../src/worker/plotSeries';
-import { referenceAngles } from '../oracle/reference';
-import { referenceMotion } from '../oracle/rates';
+import { degToRad } from '../../../src/solver/angles';
+import { plotSeries } from '../../../src/shared/jobs/plotSeries';
+import { referenceAngles } from '../../oracle/reference';
+import { referenceMotion } from '../../oracle/rates';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const NR = { method: 'newton' as const, tol: null };

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { solverStatusText } from '../../src/components/useSolver';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
+import { solverStatusText } from '../../../src/shared/jobs/useSolver';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
 
 describe('solverStatusText', () => {
   it('says nothing while the first worker solves', () => {

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../../src/render/drawLinkage';
-import type { DrawContext } from '../../src/render/drawContext';
-import type { LinkageScene } from '../../src/render/scene';
-import { fitView } from '../../src/render/view';
+import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../../../src/shared/linkage/drawLinkage';
+import type { DrawContext } from '../../../src/shared/canvas/drawContext';
+import type { LinkageScene } from '../../../src/shared/linkage/scene';
+import { fitView } from '../../../src/shared/canvas/view';
 import { LINKAGES, sweepScenes } from './fixtures';
 
 /** Every call and style assignment a drawing makes, in order (a Proxy stands in for the 2D context). */

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { drawLinkage } from '../../src/render/drawLinkage';
-import type { LinkageScene } from '../../src/render/scene';
-import { THEME } from '../../src/render/theme';
-import { fitView } from '../../src/render/view';
+import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
+import type { LinkageScene } from '../../../src/shared/linkage/scene';
+import { THEME } from '../../../src/shared/canvas/canvasTheme';
+import { fitView } from '../../../src/shared/canvas/view';
 import { LINKAGES, RecordingContext, sweepScenes } from './fixtures';
 
 // WCAG 2.x contrast of what drawLinkage actually paints: every fillText colour against what it sits on must

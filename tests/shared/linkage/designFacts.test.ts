@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { solveClosedForm } from '../../src/solver/closedForm';
-import { inputRange } from '../../src/solver/classify';
-import { designMetrics } from '../../src/solver/metrics';
-import type { Branch, Linkage } from '../../src/solver/types';
-import { deadCentreMarks, designFacts } from '../../src/state/designFacts';
+import { solveClosedForm } from '../../../src/solver/closedForm';
+import { inputRange } from '../../../src/solver/classify';
+import { designMetrics } from '../../../src/solver/metrics';
+import type { Branch, Linkage } from '../../../src/solver/types';
+import { deadCentreMarks, designFacts } from '../../../src/shared/linkage/designFacts';
 
 const REPORT: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const facts = (l: Linkage, b: Branch) => designFacts(designMetrics(l, b), inputRange(l));

@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import type { SceneDesign } from '../../src/render/designOverlay';
-import { clipLine, edgeMarker, layoutDesign, muOutsideBand } from '../../src/render/designOverlay';
-import type { ScreenRect } from '../../src/render/rect';
-import { layoutScene } from '../../src/render/sceneLayout';
-import { THEME } from '../../src/render/theme';
-import { fitView } from '../../src/render/view';
-import { instantCenters } from '../../src/solver/instantCenters';
-import { designMetrics } from '../../src/solver/metrics';
+import type { SceneDesign } from '../../../src/shared/linkage/designOverlay';
+import { clipLine, edgeMarker, layoutDesign, muOutsideBand } from '../../../src/shared/linkage/designOverlay';
+import type { ScreenRect } from '../../../src/shared/canvas/rect';
+import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
+import { THEME } from '../../../src/shared/canvas/canvasTheme';
+import { fitView } from '../../../src/shared/canvas/view';
+import { instantCenters } from '../../../src/solver/instantCenters';
+import { designMetrics } from '../../../src/solver/metrics';
 import { LINKAGES, measureModel, rad, sweepScenes } from './fixtures';
 
 const RECT: ScreenRect = { x: 0, y: 0, width: 600, height: 400 };

@@ -1,10 +1,10 @@
-import { solveClosedForm } from '../../src/solver/closedForm';
-import { transmissionAngle } from '../../src/solver/kinematics';
-import type { Branch, Linkage } from '../../src/solver/types';
-import type { BranchExtent, LinkageScene, SceneText } from '../../src/render/scene';
-import { sceneBounds, scenePose } from '../../src/render/scene';
-import type { LabelFont, MeasureText } from '../../src/render/sceneLayout';
-import { FONT_SIZES } from '../../src/theme/tokens';
+import { solveClosedForm } from '../../../src/solver/closedForm';
+import { transmissionAngle } from '../../../src/solver/kinematics';
+import type { Branch, Linkage } from '../../../src/solver/types';
+import type { BranchExtent, LinkageScene, SceneText } from '../../../src/shared/linkage/scene';
+import { sceneBounds, scenePose } from '../../../src/shared/linkage/scene';
+import type { LabelFont, MeasureText } from '../../../src/shared/linkage/sceneLayout';
+import { FONT_SIZES } from '../../../src/shared/theme/tokens';
 
 /** A named test linkage with a coupler point (distance in its unit, angle in degrees). */
 export interface TestLinkage {

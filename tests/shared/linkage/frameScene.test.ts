@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { sceneAtFrame, sceneWarning } from '../../src/components/frameScene';
-import { classify } from '../../src/solver';
-import type { Branch, Linkage } from '../../src/solver/types';
-import { getMessages } from '../../src/state/i18n';
-import type { CouplerCurve } from '../../src/worker/protocol';
-import { angleDiff, referenceSolve } from '../oracle/reference';
-import { angleTolerance } from '../oracle/tolerance';
-import { rad, sweepScenes } from '../render/fixtures';
+import { sceneAtFrame, sceneWarning } from '../../../src/shared/linkage/frameScene';
+import { classify } from '../../../src/solver';
+import type { Branch, Linkage } from '../../../src/solver/types';
+import { getMessages } from '../../../src/shared/i18n/i18n';
+import type { CouplerCurve } from '../../../src/shared/jobs/protocol';
+import { angleDiff, referenceSolve } from '../../oracle/reference';
+import { angleTolerance } from '../../oracle/tolerance';
+import { rad, sweepScenes } from './fixtures';
 
 const t = getMessages('en');
 const REPORT: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { localPose, poseAsPoint } from '../../src/components/localPose';
-import type { Branch, Linkage } from '../../src/solver/types';
-import { angleDiff, referenceSolve } from '../oracle/reference';
-import { angleTolerance } from '../oracle/tolerance';
+import { localPose, poseAsPoint } from '../../../src/shared/linkage/localPose';
+import type { Branch, Linkage } from '../../../src/solver/types';
+import { angleDiff, referenceSolve } from '../../oracle/reference';
+import { angleTolerance } from '../../oracle/tolerance';
 
 const REPORT: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const TRIPLE_ROCKER: Linkage = { r1: 4, r2: 3, r3: 3.5, r4: 3 };

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import type { DrawContext } from '../../src/render/drawContext';
-import { canvasMeasure } from '../../src/render/drawLinkage';
+import type { DrawContext } from '../../../src/shared/canvas/drawContext';
+import { canvasMeasure } from '../../../src/shared/linkage/drawLinkage';
 
 /** A context whose text is `perChar` pixels a character, counting font sets and measurements. */
 function countingContext(perChar: number) {

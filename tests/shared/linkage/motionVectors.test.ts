@@ -6,14 +6,14 @@ import {
   arrowLength,
   arrowScale,
   vectorOverlay,
-} from '../../src/render/motionVectors';
-import type { SceneVectors, VectorText } from '../../src/render/motionVectors';
-import { scenePose } from '../../src/render/scene';
-import type { LinkageScene } from '../../src/render/scene';
-import { layoutScene } from '../../src/render/sceneLayout';
-import { drawLinkage } from '../../src/render/drawLinkage';
-import { fitView } from '../../src/render/view';
-import { solveClosedForm } from '../../src/solver/closedForm';
+} from '../../../src/shared/linkage/motionVectors';
+import type { SceneVectors, VectorText } from '../../../src/shared/linkage/motionVectors';
+import { scenePose } from '../../../src/shared/linkage/scene';
+import type { LinkageScene } from '../../../src/shared/linkage/scene';
+import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
+import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
+import { fitView } from '../../../src/shared/canvas/view';
+import { solveClosedForm } from '../../../src/solver/closedForm';
 import { RecordingContext, measureModel, sceneText } from './fixtures';
 
 const TEXT: VectorText = {

@@ -1,14 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { frameMotion } from '../../src/components/frameMotion';
-import { localPose } from '../../src/components/localPose';
-import { plotRates } from '../../src/components/rateInputs';
-import { classify } from '../../src/solver/classify';
-import type { Branch } from '../../src/solver/types';
-import { advanceTheta2, rangeToDeg } from '../../src/state/animation';
-import type { Direction } from '../../src/state/appState';
-import { effectiveInputMotion } from '../../src/state/inputMotion';
-import type { PlotSeries } from '../../src/worker/protocol';
-import { referenceAngles } from '../oracle/reference';
+import { frameMotion } from '../../../src/shared/linkage/frameMotion';
+import { localPose } from '../../../src/shared/linkage/localPose';
+import { plotRates } from '../../../src/shared/charts/rateInputs';
+import { classify } from '../../../src/solver/classify';
+import type { Branch } from '../../../src/solver/types';
+import { advanceTheta2, rangeToDeg } from '../../../src/shared/state/animation';
+import type { Direction } from '../../../src/shared/state/appState';
+import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
+import type { PlotSeries } from '../../../src/shared/jobs/protocol';
+import { referenceAngles } from '../../oracle/reference';
 
 /** A triple rocker: the input rocks between two limits (the e2e export case). */
 const L = { r1: 4, r2: 3, r3: 3.5, r4: 3 };

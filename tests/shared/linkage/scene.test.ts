@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { sceneBounds, sceneCurves, scenePose } from '../../src/render/scene';
+import { sceneBounds, sceneCurves, scenePose } from '../../../src/shared/linkage/scene';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 

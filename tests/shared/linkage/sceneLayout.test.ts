@@ -1,12 +1,12 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { canvasToolsRect } from '../../src/render/canvasTools';
-import { drawLinkage } from '../../src/render/drawLinkage';
-import type { Px, ScreenRect } from '../../src/render/rect';
-import type { LabelId, SceneLayout } from '../../src/render/sceneLayout';
-import { layoutScene } from '../../src/render/sceneLayout';
-import { fitView } from '../../src/render/view';
-import { FONT_SIZES } from '../../src/theme/tokens';
-import type { Branch } from '../../src/solver/types';
+import { canvasToolsRect } from '../../../src/shared/canvas/canvasTools';
+import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
+import type { Px, ScreenRect } from '../../../src/shared/canvas/rect';
+import type { LabelId, SceneLayout } from '../../../src/shared/linkage/sceneLayout';
+import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
+import { fitView } from '../../../src/shared/canvas/view';
+import { FONT_SIZES } from '../../../src/shared/theme/tokens';
+import type { Branch } from '../../../src/solver/types';
 import { LINKAGES, RecordingContext, measureModel, sweepScenes } from './fixtures';
 
 // The label placement over a dense sweep: every 1 degree of theta2, both branches, six linkages (the report's

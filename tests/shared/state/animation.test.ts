@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { classify } from '../../src/solver';
-import type { Linkage } from '../../src/solver';
+import { classify } from '../../../src/solver';
+import type { Linkage } from '../../../src/solver';
 import {
   advanceTheta2,
   degreesForElapsed,
@@ -8,11 +8,11 @@ import {
   isRocking,
   rangeToDeg,
   stepTheta2,
-} from '../../src/state/animation';
-import type { StepState } from '../../src/state/animation';
-import { formatInputRange } from '../../src/state/inputRange';
-import { messagesEn } from '../../src/state/messagesEn';
-import { getPreset } from '../../src/state/presets';
+} from '../../../src/shared/state/animation';
+import type { StepState } from '../../../src/shared/state/animation';
+import { formatInputRange } from '../../../src/shared/state/inputRange';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { getPreset } from '../../../src/shared/state/presets';
 
 const FULL = { full: true, intervals: [{ lo: -180, hi: 180 }] };
 /** The triple rocker 4-3-3.5-3 of the hard-case table: the input rocks within ±135.95°. */

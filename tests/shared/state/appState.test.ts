@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_STATE, reducer } from '../../src/state/appState';
+import { DEFAULT_STATE, reducer } from '../../../src/shared/state/appState';
 
 describe('reducer', () => {
   it('starts from the report linkage at 45 degrees on the open branch', () => {

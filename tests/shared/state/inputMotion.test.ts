@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { OMEGA_UNITS, effectiveInputMotion, omegaFromUnit, omegaToUnit } from '../../src/state/inputMotion';
+import { OMEGA_UNITS, effectiveInputMotion, omegaFromUnit, omegaToUnit } from '../../../src/shared/state/inputMotion';
 
 // Independent conversions written out here: one turn is 2 pi rad = 360 degrees, a minute is 60 s.
 const TURN_RAD = 2 * Math.PI;

@@ -1,10 +1,10 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { classify } from '../../src/solver';
-import { formatInputRange, sliderIntervals } from '../../src/state/inputRange';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
-import { referenceLimits } from '../oracle/reference';
+import { classify } from '../../../src/solver';
+import { formatInputRange, sliderIntervals } from '../../../src/shared/state/inputRange';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import { referenceLimits } from '../../oracle/reference';
 
 /** Whether a slider interval holds an angle already in [0, 360). */
 function holds(iv: { loDeg: number; hiDeg: number; wraps: boolean }, x: number, eps: number): boolean {

@@ -1,7 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import type { PlayFrame } from '../../src/state/playhead';
-import { Playhead, frameOf, playBase, sameFrame, withFrame } from '../../src/state/playhead';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import type { PlayFrame } from '../../../src/shared/state/playhead';
+import { Playhead, frameOf, playBase, sameFrame, withFrame } from '../../../src/shared/state/playhead';
 
 const f = (theta2Deg: number, direction: 1 | -1 = 1, branch: 'open' | 'crossed' = 'open'): PlayFrame => ({
   theta2Deg,

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { classify } from '../../src/solver';
-import { PRESETS, getPreset, matchPreset } from '../../src/state/presets';
-import type { PresetId } from '../../src/state/presets';
-import { parseField } from '../../src/state/validate';
+import { classify } from '../../../src/solver';
+import { PRESETS, getPreset, matchPreset } from '../../../src/shared/state/presets';
+import type { PresetId } from '../../../src/shared/state/presets';
+import { parseField } from '../../../src/shared/ui/validateNumber';
 
 describe('PRESETS', () => {
   it('are valid linkages with valid fields', () => {

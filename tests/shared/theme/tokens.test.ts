@@ -1,14 +1,14 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { join, relative } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { applyTokens } from '../../src/theme/applyTokens';
-import { COLORS, cssVariables } from '../../src/theme/tokens';
+import { applyTokens } from '../../../src/shared/theme/applyTokens';
+import { COLORS, cssVariables } from '../../../src/shared/theme/tokens';
 
-// One source for colours: src/theme/tokens.ts. The stylesheets read them through CSS variables that
+// One source for colours: src/shared/theme/tokens.ts. The stylesheets read them through CSS variables that
 // applyTokens sets at startup, so a stylesheet holds no colour of its own; the canvas renderer reads them
-// through render/theme.ts, so its source holds none either.
+// through shared/canvas/canvasTheme.ts, so its source holds none either.
 
-const SRC = join(import.meta.dirname, '../../src');
+const SRC = join(import.meta.dirname, '../../../src');
 
 function filesUnder(dir: string, ext: string): string[] {
   return readdirSync(dir, { withFileTypes: true, recursive: true })
@@ -91,8 +91,10 @@ describe('stylesheets', () => {
 });
 
 describe('canvas renderer source', () => {
-  it('names no colour of its own: every colour comes through render/theme.ts from the tokens', () => {
-    const strays = filesUnder(join(SRC, 'render'), '.ts').flatMap((f) =>
+  it('names no colour of its own: every colour comes through shared/canvas/canvasTheme.ts from the tokens', () => {
+    const sources = [...filesUnder(join(SRC, 'shared/canvas'), '.ts'), ...filesUnder(join(SRC, 'shared/linkage'), '.ts')];
+    expect(sources.length).toBeGreaterThan(10);
+    const strays = sources.flatMap((f) =>
       [...readFileSync(f, 'utf8').matchAll(/['"`](#[0-9a-f]{3,8}|rgba?\([^)]*\))['"`]/gi)].map(
         (m) => `${relative(SRC, f)}: ${m[1]}`,
       ),

@@ -1,8 +1,8 @@
 import { createElement } from 'react';
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { NumberControl } from '../../src/components/NumberControl';
-import { THETA2_DECIMALS } from '../../src/state/format';
+import { NumberControl } from '../../../src/shared/ui/NumberControl';
+import { THETA2_DECIMALS } from '../../../src/shared/format';
 
 const noop = () => undefined;
 

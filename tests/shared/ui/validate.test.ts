@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
-import { checkValue, normalizeNumberText, parseDecimal, parseField } from '../../src/state/validate';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import { checkValue, normalizeNumberText, parseDecimal, parseField } from '../../../src/shared/ui/validateNumber';
 
 function message(field: Parameters<typeof parseField>[0], raw: string): string {
   const r = parseField(field, raw);

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import { ignoredNoticeText } from '../../src/state/ignoredNotice';
-import { messagesEn } from '../../src/state/messagesEn';
-import { messagesZhTw } from '../../src/state/messagesZhTw';
-import { parseUrl } from '../../src/state/url';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import { ignoredNoticeText } from '../../../src/shared/url/ignoredNotice';
+import { messagesEn } from '../../../src/shared/i18n/messagesEn';
+import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
+import { parseUrl } from '../../../src/shared/url/url';
 
 const quiet = () => undefined;
 

@@ -1,11 +1,11 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import type { AppState } from '../../src/state/appState';
-import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../src/lab/options';
-import { SWEEP_METHODS } from '../../src/solver/methods';
-import { DEFAULT_STATE } from '../../src/state/appState';
-import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../src/state/url';
-import { DEFAULT_TARGET, URL_KEYS } from '../../src/state/urlKeys';
+import type { AppState } from '../../../src/shared/state/appState';
+import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../../src/study/options';
+import { SWEEP_METHODS } from '../../../src/solver/methods';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../../src/shared/url/url';
+import { DEFAULT_TARGET, URL_KEYS } from '../../../src/shared/url/urlKeys';
 
 const quiet = () => undefined;
 const SEED = 20251222;

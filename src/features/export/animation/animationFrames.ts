@@ -1,10 +1,10 @@
-import type { Radians } from '../solver/angles';
-import { degToRad, wrapDeg360 } from '../solver/angles';
-import type { Branch } from '../solver/types';
-import type { InputRangeDeg } from '../state/animation';
-import { LIMIT_INSET_DEG, advanceTheta2, inputTurnsFully } from '../state/animation';
-import type { Direction } from '../state/appState';
-import { NOMINAL_FPS } from '../state/appState';
+import type { Radians } from '../../../solver/angles';
+import { degToRad, wrapDeg360 } from '../../../solver/angles';
+import type { Branch } from '../../../solver/types';
+import type { InputRangeDeg } from '../../../shared/state/animation';
+import { LIMIT_INSET_DEG, advanceTheta2, inputTurnsFully } from '../../../shared/state/animation';
+import type { Direction } from '../../../shared/state/appState';
+import { NOMINAL_FPS } from '../../../shared/state/appState';
 
 // The bounds live in their own module so the Export panel can show them without loading the planner.
 import { FRAMES_PER_CYCLE_MAX, FRAMES_PER_CYCLE_MIN } from './framesPerCycle';

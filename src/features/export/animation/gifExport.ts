@@ -36,7 +36,9 @@ export interface GifExportEnv {
 
 function defaultWorker(): GifWorkerLike | null {
   if (typeof Worker === 'undefined') return null;
-  return new Worker(new URL('./gif.worker.ts', import.meta.url), { type: 'module' }) as unknown as GifWorkerLike;
+  return new Worker(new URL('../../../workers/gif.worker.ts', import.meta.url), {
+    type: 'module',
+  }) as unknown as GifWorkerLike;
 }
 
 /**

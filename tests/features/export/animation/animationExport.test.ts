@@ -1,14 +1,18 @@
 import { GifReader } from 'omggif';
 import { describe, expect, it } from 'vitest';
-import { exportAnimation } from '../../src/export/animationExport';
-import type { AnimationFrame } from '../../src/export/animationFrames';
-import { planAnimationFrames } from '../../src/export/animationFrames';
-import type { GifWorkerLike } from '../../src/export/gifClient';
-import { FRAMES_IN_FLIGHT, PALETTE_SAMPLE_FRAMES } from '../../src/export/gifExport';
-import { gifFrameDelaysCs } from '../../src/export/gifTiming';
-import type { GifWorkerRequest, GifWorkerResponse } from '../../src/export/gifProtocol';
-import { createGifSession } from '../../src/export/gifSession';
-import type { AnimationExportOptions, ExportProgress, RenderFrame } from '../../src/export/types';
+import { exportAnimation } from '../../../../src/features/export/animation/animationExport';
+import type { AnimationFrame } from '../../../../src/features/export/animation/animationFrames';
+import { planAnimationFrames } from '../../../../src/features/export/animation/animationFrames';
+import type { GifWorkerLike } from '../../../../src/features/export/animation/gifClient';
+import { FRAMES_IN_FLIGHT, PALETTE_SAMPLE_FRAMES } from '../../../../src/features/export/animation/gifExport';
+import { gifFrameDelaysCs } from '../../../../src/features/export/animation/gifTiming';
+import type { GifWorkerRequest, GifWorkerResponse } from '../../../../src/features/export/animation/gifProtocol';
+import { createGifSession } from '../../../../src/features/export/animation/gifSession';
+import type {
+  AnimationExportOptions,
+  ExportProgress,
+  RenderFrame,
+} from '../../../../src/features/export/animation/types';
 import { createFakeSurface } from './fakeSurface';
 
 const VIEW = { width: 100, height: 100 };

@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import type { AnimationFrame } from '../../src/export/animationFrames';
-import { planAnimationFrames, playbackFps } from '../../src/export/animationFrames';
-import { classify, jointPositions, solveClosedForm } from '../../src/solver';
-import type { Branch, Linkage } from '../../src/solver';
-import type { InputRangeDeg } from '../../src/state/animation';
-import { advanceTheta2, rangeToDeg } from '../../src/state/animation';
+import type { AnimationFrame } from '../../../../src/features/export/animation/animationFrames';
+import { planAnimationFrames, playbackFps } from '../../../../src/features/export/animation/animationFrames';
+import { classify, jointPositions, solveClosedForm } from '../../../../src/solver';
+import type { Branch, Linkage } from '../../../../src/solver';
+import type { InputRangeDeg } from '../../../../src/shared/state/animation';
+import { advanceTheta2, rangeToDeg } from '../../../../src/shared/state/animation';
 
 const CRANK_ROCKER: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
 /** Triple rocker of the hard-case table: one interval of about ±135.95°. */

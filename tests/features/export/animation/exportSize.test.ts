@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { MAX_SIDE_PX, exportSizePx, letterbox } from '../../src/export/exportSize';
+import { MAX_SIDE_PX, exportSizePx, letterbox } from '../../../../src/features/export/animation/exportSize';
 
 describe('exportSizePx', () => {
   it('gives the view times devicePixelRatio for screen, in even pixels', () => {

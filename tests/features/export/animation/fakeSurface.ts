@@ -1,5 +1,5 @@
-import type { FrameSurface } from '../../src/export/frameSurface';
-import type { FrameContext } from '../../src/export/types';
+import type { FrameSurface } from '../../../../src/features/export/animation/frameSurface';
+import type { FrameContext } from '../../../../src/features/export/animation/types';
 
 interface State {
   a: number;

@@ -1,7 +1,7 @@
 import { GifReader } from 'omggif';
 import { describe, expect, it } from 'vitest';
-import { createGifWriter } from '../../src/export/gifEncoder';
-import { gifFrameDelaysCs } from '../../src/export/gifTiming';
+import { createGifWriter } from '../../../../src/features/export/animation/gifEncoder';
+import { gifFrameDelaysCs } from '../../../../src/features/export/animation/gifTiming';
 import type { Raster, Rgb } from './raster';
 import { couplerTrace, createRaster, drawLinkageFrame, fillRect } from './raster';
 

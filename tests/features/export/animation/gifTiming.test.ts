@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { GIF_MIN_DELAY_CS, gifFrameDelaysCs } from '../../src/export/gifTiming';
+import { GIF_MIN_DELAY_CS, gifFrameDelaysCs } from '../../../../src/features/export/animation/gifTiming';
 
 describe('gifFrameDelaysCs', () => {
   it('keeps the running total on time: 30 FPS alternates 3 and 4 cs and 30 frames last exactly 1 s', () => {

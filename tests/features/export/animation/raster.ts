@@ -1,5 +1,5 @@
-import { jointPositions, solveClosedForm } from '../../src/solver';
-import type { Branch, Linkage } from '../../src/solver';
+import { jointPositions, solveClosedForm } from '../../../../src/solver';
+import type { Branch, Linkage } from '../../../../src/solver';
 
 /** An RGB colour, 0..255 each. */
 export type Rgb = readonly [r: number, g: number, b: number];
