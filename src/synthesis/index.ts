@@ -19,3 +19,26 @@ export type {
 } from './pathSynthesis';
 export type { PathCandidate } from './globalSearch';
 export { MODEL_SIZE, couplerLocal } from './pathModel';
+export {
+  MAX_PAIRS,
+  MAX_PRECISION_POINTS,
+  chebyshevPoints,
+  freudenstein,
+  functionGenerator,
+} from './functionGeneration';
+export type {
+  AnglePair,
+  FreudensteinDesign,
+  FunctionDefect,
+  FunctionGeneratorResult,
+  FunctionTask,
+} from './functionGeneration';
+export { motionDesign, threePositionSynthesis } from './motionGeneration';
+export type { MotionDesign, ThreePositionGiven } from './motionGeneration';
+export { screenPoses } from './defects';
+export type { MotionDefect, PinPair } from './defects';
+export { twoPositionRocker } from './twoPosition';
+export type { TwoPositionRocker, TwoPositionRockerTask } from './twoPosition';
+export { CURVE_FAR, DEFAULT_CURVE_SAMPLES, burmesterCurves, burmesterFourBars, burmesterPoints } from './burmester';
+export type { BurmesterFourBar, BurmesterPair } from './burmester';
+export { toFrame, toPlane } from './poseFrame';
