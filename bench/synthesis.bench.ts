@@ -1,0 +1,139 @@
+/**
+ * Path-synthesis benchmark: the literature's standard problems and exact problems (tests/synthesis/benchmarkCases.ts),
+ * each run with 5 seeds and a 10 s budget on one core. Prints, per case, Σd² (median and spread over the seeds),
+ * the best published Σd², the time and the evaluations (median and spread), then the closed-form synthesis rows of
+ * bench/synthesisClosedForms.ts when that file exists; writes bench/results/synthesis.json and synthesis-table.md.
+ * Run: npm run bench:synthesis   (BENCH_QUICK=1: 2 seeds, 3 s budget)
+ */
+import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, resolve } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { mergePathCandidates, pathSynthesisPart } from '../src/synthesis';
+import { BENCHMARK_CASES, targetSize } from '../tests/synthesis/benchmarkCases';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const QUICK = process.env.BENCH_QUICK === '1';
+const SEEDS = QUICK ? [1, 2] : [1, 2, 3, 4, 5];
+const BUDGET_MS = QUICK ? 3000 : 10000;
+
+interface Row {
+  case: string;
+  title: string;
+  n: number;
+  timing: string;
+  f: number[];
+  fOverSize2: number[];
+  published: number | null;
+  publishedSource: string;
+  ms: number[];
+  evaluations: number[];
+  solutions: number[];
+}
+
+const median = (v: number[]) => {
+  const s = [...v].sort((a, b) => a - b);
+  const h = s.length >> 1;
+  return s.length % 2 ? s[h] : (s[h - 1] + s[h]) / 2;
+};
+const spread = (v: number[], fmt: (x: number) => string) => `${fmt(Math.min(...v))} … ${fmt(Math.max(...v))}`;
+const sci = (x: number) => (x === 0 ? '0' : x.toExponential(3));
+const ms = (x: number) => `${Math.round(x)}`;
+
+async function runCase(c: (typeof BENCHMARK_CASES)[number]): Promise<Row> {
+  const row: Row = {
+    case: c.id,
+    title: c.title,
+    n: c.task.targets.length,
+    timing: c.task.timing.kind,
+    f: [],
+    fOverSize2: [],
+    published: c.published.f,
+    publishedSource: c.published.source,
+    ms: [],
+    evaluations: [],
+    solutions: [],
+  };
+  const size = targetSize(c.task.targets);
+  for (const seed of SEEDS) {
+    const t0 = Date.now();
+    // What pathSynthesis does, with the evaluation count kept.
+    const part = await pathSynthesisPart(c.task, { seed, budgetMs: BUDGET_MS });
+    const sols = mergePathCandidates(c.task, [part.candidates], Math.max(Date.now(), t0 + BUDGET_MS) + 200);
+    const elapsed = Date.now() - t0;
+    const f = sols[0]?.error ?? Infinity;
+    row.f.push(f);
+    row.fOverSize2.push(f / (size * size));
+    row.ms.push(elapsed);
+    row.evaluations.push(part.evaluations);
+    row.solutions.push(sols.length);
+    console.error(`${c.id} seed ${seed}: f ${sci(f)} in ${elapsed} ms, ${sols.length} answers`);
+  }
+  return row;
+}
+
+function table(rows: Row[]): string {
+  const head =
+    '| case | n | timing | f median | f spread | f / size² median | best published f | time ms median | time spread | evaluations median |';
+  const sep = '|---|---|---|---|---|---|---|---|---|---|';
+  const body = rows.map((r) =>
+    [
+      r.case,
+      r.n,
+      r.timing,
+      sci(median(r.f)),
+      spread(r.f, sci),
+      sci(median(r.fOverSize2)),
+      r.published === null ? `not verified (${r.publishedSource})` : `${sci(r.published)} (${r.publishedSource})`,
+      ms(median(r.ms)),
+      spread(r.ms, ms),
+      Math.round(median(r.evaluations)),
+    ].join(' | '),
+  );
+  return [head, sep, ...body.map((b) => `| ${b} |`)].join('\n');
+}
+
+interface ClosedFormRow {
+  case: string;
+  medianMs: number;
+  spreadMs: string;
+}
+
+/** The other synthesis bench's rows (bench/synthesisClosedForms.ts), when that file exists. */
+async function closedForms(): Promise<ClosedFormRow[] | null> {
+  const file = resolve(here, 'synthesisClosedForms.ts');
+  if (!existsSync(file)) return null;
+  const mod = (await import(/* @vite-ignore */ pathToFileURL(file).href)) as { closedFormRows(): ClosedFormRow[] };
+  return mod.closedFormRows();
+}
+
+const rows: Row[] = [];
+for (const c of BENCHMARK_CASES) rows.push(await runCase(c));
+const pathTable = table(rows);
+console.log(`\nPath synthesis, ${SEEDS.length} seeds, budget ${BUDGET_MS} ms per run (one core):\n`);
+console.log(pathTable);
+const cf = await closedForms();
+let cfTable = '';
+if (cf) {
+  cfTable = [
+    '| case | median ms | spread ms |',
+    '|---|---|---|',
+    ...cf.map((r) => `| ${r.case} | ${r.medianMs.toPrecision(3)} | ${r.spreadMs} |`),
+  ].join('\n');
+  console.log('\nClosed-form synthesis:\n');
+  console.log(cfTable);
+} else console.log('\n(bench/synthesisClosedForms.ts not found: no closed-form table)');
+const out = resolve(here, 'results');
+mkdirSync(out, { recursive: true });
+writeFileSync(
+  resolve(out, 'synthesis.json'),
+  JSON.stringify(
+    { date: new Date().toISOString(), quick: QUICK, seeds: SEEDS, budgetMs: BUDGET_MS, path: rows, closedForms: cf },
+    null,
+    2,
+  ) + '\n',
+);
+writeFileSync(
+  resolve(out, 'synthesis-table.md'),
+  `# bench:synthesis\n\nPath synthesis, ${SEEDS.length} seeds, budget ${BUDGET_MS} ms per run (one core).\n\n${pathTable}\n` +
+    (cfTable ? `\nClosed-form synthesis:\n\n${cfTable}\n` : ''),
+);

@@ -1,0 +1,34 @@
+/**
+ * The benchmark problems of bench/synthesis.bench.ts as tests, each with one seed and a short budget (the whole
+ * file stays well under a minute on two cores). Where an exact solution exists in the bounds the assertion is
+ * the issue's exact criterion, Σd² ≤ 1e-20 · size², which is at or below any published value. Where the problem
+ * is overdetermined the published best could not be verified (benchmarkCases.ts says so), so the test asserts
+ * what it can: an honest answer, with Σd² at or below the published value when one is recorded.
+ */
+import { describe, expect, it } from 'vitest';
+import { classify } from '../../src/solver';
+import { pathSynthesis, placedCouplerPoint } from '../../src/synthesis';
+import { BENCHMARK_CASES, targetSize } from './benchmarkCases';
+
+const BUDGET_MS = 2500;
+
+describe('pathSynthesis on the benchmark problems', () => {
+  for (const c of BENCHMARK_CASES) {
+    it(`${c.id}: ${c.title}`, async () => {
+      const sols = await pathSynthesis(c.task, { seed: 1, budgetMs: BUDGET_MS });
+      expect(sols.length).toBeGreaterThan(0);
+      const best = sols[0];
+      const size = targetSize(c.task.targets);
+      if (c.exact) expect(best.error).toBeLessThanOrEqual(1e-20 * size * size);
+      if (c.published.f !== null) expect(best.error).toBeLessThanOrEqual(c.published.f + 1e-20 * size * size);
+      const b = c.task.bounds;
+      for (const s of sols) {
+        expect(classify(s.design.links).inputIsCrank).toBe(true);
+        if (b?.length)
+          for (const r of Object.values(s.design.links)) expect(r >= b.length[0] && r <= b.length[1]).toBe(true);
+        if (b?.coupler !== undefined) expect(s.design.pDist).toBeLessThanOrEqual(b.coupler);
+        s.theta2.forEach((t) => expect(placedCouplerPoint(s.design, t)).not.toBeNull());
+      }
+    });
+  }
+});
