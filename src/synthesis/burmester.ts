@@ -444,9 +444,11 @@ export interface BurmesterFourBar {
 }
 
 /**
- * The four-bars made of every two of the pairs (the first of each two is the crank: up to 6 from 4 pairs), placed
- * at the poses with P at the coupler frame's origin, each screened as a three-position result ('order', 'branch',
- * 'not-crank'). Pairs whose pivots coincide are skipped. Throws for bad poses or pairs.
+ * The four-bars made of every two of the pairs (up to 6 from 4 pairs), placed at the poses with P at the coupler
+ * frame's origin, each screened as a three-position result ('order', 'branch', 'not-crank'). Either dyad of two
+ * may drive: the one whose four-bar has fewer defects is the crank (on a tie, the one with the shorter crank), so
+ * a Grashof crank-rocker comes out driven by its crank. Pairs whose pivots coincide are skipped. Throws for bad
+ * poses or pairs, naming them.
  */
 export function burmesterFourBars(poses: readonly Pose[], pairs: readonly BurmesterPair[]): BurmesterFourBar[] {
   checkArray('poses', poses, 2);
@@ -460,23 +462,31 @@ export function burmesterFourBars(poses: readonly Pose[], pairs: readonly Burmes
   const out: BurmesterFourBar[] = [];
   for (let i = 0; i < pairs.length; i++) {
     for (let j = i + 1; j < pairs.length; j++) {
-      const crank = pairs[i];
-      const rocker = pairs[j];
-      const pins = poses.map((p) => ({ A: toPlane(p, crank.circle), B: toPlane(p, rocker.circle) }));
-      let design: PlacedFourBar;
-      try {
-        design = fourBarFromJoints({
-          O2: crank.center,
-          A: pins[0].A,
-          B: pins[0].B,
-          O4: rocker.center,
-          P: poses[0],
-        }).design;
-      } catch {
-        continue;
-      }
-      out.push({ pairs: [i, j], design, ...screenPoses(design, pins) });
+      const options = [fourBarOf(poses, pairs, i, j), fourBarOf(poses, pairs, j, i)].filter(
+        (b): b is BurmesterFourBar => b !== null,
+      );
+      options.sort((a, b) => a.defects.length - b.defects.length || a.design.links.r2 - b.design.links.r2);
+      if (options.length) out.push(options[0]);
     }
   }
   return out;
+}
+
+/** The four-bar driven by pair i's dyad with pair j's as the rocker, screened; null when two pivots coincide. */
+function fourBarOf(
+  poses: readonly Pose[],
+  pairs: readonly BurmesterPair[],
+  i: number,
+  j: number,
+): BurmesterFourBar | null {
+  const crank = pairs[i];
+  const rocker = pairs[j];
+  const pins = poses.map((p) => ({ A: toPlane(p, crank.circle), B: toPlane(p, rocker.circle) }));
+  let design: PlacedFourBar;
+  try {
+    design = fourBarFromJoints({ O2: crank.center, A: pins[0].A, B: pins[0].B, O4: rocker.center, P: poses[0] }).design;
+  } catch {
+    return null;
+  }
+  return { pairs: [i, j], design, ...screenPoses(design, pins) };
 }
