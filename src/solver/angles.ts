@@ -64,6 +64,33 @@ function prodError(a: number, b: number, p: number): number {
   return ah * bh - p + ah * bl + al * bh + al * bl;
 }
 
+/** A reduced angle as an unevaluated sum hi + lo, |lo| <= ulp(hi) (see reduceDifference). */
+export interface AngleParts {
+  hi: number;
+  lo: number;
+}
+
+const cwParts: AngleParts = { hi: 0, lo: 0 };
+
+/** codyWaite's result as hi + lo (the compensated sum split once more), into out. */
+function codyWaiteParts(x: number, k: number, out: AngleParts): void {
+  const ph = k * TWO_PI;
+  const pl = prodError(k, TWO_PI, ph);
+  const qh = k * TWO_PI_MID;
+  const ql = prodError(k, TWO_PI_MID, qh);
+  const r0 = x - ph;
+  const s1 = r0 - pl;
+  const b1 = s1 - r0;
+  const e1 = r0 - (s1 - b1) + (-pl - b1);
+  const s2 = s1 - qh;
+  const b2 = s2 - s1;
+  const e2 = s1 - (s2 - b2) + (-qh - b2);
+  const tail = e1 + e2 - ql - k * TWO_PI_LO;
+  const hi = s2 + tail;
+  out.hi = hi;
+  out.lo = tail - (hi - s2);
+}
+
 /**
  * x - k 2 pi to about 2^-100 absolute, for an integer |k| <= 2^25 and |x| < 2^26: k hi and k mid are
  * formed exactly, x - k hi is exact (Sterbenz), and the small terms are added with compensation.
@@ -83,6 +110,14 @@ function codyWaite(x: number, k: number): number {
   const e2 = s1 - (s2 - b2) + (-qh - b2);
   return s2 + (e1 + e2 - ql - k * TWO_PI_LO);
 }
+
+/**
+ * Largest |angle| (rad) whose differences the solver keeps as an exact TwoSum hi + lo with the first-order
+ * correction sin(hi) + lo cos(hi): lo is at most half an ulp of hi, so the neglected lo^2 / 2 stays below
+ * 2^-99 (eps^2 of the difference). Past it lo grows (to 1 rad at 1e16) and the difference is reduced
+ * exactly with angleDiff instead; one range test keeps ordinary angles on the fast path.
+ */
+export const TWO_SUM_MAX_RAD = 16;
 
 /** Bits of the fixed-point constants of the exact reduction (1/(2 pi) needs 971 + 53 + 200 for any double). */
 const FRACTION_BITS = 1280;
@@ -142,6 +177,57 @@ function turnsToRadians(f: bigint): number {
   const top = Number(p >> BigInt(shift));
   const v = top * 2 ** (shift - 260);
   return neg ? -v : v;
+}
+
+/** A turn fraction (over 2^130) times 2 pi as hi + lo: the double nearest, and the exact rest rounded. */
+function turnsToParts(f: bigint, out: AngleParts): void {
+  const hi = turnsToRadians(f);
+  out.hi = hi;
+  out.lo = 0;
+  if (hi === 0) return;
+  const neg = f < 0n;
+  const p = (neg ? -f : f) * twoPiFixed; // over 2^260
+  bitsView.setFloat64(0, Math.abs(hi));
+  const hiWord = bitsView.getUint32(0);
+  const biased = (hiWord >>> 20) & 0x7ff;
+  const mant = (BigInt(hiWord & 0xfffff) << 32n) | BigInt(bitsView.getUint32(4)) | (1n << 52n);
+  // |hi| >= 2 pi 2^-130, so its exponent plus 260 is positive: hi is an integer over 2^260.
+  const rest = p - (mant << BigInt(biased - 1075 + 260));
+  const lo = Number(rest) * 2 ** -260;
+  out.lo = neg ? -lo : lo;
+}
+
+/**
+ * The exact a - b modulo 2 pi as hi + lo, into out: |hi| below about 3 pi, |lo| <= ulp(hi), accurate to
+ * about 2^-100 absolute, so sin(hi) + lo cos(hi) and cos(hi) - lo sin(hi) are the sine and cosine of the
+ * exact difference to full relative accuracy (a single rounded double near pi would not give its small
+ * sine that). Any finite a, b; NaN parts for a non-finite one (a missing pose stays missing).
+ */
+export function reduceDifference(a: number, b: number, out: AngleParts): void {
+  if (a - a !== 0 || b - b !== 0) {
+    out.hi = out.lo = NaN;
+    return;
+  }
+  const d = a - b;
+  const bb = d - a;
+  const err = a - (d - bb) + (-b - bb);
+  if (Math.abs(d) < CODY_WAITE_MAX) {
+    codyWaiteParts(d, Math.round(d / TWO_PI), cwParts);
+    // Add the rounding error of d: TwoSum with hi, then fold it into lo.
+    const h = cwParts.hi + err;
+    const hb = h - cwParts.hi;
+    const e = cwParts.hi - (h - hb) + (err - hb);
+    const lo = cwParts.lo + e;
+    const hi = h + lo;
+    out.hi = hi;
+    out.lo = lo - (hi - h);
+    return;
+  }
+  const half = 1n << (TURN_BITS - 1n);
+  let f = turnFraction(a) - turnFraction(b);
+  if (f >= half) f -= 2n * half;
+  else if (f < -half) f += 2n * half;
+  turnsToParts(f, out);
 }
 
 /** A wrapped result within an ulp of +-pi could round just outside the range: fold it onto pi. */

@@ -5,10 +5,12 @@
  * The lines are those of the pose as given: O2 A along theta2, O4 B along theta4, A B along theta3 from
  * A = r2 (cos theta2, sin theta2), as jointPositions draws them.
  */
+import { TWO_SUM_MAX_RAD, reduceDifference } from './angles';
+import type { AngleParts } from './angles';
 import { twoSum } from './exact';
 import type { Point } from './kinematics';
 import type { Angles, Linkage } from './types';
-import { validateLinkage } from './validate';
+import { checkAngles, checkFinite, validateLinkage } from './validate';
 
 /** Instant centres I13 and I24 in the linkage's length unit (frame of jointPositions); null at infinity. */
 export interface InstantCenters {
@@ -28,16 +30,19 @@ export const PARALLEL_SIN = 8 * Number.EPSILON;
 /**
  * sin(a - b) for double a, b with the difference kept exactly as hi + lo: relatively accurate down to
  * |sin| ~ ulp(a - b), and absolutely to eps^2 |a - b| below (plain sin(a - b) would be off by eps |a - b|).
+ * Past TWO_SUM_MAX_RAD the TwoSum lo is too large for the first-order correction: the exact difference is
+ * reduced modulo 2 pi first, as hi + lo again.
  */
 function sinOfDifference(a: number, b: number): number {
-  const d = twoSum(a, -b);
+  const d = Math.abs(a) <= TWO_SUM_MAX_RAD && Math.abs(b) <= TWO_SUM_MAX_RAD ? twoSum(a, -b) : reduced(a, b);
   return Math.sin(d.hi) + d.lo * Math.cos(d.hi);
 }
 
-function checkAngle(name: string, value: unknown): void {
-  if (typeof value !== 'number' || !Number.isFinite(value)) {
-    throw new Error(`${name} must be a finite angle in radians, got ${String(value)}`);
-  }
+/** a - b reduced exactly modulo 2 pi as hi + lo (angles.ts reduceDifference). */
+function reduced(a: number, b: number): AngleParts {
+  const out = { hi: 0, lo: 0 };
+  reduceDifference(a, b, out);
+  return out;
 }
 
 /**
@@ -48,12 +53,8 @@ function checkAngle(name: string, value: unknown): void {
  */
 export function instantCenters(l: Linkage, theta2: number, pose: Angles): InstantCenters {
   validateLinkage(l);
-  checkAngle('theta2', theta2);
-  if (typeof pose !== 'object' || pose === null) {
-    throw new Error(`pose must be an object with theta3 and theta4, got ${String(pose)}`);
-  }
-  checkAngle('pose.theta3', pose.theta3);
-  checkAngle('pose.theta4', pose.theta4);
+  checkFinite('theta2', theta2, 'angle in radians');
+  checkAngles('pose', pose);
   const { theta3, theta4 } = pose;
 
   // O2 + t (cos t2, sin t2) = O4 + u (cos t4, sin t4): crossing with (cos t4, sin t4) gives

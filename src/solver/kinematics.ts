@@ -1,3 +1,5 @@
+import { TWO_SUM_MAX_RAD, angleDiff, reduceDifference } from './angles';
+import type { AngleParts } from './angles';
 import type { Angles, Linkage } from './types';
 import { checkNumber, checkObject, validateLinkage } from './validate';
 
@@ -54,22 +56,39 @@ export function couplerPoint(l: Linkage, theta2: number, theta3: number, pDist: 
   checkNumber('pAngle', pAngle);
   const ax = l.r2 * Math.cos(theta2);
   const ay = l.r2 * Math.sin(theta2);
-  return { x: ax + pDist * Math.cos(theta3 + pAngle), y: ay + pDist * Math.sin(theta3 + pAngle) };
+  if (Math.abs(theta3) <= TWO_SUM_MAX_RAD && Math.abs(pAngle) <= TWO_SUM_MAX_RAD) {
+    return { x: ax + pDist * Math.cos(theta3 + pAngle), y: ay + pDist * Math.sin(theta3 + pAngle) };
+  }
+  // A huge angle: theta3 + pAngle rounds by up to a radian at 1e16, so the exact sum is reduced first.
+  reduceDifference(theta3, -pAngle, parts);
+  const c = Math.cos(parts.hi);
+  const s = Math.sin(parts.hi);
+  return { x: ax + pDist * (c - s * parts.lo), y: ay + pDist * (s + c * parts.lo) };
+}
+
+const parts: AngleParts = { hi: 0, lo: 0 };
+
+/** sin(a - b), with the exact difference reduced first when an angle is huge (its rounding would be radians). */
+function sinDiff(a: number, b: number): number {
+  if (Math.abs(a) <= TWO_SUM_MAX_RAD && Math.abs(b) <= TWO_SUM_MAX_RAD) return Math.sin(a - b);
+  reduceDifference(a, b, parts);
+  return Math.sin(parts.hi) + parts.lo * Math.cos(parts.hi);
 }
 
 /** Transmission angle mu in radians, in [0, pi]: the angle between coupler and rocker at B (NaN for NaN angles). Throws for non-numbers. */
 export function transmissionAngle(a: Angles): number {
   checkAngleObject(a);
-  return Math.abs(Math.atan2(Math.sin(a.theta4 - a.theta3), Math.cos(a.theta4 - a.theta3)));
+  // The exact difference reduced to (-pi, pi] (also for huge angles, where theta4 - theta3 rounds).
+  return Math.abs(angleDiff(a.theta4, a.theta3));
 }
 
 /** Velocity ratios d theta3 / d theta2 and d theta4 / d theta2 (dimensionless); infinite at a limit. Throws an Error naming a bad argument. */
 export function velocityRatios(l: Linkage, theta2: number, a: Angles): { dTheta3: number; dTheta4: number } {
   checkPose(l, theta2, a);
-  const sin34 = Math.sin(a.theta3 - a.theta4);
+  const sin34 = sinDiff(a.theta3, a.theta4);
   return {
-    dTheta3: (l.r2 * Math.sin(a.theta4 - theta2)) / (l.r3 * sin34),
-    dTheta4: (l.r2 * Math.sin(theta2 - a.theta3)) / (-l.r4 * sin34),
+    dTheta3: (l.r2 * sinDiff(a.theta4, theta2)) / (l.r3 * sin34),
+    dTheta4: (l.r2 * sinDiff(theta2, a.theta3)) / (-l.r4 * sin34),
   };
 }
 

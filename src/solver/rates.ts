@@ -31,8 +31,10 @@
  * eps |omega2| (r2 / r) / |sin mu| of error, accelerations one more factor 1 / |sin mu| where the
  * relative angular velocity omega3 - omega4 is bounded (see tests/oracle/rates.ts for the bounds tested).
  */
+import { TWO_SUM_MAX_RAD, reduceDifference } from './angles';
+import type { AngleParts } from './angles';
 import type { Angles, Linkage } from './types';
-import { validateLinkage } from './validate';
+import { checkFinite, describe, scaleByPow2, validateLinkage } from './validate';
 
 /** Input crank motion: angular velocity (rad/s) and acceleration (rad/s²), counter-clockwise positive. */
 export interface InputMotion {
@@ -74,82 +76,164 @@ export interface SweepRates {
  */
 export const LIMIT_SIN_MU = 4 * Number.EPSILON;
 
-function show(value: unknown): string {
-  if (typeof value === 'number') return String(value);
-  if (typeof value === 'string') return JSON.stringify(value);
-  if (value === undefined) return 'undefined (missing)';
-  try {
-    return JSON.stringify(value) ?? String(value);
-  } catch {
-    return String(value);
-  }
-}
-
-function requireFinite(value: unknown, field: string, what: string): asserts value is number {
-  if (typeof value !== 'number' || !Number.isFinite(value)) {
-    throw new Error(`${field} must be a finite ${what}, got ${show(value)}`);
-  }
-}
-
 function validateInput(input: unknown): asserts input is InputMotion {
   if (typeof input !== 'object' || input === null) {
-    throw new Error(`input must be an object with omega2 (rad/s) and alpha2 (rad/s²), got ${show(input)}`);
+    throw new Error(`input must be an object with omega2 (rad/s) and alpha2 (rad/s²), got ${describe(input)}`);
   }
   const rec = input as Record<string, unknown>;
-  requireFinite(rec.omega2, 'input.omega2', 'angular velocity in rad/s');
-  requireFinite(rec.alpha2, 'input.alpha2', 'angular acceleration in rad/s²');
+  checkFinite('input.omega2', rec.omega2, 'angular velocity in rad/s');
+  checkFinite('input.alpha2', rec.alpha2, 'angular acceleration in rad/s²');
 }
 
 function validatePose(pose: unknown): asserts pose is Angles {
   if (typeof pose !== 'object' || pose === null) {
-    throw new Error(`pose must be an object with theta3 and theta4 (radians), got ${show(pose)}`);
+    throw new Error(`pose must be an object with theta3 and theta4 (radians), got ${describe(pose)}`);
   }
   const rec = pose as Record<string, unknown>;
-  requireFinite(rec.theta3, 'pose.theta3', 'angle in radians');
-  requireFinite(rec.theta4, 'pose.theta4', 'angle in radians');
+  checkFinite('pose.theta3', rec.theta3, 'angle in radians');
+  checkFinite('pose.theta4', rec.theta4, 'angle in radians');
 }
 
-/** Per-linkage constants of the rate formulas: length ratios only. */
+/** x = m 2^e with m in [1, 2) (x > 0 finite, subnormals included). */
+function split(x: number): { m: number; e: number } {
+  let e = Math.floor(Math.log2(x));
+  let m = scaleByPow2(x, -e);
+  // log2 can round across a power of two: one correction step either way.
+  if (m >= 2) {
+    e += 1;
+    m = scaleByPow2(x, -e);
+  } else if (m < 1) {
+    e -= 1;
+    m = scaleByPow2(x, -e);
+  }
+  return { m, e };
+}
+
+/** The exact power of two of |x| (x finite, nonzero): floor(log2 |x|). */
+function exponentOf(x: number): number {
+  return split(Math.abs(x)).e;
+}
+
+/** Scratch for reduceDifference. */
+const parts: AngleParts = { hi: 0, lo: 0 };
+
+/** Range of the length ratios and input rates the direct formulas take (see ratesInto). */
+const DIRECT_RATIO = 2 ** 200;
+const DIRECT_OMEGA = 2 ** 200;
+
+/**
+ * Per-linkage constants of the rate formulas: length ratios only, also as m 2^e (m in [1, 2)) for
+ * ratios and rates past the double range, where r2 / r3 itself can overflow (r2 / r3 > 1e308).
+ */
 interface RatePlan {
   /** r2 / r3 and r2 / r4. */
   q3: number;
   q4: number;
   /** (r2 / r3) (r4 - r3) / r4: the unequal-links part of omega3 - omega4 (r4 - r3 is exact when they are close). */
   q34: number;
+  /** q3 = m3 2^e3, q4 = m4 2^e4, q34 = m34 2^e34, formed without overflow or underflow. */
+  m3: number;
+  e3: number;
+  m4: number;
+  e4: number;
+  m34: number;
+  e34: number;
+  /** q3 and q4 within 2^+-200: the direct formulas cannot overflow for a direct input (see ratesInto). */
+  direct: boolean;
 }
 
 function planRates(l: Linkage): RatePlan {
   const q3 = l.r2 / l.r3;
-  return { q3, q4: l.r2 / l.r4, q34: q3 * ((l.r4 - l.r3) / l.r4) };
+  const s2 = split(l.r2);
+  const s3 = split(l.r3);
+  const s4 = split(l.r4);
+  // m2 / m3 lies in (1/2, 2): one more exact power of two puts it in [1, 2).
+  const r3 = split(s2.m / s3.m);
+  const r4 = split(s2.m / s4.m);
+  const e3 = s2.e - s3.e + r3.e;
+  const e4 = s2.e - s4.e + r4.e;
+  // q34 = q3 (r4 - r3) / r4 = -q4 (r3 - r4) / r3: the form whose fraction lies in [0, 1) cannot overflow.
+  const q34AsQ3 = l.r4 > l.r3;
+  return {
+    q3,
+    q4: l.r2 / l.r4,
+    q34: q3 * ((l.r4 - l.r3) / l.r4),
+    m3: r3.m,
+    e3,
+    m4: r4.m,
+    e4,
+    m34: q34AsQ3 ? r3.m * ((l.r4 - l.r3) / l.r4) : -r4.m * ((l.r3 - l.r4) / l.r3),
+    e34: q34AsQ3 ? e3 : e4,
+    direct: Math.max(q3, l.r2 / l.r4) <= DIRECT_RATIO && Math.min(q3, l.r2 / l.r4) >= 1 / DIRECT_RATIO,
+  };
+}
+
+/** The input motion, and omega2 = w 2^sigma, alpha2 = a 2^(2 sigma) with |w|, |a| < 4 for the scaled path. */
+interface MotionPlan {
+  omega2: number;
+  alpha2: number;
+  w: number;
+  a: number;
+  sigma: number;
+  /** omega2 and alpha2 (when nonzero) within 2^+-200 and 2^+-400. */
+  direct: boolean;
+}
+
+function planMotion(input: InputMotion): MotionPlan {
+  const { omega2, alpha2 } = input;
+  const w2 = Math.abs(omega2);
+  const a2 = Math.abs(alpha2);
+  const size = Math.max(w2, Math.sqrt(a2));
+  const sigma = size === 0 ? 0 : exponentOf(size);
+  const inRange = (x: number, max: number) => x === 0 || (x <= max && x >= 1 / max);
+  return {
+    omega2,
+    alpha2,
+    w: scaleByPow2(omega2, -sigma),
+    a: scaleByPow2(alpha2, -2 * sigma),
+    sigma,
+    direct: inRange(w2, DIRECT_OMEGA) && inRange(a2, DIRECT_OMEGA * DIRECT_OMEGA),
+  };
 }
 
 /**
  * The rates at one pose (see the module comment), written to out[i] of each array; all NaN at a limit
  * position. One flat function with array outputs: it runs per point over whole sweeps.
+ * The direct formulas run when the plan and the motion are direct: with ratios and omega2 within 2^+-200,
+ * alpha2 within 2^+-400 and 1 / |sin mu| <= 2^50, no product exceeds 2^952 nor (unless the true term is
+ * that small) falls below 2^-600. Anything else takes scaledRatesInto, which cannot overflow or underflow
+ * before the final result does.
  */
-function ratesInto(
-  p: RatePlan,
-  t2: number,
-  t3: number,
-  t4: number,
-  w2: number,
-  a2: number,
-  out: SweepRates,
-  i: number,
-): void {
-  // a = t2 - t3 exactly as aHi + aLo (TwoSum); the tiny aLo shifts sin by cos(aHi) aLo and cos by -sin(aHi) aLo.
-  const aHi = t2 - t3;
-  const ab = aHi - t2;
-  const aLo = t2 - (aHi - ab) - (t3 + ab);
+function ratesInto(p: RatePlan, m: MotionPlan, t2: number, t3: number, t4: number, out: SweepRates, i: number): void {
+  // a = t2 - t3 and mu = t4 - t3 exactly as hi + lo; the tiny lo shifts sin by cos(hi) lo and cos by
+  // -sin(hi) lo. Ordinary angles use TwoSum; past TWO_SUM_MAX_RAD the TwoSum remainder (up to a radian
+  // at 1e16) is too large for that first-order correction, so the exact differences are reduced first.
+  let aHi: number;
+  let aLo: number;
+  let muHi: number;
+  let muLo: number;
+  if (Math.abs(t2) <= TWO_SUM_MAX_RAD && Math.abs(t3) <= TWO_SUM_MAX_RAD && Math.abs(t4) <= TWO_SUM_MAX_RAD) {
+    aHi = t2 - t3;
+    const ab = aHi - t2;
+    aLo = t2 - (aHi - ab) - (t3 + ab);
+    muHi = t4 - t3;
+    const mb = muHi - t4;
+    muLo = t4 - (muHi - mb) - (t3 + mb);
+  } else {
+    reduceDifference(t2, t3, parts);
+    aHi = parts.hi;
+    aLo = parts.lo;
+    reduceDifference(t4, t3, parts);
+    muHi = parts.hi;
+    muLo = parts.lo;
+  }
   const sa0 = Math.sin(aHi);
   const ca0 = Math.cos(aHi);
   const sa = sa0 + ca0 * aLo;
   const ca = ca0 - sa0 * aLo;
-  // mu = t4 - t3 the same way; half-angle functions give sin mu and cos mu to full relative accuracy
-  // (also where mu is near pi), and sin(mu/2) for omega3 - omega4.
-  const muHi = t4 - t3;
-  const mb = muHi - t4;
-  const muLo = t4 - (muHi - mb) - (t3 + mb);
+  // Half-angle functions give sin mu and cos mu to full relative accuracy (also where mu is near pi),
+  // and sin(mu/2) for omega3 - omega4. A reduced mu differs by 2 pi k, which flips the signs of both
+  // sin(mu/2) and cos(mu/2) when k is odd: every formula below uses them in pairs.
   const sh0 = Math.sin(0.5 * muHi);
   const ch0 = Math.cos(0.5 * muHi);
   const sh = sh0 + 0.5 * ch0 * muLo;
@@ -164,15 +248,72 @@ function ratesInto(
   // absolute error of the angle-difference formula stay within the bounds above.
   const sb = sa * c - ca * s;
   const cb = ca * c + sa * s;
+  // cos(a - mu/2) = cos a cos(mu/2) + sin a sin(mu/2).
+  const cx = ca * ch + sa * sh;
+  if (!(p.direct && m.direct)) {
+    scaledRatesInto(p, m, s, c, sa, ca, sb, cb, sh, cx, out, i);
+    return;
+  }
+  const w2 = m.omega2;
+  const a2 = m.alpha2;
   const w2s = w2 / s;
   const w3 = p.q3 * sb * w2s;
   const w4 = p.q4 * sa * w2s;
-  // cos(a - mu/2) = cos a cos(mu/2) + sin a sin(mu/2).
-  const w34 = (p.q34 * sb - 2 * p.q4 * (ca * ch + sa * sh) * sh) * w2s;
+  const w34 = (p.q34 * sb - 2 * p.q4 * cx * sh) * w2s;
   out.omega3[i] = w3;
   out.omega4[i] = w4;
   out.alpha3[i] = (p.q3 * (a2 * sb + w2 * cb * (w2 - w4)) + c * w3 * w34) / s;
   out.alpha4[i] = (p.q4 * (a2 * sa + w2 * ca * (w2 - w3)) + c * w4 * w34) / s;
+}
+
+/**
+ * Sum of terms v_k 2^(e_k) as m 2^e: each term is brought to the exponent of the largest before adding,
+ * so no term overflows and only terms below 2^-1074 of the largest are lost (as in any double sum).
+ */
+function sumScaled(v0: number, e0: number, v1: number, e1: number, v2: number, e2: number): { m: number; e: number } {
+  let top = -Infinity;
+  if (v0 !== 0) top = e0 + exponentOf(v0);
+  if (v1 !== 0) top = Math.max(top, e1 + exponentOf(v1));
+  if (v2 !== 0) top = Math.max(top, e2 + exponentOf(v2));
+  if (top === -Infinity) return { m: 0, e: 0 };
+  return { m: scaleByPow2(v0, e0 - top) + scaleByPow2(v1, e1 - top) + scaleByPow2(v2, e2 - top), e: top };
+}
+
+/**
+ * The direct formulas of ratesInto with every length ratio and input rate split into m 2^e, so that no
+ * intermediate overflows or underflows where the result does not: omega2 = 1e160 with r2 / r3 = 1e-20
+ * (alpha3 near 1e300, while omega2^2 overflows), r2 / r3 beyond 1e308, omega2 = 1e300 at sin mu = 1e-10.
+ * Mantissas stay below about 2^160 and the powers of two are applied once, at the end (scaleByPow2).
+ */
+function scaledRatesInto(
+  p: RatePlan,
+  m: MotionPlan,
+  s: number,
+  c: number,
+  sa: number,
+  ca: number,
+  sb: number,
+  cb: number,
+  sh: number,
+  cx: number,
+  out: SweepRates,
+  i: number,
+): void {
+  const { w, a, sigma } = m;
+  const ws = w / s;
+  // omega3 = W3 2^(e3 + sigma), omega4 = W4 2^(e4 + sigma).
+  const W3 = p.m3 * sb * ws;
+  const W4 = p.m4 * sa * ws;
+  // omega3 - omega4 = X (w / s) 2^(eX + sigma), X 2^eX = q34 sin b - 2 q4 cos(a - mu/2) sin(mu/2).
+  const x = sumScaled(p.m34 * sb, p.e34, -2 * p.m4 * cx * sh, p.e4, 0, 0);
+  const W34 = x.m * ws;
+  // alpha3 = 2^(2 sigma + e3) / s [m3 (a sin b + w^2 cos b) - m3 w cos b W4 2^e4 + cos mu W3 W34 2^eX].
+  const t3 = sumScaled(p.m3 * (a * sb + w * w * cb), 0, -p.m3 * w * cb * W4, p.e4, c * W3 * W34, x.e);
+  const t4 = sumScaled(p.m4 * (a * sa + w * w * ca), 0, -p.m4 * w * ca * W3, p.e3, c * W4 * W34, x.e);
+  out.omega3[i] = scaleByPow2(W3, p.e3 + sigma);
+  out.omega4[i] = scaleByPow2(W4, p.e4 + sigma);
+  out.alpha3[i] = scaleByPow2(t3.m / s, 2 * sigma + p.e3 + t3.e);
+  out.alpha4[i] = scaleByPow2(t4.m / s, 2 * sigma + p.e4 + t4.e);
 }
 
 function allocateRates(n: number): SweepRates {
@@ -195,10 +336,10 @@ const single = allocateRates(1);
  */
 export function linkRates(l: Linkage, theta2: number, pose: Angles, input: InputMotion): LinkRates {
   validateLinkage(l);
-  requireFinite(theta2, 'theta2', 'angle in radians');
+  checkFinite('theta2', theta2, 'angle in radians');
   validatePose(pose);
   validateInput(input);
-  ratesInto(planRates(l), theta2, pose.theta3, pose.theta4, input.omega2, input.alpha2, single, 0);
+  ratesInto(planRates(l), planMotion(input), theta2, pose.theta3, pose.theta4, single, 0);
   return { omega3: single.omega3[0], omega4: single.omega4[0], alpha3: single.alpha3[0], alpha4: single.alpha4[0] };
 }
 
@@ -217,19 +358,27 @@ export function couplerPointMotion(
   pAngle: number,
 ): PointMotion {
   validateLinkage(l);
-  requireFinite(theta2, 'theta2', 'angle in radians');
+  checkFinite('theta2', theta2, 'angle in radians');
   validatePose(pose);
   validateInput(input);
-  requireFinite(pDist, 'pDist', 'length');
-  requireFinite(pAngle, 'pAngle', 'angle in radians');
+  checkFinite('pDist', pDist, 'length');
+  checkFinite('pAngle', pAngle, 'angle in radians');
   const { omega2: w2, alpha2: a2 } = input;
-  ratesInto(planRates(l), theta2, pose.theta3, pose.theta4, w2, a2, single, 0);
+  ratesInto(planRates(l), planMotion(input), theta2, pose.theta3, pose.theta4, single, 0);
   const w3 = single.omega3[0];
   const a3 = single.alpha3[0];
-  // Direction of A -> P is phi = theta3 + pAngle, summed exactly as hi + lo (TwoSum) for full accuracy.
-  const hi = pose.theta3 + pAngle;
-  const bb = hi - pose.theta3;
-  const lo = pose.theta3 - (hi - bb) + (pAngle - bb);
+  // Direction of A -> P is phi = theta3 + pAngle, summed exactly as hi + lo (TwoSum) for full accuracy,
+  // or reduced exactly where lo is too large for a first-order correction (huge angles).
+  let hi = pose.theta3 + pAngle;
+  let lo: number;
+  if (Math.abs(pose.theta3) <= TWO_SUM_MAX_RAD && Math.abs(pAngle) <= TWO_SUM_MAX_RAD) {
+    const bb = hi - pose.theta3;
+    lo = pose.theta3 - (hi - bb) + (pAngle - bb);
+  } else {
+    reduceDifference(pose.theta3, -pAngle, parts);
+    hi = parts.hi;
+    lo = parts.lo;
+  }
   const sp = Math.sin(hi);
   const cp = Math.cos(hi);
   const ux = pDist * (cp - sp * lo);
@@ -244,16 +393,36 @@ export function couplerPointMotion(
     y: ay0 + uy,
     vx: -w2 * ay0 - w3 * uy,
     vy: w2 * ax0 + w3 * ux,
-    ax: -a2 * ay0 - w2 * w2 * ax0 - a3 * uy - w3 * w3 * ux,
-    ay: a2 * ax0 - w2 * w2 * ay0 + a3 * ux - w3 * w3 * uy,
+    // omega^2 times a length as (omega length) omega: omega^2 alone can overflow where the product does not.
+    ax: -a2 * ay0 - w2 * ax0 * w2 - a3 * uy - w3 * ux * w3,
+    ay: a2 * ax0 - w2 * ay0 * w2 + a3 * ux - w3 * uy * w3,
   };
 }
 
+/** Throws unless v is an array or typed array (or array-like) of numbers; NaN marks a point not solved. */
+function checkAngleArray(name: string, v: unknown): asserts v is ArrayLike<number> {
+  if (v instanceof Float64Array || v instanceof Float32Array) return;
+  const len = typeof v === 'object' && v !== null ? (v as { length?: unknown }).length : undefined;
+  if (typeof len !== 'number' || !Number.isInteger(len) || len < 0) {
+    throw new Error(`${name} must be an array or Float64Array of angles in radians, got ${describe(v)}`);
+  }
+  const a = v as ArrayLike<unknown>;
+  for (let i = 0; i < len; i++) {
+    if (typeof a[i] !== 'number') throw new Error(`${name}[${i}] must be an angle in radians, got ${describe(a[i])}`);
+  }
+}
+
+/** The error for a point marked ok whose angle is not finite. */
+function badPoint(name: string, i: number, v: number): Error {
+  return new Error(`${name}[${i}] must be a finite angle in radians where ok(${i}) is true, got ${describe(v)}`);
+}
+
 /**
- * Rates along a sweep: theta2, theta3, theta4 in radians (equal lengths), ok(i) says which points hold a
- * solved pose. Returns Float64Arrays (rad/s, rad/s²), NaN where ok(i) is false or the pose is a limit
- * position; each value equals linkRates at that point. Throws an Error naming the field for a bad
- * linkage, input or array length.
+ * Rates along a sweep: theta2, theta3, theta4 in radians (arrays of numbers of equal length), ok(i) says
+ * which points hold a solved pose (their angles must be finite; elsewhere NaN is fine). Returns
+ * Float64Arrays (rad/s, rad/s²), NaN where ok(i) is false or the pose is a limit position; each value
+ * equals linkRates at that point. Throws an Error naming the argument and value for a bad linkage,
+ * array, length, ok or input, and for a non-finite angle at a point marked ok.
  */
 export function sweepRates(
   l: Linkage,
@@ -264,16 +433,28 @@ export function sweepRates(
   input: InputMotion,
 ): SweepRates {
   validateLinkage(l);
+  checkAngleArray('theta2', theta2);
+  checkAngleArray('theta3', theta3);
+  checkAngleArray('theta4', theta4);
+  if (typeof ok !== 'function') throw new Error(`ok must be a function of the point index, got ${describe(ok)}`);
   validateInput(input);
   const n = theta2.length;
   if (theta3.length !== n) throw new Error(`theta3 must have the length of theta2 (${n}), got ${theta3.length}`);
   if (theta4.length !== n) throw new Error(`theta4 must have the length of theta2 (${n}), got ${theta4.length}`);
   const plan = planRates(l);
-  const { omega2: w2, alpha2: a2 } = input;
+  const motion = planMotion(input);
   const out = allocateRates(n);
   for (let i = 0; i < n; i++) {
-    if (ok(i)) ratesInto(plan, theta2[i], theta3[i], theta4[i], w2, a2, out, i);
-    else out.omega3[i] = out.omega4[i] = out.alpha3[i] = out.alpha4[i] = NaN;
+    if (ok(i)) {
+      const t2 = theta2[i];
+      const t3 = theta3[i];
+      const t4 = theta4[i];
+      // x - x is 0 exactly for finite x (NaN for NaN and infinities): one cheap test per angle.
+      if (t2 - t2 !== 0) throw badPoint('theta2', i, t2);
+      if (t3 - t3 !== 0) throw badPoint('theta3', i, t3);
+      if (t4 - t4 !== 0) throw badPoint('theta4', i, t4);
+      ratesInto(plan, motion, t2, t3, t4, out, i);
+    } else out.omega3[i] = out.omega4[i] = out.alpha3[i] = out.alpha4[i] = NaN;
   }
   return out;
 }
