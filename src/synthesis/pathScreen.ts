@@ -35,7 +35,11 @@ function designOf(t: NormalisedTask, task: PathTask, c: PathCandidate): { design
   const pl = problem.placementOf(x);
   const s = t.scale;
   const b = task.bounds;
-  const clampLen = (v: number) => (b?.length ? Math.min(b.length[1], Math.max(b.length[0], v)) : v);
+  // A length a unit conversion rounded past a bound is put back on it; one further out fails the check below.
+  const clampLen = (v: number) =>
+    b?.length && v <= b.length[1] * (1 + 1e-12) && v >= b.length[0] * (1 - 1e-12)
+      ? Math.min(b.length[1], Math.max(b.length[0], v))
+      : v;
   const links = {
     r1: clampLen(s * x[L]),
     r2: clampLen(s * x[L + 1]),
@@ -72,6 +76,8 @@ function solutionOf(t: NormalisedTask, task: PathTask, c: PathCandidate): PathSo
   const { r1, r2, r3, r4 } = design.links;
   if (![r1, r2, r3, r4, design.pDist, design.O2.x, design.O2.y].every(Number.isFinite)) return null;
   if (!(r1 > 0 && r2 > 0 && r3 > 0 && r4 > 0)) return null;
+  const lb = task.bounds?.length;
+  if (lb && ![r1, r2, r3, r4].every((r) => r >= lb[0] && r <= lb[1])) return null;
   if (t.crank) {
     if (!classify(design.links).inputIsCrank) return null;
   } else if (!sweepWithinRange(r1, r2, r3, r4, Math.min(...theta2), Math.max(...theta2))) return null;
