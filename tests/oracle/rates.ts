@@ -96,18 +96,23 @@ interface V {
 }
 const cross = (a: V, b: V): Dec => a.x.times(b.y).minus(a.y.times(b.x));
 
-/**
- * Rates at the given pose (theta2, theta3, theta4 taken as exact doubles), by Cramer's rule on
- * omega2 a + omega3 b - omega4 c = 0 and alpha3 b - alpha4 c = i w - alpha2 a,
- * w = -omega2^2 a - omega3^2 b + omega4^2 c, with a = r2 e^{i t2}, b = r3 e^{i t3}, c = r4 e^{i t4}.
- */
-export function referenceRatesAtPose(
+/** The rates at a pose in a Decimal context, unrounded (see referenceRatesAtPose). */
+interface ExactRatesAtPose {
+  omega3: Dec;
+  omega4: Dec;
+  alpha3: Dec;
+  alpha4: Dec;
+  sinMu: Dec;
+  cosMu: Dec;
+}
+
+function ratesAtPoseIn(
+  D: DecCtor,
   l: LinkLengths,
   theta2: number,
   pose: { theta3: number; theta4: number },
   input: InputRates,
-): ReferenceRatesAtPose {
-  const D = D60;
+): ExactRatesAtPose {
   const ex = (x: number, f: string) => exactIn(D, x, f);
   const [r2, r3, r4] = [ex(l.r2, 'r2'), ex(l.r3, 'r3'), ex(l.r4, 'r4')];
   const ang = (x: number, f: string) => angleIn(D, x, f);
@@ -134,15 +139,82 @@ export function referenceRatesAtPose(
   };
   // i w = (-w.y, w.x)
   const g: V = { x: w.y.neg().minus(a2.times(a.x)), y: w.x.minus(a2.times(a.y)) };
-  const a3 = cross(g, c).div(det);
-  const a4 = cross(b, g).div(det).neg();
   return {
-    omega3: w3.toNumber(),
-    omega4: w4.toNumber(),
-    alpha3: a3.toNumber(),
-    alpha4: a4.toNumber(),
-    sinMu: det.div(r3.times(r4)).toNumber(),
-    cosMu: b.x.times(c.x).plus(b.y.times(c.y)).div(r3.times(r4)).toNumber(),
+    omega3: w3,
+    omega4: w4,
+    alpha3: cross(g, c).div(det),
+    alpha4: cross(b, g).div(det).neg(),
+    sinMu: det.div(r3.times(r4)),
+    cosMu: b.x.times(c.x).plus(b.y.times(c.y)).div(r3.times(r4)),
+  };
+}
+
+/**
+ * Rates at the given pose (theta2, theta3, theta4 taken as exact doubles), by Cramer's rule on
+ * omega2 a + omega3 b - omega4 c = 0 and alpha3 b - alpha4 c = i w - alpha2 a,
+ * w = -omega2^2 a - omega3^2 b + omega4^2 c, with a = r2 e^{i t2}, b = r3 e^{i t3}, c = r4 e^{i t4}.
+ */
+export function referenceRatesAtPose(
+  l: LinkLengths,
+  theta2: number,
+  pose: { theta3: number; theta4: number },
+  input: InputRates,
+): ReferenceRatesAtPose {
+  const r = ratesAtPoseIn(D60, l, theta2, pose, input);
+  return {
+    omega3: r.omega3.toNumber(),
+    omega4: r.omega4.toNumber(),
+    alpha3: r.alpha3.toNumber(),
+    alpha4: r.alpha4.toNumber(),
+    sinMu: r.sinMu.toNumber(),
+    cosMu: r.cosMu.toNumber(),
+  };
+}
+
+/**
+ * 120 digits: the Cartesian sums of the acceleration lose up to 2 log10(1 / |sin mu|) digits to
+ * cancellation (28 at sin mu = 1e-14), and extreme inputs must not round before the comparison.
+ */
+const D120 = Decimal.clone({ precision: 120, rounding: Decimal.ROUND_HALF_EVEN, minE: -9e15, maxE: 9e15 });
+
+/** The rates of referenceRatesAtPose and their rateToleranceAtPose, as Decimals: nothing overflows or underflows. */
+export interface WideRates {
+  ref: Record<keyof ReferenceRates, Dec>;
+  tol: Record<keyof ReferenceRates, Dec>;
+}
+
+/**
+ * referenceRatesAtPose at 120 digits and the bound of rateToleranceAtPose evaluated in the same
+ * precision, for inputs whose rates or whose intermediate products lie beyond the double range
+ * (omega2 = 1e300, r2 / r3 = 1e310): the same derivation, without the doubles' overflow.
+ */
+export function referenceRatesWide(
+  l: LinkLengths,
+  theta2: number,
+  pose: { theta3: number; theta4: number },
+  input: InputRates,
+): WideRates {
+  const D = D120;
+  const r = ratesAtPoseIn(D, l, theta2, pose, input);
+  const [r2, r3, r4] = [exactIn(D, l.r2, 'r2'), exactIn(D, l.r3, 'r3'), exactIn(D, l.r4, 'r4')];
+  const s = r.sinMu.abs();
+  const w2 = exactIn(D, input.omega2, 'omega2').abs();
+  const a2 = exactIn(D, input.alpha2, 'alpha2').abs();
+  const q3 = r2.div(r3);
+  const q4 = r2.div(r4);
+  const sinHalfMu = D.max(0, new D(1).minus(r.cosMu).div(2)).sqrt();
+  const R = w2.times(q3.times(r4.minus(r3).abs().div(r4)).plus(q4.times(2).times(sinHalfMu))).div(s);
+  const u = new D(K).times(EPS);
+  const accel = (q: Dec, wOther: Dec, wSelf: Dec): Dec =>
+    u.times(q.times(a2.plus(w2.times(w2.plus(wOther.abs())))).plus(wSelf.abs().times(R))).div(s);
+  return {
+    ref: { omega3: r.omega3, omega4: r.omega4, alpha3: r.alpha3, alpha4: r.alpha4 },
+    tol: {
+      omega3: u.times(q3).times(w2).div(s),
+      omega4: u.times(q4).times(w2).div(s),
+      alpha3: accel(q3, r.omega4, r.omega3),
+      alpha4: accel(q4, r.omega3, r.omega4),
+    },
   };
 }
 
