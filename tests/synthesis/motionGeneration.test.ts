@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import type { Branch } from '../../src/solver';
 import { PI, angleDiff, classify, designMetrics, inputRange } from '../../src/solver';
 import type { PlacedFourBar, Pose } from '../../src/synthesis';
-import { placedJoints, threePositionSynthesis, twoPositionRocker } from '../../src/synthesis';
+import { placedJoints, screenPoses, threePositionSynthesis, twoPositionRocker } from '../../src/synthesis';
 import { dist, inFrame, oraclePose, randomCrankRocker, randomPlaced, seeded } from './motionFixtures';
 
 /** Relative agreement expected of a rebuilt design: circumcentres of well-spread positions (poses ≥ 0.5 rad apart
@@ -149,6 +149,18 @@ describe('threePositionSynthesis', () => {
         ],
       }),
     ).toThrow('given.fixed[0].y must be a finite coordinate, got Infinity');
+  });
+});
+
+describe('screenPoses', () => {
+  it("reports 'order' when a crank needs more than one turn to meet the poses in order", () => {
+    const d = randomPlaced(seeded(25), { r1: 4, r2: 1, r3: 3.5, r4: 3 }, 'open');
+    const screen = (t2: number[]) => screenPoses(d, posesOf(d, t2));
+    // 0 → 2 → 4 → 1 turning either way sweeps more than a full turn.
+    expect(screen([0, 2, 4, 1]).defects).toEqual(['order']);
+    expect(screen([0, 1, 2, 4]).defects).toEqual([]);
+    expect(screen([4, 2, 1, 0]).defects).toEqual([]);
+    screen([0, 1, 2, 4]).theta2.forEach((t, i) => expect(Math.abs(angleDiff(t, [0, 1, 2, 4][i]))).toBeLessThan(1e-12));
   });
 });
 
