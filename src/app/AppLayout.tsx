@@ -31,7 +31,7 @@ import { useShownFrame } from '../shared/linkage/useShownFrame';
 import { useLinkagePose } from '../features/simulator/useLinkagePose';
 import { usePlotPixels } from '../features/simulator/usePlotPixels';
 import { useSimulator } from '../features/simulator/useSimulator';
-import { useStableCallback } from '../shared/hooks/useStableCallback';
+import { useLatest } from '../shared/hooks/useLatest';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
@@ -84,7 +84,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
   const [playhead] = useState(() => new Playhead());
   const onStep = useAnimation(state, dispatch, rangeDeg, playhead);
-  const getState = useStableCallback(() => state);
+  const stateRef = useLatest(state);
   const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
   const shell = shellMessages(state.locale);
   const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
@@ -199,7 +199,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
               <h2 id="sec-share" className="section-title">
                 {t.sectionShare}
               </h2>
-              <SharePanel getState={getState} />
+              <SharePanel stateRef={stateRef} />
             </section>
             <SolverStatus mode={solverMode} reason={solverReason} />
           </aside>

@@ -11,7 +11,7 @@ import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
 import type { AnimationRequest } from './animationExporter';
 import type { ExportContext } from './exporters';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
-import { useStableCallback } from '../../shared/hooks/useStableCallback';
+import { useLatest } from '../../shared/hooks/useLatest';
 
 /** What the exports draw: the state, the latest answers, the frame on screen, the cycle in degrees and the strings. */
 export interface ExportSources {
@@ -57,39 +57,48 @@ export function useExports(sources: ExportSources): Exports {
   const onCanvasSize = useCallback((width: number, height: number) => {
     canvasSize.current = { width, height };
   }, []);
+  // Handlers keep one identity (the export panel does not re-render) and read the sources of the last commit.
+  const latest = useLatest(sources);
   // The chart builders and writers load on the first export: they are not part of the first load.
-  const context = (): ExportContext => ({
-    frame: exportFrame(sources),
-    point: sources.point,
-    deg: sources.deg,
-    t: sources.t,
-    canvasSize: canvasSize.current,
-  });
-  const onPng = useStableCallback(async (subject: ExportSubject, size: PngSize) => {
-    const c = context();
-    const { exportPng } = await import('./exporters');
-    await exportPng(subject, size, c);
-  });
-  const onSvg = useStableCallback(async (subject: ExportSubject) => {
-    const c = context();
-    const { exportSvg } = await import('./exporters');
-    exportSvg(subject, c);
-  });
-  const onAnimation = useStableCallback(async (request: AnimationRequest) => {
-    const { cycle, t } = sources;
-    const { state, scene } = exportFrame(sources);
-    if (!cycle) throw new Error('the cycle is still being solved');
-    // The frame planner, the encoders and their worker load on the first animation export.
-    const { exportLinkageAnimation } = await import('./animationExporter');
-    const { width, height } = canvasSize.current;
-    const devicePixelRatio = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
-    return exportLinkageAnimation(
-      { state, cycle, scene, viewWidth: width, viewHeight: height, devicePixelRatio, t },
-      request,
-    );
-  });
-  const onCsv = useStableCallback(async () => {
-    const { state: s, client } = sources;
+  const context = useCallback((): ExportContext => {
+    const s = latest.current;
+    return { frame: exportFrame(s), point: s.point, deg: s.deg, t: s.t, canvasSize: canvasSize.current };
+  }, [latest]);
+  const onPng = useCallback(
+    async (subject: ExportSubject, size: PngSize) => {
+      const c = context();
+      const { exportPng } = await import('./exporters');
+      await exportPng(subject, size, c);
+    },
+    [context],
+  );
+  const onSvg = useCallback(
+    async (subject: ExportSubject) => {
+      const c = context();
+      const { exportSvg } = await import('./exporters');
+      exportSvg(subject, c);
+    },
+    [context],
+  );
+  const onAnimation = useCallback(
+    async (request: AnimationRequest) => {
+      const s = latest.current;
+      const { cycle, t } = s;
+      const { state, scene } = exportFrame(s);
+      if (!cycle) throw new Error('the cycle is still being solved');
+      // The frame planner, the encoders and their worker load on the first animation export.
+      const { exportLinkageAnimation } = await import('./animationExporter');
+      const { width, height } = canvasSize.current;
+      const devicePixelRatio = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
+      return exportLinkageAnimation(
+        { state, cycle, scene, viewWidth: width, viewHeight: height, devicePixelRatio, t },
+        request,
+      );
+    },
+    [latest],
+  );
+  const onCsv = useCallback(async () => {
+    const { state: s, client } = latest.current;
     if (!client) throw new Error('the solver is still starting');
     // The export always carries the motion columns, for the input motion as the panel shows it.
     const motion = {
@@ -105,6 +114,6 @@ export function useExports(sources: ExportSources): Exports {
     ]);
     // A newer export request superseded this one: it downloads instead.
     if (tbl) exportCsv(tbl);
-  });
+  }, [latest]);
   return { onPng, onSvg, onCsv, onAnimation, onCanvasSize };
 }

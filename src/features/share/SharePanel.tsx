@@ -1,5 +1,6 @@
 import './SharePanel.css';
 import { Suspense, lazy, memo, useState } from 'react';
+import type { RefObject } from 'react';
 import type { AppState } from '../../shared/state/appState';
 import type { EmbedPresetId } from './embedSnippet';
 import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from './embedSnippet';
@@ -10,8 +11,8 @@ import { useMessages } from '../../shared/i18n/MessagesContext';
 
 /** Props of SharePanel: how to read the state to share when a copy button is pressed. */
 export interface SharePanelProps {
-  /** Returns the current state; read on click, so the panel does not re-render while the state changes. */
-  getState: () => AppState;
+  /** The latest committed state; read on click, so the panel does not re-render while the state changes. */
+  stateRef: RefObject<AppState>;
 }
 
 // The generator's controls, preview and code load on first open: the app's first load does not carry them.
@@ -21,7 +22,7 @@ function presetOf(id: EmbedPresetId) {
   return EMBED_PRESETS.find((p) => p.id === id) ?? DEFAULT_EMBED_PRESET;
 }
 
-function SharePanelImpl({ getState }: SharePanelProps) {
+function SharePanelImpl({ stateRef }: SharePanelProps) {
   const t = useMessages();
   const [embed, setEmbed] = useState<EmbedOptions>(DEFAULT_EMBED);
   const [presetId, setPresetId] = useState<EmbedPresetId>(DEFAULT_EMBED_PRESET.id);
@@ -30,10 +31,10 @@ function SharePanelImpl({ getState }: SharePanelProps) {
   // The generator (options, preview, code) renders only once opened; its URL is taken when an option changes.
   const [src, setSrc] = useState<string | null>(null);
 
-  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, { ...getState(), playing: false }, e);
+  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, { ...stateRef.current, playing: false }, e);
   const linkHref = () => {
     const u = new URL(window.location.href);
-    u.search = `?${serializeState({ ...getState(), playing: false })}`;
+    u.search = `?${serializeState({ ...stateRef.current, playing: false })}`;
     u.hash = '';
     return u.toString();
   };

@@ -1,5 +1,4 @@
-import { useEffect, useRef } from 'react';
-import { useEffectEvent } from '../../shared/hooks/useEffectEvent';
+import { useEffect, useEffectEvent, useRef } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
 import { applyPatch, stateValues } from './embedMessages';

@@ -1,5 +1,5 @@
 import './LinkageCanvas.css';
-import { memo, useEffect, useId, useLayoutEffect, useRef, useState } from 'react';
+import { memo, useEffect, useEffectEvent, useId, useLayoutEffect, useRef, useState } from 'react';
 import type { PointerEvent as ReactPointerEvent } from 'react';
 import { flushSync } from 'react-dom';
 import { radToDeg360, wrapDeg360 } from '../../solver/angles';
@@ -15,7 +15,6 @@ import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle, pinchView } from '../
 import { Icon } from '../../shared/ui/Icon';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { useElementSize } from '../../shared/hooks/useElementSize';
-import { useEffectEvent } from '../../shared/hooks/useEffectEvent';
 
 /** Props of LinkageCanvas: the scene, the user's pan and zoom, what can be dragged, and a size report for exports. */
 export interface LinkageCanvasProps {

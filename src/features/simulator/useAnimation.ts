@@ -1,5 +1,5 @@
 import type { Dispatch } from 'react';
-import { startTransition, useEffect, useRef } from 'react';
+import { startTransition, useCallback, useEffect, useRef } from 'react';
 import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../../shared/state/animation';
 import type { InputRangeDeg } from '../../shared/state/animation';
 import type { Action, AppState } from '../../shared/state/appState';
@@ -7,7 +7,6 @@ import { normalizeTheta2Deg } from '../../shared/state/appState';
 import type { PlayFrame, Playhead } from '../../shared/state/playhead';
 import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
-import { useStableCallback } from '../../shared/hooks/useStableCallback';
 
 /**
  * How often Play commits its frame to the app state, ms. Every frame moves the playhead (canvas and plot
@@ -67,5 +66,8 @@ export function useAnimation(
     if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
   }, [state, playhead, dispatch]);
-  return useStableCallback((sign: 1 | -1) => dispatch({ type: 'animate', ...stepTheta2(state, rangeDeg, sign) }));
+  return useCallback(
+    (sign: 1 | -1) => dispatch({ type: 'animate', ...stepTheta2(state, rangeDeg, sign) }),
+    [state, rangeDeg, dispatch],
+  );
 }

@@ -13,9 +13,9 @@ import {
   styleAxis,
 } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
-import type { LinearScale, Scale } from './scales';
-import { linearScale, logScale } from './scales';
-import { linePath } from './linePath';
+import type { ScaleContinuousNumeric, ScaleLinear } from 'd3-scale';
+import { scaleLinear, scaleLog } from 'd3-scale';
+import { linePath } from './line';
 
 /** One NR run: residual norm |f| (length unit) at each iteration, 0 = the start. */
 export interface ConvergenceRun {
@@ -66,8 +66,8 @@ export interface ConvergenceChart {
   /** Sets the texts; only the texts are redrawn. */
   setText(text: ConvergenceChartText): void;
   /** A copy of the x scale (iteration to plot pixels) or the y scale (residual, log, to plot pixels). */
-  scale(name: 'x'): LinearScale;
-  scale(name: 'y'): Scale;
+  scale(name: 'x'): ScaleLinear<number, number>;
+  scale(name: 'y'): ScaleContinuousNumeric<number, number>;
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 64 };
@@ -117,8 +117,8 @@ interface ConvergenceSize {
 export interface ConvergenceFrame {
   iw: number;
   ih: number;
-  x: LinearScale;
-  y: Scale;
+  x: ScaleLinear<number, number>;
+  y: ScaleContinuousNumeric<number, number>;
   xTicks: number[];
   yTicks: number[];
 }
@@ -129,9 +129,9 @@ export function convergenceFrame(data: ConvergenceChartData, size: ConvergenceSi
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const maxIt = Math.max(1, ...data.runs.map((r) => (r.iterations.length ? r.iterations[r.iterations.length - 1] : 0)));
-  const x = linearScale([0, maxIt], [0, iw]);
+  const x = scaleLinear().domain([0, maxIt]).range([0, iw]);
   const [d0, d1] = residualDomain(data.runs, data.tolerance);
-  const y = logScale([d0, d1], [ih, 0]);
+  const y = scaleLog().domain([d0, d1]).range([ih, 0]).clamp(true);
   return {
     iw,
     ih,

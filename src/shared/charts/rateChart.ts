@@ -4,9 +4,9 @@ import type { AngleChartOptions, AngleChartSize, AngleFrame, Theta2Chart, Theta2
 import { createTheta2Chart, drawChart, plotIndices } from './theta2Chart';
 import { estimateTextWidth, minus } from './chartFrame';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
-import type { LinearScale } from './scales';
-import { linearScale, niceLinearDomain } from './scales';
-import { linePath } from './linePath';
+import type { ScaleLinear } from 'd3-scale';
+import { scaleLinear } from 'd3-scale';
+import { linePath } from './line';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
 export interface RateSeries {
@@ -64,7 +64,10 @@ export function rateDomain(series: readonly RateSeries[], count = 6): [number, n
     hi += d;
   }
   const pad = (hi - lo) * 0.06;
-  return niceLinearDomain(lo - pad, hi + pad, count);
+  return scaleLinear()
+    .domain([lo - pad, hi + pad])
+    .nice(count)
+    .domain() as [number, number];
 }
 
 /** Where a curve leaves the y domain: theta2 (degrees) of the crossing or of the first sample outside, and the side. */
@@ -112,9 +115,9 @@ function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFra
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
-  const x = linearScale([0, 360], [0, iw]);
+  const x = scaleLinear().domain([0, 360]).range([0, iw]);
   const yCount = tickCount(ih, size.yTickSpacing);
-  const y = linearScale(rateDomain(series, yCount), [ih, 0]);
+  const y = scaleLinear().domain(rateDomain(series, yCount)).range([ih, 0]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
     x,
@@ -125,7 +128,7 @@ function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFra
 }
 
 /** Formats a y tick: d3's tick format for the domain, with a typographic minus. */
-function yTickFormat(y: LinearScale, count: number): (d: number) => string {
+function yTickFormat(y: ScaleLinear<number, number>, count: number): (d: number) => string {
   const f = y.tickFormat(count);
   return (d) => minus(f(d));
 }
@@ -151,7 +154,7 @@ function drawClipMarks(
   frame: RateFrame,
 ): void {
   const { x, ih } = frame;
-  const domain = frame.y.domain();
+  const domain = frame.y.domain() as [number, number];
   const marks = data.series
     .filter((d) => !d.faint)
     .flatMap((d) => clipMarks(data.theta2Deg, d.values, domain).map((m) => ({ ...m, color: d.color })));

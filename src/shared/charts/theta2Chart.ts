@@ -19,9 +19,9 @@ import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
 import { chartMarker } from './markerLayer';
 import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
-import type { LinearScale } from './scales';
-import { linearScale } from './scales';
-import { linePath } from './linePath';
+import type { ScaleLinear } from 'd3-scale';
+import { scaleLinear } from 'd3-scale';
+import { linePath } from './line';
 
 /** One curve of output angle (degrees, wrapped to (-180, 180], NaN where the linkage cannot assemble) against theta2. */
 export interface AngleSeries {
@@ -181,8 +181,8 @@ export function angleChartSize(options: Omit<AngleChartOptions, keyof AngleChart
 export interface AngleFrame {
   iw: number;
   ih: number;
-  x: LinearScale;
-  y: LinearScale;
+  x: ScaleLinear<number, number>;
+  y: ScaleLinear<number, number>;
   xTicks: number[];
   yTicks: number[];
 }
@@ -193,9 +193,9 @@ export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize)
   const iw = Math.max(10, size.width - m.left - m.right);
   const ih = Math.max(10, size.height - m.top - m.bottom);
   const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
-  const x = linearScale([0, 360], [0, iw]);
+  const x = scaleLinear().domain([0, 360]).range([0, iw]);
   const yAxis = angleYAxis(series, tickCount(ih, size.yTickSpacing));
-  const y = linearScale(yAxis.domain, [ih, 0]);
+  const y = scaleLinear().domain(yAxis.domain).range([ih, 0]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
     x,
@@ -260,7 +260,7 @@ export interface Theta2Chart<S, M> {
   /** Replaces the faint theta2 rules (dead centres); nothing else is redrawn. */
   setXMarks(marks: readonly XMark[]): void;
   /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (the quantity to plot pixels). */
-  scale(name: 'x' | 'y'): LinearScale;
+  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
 }
 
 /** What makes a θ2 chart an angle chart or a rate chart: its y axis, its curves and its marker. */
@@ -336,7 +336,13 @@ export function createTheta2Chart<S extends Pick<AngleSeries, 'label' | 'color' 
     if (yKey !== yAxisKey) {
       yAxisKey = yKey;
       drawGridY(gridY, iw, yTicks, y);
-      ay.call(axisLeft(y).tickValues(yTicks).tickFormat(spec.yTickFormat(frame)).tickSizeOuter(0));
+      const yFormat = spec.yTickFormat(frame);
+      ay.call(
+        axisLeft(y)
+          .tickValues(yTicks)
+          .tickFormat((d) => yFormat(Number(d)))
+          .tickSizeOuter(0),
+      );
       styleAxis(ay);
     }
   };

@@ -18,9 +18,9 @@ import { chartMarker } from './markerLayer';
 import { angleTicks, fittedTicks, tickCount } from './ticks';
 import type { XMark } from './xMarks';
 import { drawXMarks } from './xMarks';
-import type { LinearScale } from './scales';
-import { linearScale } from './scales';
-import { linePath } from './linePath';
+import type { ScaleLinear } from 'd3-scale';
+import { scaleLinear } from 'd3-scale';
+import { linePath } from './line';
 
 /** Transmission angle mu (degrees in [0, 180], NaN where the linkage cannot assemble) against theta2 (degrees, 0 to 360). */
 export interface TransmissionChartData {
@@ -71,7 +71,7 @@ export interface TransmissionChart {
   resize(width: number, height: number): void;
   setText(text: TransmissionChartText): void;
   /** A copy of the x scale (theta2 degrees to plot pixels) or the y scale (mu degrees to plot pixels). */
-  scale(name: 'x' | 'y'): LinearScale;
+  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
 }
 
 /** A stretch of theta2 (degrees, x0 <= x1) where mu lies outside the band. */
@@ -154,8 +154,8 @@ export function createTransmissionChart(svg: SVGSVGElement, options: Transmissio
     return {
       iw,
       ih,
-      x: linearScale([0, 360], [0, iw]),
-      y: linearScale([0, 180], [ih, 0]),
+      x: scaleLinear().domain([0, 360]).range([0, iw]),
+      y: scaleLinear().domain([0, 180]).range([ih, 0]),
     };
   };
   let f = frame();

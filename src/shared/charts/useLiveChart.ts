@@ -12,10 +12,10 @@ export interface LiveChart<D, M> {
 /** The chart handle of a view, the refs to attach (the box it sizes to, its SVG, the marker box over it), and nothing else. */
 export interface LiveChartRefs<C> {
   chart: C | null;
-  boxRef: RefObject<HTMLDivElement>;
-  svgRef: RefObject<SVGSVGElement>;
+  boxRef: RefObject<HTMLDivElement | null>;
+  svgRef: RefObject<SVGSVGElement | null>;
   /** A box over the SVG (className "chart-marker") the marker is drawn in: Play moves it without repainting the chart. */
-  markerRef: RefObject<HTMLDivElement>;
+  markerRef: RefObject<HTMLDivElement | null>;
 }
 
 /**

@@ -1,6 +1,6 @@
 import type { Selection } from 'd3-selection';
 import { CHART_STYLE } from './chartFrame';
-import type { LinearScale } from './scales';
+import type { ScaleLinear } from 'd3-scale';
 
 /** A faint vertical rule on a theta2 axis with a small label: a dead centre, say. xDeg in the axis's degrees. */
 export interface XMark {
@@ -12,7 +12,10 @@ export interface XMark {
 export const X_MARK_FONT_SIZE = 10;
 
 /** The marks to draw and their x in plot pixels: those with a finite xDeg inside the scale's domain, in order. */
-export function xMarkPositions(marks: readonly XMark[], x: LinearScale): { xPx: number; label: string }[] {
+export function xMarkPositions(
+  marks: readonly XMark[],
+  x: ScaleLinear<number, number>,
+): { xPx: number; label: string }[] {
   const [d0, d1] = x.domain();
   return marks
     .filter((m) => Number.isFinite(m.xDeg) && m.xDeg >= Math.min(d0, d1) && m.xDeg <= Math.max(d0, d1))
@@ -26,7 +29,7 @@ export function xMarkPositions(marks: readonly XMark[], x: LinearScale): { xPx: 
 export function drawXMarks(
   g: Selection<SVGGElement, unknown, null, undefined>,
   marks: readonly XMark[],
-  x: LinearScale,
+  x: ScaleLinear<number, number>,
   height: number,
 ): void {
   const shown = xMarkPositions(marks, x);

@@ -1,5 +1,4 @@
-import { useEffect } from 'react';
-import { useEffectEvent } from './useEffectEvent';
+import { useEffect, useEffectEvent } from 'react';
 
 /** Longest frame step passed on, seconds: a backgrounded tab does not jump on return. */
 const MAX_DT_SECONDS = 0.1;

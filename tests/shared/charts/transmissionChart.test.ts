@@ -7,7 +7,7 @@ import { deadCentreXMarks, transmissionData } from '../../../src/shared/charts/t
 import { designMetrics } from '../../../src/solver/metrics';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import type { CycleDegrees } from '../../../src/shared/charts/chartInputs';
-import { linearScale } from '../../../src/shared/charts/scales';
+import { scaleLinear } from 'd3-scale';
 
 const deg = (r: number) => (r * 180) / Math.PI;
 const rad = (d: number) => (d * Math.PI) / 180;
@@ -90,7 +90,7 @@ describe('xMarkPositions and deadCentreXMarks', () => {
   it('places the dead-centre rules at x(theta2) and leaves out marks off the axis', () => {
     const marks = deadCentreXMarks(designMetrics({ r1: 6, r2: 2, r3: 5, r4: 5 }, 'open'), messagesEn);
     expect(marks.map((m) => m.label)).toEqual(['ext.', 'fold.']);
-    const x = linearScale([0, 360], [0, 720]);
+    const x = scaleLinear().domain([0, 360]).range([0, 720]);
     const pos = xMarkPositions(
       [...marks, { xDeg: 400, label: 'off' }, { xDeg: -10, label: 'below' }, { xDeg: Number.NaN, label: 'nan' }],
       x,

@@ -92,7 +92,10 @@ describe('stylesheets', () => {
 
 describe('canvas renderer source', () => {
   it('names no colour of its own: every colour comes through shared/canvas/canvasTheme.ts from the tokens', () => {
-    const sources = [...filesUnder(join(SRC, 'shared/canvas'), '.ts'), ...filesUnder(join(SRC, 'shared/linkage'), '.ts')];
+    const sources = [
+      ...filesUnder(join(SRC, 'shared/canvas'), '.ts'),
+      ...filesUnder(join(SRC, 'shared/linkage'), '.ts'),
+    ];
     expect(sources.length).toBeGreaterThan(10);
     const strays = sources.flatMap((f) =>
       [...readFileSync(f, 'utf8').matchAll(/['"`](#[0-9a-f]{3,8}|rgba?\([^)]*\))['"`]/gi)].map(

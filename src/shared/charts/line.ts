@@ -1,0 +1,15 @@
+import { line } from 'd3-shape';
+
+/**
+ * SVG path data of a polyline through the defined points of data (d3-shape's `line()`, linear curve, coordinates
+ * rounded to `digits` decimals, default 3 as d3's): a gap where `defined` is false, never a zero or a NaN drawn.
+ */
+export function linePath<T>(
+  data: Iterable<T>,
+  x: (d: T, i: number) => number,
+  y: (d: T, i: number) => number,
+  defined: (d: T, i: number) => boolean = () => true,
+  digits = 3,
+): string {
+  return line<T>().x(x).y(y).defined(defined).digits(digits)(data) ?? '';
+}
