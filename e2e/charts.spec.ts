@@ -211,3 +211,44 @@ test.describe('the angle and convergence charts', () => {
     });
   }
 });
+
+test.describe('chart markers on a high-density screen', () => {
+  test.use({ deviceScaleFactor: 2 });
+
+  test('at device pixel ratio 2 each marker is painted where its θ2 and its curves are, on every θ2 chart', async ({
+    page,
+  }) => {
+    for (const [query, name] of [
+      ['t2=200', 'θ3 against θ2'],
+      ['t2=200&plot=vel', 'ω4 against θ2'],
+    ]) {
+      await page.goto(`./?${query}`);
+      await waitReady(page);
+      const chart = page.getByRole('img', { name });
+      await expect.poll(() => markerDots(chart)).toBeGreaterThan(0);
+      for (const d of await markerOffsets(chart)) {
+        expect(d.own).toBeLessThan(1.5);
+        expect(d.painted).toBe(true);
+      }
+      // The marker line is painted at θ2 = 200° on the chart's x scale, not offset by the plot's left margin.
+      const offset = await chart.evaluate((svg: SVGSVGElement) => {
+        const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
+        const canvas = box?.querySelector('canvas');
+        const ctx = canvas?.getContext('2d');
+        const plot = svg.querySelector('g.plot');
+        if (!canvas || !ctx || !plot || !box) return Infinity;
+        const [left, top] = (/translate\(([-\d.]+),([-\d.]+)\)/.exec(plot.getAttribute('transform') ?? '') ?? [])
+          .slice(1)
+          .map(Number);
+        const k = canvas.width / svg.clientWidth;
+        const row = ctx.getImageData(0, Math.round((top + 4) * k), canvas.width, 1).data;
+        const painted: number[] = [];
+        for (let i = 0; i < canvas.width; i++) if (row[4 * i + 3] > 100) painted.push(i / k);
+        if (painted.length === 0) return Infinity;
+        const lineX = (painted[0] + painted[painted.length - 1]) / 2;
+        return Math.abs(lineX - (left + Number(box.dataset.x)));
+      });
+      expect(offset).toBeLessThan(1.5);
+    }
+  });
+});

@@ -75,6 +75,25 @@ test.describe('design metrics', () => {
     await expect(page.getByRole('img', { name: /θ4 −101\.54°/ })).toBeVisible();
   });
 
+  test('"go to" while playing stops Play and keeps the dead centre, not the frame Play was showing', async ({
+    page,
+  }) => {
+    await page.goto('./?t2=100');
+    await waitReady(page);
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(page.getByRole('button', { name: 'Pause' })).toBeVisible();
+    // Play has moved the linkage on before the jump.
+    await expect.poll(async () => Number(await theta2Field(page).inputValue())).not.toBe(100);
+    await page.getByRole('button', { name: /^Go to extended dead centre/ }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    await expect(theta2Field(page)).toHaveValue('44.42');
+    await expect(page.getByRole('img', { name: /^Linkage view\. θ2 44\.42°/ })).toBeVisible();
+    // Stopped for good: the address bar settles on the dead centre and the pose stays there.
+    await expect.poll(() => new URL(page.url()).searchParams.get('t2')).toMatch(/^44\.41/);
+    await expect(page.getByRole('img', { name: /^Linkage view\. θ2 44\.42°/ })).toBeVisible();
+    await expect(theta2Field(page)).toHaveValue('44.42');
+  });
+
   test("a rocking input's limits have go-to buttons that land on an assembled pose (zh-TW)", async ({ page }) => {
     // Non-Grashof 5-3-2.5-4: the input rocks through 0° between ±θ, where |A O4| = r3 + r4 (law of cosines).
     const limit = (Math.acos((25 + 9 - 6.5 * 6.5) / 30) * 180) / Math.PI;

@@ -55,13 +55,21 @@ export function useAnimation(
       startTransition(() => dispatch({ type: 'animate', ...next }));
     }
   });
-  // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead.
+  // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead. An edit that came with
+  // the stop (a "Go to" sets θ2 as it stops Play) wins over the frame on screen: the state already holds the pose.
   useEffect(() => {
     if (state.playing) return;
+    const own = frameOf(state);
+    const edited =
+      seen.current !== null && !sameFrame(own, seen.current) && !committed.current.some((c) => sameFrame(c, own));
     seen.current = null;
     committed.current = [];
     const frame = playhead.get();
     if (!frame) return;
+    if (edited) {
+      playhead.set(null);
+      return;
+    }
     // Compared as the reducer stores it, so a frame the state cannot hold more exactly still hands back.
     if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
