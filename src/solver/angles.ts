@@ -4,6 +4,7 @@
  * are branded numbers: a plain number converts freely into either, but a value of one cannot be passed
  * where the other is required, which makes a forgotten conversion a type error.
  */
+import { describe } from './validate';
 
 /** An angle in radians (branded: see the module comment). */
 export type Radians = number & { readonly __unit?: 'rad' };
@@ -18,13 +19,15 @@ export const TWO_PI = 2 * Math.PI;
 const RAD_PER_DEG = Math.PI / 180;
 const DEG_PER_RAD = 180 / Math.PI;
 
-/** Degrees to radians. */
+/** Degrees to radians (NaN and infinities pass through); throws an Error naming deg for a non-number. */
 export function degToRad(deg: number): Radians {
+  if (typeof deg !== 'number') throw new Error(`deg must be a number of degrees, got ${describe(deg)}`);
   return (deg * Math.PI) / 180;
 }
 
-/** Radians to degrees. */
+/** Radians to degrees (NaN and infinities pass through); throws an Error naming rad for a non-number. */
 export function radToDeg(rad: number): Degrees {
+  if (typeof rad !== 'number') throw new Error(`rad must be a number of radians, got ${describe(rad)}`);
   return (rad * 180) / Math.PI;
 }
 
@@ -241,7 +244,7 @@ function inRange(r: number): Radians {
  * reduction above); -pi maps to pi. Non-finite input (no direction) gives NaN; a non-number throws.
  */
 export function wrapAngle(rad: number): Radians {
-  if (typeof rad !== 'number') throw new Error(`wrapAngle needs a number of radians, got ${String(rad)}`);
+  if (typeof rad !== 'number') throw new Error(`wrapAngle: rad must be a number of radians, got ${describe(rad)}`);
   if (rad > -Math.PI && rad <= Math.PI) return rad;
   if (!(Math.abs(rad) < CODY_WAITE_MAX)) {
     if (!Number.isFinite(rad)) return NaN;
@@ -260,7 +263,8 @@ export function wrapAngle(rad: number): Radians {
  */
 export function angleDiff(a: number, b: number): Radians {
   if (typeof a !== 'number' || typeof b !== 'number') {
-    throw new Error(`angleDiff needs two numbers of radians, got ${String(a)} and ${String(b)}`);
+    const [name, v] = typeof a !== 'number' ? ['a', a] : ['b', b];
+    throw new Error(`angleDiff: ${name} must be a number of radians, got ${describe(v)}`);
   }
   const d = a - b;
   const bb = d - a;

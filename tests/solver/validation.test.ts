@@ -13,13 +13,20 @@ import {
   angleDiff,
   classify,
   couplerPoint,
+  couplerPointMotion,
+  degToRad,
+  designMetrics,
   inputRange,
+  instantCenters,
+  linkRates,
   jointPositions,
   loopResidual,
+  radToDeg,
   seedFirstGuess,
   solveClosedForm,
   solveNewton,
   sweep,
+  sweepRates,
   theta2Grid,
   transmissionAngle,
   validateLinkage,
@@ -31,6 +38,8 @@ const L: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const GUESS = { theta3: 0.5, theta4: 1.9 };
 const POSE = { theta3: 0.5, theta4: 1.9 };
 const GRID = [0, 0.5, 1];
+const INPUT = { omega2: 1, alpha2: 0 };
+const OK = () => true;
 
 type Call = () => unknown;
 
@@ -114,7 +123,50 @@ const MISUSES: Array<[string, Call, string[]]> = [
   ['loopResidual r1 -1', () => loopResidual({ ...L, r1: -1 }, 0, POSE), ['r1', '-1']],
   ['wrapAngle a string', () => wrapAngle('1' as never), ['wrapAngle', '1']],
   ['angleDiff an object', () => angleDiff({} as never, 1), ['angleDiff']],
+  ['degToRad a string', () => degToRad('90' as never), ['deg', '"90"']],
+  ['radToDeg null', () => radToDeg(null as never), ['rad', 'null']],
+  ['sweepRates theta2 null', () => sweepRates(L, null as never, [0], [0], OK, INPUT), ['theta2', 'null']],
+  ['sweepRates theta3 a number', () => sweepRates(L, [0], 1 as never, [0], OK, INPUT), ['theta3', '1']],
+  ['sweepRates theta3 strings', () => sweepRates(L, [0], ['0.5'] as never, [1.9], OK, INPUT), ['theta3[0]', '"0.5"']],
+  ['sweepRates {length: 2}', () => sweepRates(L, { length: 2 }, [0, 0], [0, 0], OK, INPUT), ['theta2[0]', 'undefined']],
+  ['sweepRates theta2 NaN where ok', () => sweepRates(L, [NaN], [0.5], [1.9], OK, INPUT), ['theta2[0]', 'NaN']],
+  [
+    'sweepRates theta4 Infinity where ok',
+    () => sweepRates(L, [0, 1], [0.5, 0.5], [1.9, Infinity], OK, INPUT),
+    ['theta4[1]', 'Infinity'],
+  ],
+  ['sweepRates ok not a function', () => sweepRates(L, [0], [0.5], [1.9], true as never, INPUT), ['ok', 'true']],
+  ['sweepRates input null', () => sweepRates(L, [0], [0.5], [1.9], OK, null as never), ['input', 'null']],
+  ['sweepRates linkage null', () => sweepRates(null as never, [0], [0.5], [1.9], OK, INPUT), ['linkage', 'null']],
+  ['linkRates pose a string', () => linkRates(L, 0, 'pose' as never, INPUT), ['pose', '"pose"']],
+  ['linkRates theta2 an object', () => linkRates(L, {} as never, POSE, INPUT), ['theta2', '{}']],
+  [
+    'linkRates input.omega2 a string',
+    () => linkRates(L, 0, POSE, { omega2: '1' as never, alpha2: 0 }),
+    ['input.omega2', '"1"'],
+  ],
+  [
+    'couplerPointMotion pAngle a string',
+    () => couplerPointMotion(L, 0, POSE, INPUT, 1, '0' as never),
+    ['pAngle', '"0"'],
+  ],
+  ['instantCenters pose a string', () => instantCenters(L, 0, 'pose' as never), ['pose', '"pose"']],
+  ['instantCenters theta2 an object', () => instantCenters(L, {} as never, POSE), ['theta2', '{}']],
+  [
+    'instantCenters pose.theta3 a string',
+    () => instantCenters(L, 0, { theta3: '1', theta4: 0 } as never),
+    ['pose.theta3', '"1"'],
+  ],
+  ['designMetrics branch a number', () => designMetrics(L, 1 as never), ['branch', '1']],
 ];
+
+describe('sweepRates', () => {
+  it('takes NaN angles where ok(i) is false (a point the sweep did not solve) and gives NaN rates there', () => {
+    const r = sweepRates(L, [0, 1], [NaN, 0.5], [NaN, 1.9], (i) => i === 1, INPUT);
+    expect(r.omega3[0]).toBeNaN();
+    expect(Number.isFinite(r.omega3[1])).toBe(true);
+  });
+});
 
 describe('the kinematics functions', () => {
   it('take a missing pose (NaN angles) and give NaN points and ratios, which callers read as no pose', () => {
