@@ -79,6 +79,20 @@ test.describe('the <fourbar-lab> custom element', () => {
     // Panels follow their attribute too.
     await a.evaluate((el) => el.setAttribute('panels', 'controls,info'));
     await expect(a.getByTestId('linkage-type')).toBeVisible();
+    // So do the locks: a later lock on a freezes r3 and θ2 there and keeps what was typed; dropping b's lock frees r1.
+    await a.evaluate((el) => el.setAttribute('lock', 'r3,theta2'));
+    await expect(a.getByRole('textbox', { name: /^r3/ })).toBeDisabled();
+    await expect(a.getByRole('textbox', { name: /^r3/ })).toHaveValue('4');
+    await expect(a.getByRole('slider', { name: /^θ2/ })).toBeDisabled();
+    await expect(a.getByRole('textbox', { name: /^r1/ })).toBeEnabled();
+    await b.evaluate((el) => el.removeAttribute('lock'));
+    await expect(b.getByRole('textbox', { name: /^r1/ })).toBeEnabled();
+    await expect(b.getByRole('textbox', { name: /^r3/ })).toHaveValue('4.5');
+    // The page author may still set a locked key (README: attributes are the author's), the reader may not.
+    await a.evaluate((el) => el.setAttribute('r3', '3'));
+    await expect.poll(() => a.evaluate((el) => (el as unknown as { state: { r3: number } }).state.r3)).toBe(3);
+    await expect(a.getByRole('textbox', { name: /^r3/ })).toHaveValue('3');
+    await expect(a.getByRole('textbox', { name: /^r3/ })).toBeDisabled();
     expect(errors).toEqual([]);
   });
 });

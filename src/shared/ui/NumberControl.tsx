@@ -63,11 +63,12 @@ export function NumberControl({
   const label = t.fieldLabels[field];
 
   if (value !== shownValue) {
-    // Follow outside changes (slider, preset, animation) unless the person is typing a different value.
+    // Follow outside changes (slider, preset, animation) unless the person is typing a different value; a field
+    // that is locked or disabled cannot be typed in, even if it kept the focus it had before the lock came.
     // Adjusted while rendering, not in an effect: an effect's update would outlive each input of a burst
     // and React would count them as nested updates (error #185).
     setShownValue(value);
-    if (!focused) {
+    if (!focused || locked || disabled) {
       setDraft(shown);
       setError(null);
     }
