@@ -4,7 +4,7 @@ import { clipLine, edgeMarker, layoutDesign, muOutsideBand } from '../../../src/
 import type { ScreenRect } from '../../../src/shared/canvas/rect';
 import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
 import { THEME } from '../../../src/shared/canvas/canvasTheme';
-import { fitView } from '../../../src/shared/canvas/view';
+import { fitView, toScreenX, toScreenY } from '../../../src/shared/canvas/view';
 import { instantCenters } from '../../../src/solver/instantCenters';
 import { designMetrics } from '../../../src/solver/metrics';
 import { LINKAGES, measureModel, rad, sweepScenes } from './fixtures';
@@ -130,6 +130,56 @@ describe('layoutScene with the design overlay', () => {
     }
     expect(offscreen).toBeGreaterThan(0);
     expect(onscreen).toBeGreaterThan(0);
+  });
+
+  it("draws each finite centre's construction lines through its own pins: I13 on O2A and O4B, I24 on AB and O2O4", () => {
+    let checked = 0;
+    for (const t of [LINKAGES[0], LINKAGES[1], LINKAGES[3]]) {
+      for (const s0 of sweepScenes(t, 'open', 'en', 7)) {
+        if (!s0.pose) continue;
+        const ic = instantCenters(t.linkage, s0.theta2, s0.pose);
+        if (ic.I13 === null || ic.I24 === null) continue;
+        const s = { ...s0, design: { ...designFor(t, false), instantCentres: ic } };
+        const v = fitView(s.bounds, 652, 368, { zoom: 0.5, panX: 0, panY: 0 });
+        const lay = layoutScene(s, v, measureModel);
+        // Independent pins: world coordinates from θ2 and the pose, projected by the view.
+        const scr = (x: number, y: number) => ({ x: toScreenX(v, x), y: toScreenY(v, y) });
+        const l = t.linkage;
+        const O2 = scr(0, 0);
+        const O4 = scr(l.r1, 0);
+        const A = scr(l.r2 * Math.cos(s0.theta2), l.r2 * Math.sin(s0.theta2));
+        const B = scr(
+          l.r2 * Math.cos(s0.theta2) + l.r3 * Math.cos(s0.pose.theta3),
+          l.r2 * Math.sin(s0.theta2) + l.r3 * Math.sin(s0.pose.theta3),
+        );
+        const pins = {
+          I13: [
+            [O2, A],
+            [O4, B],
+          ],
+          I24: [
+            [A, B],
+            [O2, O4],
+          ],
+        } as const;
+        // Distance of q from the line through a and b, in pixels.
+        const off = (q: { x: number; y: number }, a: { x: number; y: number }, b: { x: number; y: number }) =>
+          Math.abs((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / Math.hypot(b.x - a.x, b.y - a.y);
+        for (const c of lay.design!.centres) {
+          const want = pins[c.name as 'I13' | 'I24'];
+          expect(c.lines, c.name).toHaveLength(2);
+          c.lines.forEach(([p, q], i) => {
+            const [a, b2] = want[i];
+            // Both ends on the line of this pair of pins (1e-6 px: rounding of the projection and the clip).
+            const tol = 1e-6 * Math.max(1, Math.hypot(p.x, p.y), Math.hypot(q.x, q.y));
+            expect(off(p, a, b2), `${c.name} line ${i} start`).toBeLessThan(tol);
+            expect(off(q, a, b2), `${c.name} line ${i} end`).toBeLessThan(tol);
+          });
+        }
+        checked++;
+      }
+    }
+    expect(checked).toBeGreaterThan(20);
   });
 
   it('shows the centres of a parallelogram at infinity: lines parallel to their links, an arrow along them, a label', () => {
