@@ -86,6 +86,24 @@ describe('linkRates at huge input angles', () => {
       for (const k of RATES) expectNear(got[k], ref[k], tol[k], `${k} with theta3, theta4 ~ ${turns} turns`);
     }
   });
+  it('keeps sin mu to full relative accuracy for huge pose angles next to a limit (mu within 1e-9 of pi)', () => {
+    // theta3 + pi rounds at the ulp of theta3 (2e-9 at 1e7, 5e-7 at 3e9), so mu = theta4 - theta3 is
+    // pi plus a tiny exact remainder: sin mu must come from the reduced difference and its low part.
+    // An odd number of half turns past one turn (3 pi, -5 pi) also makes the reduction subtract whole turns.
+    for (const [theta3, halfTurns] of [
+      [1e7 + 0.3, 1],
+      [-3e9 - 0.7, 1],
+      [1e7 + 0.3, 3],
+      [-3e9 - 0.7, -5],
+    ]) {
+      const pose = { theta3, theta4: theta3 + halfTurns * Math.PI };
+      const ref = referenceRatesAtPose(REPORT, 0.7, pose, INPUT);
+      expect(Math.abs(ref.sinMu)).toBeLessThan(1e-6);
+      const got = linkRates(REPORT, 0.7, pose, INPUT);
+      const tol = rateToleranceAtPose(REPORT, ref, INPUT);
+      for (const k of RATES) expectNear(got[k], ref[k], tol[k], `${k} with sin mu = ${ref.sinMu}`);
+    }
+  });
 });
 
 describe('couplerPointMotion and couplerPoint at huge angles', () => {
