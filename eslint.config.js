@@ -37,8 +37,8 @@ export default tseslint.config(
     ...reactHooks.configs.flat['recommended-latest'],
   },
   {
-    // Temporary, until its owner's rewrite lands (see the app-shell report): useSolverClient stores the
-    // client it creates in an effect.
+    // useSolverClient creates the worker's client in an effect (a worker must not start during render, and the
+    // effect's cleanup terminates it) and stores it in state: the one setState in an effect the app keeps.
     files: ['src/shared/jobs/useSolver.ts'],
     rules: { 'react-hooks/set-state-in-effect': 'off' },
   },

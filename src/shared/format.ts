@@ -1,6 +1,3 @@
-import { radToDeg } from '../solver/angles';
-import type { AngleInterval } from '../solver/types';
-
 const MINUS = '\u2212';
 
 /** Decimals of θ2 wherever it is shown: the field, the analysis panel, the canvas description. */
@@ -40,18 +37,6 @@ export function formatSci(x: number, digits = 2): string {
   if (!Number.isFinite(x)) return '—';
   if (x === 0) return '0';
   return x.toExponential(digits).replace('e+', 'e').replace(/-/g, MINUS);
-}
-
-/**
- * Formats the input's reachable intervals (radians) as degree ranges in (−180°, 180°] joined by a separator.
- * @deprecated The θ2 slider runs 0°–360°: use formatInputRange (shared/state/inputRange.ts), which says it that way.
- */
-export function formatIntervalsDeg(
-  intervals: readonly AngleInterval[],
-  interval: (lo: string, hi: string) => string,
-  separator = '; ',
-): string {
-  return intervals.map((iv) => interval(formatDeg(radToDeg(iv.lo), 2), formatDeg(radToDeg(iv.hi), 2))).join(separator);
 }
 
 /** A number as a file-name fragment: plain ASCII, no spaces or slashes ("2.5", "1e-7", "m1.5" for -1.5). */

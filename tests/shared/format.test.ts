@@ -6,12 +6,12 @@ import {
   fieldText,
   fileNumber,
   formatDeg,
-  formatIntervalsDeg,
   formatNumber,
   formatSci,
   truncateText,
 } from '../../src/shared/format';
-import { lengthSliderRange, needsNewRange, niceCeil, sliderShows } from '../../src/features/simulator/sliderRange';
+import { lengthSliderRange, needsNewRange, niceCeil } from '../../src/features/simulator/sliderRange';
+import type { SliderRange } from '../../src/features/simulator/sliderRange';
 import { parseField } from '../../src/shared/ui/validateNumber';
 
 describe('formatNumber', () => {
@@ -33,11 +33,6 @@ describe('formatDeg and formatSci', () => {
     expect(formatDeg(-12.345, 1)).toBe('\u221212.3');
     expect(formatSci(1.234e-12)).toBe('1.23e\u221212');
     expect(formatSci(0)).toBe('0');
-  });
-  it('formats the input range', () => {
-    expect(formatIntervalsDeg([{ lo: -Math.PI / 2, hi: Math.PI / 2 }], (a, b) => `${a}..${b}`)).toBe(
-      '\u221290.00..90.00',
-    );
   });
 });
 
@@ -99,6 +94,16 @@ describe('truncateText', () => {
     expect(truncateText('𝜃'.repeat(30), 5)).toBe('𝜃𝜃𝜃𝜃…');
   });
 });
+
+/** The browser's rule (oracle for the speed slider):
+ * The value a range input shows for value (HTML's step rule): clamped to [min, max], then the nearest
+ * min + k * step, the larger one on a tie. A field and its slider agree when this returns the value itself.
+ */
+function sliderShows(value: number, range: SliderRange): number {
+  const v = Math.min(range.max, Math.max(range.min, value));
+  const k = Math.floor((v - range.min) / range.step + 0.5);
+  return Math.min(range.max, range.min + k * range.step);
+}
 
 describe('sliderShows', () => {
   const speed = { min: SPEED_MIN, max: SPEED_MAX, step: SPEED_STEP };

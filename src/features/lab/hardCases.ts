@@ -90,10 +90,3 @@ export const HARD_CASES: readonly HardCase[] = [
   { id: 'singleAssembly', number: 22, linkage: { r1: 6, r2: 1, r3: 2, r4: 3 }, theta2Deg: 0, branch: 'open' },
   { id: 'singularStart', number: 23, linkage: CASE_1, theta2Deg: 45, branch: 'open' },
 ];
-
-/** The hard case with this id; throws for an unknown id (a programmer error). */
-export function getHardCase(id: HardCaseId): HardCase {
-  const c = HARD_CASES.find((h) => h.id === id);
-  if (!c) throw new Error(`unknown hard case id ${JSON.stringify(id)}`);
-  return c;
-}

@@ -5,7 +5,7 @@ import { labMessagesZhTw } from './labMessagesZhTw';
 
 /**
  * The solver lab's strings, apart from the app's (shared/i18n/messages.ts): only the lab page reads them, so they load
- * with it, both languages together (about 3 KB gzip off the first load, issue 11).
+ * with it, both languages together, and the simulator's first load does not carry them.
  */
 export interface LabMessages {
   /** Short names of the hard cases (lab presets). */

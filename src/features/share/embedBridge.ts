@@ -1,5 +1,5 @@
 import type { EmbedValue } from './embedMessages';
-import { EMBED_MESSAGE_TAG, readSetState } from './embedMessages';
+import { readSetState, stateEvent } from './embedMessages';
 
 /** Where a patch of URL keys came from: the parent window's set-state command, or the element's attributes. */
 export type PatchSource = 'parent' | 'attribute';
@@ -22,7 +22,7 @@ export function frameBridge(win: Window = window): EmbedBridge {
   const framed = win.parent !== win;
   return {
     publish(values) {
-      if (framed) win.parent.postMessage({ source: EMBED_MESSAGE_TAG, type: 'state', state: values }, '*');
+      if (framed) win.parent.postMessage(stateEvent(values), '*');
     },
     listen(onPatch) {
       if (!framed) return () => undefined;

@@ -62,9 +62,9 @@ export function stateValues(state: AppState): Record<string, EmbedValue> {
   return out;
 }
 
-/** The message the widget posts for a state. */
-export function stateEvent(state: AppState): StateEvent {
-  return { source: EMBED_MESSAGE_TAG, type: 'state', state: stateValues(state) };
+/** The message the widget posts to its host for a state's URL values (stateValues). */
+export function stateEvent(values: Record<string, EmbedValue>): StateEvent {
+  return { source: EMBED_MESSAGE_TAG, type: 'state', state: values };
 }
 
 /** The keys and values of a set-state command, or null when data is not one (anything else is ignored). */

@@ -29,13 +29,3 @@ export function needsNewRange(range: SliderRange, values: readonly number[]): bo
   const maxV = Math.max(...values);
   return values.some((v) => v < range.min || v > range.max) || maxV < range.max / 50;
 }
-
-/**
- * The value a range input shows for value (HTML's step rule): clamped to [min, max], then the nearest
- * min + k * step, the larger one on a tie. A field and its slider agree when this returns the value itself.
- */
-export function sliderShows(value: number, range: SliderRange): number {
-  const v = Math.min(range.max, Math.max(range.min, value));
-  const k = Math.floor((v - range.min) / range.step + 0.5);
-  return Math.min(range.max, range.min + k * range.step);
-}

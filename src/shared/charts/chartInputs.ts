@@ -11,9 +11,6 @@ import type { CycleResponse, PlotSeries, PointResponse } from '../jobs/protocol'
 /** The angle charts the app shows and exports. */
 export type AngleChartKind = 'theta3' | 'theta4' | 'both';
 
-/** Every chart that can be exported. */
-export type ChartKind = AngleChartKind | 'convergence';
-
 /** Text and data of one angle chart, without its size or marker. */
 export interface AngleChartInputs {
   data: AngleChartData;

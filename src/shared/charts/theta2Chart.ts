@@ -150,11 +150,6 @@ export function angleYAxis(series: readonly AngleSeries[], count = 6): AngleAxis
   return angleAxis(lo - pad, hi + pad, count);
 }
 
-/** The y domain of angleYAxis in degrees. */
-export function angleDomain(series: readonly AngleSeries[], count = 6): [number, number] {
-  return angleYAxis(series, count).domain;
-}
-
 /** Size options of an angle chart with every default filled in (CSS pixels). */
 export interface AngleChartSize {
   width: number;
@@ -187,7 +182,7 @@ export interface AngleFrame {
   yTicks: number[];
 }
 
-/** Scales and ticks for these curves at this size: x 0..360 degrees, y angleDomain; tick counts follow the pixel size. */
+/** Scales and ticks for these curves at this size: x 0..360 degrees, y from angleYAxis; tick counts follow the pixel size. */
 export function angleFrame(series: readonly AngleSeries[], size: AngleChartSize): AngleFrame {
   const m = size.margins;
   const iw = Math.max(10, size.width - m.left - m.right);

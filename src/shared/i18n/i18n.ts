@@ -8,23 +8,24 @@ export const LOCALES: readonly Locale[] = ['en', 'zh-TW'];
 /** Message tables loaded so far: English is in the first load, other languages load on demand. */
 const loaded: Partial<Record<Locale, Messages>> = { en: messagesEn };
 
+/** How each language's table loads: one entry per Locale (a new language without one is a type error). */
+const LOADERS: Record<Locale, () => Promise<Messages>> = {
+  en: async () => messagesEn,
+  'zh-TW': () => import('./messagesZhTw').then((m) => m.messagesZhTw),
+};
+
 /** The strings of one language, if loadMessages has loaded them; English until then (never undefined). */
 export function getMessages(locale: Locale): Messages {
   return loaded[locale] ?? messagesEn;
-}
-
-/** Whether a language's strings are loaded (getMessages returns them, not the English fallback). */
-export function messagesLoaded(locale: Locale): boolean {
-  return loaded[locale] !== undefined;
 }
 
 /** Loads a language's strings (zh-TW is a separate chunk, so English users never download it); resolves to them. */
 export async function loadMessages(locale: Locale): Promise<Messages> {
   const have = loaded[locale];
   if (have) return have;
-  const { messagesZhTw } = await import('./messagesZhTw');
-  loaded['zh-TW'] = messagesZhTw;
-  return messagesZhTw;
+  const messages = await LOADERS[locale]();
+  loaded[locale] = messages;
+  return messages;
 }
 
 /** Maps a BCP 47 tag to a supported locale: any Chinese tag but simplified ones gives zh-TW; null when unsupported. */

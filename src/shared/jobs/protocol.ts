@@ -28,7 +28,7 @@ export interface CouplerSpec {
   angleRad: number;
 }
 
-/** The cycle the view draws: classification, both branches on the view grid, coupler curves, plot samples. */
+/** The cycle the view draws: classification, both branches on the view grid (NR statistics), coupler curves. */
 export interface CycleParams {
   linkage: Linkage;
   /** Intervals per cycle the user chose; the view grid has min(samples, VIEW_SAMPLES_MAX) of them. */

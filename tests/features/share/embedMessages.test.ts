@@ -49,7 +49,7 @@ describe('stateValues', () => {
   });
 
   it('is wrapped in a message tagged with its source', () => {
-    expect(stateEvent(DEFAULT_STATE)).toEqual({
+    expect(stateEvent(stateValues(DEFAULT_STATE))).toEqual({
       source: 'fourbar-lab',
       type: 'state',
       state: stateValues(DEFAULT_STATE),

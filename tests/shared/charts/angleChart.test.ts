@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
+  angleYAxis,
   angleChartSize,
-  angleDomain,
   angleFrame,
   markerGeometry,
   plotIndices,
@@ -34,18 +34,18 @@ describe('wrappedSegments', () => {
   });
 });
 
-describe('angleDomain', () => {
+describe('angleYAxis', () => {
   it('holds the data with 5 degrees of padding and ends on nice angles within [-180, 180]', () => {
-    const [a, b] = angleDomain([{ label: '', color: '', valuesDeg: [31, 79] }]);
+    const [a, b] = angleYAxis([{ label: '', color: '', valuesDeg: [31, 79] }]).domain;
     expect(a).toBeLessThanOrEqual(26);
     expect(b).toBeGreaterThanOrEqual(84);
     expect(b - a).toBeLessThanOrEqual(90);
     expect(a % 15).toBe(0);
     expect(b % 15).toBe(0);
-    expect(angleDomain([{ label: '', color: '', valuesDeg: [-179, 179] }])).toEqual([-180, 180]);
+    expect(angleYAxis([{ label: '', color: '', valuesDeg: [-179, 179] }]).domain).toEqual([-180, 180]);
   });
   it('shows the full range when there is no data', () => {
-    expect(angleDomain([{ label: '', color: '', valuesDeg: [Number.NaN] }])).toEqual([-180, 180]);
+    expect(angleYAxis([{ label: '', color: '', valuesDeg: [Number.NaN] }]).domain).toEqual([-180, 180]);
   });
 });
 
