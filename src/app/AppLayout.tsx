@@ -1,8 +1,5 @@
 import './AppLayout.css';
-import { Suspense, lazy, useCallback, useMemo, useState } from 'react';
-import type { AppState } from '../shared/state/appState';
-import { Playhead } from '../shared/state/playhead';
-import { getMessages } from '../shared/i18n/i18n';
+import { Suspense, lazy } from 'react';
 import type { ParsedUrl } from '../shared/url/url';
 import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
 import { AnglePlotsPanel } from '../features/simulator/PlotsPanel';
@@ -18,26 +15,17 @@ import { PageTabs, pageTabId } from './PageTabs';
 import { SharePanel } from '../features/share/SharePanel';
 import { shellMessages } from './shellMessages';
 import { SkipLink } from './SkipLink';
-import { useAnimation } from '../features/simulator/useAnimation';
-import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
-import { useDrawnMark } from '../features/simulator/useDrawnMark';
-import { useCycleFacts } from '../features/simulator/useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
-import { useExports } from '../features/export/useExports';
+import { useSimulatorSession } from './useSimulatorSession';
+import type { ShownFor } from './useSimulatorSession';
 import { useFrameMotion } from '../features/simulator/useFrameMotion';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { LinkageStage } from '../features/simulator/LinkageStage';
-import { useShownFrame } from '../shared/linkage/useShownFrame';
 import { useLinkagePose } from '../features/simulator/useLinkagePose';
-import { usePlotPixels } from '../features/simulator/usePlotPixels';
-import { useSimulator } from '../features/simulator/useSimulator';
 import { useLatest } from '../shared/hooks/useLatest';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
-import { useCycleTable } from '../shared/jobs/useSolver';
-import { useDesignMetrics } from '../features/simulator/useDesignMetrics';
-import { deadCentreXMarks } from '../shared/charts/transmissionInputs';
 
 // The solver lab (its charts and tables) loads only when it is opened.
 const LabPanel = lazy(() => import('../features/lab/LabPanel').then((m) => ({ default: m.LabPanel })));
@@ -51,6 +39,13 @@ export interface AppLayoutProps {
   initial: ParsedUrl;
 }
 
+/** The full app solves the stage and the plots on the simulator page, the NR runs always (the lab uses them too). */
+const appViews: ShownFor = (s, plotPixels) => ({
+  stage: s.page !== 'lab',
+  plotPixels: s.page !== 'lab' ? plotPixels : 0,
+  newton: true,
+});
+
 /** Ids of the main landmark (the skip link's target) and of the page tab panel inside it. */
 const MAIN_ID = 'main-content';
 const PANEL_ID = 'page-panel';
@@ -60,38 +55,19 @@ const PANEL_ID = 'page-panel';
  * and its plots (or the lab) in the middle, numbers, convergence, export and share on the right.
  */
 export function AppLayout({ initial }: AppLayoutProps) {
-  const { plotsRef, plotPixels } = usePlotPixels();
-  const shownFor = useCallback(
-    (s: AppState) => ({ stage: s.page !== 'lab', plotPixels: s.page !== 'lab' ? plotPixels : 0, newton: true }),
-    [plotPixels],
-  );
-  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point, plot } = useSimulator(
-    initial.state,
-    shownFor,
-  );
-  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
-  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, true);
-  const t = getMessages(state.locale);
+  const session = useSimulatorSession(initial.state, appViews, true);
+  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point, table, t } = session;
+  const { deg, rates, rocking, design, xMarks, playhead, onStep, onShown, plotsRef } = session;
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
   const onLab = state.page === 'lab';
-  const { deg, rates, rangeDeg, rocking } = useCycleFacts(cycle, plot, state.direction);
   // The numbers panel follows the state (a few times a second while playing); the canvas and the plot
   // markers follow every frame through the FramePoseProvider below.
   const { local } = useLinkagePose(state, false);
   const motion = useFrameMotion(state, local);
-  const design = useDesignMetrics(state.linkage, state.branch);
-  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const { shown, onShown } = useShownFrame();
-  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
-  const [playhead] = useState(() => new Playhead());
-  const onStep = useAnimation(state, dispatch, rangeDeg, playhead);
   const stateRef = useLatest(state);
-  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
   const shell = shellMessages(state.locale);
-  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
-  useDrawnMark('fourbar:cycle-drawn', cycle);
-  useDrawnMark('fourbar:plot-drawn', plot);
 
   return (
     <MessagesContext.Provider value={t}>

@@ -1,8 +1,6 @@
 import './EmbedLayout.css';
-import { useCallback, useMemo, useState } from 'react';
+import { useCallback, useState } from 'react';
 import type { AppState } from '../shared/state/appState';
-import { Playhead } from '../shared/state/playhead';
-import { getMessages } from '../shared/i18n/i18n';
 import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../shared/url/url';
 import { appUrl } from '../shared/url/url';
 import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
@@ -17,22 +15,13 @@ import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { LinkageStage } from '../features/simulator/LinkageStage';
 import { MessagesContext } from '../shared/i18n/MessagesContext';
 import { shellMessages } from './shellMessages';
-import { useAnimation } from '../features/simulator/useAnimation';
-import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
-import { useDrawnMark } from '../features/simulator/useDrawnMark';
-import { useCycleFacts } from '../features/simulator/useCycleFacts';
 import { useDocumentMeta } from './useDocumentMeta';
+import { useSimulatorSession } from './useSimulatorSession';
+import type { ShownFor } from './useSimulatorSession';
 import { useEmbedMessages } from '../features/share/useEmbedMessages';
-import { useExports } from '../features/export/useExports';
-import { usePlotPixels } from '../features/simulator/usePlotPixels';
-import { useSimulator } from '../features/simulator/useSimulator';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
-import { useCycleTable } from '../shared/jobs/useSolver';
-import { useDesignMetrics } from '../features/simulator/useDesignMetrics';
-import { useShownFrame } from '../shared/linkage/useShownFrame';
-import { deadCentreXMarks } from '../shared/charts/transmissionInputs';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -66,37 +55,22 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const [ownBridge] = useState(() => (givenBridge ? null : frameBridge()));
   const bridge = givenBridge ?? ownBridge;
   const show = (p: EmbedPanel) => embed.panels.includes(p);
-  const { plotsRef, plotPixels } = usePlotPixels();
   const plotsShown = embed.panels.includes('plots');
   const numbersShown = embed.panels.includes('info');
-  const shownFor = useCallback(
-    () => ({ stage: true, plotPixels: plotsShown ? plotPixels : 0, newton: numbersShown }),
-    [plotsShown, plotPixels, numbersShown],
+  const shownFor = useCallback<ShownFor>(
+    (_s, plotPixels) => ({ stage: true, plotPixels: plotsShown ? plotPixels : 0, newton: numbersShown }),
+    [plotsShown, numbersShown],
   );
-  const { state, dispatch, client, solverMode, solverReason, cycle, cycleError, point, plot } = useSimulator(
-    initial.state,
-    shownFor,
-  );
-  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
-  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, numbersShown);
-  const t = getMessages(state.locale);
-  const { deg, rates, rangeDeg, rocking } = useCycleFacts(cycle, plot, state.direction);
-  const design = useDesignMetrics(state.linkage, state.branch);
-  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
-  const { shown, onShown } = useShownFrame();
-  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize } = useExports({ state, point, shown, cycle, client, deg, t });
-  const [playhead] = useState(() => new Playhead());
-  const onStep = useAnimation(state, dispatch, rangeDeg, playhead);
-  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
-  const { onTheta2, onCoupler } = useCanvasEdits(dispatch);
+  const session = useSimulatorSession(initial.state, shownFor, numbersShown);
+  const { state, dispatch, solverMode, solverReason, cycle, cycleError, point, table, t } = session;
+  const { deg, rates, rocking, design, xMarks, playhead, onStep, onShown, plotsRef } = session;
+  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
   const crankMovable = !embed.locked.includes('theta2');
   const couplerMovable = !embed.locked.includes('coupler');
   const shell = shellMessages(state.locale);
   useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
   useUrlSync(state, embed, ownsPage);
   useEmbedMessages(bridge, state, dispatch, embed.locked);
-  useDrawnMark('fourbar:cycle-drawn', cycle);
-  useDrawnMark('fourbar:plot-drawn', plot);
 
   // The full app lives beside embed.html; a page hosting the element has no such neighbour.
   const fullHref = ownsPage ? fullAppHref(state) : '';

@@ -1,0 +1,61 @@
+import { useCallback, useMemo, useState } from 'react';
+import type { AppState } from '../shared/state/appState';
+import { Playhead } from '../shared/state/playhead';
+import { getMessages } from '../shared/i18n/i18n';
+import { deadCentreXMarks } from '../shared/charts/transmissionInputs';
+import { useShownFrame } from '../shared/linkage/useShownFrame';
+import { useCycleTable } from '../shared/jobs/useSolver';
+import { useAnimation } from '../features/simulator/useAnimation';
+import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
+import { useCycleFacts } from '../features/simulator/useCycleFacts';
+import { useDesignMetrics } from '../features/simulator/useDesignMetrics';
+import { useDrawnMark } from '../features/simulator/useDrawnMark';
+import { usePlotPixels } from '../features/simulator/usePlotPixels';
+import { useSimulator } from '../features/simulator/useSimulator';
+import type { ShownViews } from '../features/simulator/useSimulator';
+import { useExports } from '../features/export/useExports';
+
+/** Which views a layout shows for a state, given the plots card's device-pixel width (0 while it is hidden). */
+export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
+
+/**
+ * Everything a layout of the simulator needs, composed once for the full app and the widget: the state and its
+ * solver answers, the cycle's facts and table, the design metrics, Play's playhead and step, the canvas edits and
+ * the export handlers. `shownFor` says which views show (only those are solved); `tableShown` whether the numbers
+ * panel (and so the n-point table) is on screen. Marks 'fourbar:cycle-drawn' and 'fourbar:plot-drawn' for bench:ui.
+ */
+export function useSimulatorSession(initial: AppState, shownFor: ShownFor, tableShown: boolean) {
+  const { plotsRef, plotPixels } = usePlotPixels();
+  const views = useCallback((s: AppState) => shownFor(s, plotPixels), [shownFor, plotPixels]);
+  const sim = useSimulator(initial, views);
+  const { state, dispatch, client, cycle, point, plot } = sim;
+  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, tableShown);
+  const t = getMessages(state.locale);
+  const facts = useCycleFacts(cycle, plot, state.direction);
+  const design = useDesignMetrics(state.linkage, state.branch);
+  const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
+  const { shown, onShown } = useShownFrame();
+  const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t });
+  const [playhead] = useState(() => new Playhead());
+  const onStep = useAnimation(state, dispatch, facts.rangeDeg, playhead);
+  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
+  const edits = useCanvasEdits(dispatch);
+  useDrawnMark('fourbar:cycle-drawn', cycle);
+  useDrawnMark('fourbar:plot-drawn', plot);
+  return {
+    ...sim,
+    ...facts,
+    ...edits,
+    ...exports,
+    t,
+    table,
+    design,
+    xMarks,
+    onShown,
+    playhead,
+    onStep,
+    onViewChange,
+    plotsRef,
+  };
+}
