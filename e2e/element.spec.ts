@@ -96,3 +96,27 @@ test.describe('the <fourbar-lab> custom element', () => {
     expect(errors).toEqual([]);
   });
 });
+
+test.describe('the <fourbar-lab> custom element in Traditional Chinese', () => {
+  test('lang="zh-TW" draws in Traditional Chinese from the first frame, as its language menu says', async ({
+    page,
+  }) => {
+    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
+      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
+    );
+    await page.route(PAGE, (route) =>
+      route.fulfill({
+        contentType: 'text/html',
+        body: `<!doctype html><html lang="zh-Hant"><head><title>第三週</title>
+<script src="./fourbar-lab.js"></script></head><body>
+<fourbar-lab id="z" lang="zh-TW" panels="controls"></fourbar-lab></body></html>`,
+      }),
+    );
+    await page.goto(PAGE);
+    const z = page.locator('#z');
+    await expect(z.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+    await expect(z.getByRole('combobox')).toHaveValue('zh-TW');
+    await expect(z.getByRole('button', { name: '播放' })).toBeVisible();
+    await expect(z.getByRole('button', { name: 'Play' })).toHaveCount(0);
+  });
+});

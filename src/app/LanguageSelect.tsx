@@ -1,7 +1,8 @@
 import { memo } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, Locale } from '../shared/state/appState';
-import { LOCALES, loadMessages } from '../shared/i18n/i18n';
+import { LOCALES } from '../shared/i18n/i18n';
+import { loadLanguage } from '../shared/i18n/messageModule';
 import { LOCALE_STORAGE_KEY, writeStorage } from '../shared/storage';
 import { Icon } from '../shared/ui/Icon';
 import { useMessages } from '../shared/i18n/MessagesContext';
@@ -28,7 +29,7 @@ function LanguageSelectImpl({ locale, dispatch }: LanguageSelectProps) {
           const l = e.target.value as Locale;
           writeStorage(LOCALE_STORAGE_KEY, l);
           // The state changes once the strings are there, so no frame shows a mix of languages.
-          loadMessages(l).then(
+          loadLanguage(l).then(
             () => dispatch({ type: 'setLocale', locale: l }),
             () => dispatch({ type: 'setLocale', locale: l }),
           );

@@ -8,6 +8,7 @@ import { EmbedLayout } from './EmbedLayout';
 import { ErrorBoundary } from './ErrorBoundary';
 import type { EmbedValue } from '../features/share/embedMessages';
 import { getMessages } from '../shared/i18n/i18n';
+import { loadLanguage } from '../shared/i18n/messageModule';
 import { initialState } from './initialState';
 import type { ParsedUrl } from '../shared/url/url';
 import { URL_KEYS } from '../shared/url/urlKeys';
@@ -64,7 +65,12 @@ export class FourbarLabElement extends HTMLElement {
     shadow.append(style, container);
     this.parsed = this.parse();
     this.root = createRoot(container);
-    this.render();
+    // The strings of the element's language load before it first draws (as mount.tsx does for the page), so a
+    // zh-TW element never shows English under a menu that says 繁體中文; offline, English stays.
+    const locale = this.parsed.state.locale;
+    loadLanguage(locale)
+      .catch(() => undefined)
+      .then(() => this.render());
   }
 
   disconnectedCallback(): void {

@@ -2,7 +2,8 @@ import { StrictMode } from 'react';
 import type { ComponentType } from 'react';
 import { createRoot } from 'react-dom/client';
 import { ErrorBoundary } from './ErrorBoundary';
-import { getMessages, loadMessages } from '../shared/i18n/i18n';
+import { getMessages } from '../shared/i18n/i18n';
+import { loadLanguage } from '../shared/i18n/messageModule';
 import { initialState } from './initialState';
 import { LOCALE_STORAGE_KEY, readStorage } from '../shared/storage';
 import type { ParsedUrl } from '../shared/url/url';
@@ -22,7 +23,7 @@ export async function mount(Layout: ComponentType<LayoutProps>): Promise<void> {
   const languages = typeof navigator !== 'undefined' ? (navigator.languages ?? [navigator.language]) : [];
   const initial = initialState(window.location.search, languages, readStorage(LOCALE_STORAGE_KEY));
   try {
-    await loadMessages(initial.state.locale);
+    await loadLanguage(initial.state.locale);
   } catch {
     // The language chunk could not load (offline): the English strings are there.
   }

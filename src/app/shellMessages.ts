@@ -1,6 +1,7 @@
 import type { Locale } from '../shared/state/appState';
+import { messageModule } from '../shared/i18n/messageModule';
 
-/** Strings of the app shell that the message tables do not have yet (to move into src/state/messages*.ts). */
+/** Strings of the app shell (skip link, landmarks, the canvas hint): the shell's own message module. */
 export interface ShellMessages {
   /** The skip link's text. */
   skipToMain: string;
@@ -35,9 +36,10 @@ const ZH_TW: ShellMessages = {
   },
 };
 
-const TABLES: Record<Locale, ShellMessages> = { en: EN, 'zh-TW': ZH_TW };
+/** The shell's strings in every language (small: both bundled). */
+const shell = messageModule<ShellMessages>(EN, { 'zh-TW': ZH_TW });
 
 /** The shell's strings in a language. */
 export function shellMessages(locale: Locale): ShellMessages {
-  return TABLES[locale];
+  return shell.get(locale);
 }

@@ -2,6 +2,7 @@ import type { Locale } from '../../shared/state/appState';
 import type { HardCaseId } from './hardCases';
 import { labMessagesEn } from './labMessagesEn';
 import { labMessagesZhTw } from './labMessagesZhTw';
+import { messageModule } from '../../shared/i18n/messageModule';
 
 /**
  * The solver lab's strings, apart from the app's (shared/i18n/messages.ts): only the lab page reads them, so they load
@@ -66,7 +67,10 @@ export interface LabMessages {
   labWhatItMeans: string;
 }
 
+/** The lab's strings in every language (both bundled with the lab's chunk). */
+export const labMessages = messageModule<LabMessages>(labMessagesEn, { 'zh-TW': labMessagesZhTw });
+
 /** The lab's strings in a language. */
 export function labMessagesFor(locale: Locale): LabMessages {
-  return locale === 'zh-TW' ? labMessagesZhTw : labMessagesEn;
+  return labMessages.get(locale);
 }

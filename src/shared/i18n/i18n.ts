@@ -1,31 +1,19 @@
 import type { Locale } from '../state/appState';
 import type { Messages } from './messages';
 import { messagesEn } from './messagesEn';
+import { messageModule } from './messageModule';
 
 /** Supported UI languages, English first (the default). */
 export const LOCALES: readonly Locale[] = ['en', 'zh-TW'];
 
-/** Message tables loaded so far: English is in the first load, other languages load on demand. */
-const loaded: Partial<Record<Locale, Messages>> = { en: messagesEn };
-
-/** How each language's table loads: one entry per Locale (a new language without one is a type error). */
-const LOADERS: Record<Locale, () => Promise<Messages>> = {
-  en: async () => messagesEn,
+/** The app's own strings: English in the first load, zh-TW a chunk of its own loaded on demand. */
+export const appMessages = messageModule<Messages>(messagesEn, {
   'zh-TW': () => import('./messagesZhTw').then((m) => m.messagesZhTw),
-};
+});
 
-/** The strings of one language, if loadMessages has loaded them; English until then (never undefined). */
+/** The app's strings in locale once loaded (loadLanguage), English until then (never undefined). */
 export function getMessages(locale: Locale): Messages {
-  return loaded[locale] ?? messagesEn;
-}
-
-/** Loads a language's strings (zh-TW is a separate chunk, so English users never download it); resolves to them. */
-export async function loadMessages(locale: Locale): Promise<Messages> {
-  const have = loaded[locale];
-  if (have) return have;
-  const messages = await LOADERS[locale]();
-  loaded[locale] = messages;
-  return messages;
+  return appMessages.get(locale);
 }
 
 /** Maps a BCP 47 tag to a supported locale: any Chinese tag but simplified ones gives zh-TW; null when unsupported. */

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { detectLocale, getMessages, loadMessages, matchLocale, parseLocale } from '../../../src/shared/i18n/i18n';
+import { detectLocale, getMessages, matchLocale, parseLocale } from '../../../src/shared/i18n/i18n';
+import { loadLanguage, messageModule } from '../../../src/shared/i18n/messageModule';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
 import { labMessagesFor } from '../../../src/features/lab/labMessages';
@@ -81,10 +82,35 @@ describe('detectLocale', () => {
   });
 });
 
-describe('loadMessages', () => {
+describe('loadLanguage', () => {
   it('serves English until zh-TW is loaded, then the zh-TW table', async () => {
     expect(getMessages('en').play).toBe('Play');
-    await loadMessages('zh-TW');
+    await loadLanguage('zh-TW');
     expect(getMessages('zh-TW').play).toBe('播放');
+  });
+});
+
+describe('messageModule', () => {
+  it('serves English until a language loads, then that table; bundled tables need no load', async () => {
+    const loads: string[] = [];
+    const lazy = messageModule(
+      { hello: 'hello' },
+      {
+        'zh-TW': async () => {
+          loads.push('zh-TW');
+          return { hello: '你好' };
+        },
+      },
+    );
+    const bundled = messageModule({ hello: 'hi' }, { 'zh-TW': { hello: '嗨' } });
+    expect(lazy.get('zh-TW').hello).toBe('hello');
+    expect(bundled.get('zh-TW').hello).toBe('嗨');
+    await loadLanguage('zh-TW');
+    expect(lazy.get('zh-TW').hello).toBe('你好');
+    expect(lazy.get('en').hello).toBe('hello');
+    // One load per language, however often it is asked for.
+    await loadLanguage('zh-TW');
+    await lazy.load('zh-TW');
+    expect(loads).toEqual(['zh-TW']);
   });
 });
