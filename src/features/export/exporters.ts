@@ -1,13 +1,11 @@
-import { drawAngleChart } from '../../shared/charts/theta2Chart';
-import type { AngleMarker } from '../../shared/charts/theta2Chart';
+import { angleSpec } from '../../shared/charts/theta2Chart';
 import { drawConvergenceChart } from '../../shared/charts/convergenceChart';
-import type { RateMarker } from '../../shared/charts/rateChart';
-import { drawRateChart } from '../../shared/charts/rateChart';
+import { rateSpec } from '../../shared/charts/rateChart';
+import type { ChartExport } from '../../shared/charts/exportChart';
+import { exportChart, specDrawing } from '../../shared/charts/exportChart';
 import { canvasToPngBytes, downloadCsv, downloadPng, downloadText } from '../../shared/canvas/download';
-import { detachedSvg } from '../../shared/canvas/svgContext';
 import { drawLinkage } from '../../shared/linkage/drawLinkage';
 import { withPngDpi } from '../../shared/canvas/png';
-import { svgToPngBytes, svgToText } from '../../shared/canvas/rasterize';
 import type { LinkageScene } from '../../shared/linkage/scene';
 import { SvgContext } from '../../shared/canvas/svgContext';
 import { fitView } from '../../shared/canvas/view';
@@ -23,12 +21,11 @@ import type { Messages } from '../../shared/i18n/messages';
 import { plotSeries } from '../../shared/jobs/plotSeries';
 import type { PointResponse, TableResponse } from '../../shared/jobs/protocol';
 import { decodeStatuses } from '../../shared/jobs/statusCodes';
-import type { AngleChartInputs, ConvergenceInputs, CycleDegrees } from '../../shared/charts/chartInputs';
+import type { CycleDegrees } from '../../shared/charts/chartInputs';
 import { angleChartInputs, angleMarker, convergenceInputs } from '../../shared/charts/chartInputs';
 import type { RateChartKind } from '../../shared/charts/rateInputs';
 import { plotRates, rateChartInputs, rateMarker } from '../../shared/charts/rateInputs';
 import type { ShownFrame } from '../../shared/linkage/shownFrame';
-import type { RateChartInputs } from '../../shared/charts/rateInputs';
 
 /** Logical (CSS pixel) size of exported angle and rate plots. */
 export const ANGLE_EXPORT_SIZE = { width: 640, height: 360 } as const;
@@ -65,45 +62,42 @@ export function rateExport(subject: 'omega' | 'alpha', frame: ShownFrame, t: Mes
   };
 }
 
+/** A plot subject (not the linkage) as a chart to export: drawn as on screen, at its export size. */
+export function plotExport(subject: Exclude<ExportSubject, 'linkage'>, c: ExportContext): ChartExport {
+  const { state: s, marker } = c.frame;
+  if (subject === 'convergence') {
+    const { runs, tolerance, ...text } = convergenceInputs(c.point, s.nrStart, c.t);
+    return {
+      ...CONVERGENCE_EXPORT_SIZE,
+      draw: (svg, width, height) => drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height }),
+    };
+  }
+  if (subject === 'omega' || subject === 'alpha') {
+    const { inputs, marker: at } = rateExport(subject, c.frame, c.t);
+    const { data, ...text } = inputs;
+    return { ...ANGLE_EXPORT_SIZE, draw: specDrawing(rateSpec, text, data, at) };
+  }
+  const { data, ...text } = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
+  return { ...ANGLE_EXPORT_SIZE, draw: specDrawing(angleSpec, text, data, angleMarker(subject, marker)) };
+}
+
 /** Builds and downloads the PNG of a subject at a size: the linkage as on screen, a plot at its export size. */
 export async function exportPng(subject: ExportSubject, size: PngSize, c: ExportContext): Promise<void> {
-  const { state: s, marker, scene } = c.frame;
-  let bytes: Uint8Array;
-  if (subject === 'linkage') {
-    bytes = await linkagePng(scene, s.view, c.canvasSize.width, c.canvasSize.height, size);
-  } else if (subject === 'convergence') {
-    const { width, height } = CONVERGENCE_EXPORT_SIZE;
-    bytes = await convergencePng(convergenceInputs(c.point, s.nrStart, c.t), width, height, size);
-  } else if (subject === 'omega' || subject === 'alpha') {
-    const { width, height } = ANGLE_EXPORT_SIZE;
-    const r = rateExport(subject, c.frame, c.t);
-    bytes = await rateChartPng(r.inputs, r.marker, width, height, size);
-  } else {
-    const { width, height } = ANGLE_EXPORT_SIZE;
-    const inputs = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
-    bytes = await angleChartPng(inputs, angleMarker(subject, marker), width, height, size);
-  }
+  const { state: s, scene } = c.frame;
+  const bytes =
+    subject === 'linkage'
+      ? await linkagePng(scene, s.view, c.canvasSize.width, c.canvasSize.height, size)
+      : await exportChart(plotExport(subject, c), size);
   downloadPng(bytes, pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size));
 }
 
 /** Builds and downloads the SVG of a subject (text as text). */
 export function exportSvg(subject: ExportSubject, c: ExportContext): void {
-  const { state: s, marker, scene } = c.frame;
-  let text: string;
-  if (subject === 'linkage') {
-    text = linkageSvg(scene, s.view, c.canvasSize.width, c.canvasSize.height);
-  } else if (subject === 'convergence') {
-    const { width, height } = CONVERGENCE_EXPORT_SIZE;
-    text = convergenceSvg(convergenceInputs(c.point, s.nrStart, c.t), width, height);
-  } else if (subject === 'omega' || subject === 'alpha') {
-    const { width, height } = ANGLE_EXPORT_SIZE;
-    const r = rateExport(subject, c.frame, c.t);
-    text = rateChartSvg(r.inputs, r.marker, width, height);
-  } else {
-    const { width, height } = ANGLE_EXPORT_SIZE;
-    const inputs = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
-    text = angleChartSvg(inputs, angleMarker(subject, marker), width, height);
-  }
+  const { state: s, scene } = c.frame;
+  const text =
+    subject === 'linkage'
+      ? linkageSvg(scene, s.view, c.canvasSize.width, c.canvasSize.height)
+      : exportChart(plotExport(subject, c), 'svg');
   downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
 }
 
@@ -149,79 +143,4 @@ export function linkageSvg(scene: LinkageScene, view: ViewOffset, width: number,
   const ctx = new SvgContext(width, height);
   drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
   return ctx.toSvg();
-}
-
-/** An angle chart drawn off screen at width x height CSS pixels, as SVG text (the chart's own SVG). */
-export function angleChartSvg(inputs: AngleChartInputs, marker: AngleMarker, width: number, height: number): string {
-  const svg = detachedSvg();
-  drawAngleChart(svg, inputs.data, marker, {
-    width,
-    height,
-    title: inputs.title,
-    xLabel: inputs.xLabel,
-    yLabel: inputs.yLabel,
-  });
-  return svgToText(svg);
-}
-
-/** A rate chart (ω or α against θ2) drawn off screen at width x height CSS pixels, as SVG text. */
-export function rateChartSvg(inputs: RateChartInputs, marker: RateMarker, width: number, height: number): string {
-  const svg = detachedSvg();
-  const { data, ...text } = inputs;
-  drawRateChart(svg, data, marker, { ...text, width, height });
-  return svgToText(svg);
-}
-
-/** The convergence chart drawn off screen at width x height CSS pixels, as SVG text. */
-export function convergenceSvg(inputs: ConvergenceInputs, width: number, height: number): string {
-  const svg = detachedSvg();
-  const { runs, tolerance, ...text } = inputs;
-  drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height });
-  return svgToText(svg);
-}
-
-/** Renders an angle chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
-export async function angleChartPng(
-  inputs: AngleChartInputs,
-  marker: AngleMarker,
-  width: number,
-  height: number,
-  size: PngSize,
-): Promise<Uint8Array> {
-  const svg = detachedSvg();
-  drawAngleChart(svg, inputs.data, marker, {
-    width,
-    height,
-    title: inputs.title,
-    xLabel: inputs.xLabel,
-    yLabel: inputs.yLabel,
-  });
-  return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
-}
-
-/** Renders a rate chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
-export async function rateChartPng(
-  inputs: RateChartInputs,
-  marker: RateMarker,
-  width: number,
-  height: number,
-  size: PngSize,
-): Promise<Uint8Array> {
-  const svg = detachedSvg();
-  const { data, ...text } = inputs;
-  drawRateChart(svg, data, marker, { ...text, width, height });
-  return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
-}
-
-/** Renders the convergence chart off screen at width x height CSS pixels and returns PNG bytes at the export size. */
-export async function convergencePng(
-  inputs: ConvergenceInputs,
-  width: number,
-  height: number,
-  size: PngSize,
-): Promise<Uint8Array> {
-  const svg = detachedSvg();
-  const { runs, tolerance, ...text } = inputs;
-  drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height });
-  return withPngDpi(await svgToPngBytes(svg, width, height, PNG_SCALE[size]), PNG_DPI[size]);
 }

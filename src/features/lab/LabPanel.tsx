@@ -17,7 +17,8 @@ import { labToCsv } from './labCsv';
 import { labProgressStatus } from './labStage';
 import type { SolverClient } from '../../shared/jobs/client';
 import { downloadPng, downloadText } from '../../shared/canvas/download';
-import { labPng, labSvg } from './labExport';
+import { labExport } from './labExport';
+import { exportChart } from '../../shared/charts/exportChart';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { labMessagesFor } from './labMessages';
 import { Segmented } from '../../shared/ui/Segmented';
@@ -114,7 +115,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
     setExportStatus('');
     try {
       const { width, height } = LAB_EXPORT_SIZE;
-      const bytes = await labPng(result.series, { ...chartOptions, width, height }, pngSize);
+      const bytes = await exportChart(labExport(result.series, { ...chartOptions, width, height }), pngSize);
       downloadPng(bytes, labFileName(result.linkage, result.branch, result.stepDeg, 'png', pngSize));
     } catch (e) {
       setExportStatus(t.exportFailed(e instanceof Error ? e.message : String(e)));
@@ -124,7 +125,7 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
     if (!result) return;
     const { width, height } = LAB_EXPORT_SIZE;
     downloadText(
-      labSvg(result.series, { ...chartOptions, width, height }),
+      exportChart(labExport(result.series, { ...chartOptions, width, height }), 'svg'),
       labSvgFileName(result.linkage, result.branch, result.stepDeg),
       'image/svg+xml;charset=utf-8',
     );

@@ -1,12 +1,10 @@
 import { quantileSorted } from 'd3-array';
-import type { Selection } from 'd3-selection';
-import type { AngleChartOptions, AngleChartSize, AngleFrame, Theta2Chart, Theta2ChartData } from './theta2Chart';
-import { createTheta2Chart, drawChart, plotIndices } from './theta2Chart';
-import { estimateTextWidth, minus } from './chartFrame';
-import { angleTicks, fittedTicks, tickCount } from './ticks';
-import type { ScaleLinear } from 'd3-scale';
 import { scaleLinear } from 'd3-scale';
-import { linePath } from './line';
+import type { ChartSpec, Frame, GSel } from './chart';
+import { createChart } from './chart';
+import { minus } from './chartFrame';
+import type { AngleChartOptions, Theta2Chart, Theta2ChartData } from './theta2Chart';
+import { NO_THETA2_DATA, solidMarker, theta2Frame } from './theta2Chart';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
 export interface RateSeries {
@@ -29,7 +27,7 @@ export interface RateMarker {
   values: number[];
 }
 
-/** A live rate chart: the angle chart's handle (createTheta2Chart) for rate curves. */
+/** A live rate chart: the θ2 chart's handle for rate curves. */
 export type RateChart = Theta2Chart<RateSeries, RateMarker>;
 
 /** Quantiles the clipped domain is built on, and how many of their spreads it may reach beyond them. */
@@ -107,52 +105,8 @@ export function clipMarks(
   return out;
 }
 
-/** The rate chart's scales and ticks: the angle chart's frame with a rate y scale. */
-type RateFrame = AngleFrame;
-
-function rateFrame(series: readonly RateSeries[], size: AngleChartSize): RateFrame {
-  const m = size.margins;
-  const iw = Math.max(10, size.width - m.left - m.right);
-  const ih = Math.max(10, size.height - m.top - m.bottom);
-  const xCount = Math.min(size.xMaxTicks, tickCount(iw, size.xTickSpacing));
-  const x = scaleLinear().domain([0, 360]).range([0, iw]);
-  const yCount = tickCount(ih, size.yTickSpacing);
-  const y = scaleLinear().domain(rateDomain(series, yCount)).range([ih, 0]);
-  const xTicks = fittedTicks(
-    (c) => angleTicks(0, 360, c),
-    x,
-    (t) => estimateTextWidth(`${t}`),
-    xCount,
-  );
-  return { iw, ih, x, y, xTicks, yTicks: y.ticks(yCount) };
-}
-
-/** Formats a y tick: d3's tick format for the domain, with a typographic minus. */
-function yTickFormat(y: ScaleLinear<number, number>, count: number): (d: number) => string {
-  const f = y.tickFormat(count);
-  return (d) => minus(f(d));
-}
-
-/** SVG path data of a rate curve in plot pixels: gaps where NaN, at most two samples per pixel. */
-function ratePath(values: ArrayLike<number>, theta2Deg: ArrayLike<number>, frame: RateFrame): string {
-  const { x, y } = frame;
-  const idx = plotIndices(values, Math.max(64, Math.round(2 * frame.iw)));
-  // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
-  return linePath(
-    idx,
-    (i) => x(theta2Deg[i]),
-    (i) => y(values[i]),
-    (i) => Number.isFinite(values[i]),
-    2,
-  );
-}
-
 /** A small triangle on the edge each solid curve leaves the plot through, pointing outwards (clipMarks). */
-function drawClipMarks(
-  g: Selection<SVGGElement, unknown, null, undefined>,
-  data: RateChartData,
-  frame: RateFrame,
-): void {
+function drawClipMarks(g: GSel, data: RateChartData, frame: Frame): void {
   const { x, ih } = frame;
   const domain = frame.y.domain() as [number, number];
   const marks = data.series
@@ -168,9 +122,29 @@ function drawClipMarks(
         ? `M${cx - 4},6L${cx + 4},6L${cx},0Z`
         : `M${cx - 4},${ih - 6}L${cx + 4},${ih - 6}L${cx},${ih}Z`;
     });
+  // e2e reads how many marks there are.
   const svg = g.node()?.ownerSVGElement;
   if (svg) svg.dataset.clipMarks = String(marks.length);
 }
+
+/**
+ * The rate chart as a spec of the θ2 chart: y from rateDomain with d3's ticks and tick format, curves clipped
+ * to the plot, a triangle where a solid curve leaves it (clipMarks), a dot on each solid curve.
+ */
+export const rateSpec: ChartSpec<RateChartData, RateMarker> = {
+  frame(data, plot) {
+    const domain = rateDomain(data.series, plot.yCount);
+    return theta2Frame(plot, { domain, ticks: scaleLinear().domain(domain).ticks(plot.yCount) });
+  },
+  yTickFormat(frame) {
+    const f = frame.y.tickFormat(frame.yTicks.length);
+    return (d) => minus(f(d));
+  },
+  curves: (data) => data.series.map((s) => ({ ...s, x: data.theta2Deg, y: s.values })),
+  marker: (m, data) => solidMarker(m.theta2Deg, m.values, data.series),
+  clipToPlot: true,
+  over: { className: 'clip-marks', draw: drawClipMarks },
+};
 
 /**
  * Creates a rate chart in svg: curves of ω or α against theta2 with axes, grid, legend and a current-theta2
@@ -178,21 +152,6 @@ function drawClipMarks(
  * plot and a small triangle marks each place a solid curve leaves it (clipMarks). Returns the handle.
  */
 export function createRateChart(svg: SVGSVGElement, options: RateChartOptions): RateChart {
-  return createTheta2Chart<RateSeries, RateMarker>(svg, options, {
-    frame: rateFrame,
-    yTickFormat: (frame) => yTickFormat(frame.y, frame.yTicks.length),
-    path: (series, theta2Deg, frame) => ratePath(series.values, theta2Deg, frame),
-    marker: (m) => ({ theta2Deg: m.theta2Deg, valuesDeg: m.values }),
-    clipped: drawClipMarks,
-  });
-}
-
-/** Draws a complete rate chart into svg in one call (the off-screen path of PNG and SVG export). */
-export function drawRateChart(
-  svg: SVGSVGElement,
-  data: RateChartData,
-  marker: RateMarker | null,
-  options: RateChartOptions,
-): RateChart {
-  return drawChart(createRateChart(svg, options), data, marker);
+  const { title, xLabel, yLabel, ...rest } = options;
+  return createChart(svg, rest, { title, xLabel, yLabel }, rateSpec, NO_THETA2_DATA);
 }

@@ -1,8 +1,11 @@
-import { describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { frameMotion } from '../../../src/shared/linkage/frameMotion';
 import { localPose } from '../../../src/shared/linkage/localPose';
 import type { ShownFrame } from '../../../src/shared/linkage/shownFrame';
-import { rateExport } from '../../../src/features/export/exporters';
+import { plotExport, rateExport } from '../../../src/features/export/exporters';
+import { exportChart } from '../../../src/shared/charts/exportChart';
+import { convergenceInputs } from '../../../src/shared/charts/chartInputs';
+import { installFakeSvgDom } from '../../shared/charts/fakeSvgDom';
 import { degToRad } from '../../../src/solver/angles';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { AppState } from '../../../src/shared/state/appState';
@@ -50,5 +53,35 @@ describe('rateExport', () => {
   it('draws the other branch faint when the ghost shows', () => {
     const { inputs } = rateExport('omega', frameOf({ ...DEFAULT_STATE, showGhost: true }), messagesEn);
     expect(inputs.data.series.map((s) => s.faint === true)).toEqual([true, false, true, false]);
+  });
+});
+
+describe('plotExport', () => {
+  let uninstall = () => {};
+  beforeAll(() => {
+    uninstall = installFakeSvgDom();
+  });
+  afterAll(() => uninstall());
+  const state: AppState = { ...DEFAULT_STATE, omega2RadPerS: 3, showGhost: false };
+  const context = { frame: frameOf(state), point: null, deg: null, t: messagesEn, canvasSize: { width: 0, height: 0 } };
+
+  it('exports ω3 and ω4 at 640 x 360 with its title and the marker at θ2 on both curves', () => {
+    const chart = plotExport('omega', context);
+    expect([chart.width, chart.height]).toEqual([640, 360]);
+    const svg = exportChart(chart, 'svg');
+    expect(svg).toContain('>ω3 and ω4 against θ2</text>');
+    expect(svg).toContain('>θ2 (°)</text>');
+    // Plot 640 - 50 - 14 = 576 px wide for 360 degrees.
+    const x1 = Number(/<line class="mline"[^>]* x1="([^"]+)"/.exec(svg)?.[1]);
+    expect(x1).toBeCloseTo((state.theta2Deg * 576) / 360, 9);
+    const dots = [...svg.matchAll(/<circle [^>]*cx="([^"]+)"/g)].map((m) => Number(m[1]));
+    expect(dots).toHaveLength(2);
+    dots.forEach((cx) => expect(cx).toBeCloseTo(x1, 9));
+  });
+
+  it('exports the convergence chart at its own size, with its title', () => {
+    const chart = plotExport('convergence', context);
+    expect([chart.width, chart.height]).toEqual([560, 340]);
+    expect(exportChart(chart, 'svg')).toContain(`>${convergenceInputs(null, state.nrStart, messagesEn).title}</text>`);
   });
 });

@@ -1,13 +1,25 @@
 import { describe, expect, it } from 'vitest';
+import type { AngleChartData, AngleSeries } from '../../../src/shared/charts/theta2Chart';
+import { angleSpec, angleYAxis } from '../../../src/shared/charts/theta2Chart';
+import type { ChartSizeOptions } from '../../../src/shared/charts/chart';
 import {
-  angleYAxis,
-  angleChartSize,
-  angleFrame,
-  markerGeometry,
+  chartFrame,
+  chartSize,
+  curvePath,
+  markerPlacement,
   plotIndices,
-  seriesPath,
   wrappedSegments,
-} from '../../../src/shared/charts/theta2Chart';
+} from '../../../src/shared/charts/chart';
+
+/** The angle chart's frame for these series at this size. */
+const angleFrame = (series: AngleSeries[], size: ChartSizeOptions) =>
+  chartFrame(angleSpec, { theta2Deg: [], series }, chartSize(size));
+/** The angle chart's marker placement for this marker over these series. */
+const markerGeometry = (
+  marker: { theta2Deg: number; valuesDeg: number[] },
+  series: AngleSeries[],
+  frame: ReturnType<typeof angleFrame>,
+) => markerPlacement(angleSpec.marker!(marker, { theta2Deg: [], series } as AngleChartData), frame);
 import { estimateTextWidth, minus } from '../../../src/shared/charts/chartFrame';
 import { FONT_SIZES } from '../../../src/shared/theme/tokens';
 
@@ -53,7 +65,7 @@ describe('angleFrame', () => {
   const full = [{ label: '', color: '', valuesDeg: [-179, 179] }];
   it('gives tick labels room at every width, phones included: no label runs into the next', () => {
     for (let width = 70; width <= 1600; width += 7) {
-      const f = angleFrame(full, angleChartSize({ width, height: 300 }));
+      const f = angleFrame(full, { width, height: 300 });
       const px = f.xTicks.map((t) => f.x(t));
       const w = f.xTicks.map((t) => estimateTextWidth(minus(`${t}`)));
       // Labels are centred on their ticks: the space between neighbours' edges must stay visible (4 px).
@@ -63,7 +75,7 @@ describe('angleFrame', () => {
       expect(f.xTicks.length, `width ${width}`).toBeGreaterThanOrEqual(width >= 160 ? 3 : 1);
     }
     for (let height = 120; height <= 900; height += 11) {
-      const f = angleFrame(full, angleChartSize({ width: 500, height }));
+      const f = angleFrame(full, { width: 500, height });
       const py = f.yTicks.map((t) => f.y(t));
       for (let i = 1; i < py.length; i++)
         expect(py[i - 1] - py[i], `height ${height}`).toBeGreaterThan(FONT_SIZES.chart + 3);
@@ -72,24 +84,21 @@ describe('angleFrame', () => {
   it('steps 60 degrees along theta2 from a phone-sized chart up to a wide export', () => {
     // Plot width = chart width - 64 px of margins: 60 degree steps from 160 px of plot width up.
     for (let width = 224; width <= 1600; width += 9) {
-      expect(angleFrame(full, angleChartSize({ width, height: 260 })).xTicks).toEqual([0, 60, 120, 180, 240, 300, 360]);
+      expect(angleFrame(full, { width, height: 260 }).xTicks).toEqual([0, 60, 120, 180, 240, 300, 360]);
     }
   });
   it('keeps the y ticks inside the domain, at its ends', () => {
-    const f = angleFrame([{ label: '', color: '', valuesDeg: [31, 79] }], angleChartSize({ width: 500, height: 300 }));
+    const f = angleFrame([{ label: '', color: '', valuesDeg: [31, 79] }], { width: 500, height: 300 });
     expect(f.yTicks[0]).toBe(f.y.domain()[0]);
     expect(f.yTicks[f.yTicks.length - 1]).toBe(f.y.domain()[1]);
   });
 });
 
-describe('seriesPath', () => {
+describe('curvePath', () => {
   it('leaves a gap where the linkage cannot assemble and never writes NaN', () => {
-    const f = angleFrame(
-      [{ label: '', color: '', valuesDeg: [-179, 179] }],
-      angleChartSize({ width: 400, height: 300 }),
-    );
+    const f = angleFrame([{ label: '', color: '', valuesDeg: [-179, 179] }], { width: 400, height: 300 });
     const theta2 = [0, 60, 120, 180, 240, 300, 360];
-    const d = seriesPath(theta2, [10, 20, Number.NaN, Number.NaN, 40, 50, 60], f);
+    const d = curvePath({ x: theta2, y: [10, 20, Number.NaN, Number.NaN, 40, 50, 60], wrapped: true }, f);
     expect(d).not.toContain('NaN');
     expect(d.match(/M/g)).toHaveLength(2);
     // The path starts at the first sample on the chart's scales (the path keeps hundredths of a pixel: within 0.005 px).
@@ -99,12 +108,12 @@ describe('seriesPath', () => {
   });
 });
 
-describe('markerGeometry', () => {
+describe('markerPlacement (angle spec)', () => {
   const series = [
     { label: 'a', color: 'faint', valuesDeg: [0], faint: true },
     { label: 'b', color: 'solid', valuesDeg: [0] },
   ];
-  const f = angleFrame([{ label: '', color: '', valuesDeg: [-179, 179] }], angleChartSize({ width: 400, height: 300 }));
+  const f = angleFrame([{ label: '', color: '', valuesDeg: [-179, 179] }], { width: 400, height: 300 });
   it('puts a dot on each solid series at the scales of theta2 and its value', () => {
     const g = markerGeometry({ theta2Deg: 90, valuesDeg: [45] }, series, f);
     expect(g.x).toBe(f.x(90));
@@ -112,9 +121,9 @@ describe('markerGeometry', () => {
   });
   it('hides the marker without theta2 and drops values that are gaps or outside the plot', () => {
     expect(markerGeometry({ theta2Deg: Number.NaN, valuesDeg: [1] }, series, f)).toEqual({ x: null, dots: [] });
-    expect(markerGeometry(null, series, f).x).toBeNull();
+    expect(markerPlacement(null, f).x).toBeNull();
     expect(markerGeometry({ theta2Deg: 10, valuesDeg: [Number.NaN] }, series, f).dots).toEqual([]);
-    const narrow = angleFrame([series[1]], angleChartSize({ width: 400, height: 300 }));
+    const narrow = angleFrame([series[1]], { width: 400, height: 300 });
     expect(markerGeometry({ theta2Deg: 10, valuesDeg: [170] }, series, narrow).dots).toEqual([]);
   });
 });

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { AngleSeries } from '../../../src/shared/charts/theta2Chart';
-import { angleChartSize, angleFrame, markerGeometry, seriesPath } from '../../../src/shared/charts/theta2Chart';
+import { angleSpec } from '../../../src/shared/charts/theta2Chart';
+import { chartFrame, chartSize, curvePath, markerPlacement } from '../../../src/shared/charts/chart';
 import type { AngleChartKind } from '../../../src/shared/charts/chartInputs';
 import {
   angleChartInputs,
@@ -202,16 +203,17 @@ function pathYAt(d: string, x: number): { y: number; bound: number } | null {
   return null;
 }
 
-describe('angle chart marker (angleChartInputs, angleMarker, markerGeometry)', () => {
-  const size = angleChartSize({ width: 560, height: 320 });
+describe('angle chart marker (angleChartInputs, angleMarker, angleSpec, markerPlacement)', () => {
+  const size = chartSize({ width: 560, height: 320 });
   for (const kind of ['theta3', 'theta4', 'both'] as AngleChartKind[]) {
     for (const branch of ['open', 'crossed'] as const) {
       it(`lies on its own curve in the ${kind} chart (${branch}, other branch shown)`, () => {
         const inputs = angleChartInputs(kind, plotDegrees(oraclePlot(CRANK_ROCKER)), branch, true, messagesEn);
         const series: AngleSeries[] = inputs.data.series;
-        const frame = angleFrame(series, size);
-        const paths = series.map((s) => seriesPath(inputs.data.theta2Deg, s.valuesDeg, frame));
-        const g = markerGeometry(angleMarker(kind, oraclePoint(CRANK_ROCKER, 123.4, branch)), series, frame);
+        const frame = chartFrame(angleSpec, inputs.data, size);
+        const paths = angleSpec.curves(inputs.data).map((c) => curvePath(c, frame));
+        const where = angleSpec.marker!(angleMarker(kind, oraclePoint(CRANK_ROCKER, 123.4, branch)), inputs.data);
+        const g = markerPlacement(where, frame);
         const solid = series.map((s, i) => ({ s, d: paths[i] })).filter((p) => !p.s.faint);
         expect(g.dots).toHaveLength(solid.length);
         expect(g.x).toBeCloseTo(frame.x(123.4), 9);

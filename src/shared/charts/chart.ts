@@ -1,0 +1,499 @@
+import { axisBottom, axisLeft } from 'd3-axis';
+import { select } from 'd3-selection';
+import type { Selection } from 'd3-selection';
+import type { ScaleLinear } from 'd3-scale';
+import type { LegendItem, Margins } from './chartFrame';
+import {
+  CHART_STYLE,
+  child,
+  drawChartText,
+  drawGridX,
+  drawGridY,
+  drawLegend,
+  minus,
+  prepareSvg,
+  styleAxis,
+} from './chartFrame';
+import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
+import { chartMarker } from './markerLayer';
+import type { XMark } from './xMarks';
+import { drawXMarks } from './xMarks';
+import { linePath } from './line';
+
+/**
+ * The chart kit's one skeleton: frame, axes, grid, x rules, curves with gaps, point marks, legend, texts,
+ * marker, resize and axis caching. A spec says what differs (scales, curves, layers, marker); the θ2
+ * charts (angle, rate, transmission) and the x–y chart are specs of it.
+ */
+
+/** A d3 group selection, as the layers draw into. */
+export type GSel = Selection<SVGGElement, unknown, null, undefined>;
+
+/** The SVG's defs as a d3 selection (clip paths go here). */
+export type DefsSel = Selection<SVGDefsElement, unknown, null, undefined>;
+
+/** One curve: y against x (same length; a NaN in either is a gap, never drawn as a zero). */
+export interface Curve {
+  label: string;
+  color: string;
+  x: ArrayLike<number>;
+  y: ArrayLike<number>;
+  /** Drawn thin and dashed: the other branch, for reference; default false. */
+  faint?: boolean;
+  /** Wrapped angle in degrees: at a jump over 180 the line runs to the +-180 edge and breaks; default false. */
+  wrapped?: boolean;
+  /** Draw the line; default true (false for point marks alone). */
+  line?: boolean;
+  /** A dot at every finite point (precision points, say); default false. */
+  dots?: boolean;
+  /** Class of its path (e2e and CSS read it); default none. */
+  className?: string;
+  /** Stroke width, CSS pixels; default 1.75 (1 when faint). */
+  strokeWidth?: number;
+  /** Id of a clipPath the line is drawn through; default none. */
+  clipId?: string;
+}
+
+/** The title and axis labels every chart has. */
+export interface ChartTexts {
+  title: string;
+  xLabel: string;
+  yLabel: string;
+}
+
+/** Size options of a chart; CSS pixels. */
+export interface ChartSizeOptions {
+  /** Chart width; 0 (not laid out yet) draws nothing until resize. */
+  width: number;
+  /** Chart height; 0 (not laid out yet) draws nothing until resize. */
+  height: number;
+  /** Default { top: 46, right: 14, bottom: 40, left: 50 }. */
+  margins?: Margins;
+  /** Pixels of plot width per x tick, at most xMaxTicks; default 40 (60 degree steps on θ2 from 160 px of plot up). */
+  xTickSpacing?: number;
+  /** Most x ticks asked of d3, so a wide chart keeps 60 degree steps on θ2; default 8. */
+  xMaxTicks?: number;
+  /** Pixels of plot height per y tick; default 34. */
+  yTickSpacing?: number;
+}
+
+/** Options every chart reads once at creation: its size, x rules and where the marker goes. */
+export interface ChartOptions extends ChartSizeOptions {
+  /** Faint vertical rules on the x axis (dead centres); default none. */
+  xMarks?: readonly XMark[];
+  /** A box laid over the SVG to draw the marker in (on screen: moving it repaints nothing); default inside the SVG. */
+  markerHost?: HTMLElement;
+}
+
+/** Size options with every default filled in (CSS pixels). */
+export type ChartSize = Required<ChartSizeOptions>;
+
+/** The plot area of a chart (pixels inside the margins) and the tick counts its size asks for. */
+export interface PlotArea {
+  iw: number;
+  ih: number;
+  /** About this many x ticks fit (tickCount of iw, at most xMaxTicks). */
+  xCount: number;
+  /** About this many y ticks fit. */
+  yCount: number;
+}
+
+/** The plot area, the scales (data to plot pixels) and the ticks of a chart. */
+export interface Frame {
+  iw: number;
+  ih: number;
+  x: ScaleLinear<number, number>;
+  y: ScaleLinear<number, number>;
+  xTicks: number[];
+  yTicks: number[];
+}
+
+/** The marker in data units: a vertical line at x and a dot at each y on it (NaN or outside the plot: no dot). */
+export interface MarkerAt {
+  x: number;
+  dots: readonly { y: number; color: string }[];
+}
+
+/** A group of the plot the spec draws itself: under the grid (a band) or over the curves (clip marks). */
+export interface ChartLayer<D> {
+  /** Class of the layer's group. */
+  className: string;
+  /** Draws the layer for these data in plot pixels; defs is the SVG's defs (for clip paths). */
+  draw(g: GSel, data: D, frame: Frame, defs: DefsSel): void;
+}
+
+/** What makes a chart an angle, rate, transmission or x–y chart; the skeleton does the rest. */
+export interface ChartSpec<D, M, T extends ChartTexts = ChartTexts> {
+  /** The scales and ticks for these data on this plot area (x, y and their ticks). */
+  frame(data: D, plot: PlotArea): Omit<Frame, 'iw' | 'ih'>;
+  /** The curves of these data. */
+  curves(data: D): Curve[];
+  /** x tick labels; default the number as d3 writes it, typographic minus. */
+  xTickFormat?: (frame: Frame) => (value: number) => string;
+  /** y tick labels; default the number as d3 writes it, typographic minus. */
+  yTickFormat?: (frame: Frame) => (value: number) => string;
+  /** The legend; default one entry per curve. */
+  legend?: (curves: readonly Curve[], text: T) => LegendItem[];
+  /** Where the marker goes, in data units (null hides it); default no marker. */
+  marker?: (marker: M, data: D) => MarkerAt | null;
+  /** Clip the curves' group to the plot (curves that run off a clipped y domain); default false. */
+  clipToPlot?: boolean;
+  /** Drawn under the grid. */
+  under?: ChartLayer<D>;
+  /** Drawn over the curves. */
+  over?: ChartLayer<D>;
+}
+
+/** A live chart; every method redraws only what its change touches. */
+export interface Chart<D, M, T extends ChartTexts = ChartTexts> {
+  /** Replaces the data; the axes are redrawn only when their domain, ticks or size change. */
+  update(data: D): void;
+  /** Moves the marker (null hides it); nothing else is redrawn. */
+  setMarker(marker: M | null): void;
+  /** Sets the chart size in CSS pixels; a no-op when unchanged. */
+  resize(width: number, height: number): void;
+  /** Sets the title, axis labels and legend texts; a no-op when unchanged. */
+  setText(text: T): void;
+  /** Replaces the faint x rules (dead centres); nothing else is redrawn. */
+  setXMarks(marks: readonly XMark[]): void;
+  /** Redraws what depends on the spec's own settings (the transmission band): layers, curves and marker. */
+  refresh(): void;
+  /** A copy of the x or the y scale (data to plot pixels). */
+  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
+}
+
+const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
+/** Dot radius of point marks, CSS pixels. */
+const DOT_R = 3;
+
+/** Fills in the documented defaults of the size options (negative sizes become 0). */
+export function chartSize(options: ChartSizeOptions): ChartSize {
+  return {
+    width: Math.max(0, options.width),
+    height: Math.max(0, options.height),
+    margins: options.margins ?? DEFAULT_MARGINS,
+    xTickSpacing: options.xTickSpacing ?? 40,
+    xMaxTicks: options.xMaxTicks ?? 8,
+    yTickSpacing: options.yTickSpacing ?? 34,
+  };
+}
+
+/** The plot area of a chart of this size: at least 10 px each way, and the tick counts that fit it. */
+export function plotArea(size: ChartSize): PlotArea {
+  const m = size.margins;
+  const iw = Math.max(10, size.width - m.left - m.right);
+  const ih = Math.max(10, size.height - m.top - m.bottom);
+  const xCount = Math.min(size.xMaxTicks, Math.max(2, Math.floor(iw / size.xTickSpacing)));
+  return { iw, ih, xCount, yCount: Math.max(2, Math.floor(ih / size.yTickSpacing)) };
+}
+
+/** The frame of a spec's data at a size: the plot area with the spec's scales and ticks. */
+export function chartFrame<D>(spec: Pick<ChartSpec<D, unknown>, 'frame'>, data: D, size: ChartSize): Frame {
+  const area = plotArea(size);
+  return { ...spec.frame(data, area), iw: area.iw, ih: area.ih };
+}
+
+/**
+ * Indices to plot when a curve has more samples than the chart has pixels: every k-th sample for at
+ * most maxPoints, plus the first and last sample of every defined run (so gaps start and end where
+ * they really do) and both samples around every jump over 180 (so a wrap's edge crossing is placed exactly).
+ */
+export function plotIndices(y: ArrayLike<number>, maxPoints: number): number[] {
+  const n = y.length;
+  const out: number[] = [];
+  if (n <= maxPoints) {
+    for (let i = 0; i < n; i++) out.push(i);
+    return out;
+  }
+  const stride = Math.ceil(n / Math.max(2, maxPoints));
+  for (let i = 0; i < n; i++) {
+    const v = y[i];
+    const fin = Number.isFinite(v);
+    const prevFin = i > 0 && Number.isFinite(y[i - 1]);
+    const nextFin = i < n - 1 && Number.isFinite(y[i + 1]);
+    const edge = fin && (!prevFin || !nextFin);
+    const wrap = fin && ((prevFin && Math.abs(v - y[i - 1]) > 180) || (nextFin && Math.abs(y[i + 1] - v) > 180));
+    if (i % stride === 0 || i === n - 1 || edge || wrap || (!fin && prevFin)) out.push(i);
+  }
+  return out;
+}
+
+/**
+ * Points of a wrapped angle curve ready for d3's line with defined(): NaN samples become gaps, and where
+ * the angle wraps between two samples (a jump of more than 180 degrees) the curve runs to the +-180 edge,
+ * breaks and continues from the opposite edge, so no vertical stroke crosses the plot.
+ */
+export function wrappedSegments(x: ArrayLike<number>, yDeg: ArrayLike<number>): [number, number][] {
+  const out: [number, number][] = [];
+  const n = Math.min(x.length, yDeg.length);
+  for (let i = 0; i < n; i++) {
+    const y = yDeg[i];
+    if (i > 0) {
+      const y0 = yDeg[i - 1];
+      if (Number.isFinite(y0) && Number.isFinite(y) && Math.abs(y - y0) > 180) {
+        const up = y < y0; // e.g. 179 -> -179: the unwrapped angle goes up through 180
+        const yUnwrapped = up ? y + 360 : y - 360;
+        const edge = up ? 180 : -180;
+        const f = (edge - y0) / (yUnwrapped - y0);
+        const xe = x[i - 1] + f * (x[i] - x[i - 1]);
+        out.push([xe, edge], [xe, Number.NaN], [xe, -edge]);
+      }
+    }
+    out.push([x[i], Number.isFinite(y) ? y : Number.NaN]);
+  }
+  return out;
+}
+
+/** SVG path data of a curve in plot pixels: gaps where x or y is NaN, breaks at wraps, at most two samples per pixel. */
+export function curvePath(curve: Pick<Curve, 'x' | 'y' | 'wrapped'>, frame: Pick<Frame, 'x' | 'y' | 'iw'>): string {
+  // At most two samples per horizontal pixel: n = 3600 on a 300 px chart would only cost time.
+  const idx = plotIndices(curve.y, Math.max(64, Math.round(2 * frame.iw)));
+  const xs = idx.map((i) => curve.x[i]);
+  const ys = idx.map((i) => curve.y[i]);
+  const pts: [number, number][] = curve.wrapped ? wrappedSegments(xs, ys) : xs.map((x, i) => [x, ys[i]]);
+  // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
+  return linePath(
+    pts,
+    (d) => frame.x(d[0]),
+    (d) => frame.y(d[1]),
+    (d) => Number.isFinite(d[0]) && Number.isFinite(d[1]),
+    2,
+  );
+}
+
+/** Where the marker goes in plot pixels: its line at x clamped to the x domain, a dot for each finite y in the y domain. */
+export function markerPlacement(at: MarkerAt | null, frame: Pick<Frame, 'x' | 'y'>): MarkerPlacement {
+  if (!at || !Number.isFinite(at.x)) return { x: null, dots: [] };
+  const [x0, x1] = frame.x.domain();
+  const cx = frame.x(Math.min(Math.max(x0, x1), Math.max(Math.min(x0, x1), at.x)));
+  const [y0, y1] = frame.y.domain();
+  const dots: MarkerDotPx[] = at.dots
+    .filter((d) => Number.isFinite(d.y) && d.y >= Math.min(y0, y1) && d.y <= Math.max(y0, y1))
+    .map((d) => ({ cx, cy: frame.y(d.y), color: d.color }));
+  return { x: cx, dots };
+}
+
+/** Plain number labels with a typographic minus. */
+const plainFormat = () => (d: number) => minus(`${d}`);
+
+/** True when the two texts have the same keys and values. */
+function sameText<T extends object>(a: T, b: T): boolean {
+  const ka = Object.keys(a) as (keyof T)[];
+  return ka.length === Object.keys(b).length && ka.every((k) => a[k] === b[k]);
+}
+
+/** Which optional parts a chart has: a clip of its curves to the plot, a layer under the grid, one over the curves. */
+interface PartsPlan {
+  clipToPlot?: boolean;
+  under?: { className: string };
+  over?: { className: string };
+}
+
+/** The parts of a chart's SVG, each created once in drawing order (background, defs, plot and its groups). */
+function chartParts(svg: SVGSVGElement, spec: PartsPlan, clipId: string) {
+  const s = select(svg);
+  child(s, 'rect', 'bg'); // first child, so the background stays under the plot
+  const defs = child(s, 'defs', 'defs');
+  const clipRect = spec.clipToPlot
+    ? child(child(defs, 'clipPath', 'clip').attr('id', clipId), 'rect', 'clip-rect')
+    : null;
+  const plot = child(s, 'g', 'plot');
+  const under = spec.under ? child(plot, 'g', spec.under.className) : null;
+  const gridX = child(plot, 'g', 'grid-x');
+  const gridY = child(plot, 'g', 'grid-y');
+  const ax = child(plot, 'g', 'axis-x');
+  const ay = child(plot, 'g', 'axis-y');
+  const marksG = child(plot, 'g', 'x-marks');
+  const lines = child(plot, 'g', 'lines');
+  if (spec.clipToPlot) lines.attr('clip-path', `url(#${clipId})`);
+  const dots = child(plot, 'g', 'dots');
+  const over = spec.over ? child(plot, 'g', spec.over.className) : null;
+  return { s, defs, clipRect, plot, under, gridX, gridY, ax, ay, marksG, lines, dots, over };
+}
+
+/** Draws the lines (one path per curve with a line) and the point marks (one circle per finite point). */
+function drawCurves(parts: ReturnType<typeof chartParts>, curves: readonly Curve[], frame: Frame): void {
+  parts.lines
+    .selectAll<SVGPathElement, Curve>('path')
+    .data(curves.filter((c) => c.line !== false))
+    .join('path')
+    .attr('class', (d) => d.className ?? null)
+    .attr('fill', 'none')
+    .attr('stroke', (d) => d.color)
+    .attr('stroke-width', (d) => d.strokeWidth ?? (d.faint ? 1 : 1.75))
+    .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
+    .attr('stroke-opacity', (d) => (d.faint ? 0.55 : 1))
+    .attr('stroke-linejoin', 'round')
+    .attr('clip-path', (d) => (d.clipId ? `url(#${d.clipId})` : null))
+    .attr('d', (d) => curvePath(d, frame));
+  const points = curves
+    .filter((c) => c.dots)
+    .flatMap((c) => {
+      const n = Math.min(c.x.length, c.y.length);
+      const out: { cx: number; cy: number; color: string }[] = [];
+      for (let i = 0; i < n; i++) {
+        if (Number.isFinite(c.x[i]) && Number.isFinite(c.y[i]))
+          out.push({ cx: frame.x(c.x[i]), cy: frame.y(c.y[i]), color: c.color });
+      }
+      return out;
+    });
+  parts.dots
+    .selectAll<SVGCircleElement, (typeof points)[number]>('circle')
+    .data(points)
+    .join('circle')
+    .attr('class', 'dot')
+    .attr('cx', (d) => d.cx)
+    .attr('cy', (d) => d.cy)
+    .attr('r', DOT_R)
+    .attr('fill', (d) => d.color)
+    .attr('stroke', CHART_STYLE.background)
+    .attr('stroke-width', 1);
+}
+
+let clipCounter = 0;
+
+/**
+ * Creates a chart in svg as the spec says (axes, grid, legend, x rules, curves, layers and a marker) and
+ * returns its handle; the scales live in the handle (scale()). Options are read once here; resize and
+ * setText change size and texts later. Draws nothing while width or height is 0.
+ */
+export function createChart<D, M, T extends ChartTexts>(
+  svg: SVGSVGElement,
+  options: ChartOptions,
+  initialText: T,
+  spec: ChartSpec<D, M, T>,
+  empty: D,
+): Chart<D, M, T> {
+  let size = chartSize(options);
+  let text: T = { ...initialText };
+  let data = empty;
+  let curves = spec.curves(data);
+  let marker: M | null = null;
+  let xMarks: readonly XMark[] = options.xMarks ?? [];
+  let frame = chartFrame(spec, data, size);
+  // What the axes and legend were last drawn for: they are redrawn only when this changes.
+  let xAxisKey = '';
+  let yAxisKey = '';
+  let legendKey = '';
+  const laidOut = () => size.width > 0 && size.height > 0;
+  // The id e2e reads on the rate chart's clipped lines.
+  const parts = chartParts(svg, spec, `theta2-clip-${++clipCounter}`);
+  const mark = chartMarker(parts.plot.node() as SVGGElement, options.markerHost);
+
+  const drawAxes = () => {
+    const { iw, ih, x, y, xTicks, yTicks } = frame;
+    parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
+    const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
+    if (xKey !== xAxisKey) {
+      xAxisKey = xKey;
+      drawGridX(parts.gridX, ih, xTicks, x);
+      const f = (spec.xTickFormat ?? plainFormat)(frame);
+      parts.ax.attr('transform', `translate(0,${ih})`).call(
+        axisBottom(x)
+          .tickValues(xTicks)
+          .tickFormat((d) => f(Number(d)))
+          .tickSizeOuter(0),
+      );
+      styleAxis(parts.ax);
+      drawXMarks(parts.marksG, xMarks, x, ih);
+    }
+    const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
+    if (yKey !== yAxisKey) {
+      yAxisKey = yKey;
+      drawGridY(parts.gridY, iw, yTicks, y);
+      const f = (spec.yTickFormat ?? plainFormat)(frame);
+      parts.ay.call(
+        axisLeft(y)
+          .tickValues(yTicks)
+          .tickFormat((d) => f(Number(d)))
+          .tickSizeOuter(0),
+      );
+      styleAxis(parts.ay);
+    }
+  };
+
+  const drawData = () => {
+    if (parts.under) spec.under?.draw(parts.under, data, frame, parts.defs);
+    drawCurves(parts, curves, frame);
+    if (parts.over) spec.over?.draw(parts.over, data, frame, parts.defs);
+  };
+
+  const drawLegendIfChanged = () => {
+    const items = spec.legend ? spec.legend(curves, text) : curves;
+    const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
+    if (key === legendKey) return;
+    legendKey = key;
+    drawLegend(parts.s, items, 14, 33);
+  };
+
+  const drawMarker = () => {
+    const { left, top } = size.margins;
+    const at = marker === null || !spec.marker ? null : spec.marker(marker, data);
+    mark.draw(markerPlacement(at, frame), { left, top, height: frame.ih }, size.width, size.height);
+  };
+
+  const drawText = () => {
+    const m = size.margins;
+    const yLabels = [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }];
+    drawChartText(
+      parts.s,
+      { title: text.title, xLabel: text.xLabel, yLabels },
+      m.left,
+      frame.iw,
+      size.width,
+      size.height,
+    );
+    drawLegendIfChanged();
+  };
+
+  const drawAll = () => {
+    if (!laidOut()) return;
+    prepareSvg(svg, size.width, size.height);
+    parts.plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
+    drawAxes();
+    drawData();
+    drawText();
+    drawMarker();
+  };
+
+  drawAll();
+  return {
+    update(next) {
+      data = next;
+      curves = spec.curves(data);
+      frame = chartFrame(spec, data, size);
+      if (!laidOut()) return;
+      drawAxes();
+      drawData();
+      drawLegendIfChanged();
+      drawMarker();
+    },
+    setMarker(next) {
+      marker = next;
+      if (laidOut()) drawMarker();
+    },
+    resize(width, height) {
+      if (width === size.width && height === size.height) return;
+      size = chartSize({ ...size, width, height });
+      frame = chartFrame(spec, data, size);
+      drawAll();
+    },
+    setText(next) {
+      if (sameText(next, text)) return;
+      text = { ...next };
+      if (laidOut()) drawText();
+    },
+    setXMarks(next) {
+      xMarks = next;
+      if (laidOut()) drawXMarks(parts.marksG, xMarks, frame.x, frame.ih);
+    },
+    refresh() {
+      if (!laidOut()) return;
+      drawData();
+      drawMarker();
+    },
+    scale(name) {
+      return (name === 'x' ? frame.x : frame.y).copy();
+    },
+  };
+}
