@@ -22,17 +22,16 @@ import { encodeStatuses } from '../shared/jobs/statusCodes';
 import type {
   BranchCycle,
   CouplerSpec,
-  CycleParams,
   CycleResponse,
   MethodChoice,
   NewtonSummary,
-  PointParams,
   TableMotion,
   PointResponse,
   PoseAngles,
   TableParams,
   TableResponse,
 } from '../shared/jobs/protocol';
+import type { CycleParams, PointParams } from '../features/simulator/jobs';
 
 /** Most intervals of the cycle's view grid (half a degree): enough for bounds and a smooth coupler curve on screen. */
 export const VIEW_SAMPLES_MAX = 720;

@@ -1,8 +1,8 @@
 /// <reference lib="webworker" />
-import { solverApi } from './api';
-import { expose } from '../shared/jobs/expose';
+import { serveJobs } from '../shared/jobs/jobExpose';
+import { solverHandlers } from './solverHandlers';
 
 declare const self: DedicatedWorkerGlobalScope;
 
-// The whole worker: serve the one API object (src/workers/api.ts) to the client (src/shared/jobs/client.ts).
-expose(solverApi, self);
+// The whole worker: serve every feature's solver jobs (solverHandlers.ts) to the client (solverClient.ts).
+serveJobs(solverHandlers, self);

@@ -6,8 +6,8 @@ import type { ExportSubject, PngSize } from '../../shared/fileNames';
 import { degToRad } from '../../solver/angles';
 import { effectiveInputMotion } from '../../shared/state/inputMotion';
 import type { Messages } from '../../shared/i18n/messages';
-import type { SolverClient } from '../../shared/jobs/client';
-import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
+import type { JobRunner } from '../../shared/jobs/jobClient';
+import type { CycleResponse, PointResponse, TableJobs } from '../../shared/jobs/protocol';
 import type { AnimationRequest } from './animationExporter';
 import type { ExportContext } from './exporters';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
@@ -22,7 +22,7 @@ export interface ExportSources {
   shown: () => ShownFrame | null;
   cycle: CycleResponse | null;
   /** The solver client: the CSV asks it for the full n-point table (the cycle is solved at view resolution). */
-  client: SolverClient | null;
+  client: JobRunner<TableJobs> | null;
   deg: CycleDegrees | null;
   t: Messages;
 }
@@ -107,10 +107,11 @@ export function useExports(sources: ExportSources): Exports {
     };
     const [{ exportCsv }, tbl] = await Promise.all([
       import('./exporters'),
-      client.table(
+      client.run(
+        'table',
         { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol }, motion },
-        'export',
-      ),
+        { channel: 'export' },
+      ).result,
     ]);
     // A newer export request superseded this one: it downloads instead.
     if (tbl) exportCsv(tbl);

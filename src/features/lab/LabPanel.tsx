@@ -15,7 +15,8 @@ import { formatDeg, formatSci } from '../../shared/format';
 import { HARD_CASES } from './hardCases';
 import { labToCsv } from './labCsv';
 import { labProgressStatus } from './labStage';
-import type { SolverClient } from '../../shared/jobs/client';
+import type { JobRunner } from '../../shared/jobs/jobClient';
+import type { LabJobs } from './jobs';
 import { downloadPng, downloadText } from '../../shared/canvas/download';
 import { labExport } from './labExport';
 import { exportChart } from '../../shared/charts/exportChart';
@@ -27,7 +28,7 @@ import { useLab } from './useLab';
 
 /** Props of LabPanel: the solver client, the app state and its dispatch. */
 export interface LabPanelProps {
-  client: SolverClient | null;
+  client: JobRunner<LabJobs> | null;
   state: AppState;
   dispatch: Dispatch<Action>;
 }

@@ -1,7 +1,8 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
 import type { LabResult } from '../../study/workPrecision';
 import type { Branch, Linkage } from '../../solver/types';
-import type { SolverClient } from '../../shared/jobs/client';
+import type { JobRunner } from '../../shared/jobs/jobClient';
+import type { LabJobs } from './jobs';
 
 /** State of the solver lab's study: the last finished result, and progress while one runs. */
 export interface LabState {
@@ -22,7 +23,7 @@ const DEBOUNCE_MS = 350;
  * the last finished result stays while a new one runs or after a cancel.
  */
 export function useLab(
-  client: SolverClient | null,
+  client: JobRunner<LabJobs> | null,
   linkage: Linkage,
   branch: Branch,
   stepDeg: number,
@@ -46,9 +47,15 @@ export function useLab(
     setState((s) => ({ ...s, running: true, progress: { fraction: 0, stage: '' }, cancelled: false, error: null }));
     const token = { cancel: () => undefined as void };
     jobRef.current = token;
-    const job = client.lab({ linkage: { r1, r2, r3, r4 }, branch, stepDeg }, (fraction, stage) => {
-      if (jobRef.current === token) setState((s) => ({ ...s, progress: { fraction, stage } }));
-    });
+    const job = client.run(
+      'lab',
+      { linkage: { r1, r2, r3, r4 }, branch, stepDeg },
+      {
+        onProgress: (fraction, stage) => {
+          if (jobRef.current === token) setState((s) => ({ ...s, progress: { fraction, stage } }));
+        },
+      },
+    );
     token.cancel = job.cancel;
     const finish = (next: (s: LabState) => LabState) => {
       if (jobRef.current !== token) return;

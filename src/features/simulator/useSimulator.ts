@@ -2,11 +2,12 @@ import { useMemo, useReducer } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
 import { reducer } from '../../shared/state/appState';
-import type { SolverClient, SolverMode, SolverModeReason } from '../../shared/jobs/client';
+import type { JobClientMode as SolverMode, JobClientModeReason as SolverModeReason } from '../../shared/jobs/jobClient';
+import type { SolverClient } from '../../workers/solverClient';
 import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
 import type { SolvedPlot } from './usePlotSeries';
 import { usePlotSeries } from './usePlotSeries';
-import { useCycle, usePoint, useSolverClient } from '../../shared/jobs/useSolver';
+import { useCycle, usePoint, useSolverClient } from './useSolver';
 import { useThrottledValue } from '../../shared/hooks/useThrottledValue';
 
 /** How often the worker's pose answer follows a dragged length or coupler point, ms. */

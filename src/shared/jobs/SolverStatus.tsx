@@ -1,11 +1,11 @@
-import type { SolverMode, SolverModeReason } from './client';
+import type { JobClientMode, JobClientModeReason } from './jobClient';
 import { useMessages } from '../i18n/MessagesContext';
 import { solverStatusText } from './useSolver';
 
 /** Props of SolverStatus: where the solver runs and why it left the worker. */
 export interface SolverStatusProps {
-  mode: SolverMode;
-  reason: SolverModeReason | null;
+  mode: JobClientMode;
+  reason: JobClientModeReason | null;
 }
 
 /** A status line saying the worker was restarted or the solver runs on the main thread; nothing otherwise. */

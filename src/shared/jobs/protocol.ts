@@ -1,4 +1,10 @@
-import type { LabResult } from '../../study/workPrecision';
+/**
+ * The solver jobs' answers: what the worker sends back, read by several features (simulator, export) and kits
+ * (charts, linkage), so it lives here rather than in one feature. The requests and policies of the jobs are
+ * declared by their features (features/simulator/jobs.ts, features/lab/jobs.ts); only the table request is
+ * here too, because the export asks for the table as the simulator does.
+ */
+import type { JobSpec } from './jobTable';
 import type { InputMotion } from '../../solver/rates';
 import type {
   Angles,
@@ -28,34 +34,6 @@ export interface CouplerSpec {
   angleRad: number;
 }
 
-/** The cycle the view draws: classification, both branches on the view grid (NR statistics), coupler curves. */
-export interface CycleParams {
-  linkage: Linkage;
-  /** Intervals per cycle the user chose; the view grid has min(samples, VIEW_SAMPLES_MAX) of them. */
-  samples: number;
-  coupler: CouplerSpec;
-  solver: MethodChoice;
-  /** The branch the view shows; the other is swept only when otherBranch (ghost or plots show it) or the input rocks. */
-  branch: Branch;
-  otherBranch: boolean;
-  /** Coupler curves only when the trace is shown. */
-  curves: boolean;
-}
-
-/** One pose at theta2 (radians) on a branch, with NR runs from the continuation and cold starts. */
-export interface PointParams {
-  linkage: Linkage;
-  branch: Branch;
-  theta2Rad: number;
-  /** Step of the cycle (radians): the continuation start is the solution one step back. */
-  stepRad: number;
-  coupler: CouplerSpec;
-  solver: MethodChoice;
-  /** Solve the other branch (the ghost) only when it is drawn; run NR only when a panel shows it. */
-  ghost: boolean;
-  newton: boolean;
-}
-
 /** The full samples + 1 point table of one branch (the cycle CSV's columns and the cycle summary). */
 export interface TableParams {
   linkage: Linkage;
@@ -64,13 +42,6 @@ export interface TableParams {
   solver: MethodChoice;
   /** Rates, transmission angle and the coupler point's motion per row (the CSV export asks); absent or null: none. */
   motion?: { input: InputMotion; coupler: CouplerSpec } | null;
-}
-
-/** The solver lab's work-precision study of a linkage (long: progress messages, cancellable). */
-export interface LabParams {
-  linkage: Linkage;
-  branch: Branch;
-  stepDeg: number;
 }
 
 /** One branch of the swept view grid; angles in radians wrapped to (-pi, pi], NaN where status is not 'ok'. */
@@ -227,62 +198,7 @@ export interface TableMotion extends RateSeries {
   apy: Float64Array;
 }
 
-/** What a long call can do besides answering: report progress (fraction in [0, 1], stage) and see a cancel. */
-export interface TaskContext {
-  progress(fraction: number, stage: string): void;
-  cancelled(): boolean;
+/** The table job as a feature that only asks for tables sees it (the export's CSV, the cycle summary). */
+export interface TableJobs {
+  table: JobSpec<TableParams, TableResponse>;
 }
-
-/** The solver's one API object: the worker exposes it, and the main-thread fallback runs the same object. */
-export interface SolverApi {
-  cycle(params: CycleParams): CycleResponse;
-  point(params: PointParams): PointResponse;
-  table(params: TableParams): TableResponse;
-  /** Resolves to null when cancelled. */
-  lab(params: LabParams, task: TaskContext): Promise<LabResult | null>;
-}
-
-/** The API's method names: every request type but 'cancel'. */
-export type SolverMethod = keyof SolverApi;
-
-/** Parameters of a method. */
-export type ParamsOf<M extends SolverMethod> = Parameters<SolverApi[M]>[0];
-
-/** What a method answers (awaited). */
-export type ResultOf<M extends SolverMethod> = Awaited<ReturnType<SolverApi[M]>>;
-
-/** A call of one method: type is the method, params its only argument. */
-export type CallRequest = { [M in SolverMethod]: { type: M; id: number; params: ParamsOf<M> } }[SolverMethod];
-
-/** Cancel the call with this id (a running lab answers null at its next stage; others are ignored). */
-export interface CancelRequest {
-  type: 'cancel';
-  id: number;
-}
-
-/** Every request the main thread can send. */
-export type SolverRequest = CallRequest | CancelRequest;
-
-/** A method's answer: type is the method, value what it returned (its buffers transferred). */
-export type AnswerResponse = { [M in SolverMethod]: { type: M; id: number; value: ResultOf<M> } }[SolverMethod];
-
-/** Progress of a long call: fraction in [0, 1] and the stage being computed. */
-export interface ProgressResponse {
-  type: 'progress';
-  id: number;
-  fraction: number;
-  stage: string;
-}
-
-/** A call failed: the message names what was wrong; requestType is the request's own type as received. */
-export interface ErrorResponse {
-  type: 'error';
-  /** The request's id, or -1 when it had none. */
-  id: number;
-  /** The request's type ('unknown' when it had none), never a guess. */
-  requestType: string;
-  message: string;
-}
-
-/** Every message the worker can send. */
-export type SolverResponse = AnswerResponse | ProgressResponse | ErrorResponse;

@@ -1,155 +1,46 @@
-import { useEffect, useLayoutEffect, useState } from 'react';
-import { flushSync } from 'react-dom';
-// The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { degToRad } from '../../solver/angles';
+import { useEffect, useState } from 'react';
 import type { Branch, Linkage } from '../../solver/types';
-import type { CouplerPoint } from '../state/appState';
 import type { Messages } from '../i18n/messages';
 import { benchMark } from './benchMarks';
-import type { SolverMode, SolverModeReason } from './client';
-import { SolverClient } from './client';
-import type { CycleResponse, MethodChoice, PointResponse, TableResponse, WorkCount } from './protocol';
+import type { JobClient, JobClientMode, JobClientModeReason, JobRunner } from './jobClient';
+import type { JobTable } from './jobTable';
+import type { MethodChoice, TableJobs, TableResponse } from './protocol';
 
-/** The app's solver client, where it solves (worker, restarted worker or main thread) and why; client null until mounted. */
-export function useSolverClient(): { client: SolverClient | null; mode: SolverMode; reason: SolverModeReason | null } {
-  const [client, setClient] = useState<SolverClient | null>(null);
-  const [status, setStatus] = useState<{ mode: SolverMode; reason: SolverModeReason | null }>({
+/** A job client made by create() once mounted and disposed on unmount, where it runs and why; null until mounted. */
+export function useJobClient<T extends JobTable<T>>(
+  create: (options: {
+    onModeChange: (mode: JobClientMode, reason: JobClientModeReason | null, detail: string) => void;
+  }) => JobClient<T>,
+  name: string,
+): { client: JobClient<T> | null; mode: JobClientMode; reason: JobClientModeReason | null } {
+  const [client, setClient] = useState<JobClient<T> | null>(null);
+  const [status, setStatus] = useState<{ mode: JobClientMode; reason: JobClientModeReason | null }>({
     mode: 'starting',
     reason: null,
   });
   useEffect(() => {
-    const c = new SolverClient({
+    const c = create({
       onModeChange: (mode, reason, detail) => {
         setStatus({ mode, reason });
-        if (mode === 'restarted' || mode === 'main-thread') console.warn(`Solver: ${detail}; now ${mode}.`);
+        if (mode === 'restarted' || mode === 'main-thread') console.warn(`${name}: ${detail}; now ${mode}.`);
       },
     });
     setClient(c);
     setStatus({ mode: c.mode, reason: c.reason });
     return () => c.dispose();
-  }, []);
+  }, [create, name]);
   return { client, ...status };
 }
 
 /** The status line for a solver mode, or null when the first worker is (or is about to be) solving. */
 export function solverStatusText(
-  mode: SolverMode,
-  reason: SolverModeReason | null,
+  mode: JobClientMode,
+  reason: JobClientModeReason | null,
   t: Pick<Messages, 'solvingOnMainThread' | 'solverRestarted' | 'solverStoppedTwice'>,
 ): string | null {
   if (mode === 'restarted') return t.solverRestarted;
   if (mode === 'main-thread') return reason === 'stopped' ? t.solverStoppedTwice : t.solvingOnMainThread;
   return null;
-}
-
-/**
- * What the visible views need from the worker's cycle solve (anything not shown is not computed). The plots are
- * solved on the main thread (usePlotSeries).
- */
-export interface CycleNeeds {
-  solver: MethodChoice;
-  branch: Branch;
-  /** The other branch is drawn (ghost, faint plot lines). */
-  otherBranch: boolean;
-  /** The coupler trace is drawn. */
-  curves: boolean;
-}
-
-/**
- * The latest solved cycle (view resolution: NR statistics, coupler curves, classification) for these inputs (latest
- * wins while they change), and the last error.
- */
-export function useCycle(
-  client: SolverClient | null,
-  linkage: Linkage,
-  samples: number,
-  coupler: CouplerPoint,
-  needs: CycleNeeds,
-): { cycle: CycleResponse | null; error: string | null } {
-  const [cycle, setCycle] = useState<CycleResponse | null>(null);
-  const [error, setError] = useState<string | null>(null);
-  const { r1, r2, r3, r4 } = linkage;
-  const { distance, angleDeg } = coupler;
-  const { method, tol } = needs.solver;
-  // With both branches wanted the branch choice does not change the request: no re-solve on a branch switch.
-  const branch: Branch = needs.otherBranch ? 'open' : needs.branch;
-  const { otherBranch, curves } = needs;
-  // A layout effect posts the request before the browser paints: a passive effect would wait a frame.
-  useLayoutEffect(() => {
-    if (!client) return;
-    client
-      .cycle({
-        linkage: { r1, r2, r3, r4 },
-        samples,
-        coupler: { distance, angleRad: degToRad(angleDeg) },
-        solver: { method, tol },
-        branch,
-        otherBranch,
-        curves,
-      })
-      .then(
-        (r) => {
-          if (!r) return;
-          // Drawn as soon as it arrives, not after a scheduler task: a drag's plots follow within a frame.
-          flushSync(() => {
-            setCycle(r);
-            setError(null);
-          });
-          markWork('cycle', r.work, r.elapsedMs);
-        },
-        (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
-      );
-  }, [client, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves]);
-  return { cycle, error };
-}
-
-/** What the visible views need from a point solve. */
-export interface PointNeeds {
-  solver: MethodChoice;
-  /** The other branch's pose is drawn (the ghost). */
-  ghost: boolean;
-  /** A panel shows the NR runs (numbers panel or convergence plot). */
-  newton: boolean;
-}
-
-/** The latest solved pose at theta2 (degrees) on branch, with its NR runs (latest wins). */
-export function usePoint(
-  client: SolverClient | null,
-  linkage: Linkage,
-  branch: Branch,
-  theta2Deg: number,
-  samples: number,
-  coupler: CouplerPoint,
-  needs: PointNeeds,
-): PointResponse | null {
-  const [point, setPoint] = useState<PointResponse | null>(null);
-  const { r1, r2, r3, r4 } = linkage;
-  const { distance, angleDeg } = coupler;
-  const { method, tol } = needs.solver;
-  const { ghost, newton } = needs;
-  useLayoutEffect(() => {
-    if (!client) return;
-    client
-      .point({
-        linkage: { r1, r2, r3, r4 },
-        branch,
-        theta2Rad: degToRad(theta2Deg),
-        stepRad: degToRad(360 / samples),
-        coupler: { distance, angleRad: degToRad(angleDeg) },
-        solver: { method, tol },
-        ghost,
-        newton,
-      })
-      .then(
-        (r) => {
-          if (!r) return;
-          setPoint(r);
-          markWork('point', r.work);
-        },
-        (e: unknown) => console.warn(`Point solve failed: ${e instanceof Error ? e.message : String(e)}`),
-      );
-  }, [client, r1, r2, r3, r4, branch, theta2Deg, samples, distance, angleDeg, method, tol, ghost, newton]);
-  return point;
 }
 
 /** Wait after the last input change before the table is solved (ms): a drag solves only the view grid. */
@@ -160,7 +51,7 @@ const TABLE_DELAY_MS = 150;
  * and only while enabled; the last table stays meanwhile (check its linkage and samples). Latest wins.
  */
 export function useCycleTable(
-  client: SolverClient | null,
+  client: JobRunner<TableJobs> | null,
   linkage: Linkage,
   samples: number,
   branch: Branch,
@@ -173,11 +64,11 @@ export function useCycleTable(
   useEffect(() => {
     if (!client || !enabled) return;
     const id = setTimeout(() => {
-      client.table({ linkage: { r1, r2, r3, r4 }, samples, branch, solver: { method, tol } }).then(
+      client.run('table', { linkage: { r1, r2, r3, r4 }, samples, branch, solver: { method, tol } }).result.then(
         (r) => {
           if (!r) return;
           setTable(r);
-          markWork('table', r.work);
+          benchMark('fourbar:work:table', { ...r.work, elapsedMs: undefined });
         },
         (e: unknown) => console.warn(`Table solve failed: ${e instanceof Error ? e.message : String(e)}`),
       );
@@ -185,9 +76,4 @@ export function useCycleTable(
     return () => clearTimeout(id);
   }, [client, enabled, r1, r2, r3, r4, samples, branch, method, tol]);
   return table;
-}
-
-/** Records the solver work of an answer as a benchmark mark (read by npm run bench:ui; off in normal use). */
-function markWork(kind: 'cycle' | 'point' | 'table', work: WorkCount, elapsedMs?: number): void {
-  benchMark(`fourbar:work:${kind}`, { ...work, elapsedMs });
 }

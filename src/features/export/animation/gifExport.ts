@@ -1,7 +1,9 @@
-import type { GifWorkerLike } from './gifClient';
-import { GifChannelError, GifClient } from './gifClient';
+import type { WorkerLike } from '../../../shared/jobs/jobClient';
+import { JobClient } from '../../../shared/jobs/jobClient';
+import { createMainThreadWorker } from '../../../shared/jobs/mainThread';
 import { gifFrameDelaysCs } from './gifTiming';
-import type { GifWorkerResponse } from './gifProtocol';
+import type { GifJobs } from './gifJobs';
+import { gifJobs } from './gifJobs';
 import type { FrameSurface } from './frameSurface';
 import { createFrameSurface, drawFrame } from './frameSurface';
 import type { AnimationExportResult, ExportProgress, RenderFrame } from './types';
@@ -31,44 +33,34 @@ export interface GifExportOptions {
 /** Seams for tests and hosts: the drawing surface and the worker (null: encode on the main thread). */
 export interface GifExportEnv {
   createSurface?: (width: number, height: number) => FrameSurface;
-  createWorker?: () => GifWorkerLike | null;
+  createWorker?: () => WorkerLike | null;
 }
 
-function defaultWorker(): GifWorkerLike | null {
+/** Where a GIF was encoded. */
+export type GifEncoderPlace = 'worker' | 'main-thread';
+
+function defaultWorker(): WorkerLike | null {
   if (typeof Worker === 'undefined') return null;
   return new Worker(new URL('../../../workers/gif.worker.ts', import.meta.url), {
     type: 'module',
-  }) as unknown as GifWorkerLike;
+  }) as unknown as WorkerLike;
 }
 
 /**
- * A started encoder: in a module worker when one loads, else on the main thread. Only a failing channel
- * (the worker script did not load or crashed) falls back; an error answer from the encoder is thrown.
+ * The encoder's client: a module worker when one loads, else the main thread, loading the encoder (gifenc)
+ * there on demand. Never restarted: the worker holds the encode, so only a channel that fails (the worker did
+ * not load, or crashed) moves on to the main thread, resending what was in flight; an encoder error is thrown.
  */
-async function openEncoder(
-  begin: { width: number; height: number; loop: boolean; samples: ArrayBuffer[] },
-  env: GifExportEnv,
-): Promise<GifClient> {
-  let worker: GifWorkerLike | null = null;
-  try {
-    worker = (env.createWorker ?? defaultWorker)();
-  } catch {
-    worker = null;
-  }
-  if (worker) {
-    const client = GifClient.overWorker(worker);
-    try {
-      // The samples are copied, not transferred: the fallback may need them again.
-      await client.request({ type: 'begin', ...begin });
-      return client;
-    } catch (e) {
-      client.close();
-      if (!(e instanceof GifChannelError)) throw e;
-    }
-  }
-  const client = await GifClient.onMainThread();
-  await client.request({ type: 'begin', ...begin }, begin.samples);
-  return client;
+function openEncoder(env: GifExportEnv): JobClient<GifJobs> {
+  return new JobClient(gifJobs, {
+    createWorker: () => {
+      const worker = (env.createWorker ?? defaultWorker)();
+      if (!worker) throw new Error('no module worker here');
+      return worker;
+    },
+    createFallback: () => createMainThreadWorker(() => import('./gifSession').then((m) => m.createGifSession())),
+    restarts: 0,
+  });
 }
 
 /**
@@ -79,7 +71,7 @@ async function openEncoder(
 export async function exportGif(
   o: GifExportOptions,
   env: GifExportEnv = {},
-): Promise<AnimationExportResult & { encoder?: GifClient['place'] }> {
+): Promise<AnimationExportResult & { encoder?: GifEncoderPlace }> {
   const { frames, width, height, signal } = o;
   const n = frames.length;
   const cancelled = { status: 'cancelled' } as const;
@@ -93,12 +85,14 @@ export async function exportGif(
     samples.push(surface.readPixels().buffer as ArrayBuffer);
     if (signal?.aborted) return cancelled;
   }
-  const client = await openEncoder({ width, height, loop: o.loop, samples }, env);
-  const onAbort = () => client.close();
+  const client = openEncoder(env);
+  // Disposing resolves every pending call to null: the loop below then sees the abort and stops.
+  const onAbort = () => client.dispose();
   signal?.addEventListener('abort', onAbort, { once: true });
   try {
+    await client.run('begin', { width, height, loop: o.loop, samples }).result;
     const delays = gifFrameDelaysCs(n, o.fps);
-    const waiting: Promise<GifWorkerResponse>[] = [];
+    const waiting: Promise<unknown>[] = [];
     let done = 0;
     const report = () => o.onProgress?.({ framesDone: done, frameCount: n, fraction: done / n });
     const settleOne = async () => {
@@ -111,21 +105,22 @@ export async function exportGif(
       if (signal?.aborted) return cancelled;
       await draw(frames[k]);
       const rgba = surface.readPixels().buffer as ArrayBuffer;
-      const p = client.request({ type: 'frame', index: k, rgba, delayCs: delays[k] }, [rgba]);
-      // Marked handled now: after a cancel, answers still waiting here reject and nobody awaits them.
+      const p = client.run('frame', { index: k, rgba, delayCs: delays[k] }).result;
+      // Marked handled now: after a failure, answers still waiting here reject and nobody awaits them.
       p.catch(() => undefined);
       waiting.push(p);
       if (waiting.length >= FRAMES_IN_FLIGHT) await settleOne();
     }
     while (waiting.length > 0) await settleOne();
-    const last = await client.request({ type: 'finish' });
-    if (last.type !== 'done') throw new Error(`the GIF encoder answered ${last.type} to finish`);
-    return { status: 'done', blob: new Blob([last.bytes], { type: 'image/gif' }), encoder: client.place };
+    const last = await client.run('finish', {}).result;
+    if (!last || signal?.aborted) return cancelled;
+    const encoder: GifEncoderPlace = client.mode === 'main-thread' ? 'main-thread' : 'worker';
+    return { status: 'done', blob: new Blob([last.bytes], { type: 'image/gif' }), encoder };
   } catch (e) {
     if (signal?.aborted) return cancelled;
     throw e;
   } finally {
     signal?.removeEventListener('abort', onAbort);
-    client.close();
+    client.dispose();
   }
 }

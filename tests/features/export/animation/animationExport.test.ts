@@ -3,10 +3,10 @@ import { describe, expect, it } from 'vitest';
 import { exportAnimation } from '../../../../src/features/export/animation/animationExport';
 import type { AnimationFrame } from '../../../../src/features/export/animation/animationFrames';
 import { planAnimationFrames } from '../../../../src/features/export/animation/animationFrames';
-import type { GifWorkerLike } from '../../../../src/features/export/animation/gifClient';
+import type { WorkerLike } from '../../../../src/shared/jobs/jobClient';
+import { serveJobs } from '../../../../src/shared/jobs/jobExpose';
 import { FRAMES_IN_FLIGHT, PALETTE_SAMPLE_FRAMES } from '../../../../src/features/export/animation/gifExport';
 import { gifFrameDelaysCs } from '../../../../src/features/export/animation/gifTiming';
-import type { GifWorkerRequest, GifWorkerResponse } from '../../../../src/features/export/animation/gifProtocol';
 import { createGifSession } from '../../../../src/features/export/animation/gifSession';
 import type {
   AnimationExportOptions,
@@ -81,22 +81,45 @@ function pixel(rgba: Uint8ClampedArray, x: number, y: number): number[] {
   return [rgba[i], rgba[i + 1], rgba[i + 2]];
 }
 
-/** A fake worker that runs the real session, answering asynchronously as a worker would. */
-function fakeWorker(opts: { failOnLoad?: boolean; answer?: (r: GifWorkerResponse) => GifWorkerResponse } = {}) {
+/**
+ * A fake worker that serves the real session's jobs, answering asynchronously as a worker would (both directions
+ * cross a structured clone with their transfer lists). failOnLoad: an error event instead of any answer, as a
+ * script that did not load gives; failWith: the encoder throws that at begin.
+ */
+function fakeWorker(opts: { failOnLoad?: boolean; failWith?: string } = {}) {
   const listeners: Record<string, ((e: Event) => void)[]> = {};
   const session = createGifSession();
+  const failWith = opts.failWith;
+  const handlers = failWith
+    ? {
+        ...session,
+        begin: () => {
+          throw new Error(failWith);
+        },
+      }
+    : session;
+  let toHandlers: ((e: MessageEvent) => void) | null = null;
+  serveJobs(handlers, {
+    postMessage: (message, transfer) => {
+      const data = structuredClone(message, { transfer });
+      for (const l of listeners.message ?? []) l({ data } as MessageEvent);
+    },
+    addEventListener: (_type, l) => {
+      toHandlers = l;
+    },
+  });
   const log: string[] = [];
-  const w: GifWorkerLike & { log: string[] } = {
+  const w: WorkerLike & { log: string[] } = {
     log,
-    postMessage(req: GifWorkerRequest) {
-      log.push(req.type);
+    postMessage(req, transfer = []) {
+      log.push(req.type === 'run' ? req.job : req.type);
+      const data = structuredClone(req, { transfer });
       setTimeout(() => {
         if (opts.failOnLoad) {
           for (const l of listeners.error ?? []) l({ message: 'script failed to load' } as unknown as Event);
           return;
         }
-        const r = session.handle(req).response;
-        for (const l of listeners.message ?? []) l({ data: opts.answer ? opts.answer(r) : r } as MessageEvent);
+        toHandlers?.({ data } as MessageEvent);
       }, 0);
     },
     addEventListener(type, listener) {
@@ -197,7 +220,7 @@ describe('exportAnimation (GIF)', () => {
   });
 
   it('passes an encoder error on instead of retrying it elsewhere', async () => {
-    const w = fakeWorker({ answer: () => ({ type: 'error', message: 'out of memory' }) });
+    const w = fakeWorker({ failWith: 'out of memory' });
     await expect(
       exportAnimation(baseOptions(), { createSurface: createFakeSurface, createWorker: () => w }),
     ).rejects.toThrow('out of memory');

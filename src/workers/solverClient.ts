@@ -1,0 +1,39 @@
+import type { JobClientOptions, WorkerLike } from '../shared/jobs/jobClient';
+import { JobClient } from '../shared/jobs/jobClient';
+import { combineJobs } from '../shared/jobs/jobTable';
+import { createMainThreadWorker } from '../shared/jobs/mainThread';
+import { labJobs } from '../features/lab/jobs';
+import { simulatorJobs } from '../features/simulator/jobs';
+
+/** Every job of the solver worker: the simulator's and the lab's tables (the handlers are in solverHandlers.ts). */
+export const solverJobs = combineJobs(simulatorJobs, labJobs);
+
+/** The solver worker's job table. */
+export type SolverJobs = typeof solverJobs;
+
+/** The app's one solver client: the simulator's and the lab's jobs over the solver worker. */
+export type SolverClient = JobClient<SolverJobs>;
+
+/** Starts the module worker that serves solverHandlers (matched by scripts/viteInlineWorker.ts: keep it as is). */
+export function createSolverWorker(): WorkerLike {
+  const worker = new Worker(new URL('./solver.worker.ts', import.meta.url), { type: 'module' });
+  return worker as unknown as WorkerLike;
+}
+
+/** Serves the same handlers on the main thread, loaded on demand so the solver stays out of the main bundle. */
+export function createSolverFallback(): WorkerLike {
+  return createMainThreadWorker(() => import('./solverHandlers').then((m) => m.solverHandlers));
+}
+
+/**
+ * The solver client: the module worker, restarted once when it stops, then the main thread (options override
+ * the worker, the fallback, the watchdog and the mode callback, for tests and the status line).
+ */
+export function createSolverClient(options: Partial<JobClientOptions> = {}): SolverClient {
+  return new JobClient(solverJobs, {
+    createWorker: createSolverWorker,
+    createFallback: createSolverFallback,
+    restarts: 1,
+    ...options,
+  });
+}
