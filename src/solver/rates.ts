@@ -114,6 +114,11 @@ function exponentOf(x: number): number {
   return split(Math.abs(x)).e;
 }
 
+// Module-local copies of imports used per point: loaders that turn imports into getters (vite-node)
+// would otherwise call a getter on every read (as in sweep.ts).
+const SMALL_ANGLE = TWO_SUM_MAX_RAD;
+const reduce = reduceDifference;
+
 /** Scratch for reduceDifference. */
 const parts: AngleParts = { hi: 0, lo: 0 };
 
@@ -212,7 +217,7 @@ function ratesInto(p: RatePlan, m: MotionPlan, t2: number, t3: number, t4: numbe
   let aLo: number;
   let muHi: number;
   let muLo: number;
-  if (Math.abs(t2) <= TWO_SUM_MAX_RAD && Math.abs(t3) <= TWO_SUM_MAX_RAD && Math.abs(t4) <= TWO_SUM_MAX_RAD) {
+  if (Math.abs(t2) <= SMALL_ANGLE && Math.abs(t3) <= SMALL_ANGLE && Math.abs(t4) <= SMALL_ANGLE) {
     aHi = t2 - t3;
     const ab = aHi - t2;
     aLo = t2 - (aHi - ab) - (t3 + ab);
@@ -220,10 +225,10 @@ function ratesInto(p: RatePlan, m: MotionPlan, t2: number, t3: number, t4: numbe
     const mb = muHi - t4;
     muLo = t4 - (muHi - mb) - (t3 + mb);
   } else {
-    reduceDifference(t2, t3, parts);
+    reduce(t2, t3, parts);
     aHi = parts.hi;
     aLo = parts.lo;
-    reduceDifference(t4, t3, parts);
+    reduce(t4, t3, parts);
     muHi = parts.hi;
     muLo = parts.lo;
   }
