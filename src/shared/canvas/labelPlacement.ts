@@ -1,5 +1,5 @@
 import type { Px, ScreenRect } from './rect';
-import { rectAround, segmentHitsBox } from './rect';
+import { halfExtentAlong, rectAround, segmentHitsBox } from './rect';
 
 /**
  * Something a label had better not cover, with a weight: a box (a joint, a pivot) or a thick segment (a link).
@@ -113,4 +113,32 @@ export function placeLabels<Id extends string>(
     else dropped.push(req.id);
   }
   return { placed, dropped };
+}
+
+/**
+ * Candidate centres (CSS pixels) for a width x height label around p: the direction dir (a unit vector, screen
+ * y down) turned by each of rotationsRad in order, at each of gapsPx in order beyond clearancePx, so the box's
+ * near edge clears p by the gap whichever way it sits (halfExtentAlong). The first candidates are preferred.
+ */
+export function candidatesAround(
+  p: { x: number; y: number },
+  dir: { x: number; y: number },
+  rotationsRad: readonly number[],
+  gapsPx: readonly number[],
+  clearancePx: number,
+  width: number,
+  height: number,
+): { x: number; y: number }[] {
+  const out: { x: number; y: number }[] = [];
+  for (const gap of gapsPx) {
+    for (const rot of rotationsRad) {
+      const c = Math.cos(rot);
+      const s = Math.sin(rot);
+      const ux = dir.x * c - dir.y * s;
+      const uy = dir.x * s + dir.y * c;
+      const d = clearancePx + gap + halfExtentAlong(ux, uy, width, height);
+      out.push({ x: p.x + ux * d, y: p.y + uy * d });
+    }
+  }
+  return out;
 }

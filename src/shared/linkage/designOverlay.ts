@@ -12,6 +12,7 @@ import type { Linkage } from '../../solver/types';
 import { STROKES } from '../theme/tokens';
 import type { Px, ScreenRect } from '../canvas/rect';
 import { halfExtentAlong } from '../canvas/rect';
+import { candidatesAround } from '../canvas/labelPlacement';
 import type { SceneArc } from './sceneLayout';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
@@ -210,19 +211,13 @@ export function layoutDesign(
   return { deadCentres, swingArc, centres };
 }
 
-/** Label centres around a point: eight directions (up-right first) at growing gaps beyond a clearance. */
+/** Eight directions 45° apart: down-right on screen (y down) first, then turning counter-clockwise as seen. */
+const RING_ROTATIONS = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => (-k * TWO_PI) / 8);
+const RING_START = { x: Math.cos(-PI / 4), y: -Math.sin(-PI / 4) };
+
+/** Label centres around a point: eight directions at growing gaps beyond a clearance. */
 function ring(p: Px, clearance: number, width: number, height: number): Px[] {
-  const out: Px[] = [];
-  for (const gap of [3, 9, 18]) {
-    for (let k = 0; k < 8; k++) {
-      const phi = -PI / 4 + (k * TWO_PI) / 8;
-      const ux = Math.cos(phi);
-      const uy = Math.sin(phi) * -1;
-      const d = clearance + gap + halfExtentAlong(ux, uy, width, height);
-      out.push({ x: p.x + ux * d, y: p.y + uy * d });
-    }
-  }
-  return out;
+  return candidatesAround(p, RING_START, RING_ROTATIONS, [3, 9, 18], clearance, width, height);
 }
 
 /** The overlay's labels: the swing beside its arc, each centre beside its point or its edge marker. */

@@ -3,7 +3,7 @@ import { PI } from '../../solver/angles';
 import { FONT_SIZES, STROKES } from '../theme/tokens';
 import type { Obstacle } from '../canvas/labelPlacement';
 import type { Px, ScreenRect } from '../canvas/rect';
-import { halfExtentAlong } from '../canvas/rect';
+import { candidatesAround } from '../canvas/labelPlacement';
 import type { ScenePose } from './scene';
 import type { ExtraLabel, MeasureText, SceneExtras } from './sceneLayout';
 import { LABEL_PAD_Y } from './sceneLayout';
@@ -135,21 +135,12 @@ export interface VectorOverlay {
 /** Legend geometry (CSS pixels): margin from the canvas corner, padding, row height, gap between bar and text. */
 export const LEGEND = { margin: 8, pad: 6, rowPx: 16, gapPx: 6 } as const;
 
+/** Turns from an arrow's direction: straight beyond its tip first, then turning away either side. */
+const TIP_ROTATIONS = [0, 1, -1, 2, -2, 3, -3, 4, -4].map((k) => (k * PI) / 6);
+
 /** Centres around an arrow's tip: straight beyond it first, then turning away, at growing gaps. */
 function aroundTip(tip: Px, ux: number, uy: number, width: number, height: number): Px[] {
-  const out: Px[] = [];
-  for (const gap of [3, 9, 18]) {
-    for (const k of [0, 1, -1, 2, -2, 3, -3, 4, -4]) {
-      const rot = (k * PI) / 6;
-      const c = Math.cos(rot);
-      const s = Math.sin(rot);
-      const vx = ux * c - uy * s;
-      const vy = ux * s + uy * c;
-      const d = gap + halfExtentAlong(vx, vy, width, height);
-      out.push({ x: tip.x + vx * d, y: tip.y + vy * d });
-    }
-  }
-  return out;
+  return candidatesAround(tip, { x: ux, y: uy }, TIP_ROTATIONS, [3, 9, 18], 0, width, height);
 }
 
 /**

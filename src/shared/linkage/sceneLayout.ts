@@ -3,7 +3,7 @@ import { FONT_SIZES, STROKES } from '../theme/tokens';
 import type { DesignLayout } from './designOverlay';
 import { designLabels, layoutDesign, muOutsideBand } from './designOverlay';
 import type { LabelRequest, Obstacle } from '../canvas/labelPlacement';
-import { placeLabels } from '../canvas/labelPlacement';
+import { candidatesAround, placeLabels } from '../canvas/labelPlacement';
 import type { Px, ScreenRect } from '../canvas/rect';
 import { halfExtentAlong, rectAround } from '../canvas/rect';
 import type { LinkageScene, ScenePose } from './scene';
@@ -155,18 +155,7 @@ function awayFrom(p: Px, others: readonly Px[]): Px {
 
 /** Centres around a point: rotations of the preferred direction, at growing gaps beyond a clearance. */
 function aroundPoint(p: Px, preferred: Px, clearancePx: number, width: number, height: number): Px[] {
-  const out: Px[] = [];
-  for (const gap of [2, 7, 14, 24]) {
-    for (const rot of ROTATIONS) {
-      const c = Math.cos(rot);
-      const s = Math.sin(rot);
-      const ux = preferred.x * c - preferred.y * s;
-      const uy = preferred.x * s + preferred.y * c;
-      const d = clearancePx + gap + halfExtentAlong(ux, uy, width, height);
-      out.push({ x: p.x + ux * d, y: p.y + uy * d });
-    }
-  }
-  return out;
+  return candidatesAround(p, preferred, ROTATIONS, [2, 7, 14, 24], clearancePx, width, height);
 }
 
 /** Centres beside a segment: along it (middle first), on the preferred side first, at growing gaps. */
