@@ -1,5 +1,7 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLog } from 'd3-scale';
+import type { ScaleLogarithmic } from 'd3-scale';
+import type { Selection } from 'd3-selection';
 import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
@@ -325,23 +327,18 @@ function defaultTooltip(label: string, p: LabPoint, defaultTolText: string): str
   return `${label}\ntol ${formatTol(p.tol, defaultTolText)}\n${p.nsPerPoint.toFixed(0)} ns/pt\nmax error ${err} rad`;
 }
 
-/**
- * Draws (or redraws in place) the lab's work-precision diagram: median time per point (ns) against
- * max angle error (rad), both log scales. Each traced method is a line over its tolerances (loosest
- * first); a method's default is a diamond; red outlines mark configurations that failed, jumped
- * branch or falsely converged; NaN errors are skipped; errors below ERROR_FLOOR sit on the floor.
- */
-export function drawWorkPrecisionChart(
-  svg: SVGSVGElement,
-  series: readonly LabSeries[],
-  options: WorkPrecisionChartOptions,
-): void {
-  const { width, height } = options;
-  const s = prepareSvg(svg, width, height);
-  const labelOf = (sr: LabSeries) => options.methodLabels?.[sr.method] ?? sr.label;
-  const defaultTolText = options.defaultTolText ?? 'default';
-  const curves = series.map((sr) => ({ sr, ...orderedCurvePoints(sr) }));
+type Curve = { sr: LabSeries } & ReturnType<typeof orderedCurvePoints>;
+type G = Selection<SVGGElement, unknown, null, undefined>;
+type LogScale = ScaleLogarithmic<number, number>;
 
+/** Draws the legend (methods, then the diamond and red-outline keys when they apply); returns the plot margins it leaves. */
+function drawLegendAndMargins(
+  s: SvgSel,
+  series: readonly LabSeries[],
+  curves: readonly Curve[],
+  options: WorkPrecisionChartOptions,
+  labelOf: (sr: LabSeries) => string,
+): Margins {
   const legendItems: MethodLegendItem[] = curves.map((c) => ({
     label: labelOf(c.sr),
     color: METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted,
@@ -355,25 +352,23 @@ export function drawWorkPrecisionChart(
   if (options.failureLegend && anyTrouble) {
     legendItems.push({ label: options.failureLegend, color: FAILURE_COLOR, kind: 'failureKey' });
   }
-  const legendRows = drawMethodLegend(s, legendItems, 14, 33, width - 28);
-  const m: Margins = {
+  const legendRows = drawMethodLegend(s, legendItems, 14, 33, options.width - 28);
+  return {
     top: options.margins?.top ?? 33 + Math.max(0, legendRows - 1) * LEGEND_ROW + 22,
     right: options.margins?.right ?? 16,
     bottom: options.margins?.bottom ?? 40,
     left: options.margins?.left ?? 66,
   };
-  const iw = Math.max(10, width - m.left - m.right);
-  const ih = Math.max(10, height - m.top - m.bottom);
+}
 
-  const dom = workPrecisionDomains(series);
-  const x = scaleLog().domain(dom.x).range([0, iw]).clamp(true);
-  const y = scaleLog().domain(dom.y).range([ih, 0]).clamp(true);
-  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
-
-  const xTicks = logTicks(dom.x, tickCount(iw, 60));
-  const anyFloored = series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
-  const yTicks = logTicks(dom.y, tickCount(ih, 24), anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0);
-
+/** Draws the grid, the dashed error floor (when a point sits on it) and both log axes. */
+function drawAxesAndFloor(plot: G, x: LogScale, y: LogScale, iw: number, ih: number, anyFloored: boolean): void {
+  const xTicks = logTicks(x.domain() as [number, number], tickCount(iw, 60));
+  const yTicks = logTicks(
+    y.domain() as [number, number],
+    tickCount(ih, 24),
+    anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0,
+  );
   const grid = child(plot, 'g', 'grid');
   drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
   // The floor: everything at or below 1e-17 rad, exact answers included, is drawn on this dashed line.
@@ -388,7 +383,6 @@ export function drawWorkPrecisionChart(
     .attr('y2', (d) => y(d))
     .attr('stroke', CHART_STYLE.tolerance)
     .attr('stroke-dasharray', '3 3');
-
   const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
   ax.call(
     axisBottom(x)
@@ -407,40 +401,35 @@ export function drawWorkPrecisionChart(
       .tickSizeOuter(0),
   );
   styleAxis(ay);
+}
 
+/** The markers of every curve in plot pixels: its drawable traced points, then its default. */
+function curveMarkers(curves: readonly Curve[], x: LogScale, y: LogScale): Marker[] {
   const markers: Marker[] = [];
+  const at = (sr: LabSeries, point: LabPoint, isDefault: boolean, color: string): Marker => ({
+    series: sr,
+    point,
+    isDefault,
+    color,
+    x: x(point.nsPerPoint),
+    y: y(plottedError(point.maxError)),
+  });
   for (const c of curves) {
     const color = METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted;
-    for (const p of c.traced) {
-      if (isDrawable(p))
-        markers.push({
-          series: c.sr,
-          point: p,
-          isDefault: false,
-          color,
-          x: x(p.nsPerPoint),
-          y: y(plottedError(p.maxError)),
-        });
-    }
-    if (c.defaultPoint) {
-      const p = c.defaultPoint;
-      markers.push({
-        series: c.sr,
-        point: p,
-        isDefault: true,
-        color,
-        x: x(p.nsPerPoint),
-        y: y(plottedError(p.maxError)),
-      });
-    }
+    for (const p of c.traced) if (isDrawable(p)) markers.push(at(c.sr, p, false, color));
+    if (c.defaultPoint) markers.push(at(c.sr, c.defaultPoint, true, color));
   }
+  return markers;
+}
 
+/** Draws each traced method's line over its tolerances (gaps where a point is not drawable). */
+function drawCurves(plot: G, curves: readonly Curve[], x: LogScale, y: LogScale): void {
   const gen = line<LabPoint>()
     .defined((p) => isDrawable(p))
     .x((p) => x(p.nsPerPoint))
     .y((p) => y(plottedError(p.maxError)));
   child(plot, 'g', 'curves')
-    .selectAll<SVGPathElement, (typeof curves)[number]>('path')
+    .selectAll<SVGPathElement, Curve>('path')
     .data(curves.filter((c) => c.traced.length > 0))
     .join('path')
     .attr('fill', 'none')
@@ -449,11 +438,10 @@ export function drawWorkPrecisionChart(
     .attr('stroke-opacity', 0.85)
     .attr('stroke-linejoin', 'round')
     .attr('d', (c) => gen(c.traced) ?? '');
+}
 
-  const tip = (mk: Marker) =>
-    options.tooltip
-      ? options.tooltip(mk.series, mk.point)
-      : defaultTooltip(labelOf(mk.series), mk.point, defaultTolText);
+/** Draws the markers (dots, default diamonds, red outlines for trouble) with their tooltips. */
+function drawMarkers(plot: G, markers: readonly Marker[], tip: (mk: Marker) => string): void {
   // Defaults first so the smaller traced dots stay visible on top of a diamond they coincide with.
   const ordered = [...markers.filter((mk) => mk.isDefault), ...markers.filter((mk) => !mk.isDefault)];
   const marks = child(plot, 'g', 'markers')
@@ -472,9 +460,10 @@ export function drawWorkPrecisionChart(
     .attr('stroke', (mk) => (hasTrouble(mk.point) ? FAILURE_COLOR : CHART_STYLE.background))
     .attr('stroke-width', (mk) => (hasTrouble(mk.point) ? 2 : 1));
   marks.select('title').text(tip);
+}
 
-  const hl = options.highlight;
-  const chosen = hl ? markers.filter((mk) => mk.series.method === hl.method && mk.point.tol === hl.tol) : [];
+/** Rings the chosen markers. */
+function drawHighlight(plot: G, chosen: readonly Marker[]): void {
   child(plot, 'g', 'highlight')
     .selectAll<SVGCircleElement, Marker>('circle')
     .data(chosen)
@@ -486,13 +475,16 @@ export function drawWorkPrecisionChart(
     .attr('stroke', CHART_STYLE.marker)
     .attr('stroke-width', 2)
     .attr('pointer-events', 'none');
+}
 
+/** Labels traced markers with their tolerance where placeLabels finds room, the chosen ones first. */
+function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Marker[], iw: number, ih: number): void {
   const labelSize = 9.5;
   // The chosen point is labelled first so it is never the one crowded out.
-  const labelled =
-    options.tolLabels === false
-      ? []
-      : [...chosen.filter((mk) => !mk.isDefault), ...markers.filter((mk) => !mk.isDefault && !chosen.includes(mk))];
+  const labelled = [
+    ...chosen.filter((mk) => !mk.isDefault),
+    ...markers.filter((mk) => !mk.isDefault && !chosen.includes(mk)),
+  ];
   const texts = labelled.map((mk) => minus(formatTol(mk.point.tol)));
   const obstacles: LabelBox[] = markers.map((mk) => {
     const r = chosen.includes(mk) ? 11 : mk.isDefault ? 7 : 4;
@@ -524,6 +516,45 @@ export function drawWorkPrecisionChart(
     .attr('fill', (l) => l.mk.color)
     .attr('pointer-events', 'none')
     .text((l) => l.text);
+}
+
+/**
+ * Draws (or redraws in place) the lab's work-precision diagram: median time per point (ns) against
+ * max angle error (rad), both log scales. Each traced method is a line over its tolerances (loosest
+ * first); a method's default is a diamond; red outlines mark configurations that failed, jumped
+ * branch or falsely converged; NaN errors are skipped; errors below ERROR_FLOOR sit on the floor.
+ */
+export function drawWorkPrecisionChart(
+  svg: SVGSVGElement,
+  series: readonly LabSeries[],
+  options: WorkPrecisionChartOptions,
+): void {
+  const { width, height } = options;
+  const s = prepareSvg(svg, width, height);
+  const labelOf = (sr: LabSeries) => options.methodLabels?.[sr.method] ?? sr.label;
+  const defaultTolText = options.defaultTolText ?? 'default';
+  const curves: Curve[] = series.map((sr) => ({ sr, ...orderedCurvePoints(sr) }));
+  const m = drawLegendAndMargins(s, series, curves, options, labelOf);
+  const iw = Math.max(10, width - m.left - m.right);
+  const ih = Math.max(10, height - m.top - m.bottom);
+  const dom = workPrecisionDomains(series);
+  const x = scaleLog().domain(dom.x).range([0, iw]).clamp(true);
+  const y = scaleLog().domain(dom.y).range([ih, 0]).clamp(true);
+  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
+  const anyFloored = series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
+  drawAxesAndFloor(plot, x, y, iw, ih, anyFloored);
+
+  const markers = curveMarkers(curves, x, y);
+  drawCurves(plot, curves, x, y);
+  drawMarkers(plot, markers, (mk) =>
+    options.tooltip
+      ? options.tooltip(mk.series, mk.point)
+      : defaultTooltip(labelOf(mk.series), mk.point, defaultTolText),
+  );
+  const hl = options.highlight;
+  const chosen = hl ? markers.filter((mk) => mk.series.method === hl.method && mk.point.tol === hl.tol) : [];
+  drawHighlight(plot, chosen);
+  drawTolLabels(plot, options.tolLabels === false ? [] : markers, options.tolLabels === false ? [] : chosen, iw, ih);
 
   drawChartText(
     s,

@@ -311,8 +311,11 @@ function chartParts(svg: SVGSVGElement, spec: PartsPlan, clipId: string) {
   return { s, defs, clipRect, plot, under, gridX, gridY, ax, ay, marksG, lines, dots, over };
 }
 
+/** The groups of a chart's SVG. */
+type ChartParts = ReturnType<typeof chartParts>;
+
 /** Draws the lines (one path per curve with a line) and the point marks (one circle per finite point). */
-function drawCurves(parts: ReturnType<typeof chartParts>, curves: readonly Curve[], frame: Frame): void {
+function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: Frame): void {
   parts.lines
     .selectAll<SVGPathElement, Curve>('path')
     .data(curves.filter((c) => c.line !== false))
@@ -350,6 +353,47 @@ function drawCurves(parts: ReturnType<typeof chartParts>, curves: readonly Curve
     .attr('stroke-width', 1);
 }
 
+/** Draws the x axis, its grid and the x rules (the rules follow the x scale). */
+function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => string, xMarks: readonly XMark[]): void {
+  const { ih, x, xTicks } = frame;
+  drawGridX(parts.gridX, ih, xTicks, x);
+  parts.ax.attr('transform', `translate(0,${ih})`).call(
+    axisBottom(x)
+      .tickValues(xTicks)
+      .tickFormat((d) => format(Number(d)))
+      .tickSizeOuter(0),
+  );
+  styleAxis(parts.ax);
+  drawXMarks(parts.marksG, xMarks, x, ih);
+}
+
+/** Draws the y axis and its grid. */
+function drawYAxis(parts: ChartParts, frame: Frame, format: (v: number) => string): void {
+  const { iw, y, yTicks } = frame;
+  drawGridY(parts.gridY, iw, yTicks, y);
+  parts.ay.call(
+    axisLeft(y)
+      .tickValues(yTicks)
+      .tickFormat((d) => format(Number(d)))
+      .tickSizeOuter(0),
+  );
+  styleAxis(parts.ay);
+}
+
+/** Draws the title, the x label and the y label centred on the plot. */
+function drawTexts(parts: ChartParts, text: ChartTexts, frame: Frame, size: ChartSize): void {
+  const m = size.margins;
+  const yLabels = [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }];
+  drawChartText(
+    parts.s,
+    { title: text.title, xLabel: text.xLabel, yLabels },
+    m.left,
+    frame.iw,
+    size.width,
+    size.height,
+  );
+}
+
 let clipCounter = 0;
 
 /**
@@ -371,10 +415,8 @@ export function createChart<D, M, T extends ChartTexts>(
   let marker: M | null = null;
   let xMarks: readonly XMark[] = options.xMarks ?? [];
   let frame = chartFrame(spec, data, size);
-  // What the axes and legend were last drawn for: they are redrawn only when this changes.
-  let xAxisKey = '';
-  let yAxisKey = '';
-  let legendKey = '';
+  // What the axes and legend were last drawn for: each is redrawn only when its key changes.
+  const keys = { x: '', y: '', legend: '' };
   const laidOut = () => size.width > 0 && size.height > 0;
   // The id e2e reads on the rate chart's clipped lines.
   const parts = chartParts(svg, spec, `theta2-clip-${++clipCounter}`);
@@ -384,75 +426,35 @@ export function createChart<D, M, T extends ChartTexts>(
     const { iw, ih, x, y, xTicks, yTicks } = frame;
     parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
     const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
-    if (xKey !== xAxisKey) {
-      xAxisKey = xKey;
-      drawGridX(parts.gridX, ih, xTicks, x);
-      const f = (spec.xTickFormat ?? plainFormat)(frame);
-      parts.ax.attr('transform', `translate(0,${ih})`).call(
-        axisBottom(x)
-          .tickValues(xTicks)
-          .tickFormat((d) => f(Number(d)))
-          .tickSizeOuter(0),
-      );
-      styleAxis(parts.ax);
-      drawXMarks(parts.marksG, xMarks, x, ih);
-    }
+    if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame), xMarks);
     const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
-    if (yKey !== yAxisKey) {
-      yAxisKey = yKey;
-      drawGridY(parts.gridY, iw, yTicks, y);
-      const f = (spec.yTickFormat ?? plainFormat)(frame);
-      parts.ay.call(
-        axisLeft(y)
-          .tickValues(yTicks)
-          .tickFormat((d) => f(Number(d)))
-          .tickSizeOuter(0),
-      );
-      styleAxis(parts.ay);
-    }
+    if (yKey !== keys.y) drawYAxis(parts, frame, (spec.yTickFormat ?? plainFormat)(frame));
+    Object.assign(keys, { x: xKey, y: yKey });
   };
-
   const drawData = () => {
     if (parts.under) spec.under?.draw(parts.under, data, frame, parts.defs);
     drawCurves(parts, curves, frame);
     if (parts.over) spec.over?.draw(parts.over, data, frame, parts.defs);
   };
-
   const drawLegendIfChanged = () => {
     const items = spec.legend ? spec.legend(curves, text) : curves;
     const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-    if (key === legendKey) return;
-    legendKey = key;
-    drawLegend(parts.s, items, 14, 33);
+    if (key !== keys.legend) drawLegend(parts.s, items, 14, 33);
+    keys.legend = key;
   };
-
   const drawMarker = () => {
-    const { left, top } = size.margins;
     const at = marker === null || !spec.marker ? null : spec.marker(marker, data);
-    mark.draw(markerPlacement(at, frame), { left, top, height: frame.ih }, size.width, size.height);
+    const box = { left: size.margins.left, top: size.margins.top, height: frame.ih };
+    mark.draw(markerPlacement(at, frame), box, size.width, size.height);
   };
-
-  const drawText = () => {
-    const m = size.margins;
-    const yLabels = [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }];
-    drawChartText(
-      parts.s,
-      { title: text.title, xLabel: text.xLabel, yLabels },
-      m.left,
-      frame.iw,
-      size.width,
-      size.height,
-    );
-    drawLegendIfChanged();
-  };
-
   const drawAll = () => {
     if (!laidOut()) return;
     prepareSvg(svg, size.width, size.height);
     parts.plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
     drawAxes();
     drawData();
-    drawText();
+    drawTexts(parts, text, frame, size);
+    drawLegendIfChanged();
     drawMarker();
   };
 
@@ -481,7 +483,9 @@ export function createChart<D, M, T extends ChartTexts>(
     setText(next) {
       if (sameText(next, text)) return;
       text = { ...next };
-      if (laidOut()) drawText();
+      if (!laidOut()) return;
+      drawTexts(parts, text, frame, size);
+      drawLegendIfChanged();
     },
     setXMarks(next) {
       xMarks = next;
