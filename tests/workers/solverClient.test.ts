@@ -6,7 +6,7 @@ import { SOLVE_BUDGET, simulatorJobs } from '../../src/features/simulator/jobs';
 import { LAB_STAGE_MS, labJobs } from '../../src/features/lab/jobs';
 import type { LabJobs } from '../../src/features/lab/jobs';
 import { createSolverClient, solverJobs } from '../../src/workers/solverClient';
-import { solverHandlers } from '../../src/workers/solverHandlers';
+import { labHandlers, solverHandlers } from '../../src/workers/solverHandlers';
 import { FakeWorker } from '../shared/jobs/fakeWorker';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
@@ -93,6 +93,20 @@ describe('the solver client, latest wins', () => {
     await w.deliver();
     await Promise.all(all);
     expect(results.filter((r) => r !== null)).toEqual([0.1, 0.5]);
+    client.dispose();
+  });
+
+  it('delivers the cycle in flight too, then the newest: a drag’s plots follow while the worker catches up', async () => {
+    const w = new FakeWorker(solverHandlers);
+    const client = createSolverClient({ createWorker: () => w });
+    const first = client.run('cycle', CYCLE).result;
+    const skipped = client.run('cycle', { ...CYCLE, samples: 72 }).result;
+    const last = client.run('cycle', { ...CYCLE, samples: 90 }).result;
+    await w.deliver();
+    await w.deliver();
+    expect((await first)?.samples).toBe(36);
+    expect(await skipped).toBeNull();
+    expect((await last)?.samples).toBe(90);
     client.dispose();
   });
 
@@ -183,6 +197,22 @@ describe('the solver client, lab', () => {
     expect(await old.result).toBeNull();
     fresh.cancel();
     client.dispose();
+  });
+});
+
+describe('labHandlers', () => {
+  it('stops the real study when its signal is aborted: it answers null', async () => {
+    const ac = new AbortController();
+    const stages: string[] = [];
+    const result = labHandlers.lab(LAB, {
+      signal: ac.signal,
+      progress: (_f, stage) => {
+        stages.push(stage);
+        ac.abort();
+      },
+    });
+    expect(await result).toBeNull();
+    expect(stages.length).toBeGreaterThan(0);
   });
 });
 

@@ -105,6 +105,20 @@ describe('JobClient cancel and progress', () => {
     client.dispose();
   });
 
+  it('passes on no progress of a cancelled call that the worker has not yet seen cancelled', async () => {
+    const w = new FakeWorker(toyHandlers);
+    const { client } = setup([w]);
+    const seen: number[] = [];
+    const run = client.run('slow', { stages: 5 }, { onProgress: (f) => seen.push(f) });
+    await w.deliver();
+    expect(seen).toEqual([0]);
+    run.cancel();
+    // The cancel waits in the channel: the handler goes on reporting, and the client keeps it to itself.
+    await new Promise((r) => setTimeout(r, 20));
+    expect(seen).toEqual([0]);
+    client.dispose();
+  });
+
   it('a waiting call that is cancelled is never sent', async () => {
     const w = new FakeWorker(toyHandlers);
     const { client } = setup([w]);
@@ -188,6 +202,20 @@ describe('JobClient errors', () => {
     await expect(bad.result).rejects.toThrow(/echo could not be sent/);
     expect(await client.run('echo', { n: 2 }).result).toEqual({ n: 2 });
     client.dispose();
+  });
+});
+
+describe('createMainThreadWorker', () => {
+  it('answers in a later task, as a worker does, never inside postMessage', async () => {
+    const stand = createMainThreadWorker(async () => toyHandlers);
+    const got: unknown[] = [];
+    stand.addEventListener('message', (e) => got.push((e as MessageEvent).data));
+    await new Promise((r) => setTimeout(r, 0));
+    stand.postMessage({ type: 'run', id: 1, job: 'echo', params: { n: 1 } });
+    await flush();
+    expect(got).toEqual([]);
+    await vi.waitFor(() => expect(got).toEqual([{ type: 'result', id: 1, job: 'echo', value: { n: 1 } }]));
+    stand.terminate();
   });
 });
 

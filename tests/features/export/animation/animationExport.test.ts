@@ -129,7 +129,10 @@ function fakeWorker(opts: { failOnLoad?: boolean; failWith?: string } = {}) {
       log.push('terminate');
     },
   };
-  return w;
+  const crash = (message: string) => {
+    for (const l of listeners.error ?? []) l({ message } as unknown as Event);
+  };
+  return Object.assign(w, { crash });
 }
 
 describe('exportAnimation (GIF)', () => {
@@ -217,6 +220,26 @@ describe('exportAnimation (GIF)', () => {
       },
     });
     expect(r).toMatchObject({ status: 'done', encoder: 'main-thread' });
+  });
+
+  it('never starts a second worker for one encode when the first dies mid-way (it held the encode)', async () => {
+    let made = 0;
+    const w = fakeWorker();
+    const dying: WorkerLike = {
+      ...w,
+      postMessage(req, transfer) {
+        // The worker crashes at the third frame: an error event, as an out-of-memory worker gives.
+        if (req.type === 'run' && req.job === 'frame' && (req.params as { index: number }).index === 2)
+          w.crash('out of memory');
+        else w.postMessage(req, transfer);
+      },
+    };
+    const r = exportAnimation(baseOptions(), {
+      createSurface: createFakeSurface,
+      createWorker: () => (made++ === 0 ? dying : fakeWorker()),
+    });
+    await expect(r).rejects.toThrow(/frame came before begin/);
+    expect(made).toBe(1);
   });
 
   it('passes an encoder error on instead of retrying it elsewhere', async () => {
