@@ -96,8 +96,8 @@ export default tseslint.config(
         {
           patterns: [
             {
-              regex: `^(\\.\\./)+(${FEATURES.filter((f) => f !== feature).join('|')})(/|$)|(^|/)features/|(^|/)app(/|$)`,
-              message: `features/${feature} imports only shared kits, numerics and itself; features meet in src/app.`,
+              regex: `^(\\.\\./)+(${FEATURES.filter((f) => f !== feature).join('|')})(/|$)|(^|/)features/|(^|/)(app|workers)(/|$)`,
+              message: `features/${feature} imports only shared kits, numerics and itself; features and workers meet in src/app.`,
             },
           ],
         },

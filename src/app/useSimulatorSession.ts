@@ -4,7 +4,8 @@ import { Playhead } from '../shared/state/playhead';
 import { getMessages } from '../shared/i18n/i18n';
 import { deadCentreXMarks } from '../shared/charts/transmissionInputs';
 import { useShownFrame } from '../shared/linkage/useShownFrame';
-import { useCycleTable } from '../shared/jobs/useSolver';
+import { useCycleTable, useJobClient } from '../shared/jobs/useSolver';
+import { createSolverClient } from '../workers/solverClient';
 import { useAnimation } from '../features/simulator/useAnimation';
 import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
 import { useCycleFacts } from '../features/simulator/useCycleFacts';
@@ -27,8 +28,10 @@ export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
 export function useSimulatorSession(initial: AppState, shownFor: ShownFor, tableShown: boolean) {
   const { plotsRef, plotPixels } = usePlotPixels();
   const views = useCallback((s: AppState) => shownFor(s, plotPixels), [shownFor, plotPixels]);
-  const sim = useSimulator(initial, views);
-  const { state, dispatch, client, cycle, point, plot } = sim;
+  // The one solver client (every feature's solver jobs) is made here, where the features' job tables meet.
+  const { client, mode: solverMode, reason: solverReason } = useJobClient(createSolverClient, 'Solver');
+  const sim = useSimulator(initial, views, client);
+  const { state, dispatch, cycle, point, plot } = sim;
   const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, tableShown);
   const t = getMessages(state.locale);
@@ -45,6 +48,9 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   useDrawnMark('fourbar:plot-drawn', plot);
   return {
     ...sim,
+    client,
+    solverMode,
+    solverReason,
     ...facts,
     ...edits,
     ...exports,

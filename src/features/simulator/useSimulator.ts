@@ -2,12 +2,12 @@ import { useMemo, useReducer } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
 import { reducer } from '../../shared/state/appState';
-import type { JobClientMode as SolverMode, JobClientModeReason as SolverModeReason } from '../../shared/jobs/jobClient';
-import type { SolverClient } from '../../workers/solverClient';
+import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
 import type { SolvedPlot } from './usePlotSeries';
 import { usePlotSeries } from './usePlotSeries';
-import { useCycle, usePoint, useSolverClient } from './useSolver';
+import { useCycle, usePoint } from './useSolver';
+import type { SimulatorJobs } from './jobs';
 import { useThrottledValue } from '../../shared/hooks/useThrottledValue';
 
 /** How often the worker's pose answer follows a dragged length or coupler point, ms. */
@@ -23,14 +23,10 @@ export interface ShownViews {
   newton: boolean;
 }
 
-/** The simulator's state, its dispatcher, the solver client and the latest answers for the state. */
+/** The simulator's state, its dispatcher and the latest answers for the state. */
 export interface Simulator {
   state: AppState;
   dispatch: Dispatch<Action>;
-  client: SolverClient | null;
-  solverMode: SolverMode;
-  /** Why the solver left the worker (for the status line), null while it runs there. */
-  solverReason: SolverModeReason | null;
   cycle: CycleResponse | null;
   cycleError: string | null;
   point: PointResponse | null;
@@ -39,13 +35,17 @@ export interface Simulator {
 }
 
 /**
- * The simulator's state (the app reducer, starting from initial) and the solver's answers for it: the cycle
+ * The simulator's state (the app reducer, starting from initial) and the answers of the solver client (the
+ * simulator's jobs; null until it starts) for it: the cycle
  * and the point at theta2, requested for what shownFor(state) says is on screen (latest wins), and the plotted
  * cycle, solved on the main thread in the same render as the state.
  */
-export function useSimulator(initial: AppState, shownFor: (state: AppState) => ShownViews): Simulator {
+export function useSimulator(
+  initial: AppState,
+  shownFor: (state: AppState) => ShownViews,
+  client: JobRunner<SimulatorJobs> | null,
+): Simulator {
   const [state, dispatch] = useReducer(reducer, initial);
-  const { client, mode, reason } = useSolverClient();
   const { stage, plotPixels, newton } = shownFor(state);
   const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
   // Rates only for a visible rate plot, for ω2 as set: the plots flip ω3 and ω4 with the direction themselves.
@@ -75,5 +75,5 @@ export function useSimulator(initial: AppState, shownFor: (state: AppState) => S
   const pointLinkage = useThrottledValue(state.linkage, POINT_FOLLOW_MS);
   const pointCoupler = useThrottledValue(state.coupler, POINT_FOLLOW_MS);
   const point = usePoint(client, pointLinkage, state.branch, state.theta2Deg, state.samples, pointCoupler, pointNeeds);
-  return { state, dispatch, client, solverMode: mode, solverReason: reason, cycle, cycleError: error, point, plot };
+  return { state, dispatch, cycle, cycleError: error, point, plot };
 }

@@ -5,21 +5,9 @@ import { degToRad } from '../../solver/angles';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../../shared/state/appState';
 import { benchMark } from '../../shared/jobs/benchMarks';
-import type { JobClientMode, JobClientModeReason, JobRunner } from '../../shared/jobs/jobClient';
+import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { CycleResponse, MethodChoice, PointResponse, WorkCount } from '../../shared/jobs/protocol';
-import { useJobClient } from '../../shared/jobs/useSolver';
-import type { SolverClient } from '../../workers/solverClient';
-import { createSolverClient } from '../../workers/solverClient';
 import type { SimulatorJobs } from './jobs';
-
-/** The app's solver client (every feature's solver jobs), where it solves and why; client null until mounted. */
-export function useSolverClient(): {
-  client: SolverClient | null;
-  mode: JobClientMode;
-  reason: JobClientModeReason | null;
-} {
-  return useJobClient(createSolverClient, 'Solver');
-}
 
 /**
  * What the visible views need from the worker's cycle solve (anything not shown is not computed). The plots are
