@@ -3,13 +3,10 @@ import { useCallback, useState } from 'react';
 import type { AppState } from '../shared/state/appState';
 import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../shared/url/url';
 import { appUrl } from '../shared/url/url';
-import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
-import { AnglePlotsPanel } from '../features/simulator/PlotsPanel';
 import { ControlsPanel } from '../features/simulator/ControlsPanel';
 import type { EmbedBridge } from '../features/share/embedBridge';
 import { frameBridge } from '../features/share/embedBridge';
-import { DesignPanel } from '../features/simulator/DesignPanel';
-import { ExportPanel } from '../features/export/ExportPanel';
+import { EmbedPanels } from './EmbedPanels';
 import { LanguageSelect } from './LanguageSelect';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { LinkageStage } from '../features/simulator/LinkageStage';
@@ -21,7 +18,6 @@ import type { ShownFor } from './useSimulatorSession';
 import { useEmbedMessages } from '../features/share/useEmbedMessages';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
-import { SolverStatus } from '../shared/jobs/SolverStatus';
 
 /** Props of EmbedLayout: the state and the embed options (panels shown, parameters locked) parsed from the URL. */
 export interface EmbedLayoutProps {
@@ -62,9 +58,8 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
     [plotsShown, numbersShown],
   );
   const session = useSimulatorSession(initial.state, shownFor, numbersShown);
-  const { state, dispatch, solverMode, solverReason, cycle, cycleError, point, table, t } = session;
-  const { deg, rates, rocking, design, xMarks, playhead, onStep, onShown, plotsRef } = session;
-  const { onPng, onSvg, onCsv, onAnimation, onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
+  const { state, dispatch, cycle, point, t, rocking, design, playhead, onStep, onShown } = session;
+  const { onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
   const crankMovable = !embed.locked.includes('theta2');
   const couplerMovable = !embed.locked.includes('coupler');
   const shell = shellMessages(state.locale);
@@ -117,53 +112,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
                 </div>
               ) : null}
             </div>
-            {show('info') ? (
-              <section className="card embed-card">
-                <AnalysisPanel
-                  cycle={cycle}
-                  table={table}
-                  point={point}
-                  branch={state.branch}
-                  nrStart={state.nrStart}
-                />
-              </section>
-            ) : null}
-            {show('info') ? (
-              <section className="card embed-card" aria-label={t.sectionDesign}>
-                <DesignPanel
-                  design={design}
-                  muBandLoDeg={state.muBandLoDeg}
-                  muBandHiDeg={state.muBandHiDeg}
-                  dispatch={dispatch}
-                  theta2Locked={!crankMovable}
-                  compact
-                />
-              </section>
-            ) : null}
-            {show('plots') ? (
-              <section className="card embed-card embed-plots" ref={plotsRef}>
-                <AnglePlotsPanel
-                  deg={deg}
-                  showOther={state.showGhost}
-                  layout={state.plotLayout}
-                  dispatch={dispatch}
-                  xMarks={xMarks}
-                  kind={state.plotKind}
-                  rates={rates}
-                />
-              </section>
-            ) : null}
-            {show('export') ? (
-              <section className="card embed-card">
-                <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
-              </section>
-            ) : null}
-            <SolverStatus mode={solverMode} reason={solverReason} />
-            {cycleError ? (
-              <p className="note note-error" role="alert">
-                {cycleError}
-              </p>
-            ) : null}
+            <EmbedPanels session={session} show={show} theta2Locked={!crankMovable} />
           </main>
         </div>
       </FramePoseProvider>

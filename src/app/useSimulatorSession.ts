@@ -16,6 +16,9 @@ import { useSimulator } from '../features/simulator/useSimulator';
 import type { ShownViews } from '../features/simulator/useSimulator';
 import { useExports } from '../features/export/useExports';
 
+/** Everything useSimulatorSession gives a layout. */
+export type SimulatorSession = ReturnType<typeof useSimulatorSession>;
+
 /** Which views a layout shows for a state, given the plots card's device-pixel width (0 while it is hidden). */
 export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
 

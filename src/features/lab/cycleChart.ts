@@ -1,10 +1,11 @@
 import { axisBottom, axisLeft } from 'd3-axis';
-import type { ScaleContinuousNumeric } from 'd3-scale';
+import type { ScaleContinuousNumeric, ScaleLinear, ScaleLogarithmic } from 'd3-scale';
+import type { Selection } from 'd3-selection';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
-import type { Margins } from '../../shared/charts/chartFrame';
+import type { Margins, SvgSel } from '../../shared/charts/chartFrame';
 import {
   CHART_STYLE,
   child,
@@ -156,19 +157,25 @@ export function decadeLabels(ticks: readonly number[]): string[] {
   return exps.map((e) => (plain ? (e >= 0 ? String(dec(1, e)) : `0.${'0'.repeat(-e - 1)}1`) : minus(`1e${e}`)));
 }
 
-/**
- * Draws (or redraws in place) the lab's cycle chart: two panels over theta2 0..360 degrees sharing the
- * x axis, NR iterations per point for each method (step lines) on top and |det J| (log scale, gaps where
- * the linkage cannot assemble) below, with dashed grey input limits and an orange current-theta2 line.
- */
-export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options: CycleChartOptions): void {
+type G = Selection<SVGGElement, unknown, null, undefined>;
+
+/** Where the cycle chart's parts go (CSS pixels): margins, the plot's width, the two panels' heights and the gap. */
+interface CycleLayout {
+  m: Margins;
+  iw: number;
+  hTop: number;
+  hBot: number;
+  /** Top of the bottom panel, from the plot's top. */
+  yBot0: number;
+}
+
+/** Draws the method legend (its rows push the plot down) and splits the rest into the two panels. */
+function layoutCycleChart(s: SvgSel, data: CycleChartData, options: CycleChartOptions): CycleLayout {
   const { width, height } = options;
-  const s = prepareSvg(svg, width, height);
-  const labelOf = (it: CycleIterations) => options.methodLabels?.[it.method] ?? it.label;
   const legendRows = drawMethodLegend(
     s,
     data.iterations.map((it) => ({
-      label: labelOf(it),
+      label: options.methodLabels?.[it.method] ?? it.label,
       color: METHOD_COLORS[it.method] ?? CHART_STYLE.muted,
       kind: 'line',
     })),
@@ -187,7 +194,22 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   const ihAll = Math.max(30, height - m.top - m.bottom);
   const hTop = Math.max(10, Math.round((ihAll - gapPx) * 0.5));
   const hBot = Math.max(10, ihAll - gapPx - hTop);
-  const yBot0 = hTop + gapPx;
+  return { m, iw, hTop, hBot, yBot0: hTop + gapPx };
+}
+
+/** The cycle chart's scales and ticks: θ2 across, iterations up the top panel, |det J| (log) up the bottom one. */
+interface CycleScales {
+  x: ScaleLinear<number, number>;
+  xTicks: number[];
+  yIt: ScaleContinuousNumeric<number, number>;
+  itTicks: number[];
+  yDet: ScaleLogarithmic<number, number>;
+  detTicks: number[];
+  /** |det J| floor: zeros are drawn on it. */
+  d0: number;
+}
+
+function cycleScales(data: CycleChartData, { iw, hTop, hBot }: CycleLayout): CycleScales {
   const x = scaleLinear().domain([0, 360]).range([0, iw]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
@@ -195,8 +217,6 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
     (t) => estimateTextWidth(`${t}`),
     tickCount(iw, 60),
   );
-  const n = data.theta2Deg.length;
-
   const itMax = maxIterations(data.iterations);
   const itAll = iterationTicks(itMax, tickCount(hTop, 24));
   const itTop = itAll[itAll.length - 1];
@@ -204,73 +224,52 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   const yIt: ScaleContinuousNumeric<number, number> = (itMax > 20 ? scaleSymlog() : scaleLinear())
     .domain([0, itTop])
     .range([hTop, 4]);
-  const itTicks = spacedTicks(itAll, yIt, 13);
   const [d0, d1] = detJDomain(data.detJ);
   const yDet = scaleLog().domain([d0, d1]).range([hBot, 0]).clamp(true);
-  const detTicks = decadeTicks(d0, d1, tickCount(hBot, 18));
+  return {
+    x,
+    xTicks,
+    yIt,
+    itTicks: spacedTicks(itAll, yIt, 13),
+    yDet,
+    detTicks: decadeTicks(d0, d1, tickCount(hBot, 18)),
+    d0,
+  };
+}
 
-  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
-  const top = child(plot, 'g', 'panel-top');
-  const bot = child(plot, 'g', 'panel-bottom').attr('transform', `translate(0,${yBot0})`);
-
-  // Unassembled stretches: a light band in both panels explains the gaps.
-  const runs = unassembledRuns(data.theta2Deg, data.detJ);
-  for (const [panel, h] of [
-    [top, hTop],
-    [bot, hBot],
-  ] as const) {
-    child(panel, 'g', 'bands')
-      .selectAll<SVGRectElement, [number, number]>('rect')
-      .data(runs)
-      .join('rect')
-      .attr('x', (r) => x(r[0]))
-      .attr('width', (r) => Math.max(1, x(r[1]) - x(r[0])))
-      .attr('y', 0)
-      .attr('height', h)
-      .attr('fill', CHART_COLORS.unassembledBand);
-  }
-
-  const gridTop = child(top, 'g', 'grid');
-  drawGridLines(gridTop, iw, hTop, itTicks, yIt, xTicks, x);
-  const gridBot = child(bot, 'g', 'grid');
-  drawGridLines(gridBot, iw, hBot, detTicks, yDet, xTicks, x);
-
-  // The top panel shares the x axis: tick marks only, the numbers are under the bottom panel.
-  const axTop = child(top, 'g', 'axis-x').attr('transform', `translate(0,${hTop})`);
-  axTop.call(
-    axisBottom(x)
-      .tickValues(xTicks)
-      .tickFormat(() => '')
+/** One panel's grid, x axis (numbers only when showXNumbers: the panels share it) and y axis. */
+function drawPanelAxes(
+  panel: G,
+  iw: number,
+  h: number,
+  sc: Pick<CycleScales, 'x' | 'xTicks'>,
+  y: ScaleContinuousNumeric<number, number>,
+  yTicks: number[],
+  yFormat: (d: number, i: number) => string,
+  showXNumbers: boolean,
+): void {
+  drawGridLines(child(panel, 'g', 'grid'), iw, h, yTicks, y, sc.xTicks, sc.x);
+  const ax = child(panel, 'g', 'axis-x').attr('transform', `translate(0,${h})`);
+  ax.call(
+    axisBottom(sc.x)
+      .tickValues(sc.xTicks)
+      .tickFormat((d) => (showXNumbers ? `${d}` : ''))
       .tickSizeOuter(0),
   );
-  styleAxis(axTop);
-  const ayTop = child(top, 'g', 'axis-y');
-  ayTop.call(
-    axisLeft(yIt)
-      .tickValues(itTicks)
-      .tickFormat((d) => `${d}`)
+  styleAxis(ax);
+  const ay = child(panel, 'g', 'axis-y');
+  ay.call(
+    axisLeft(y)
+      .tickValues(yTicks)
+      .tickFormat((d, i) => yFormat(d as number, i))
       .tickSizeOuter(0),
   );
-  styleAxis(ayTop);
-  const axBot = child(bot, 'g', 'axis-x').attr('transform', `translate(0,${hBot})`);
-  axBot.call(
-    axisBottom(x)
-      .tickValues(xTicks)
-      .tickFormat((d) => `${d}`)
-      .tickSizeOuter(0),
-  );
-  styleAxis(axBot);
-  const ayBot = child(bot, 'g', 'axis-y');
-  const detLabels = decadeLabels(detTicks);
-  ayBot.call(
-    axisLeft(yDet)
-      .tickValues(detTicks)
-      .tickFormat((_d, i) => detLabels[i])
-      .tickSizeOuter(0),
-  );
-  styleAxis(ayBot);
+  styleAxis(ay);
+}
 
-  // Iterations: step lines centred on each sample; a negative count would be a gap.
+/** Iterations: step lines centred on each sample; a negative count is a gap. */
+function drawIterationLines(top: G, data: CycleChartData, { x, yIt }: CycleScales): void {
+  const n = data.theta2Deg.length;
   const nIt = data.iterations.length;
   child(top, 'g', 'lines')
     .selectAll<SVGPathElement, CycleIterations>('path')
@@ -291,44 +290,90 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
         .y((i) => yIt(d.iterations[i]) + dodge);
       return gen(idx) ?? '';
     });
+}
 
+/** |det J| on its log scale, gaps where it is not finite, zeros on the floor. */
+function drawDetJ(bot: G, data: CycleChartData, { x, yDet, d0 }: CycleScales): void {
   const detGen = line<number>()
     .defined((i) => Number.isFinite(data.detJ[i]))
     .x((i) => x(data.theta2Deg[i]))
     .y((i) => yDet(Math.max(d0, data.detJ[i])));
-  const detIdx = Array.from({ length: Math.min(n, data.detJ.length) }, (_v, i) => i);
+  const detIdx = Array.from({ length: Math.min(data.theta2Deg.length, data.detJ.length) }, (_v, i) => i);
   child(bot, 'path', 'detj')
     .attr('fill', 'none')
     .attr('stroke', CHART_STYLE.residual)
     .attr('stroke-width', 1.75)
     .attr('stroke-linejoin', 'round')
     .attr('d', detGen(detIdx) ?? '');
+}
 
-  // Markers over both panels: input limits (dashed grey) and the current input angle (orange).
-  const limits = data.limitsDeg.filter(Number.isFinite).map(toAxisDeg);
-  const markers = child(plot, 'g', 'markers');
-  markers
-    .selectAll<SVGLineElement, number>('line.limit')
-    .data(limits)
+/** Vertical lines of one class at these angles (degrees), from the top panel's top to the bottom panel's foot. */
+function markerLines(
+  markers: G,
+  cls: string,
+  deg: number[],
+  x: ScaleLinear<number, number>,
+  yEnd: number,
+): Selection<SVGLineElement, number, SVGGElement, unknown> {
+  return markers
+    .selectAll<SVGLineElement, number>(`line.${cls}`)
+    .data(deg)
     .join('line')
-    .attr('class', 'limit')
+    .attr('class', cls)
     .attr('x1', (d) => x(d))
     .attr('x2', (d) => x(d))
     .attr('y1', 0)
-    .attr('y2', yBot0 + hBot)
+    .attr('y2', yEnd);
+}
+
+/**
+ * Draws (or redraws in place) the lab's cycle chart: two panels over theta2 0..360 degrees sharing the
+ * x axis, NR iterations per point for each method (step lines) on top and |det J| (log scale, gaps where
+ * the linkage cannot assemble) below, with dashed grey input limits and an orange current-theta2 line.
+ */
+export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options: CycleChartOptions): void {
+  const { width, height } = options;
+  const s = prepareSvg(svg, width, height);
+  const layout = layoutCycleChart(s, data, options);
+  const { m, iw, hTop, hBot, yBot0 } = layout;
+  const sc = cycleScales(data, layout);
+
+  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
+  const top = child(plot, 'g', 'panel-top');
+  const bot = child(plot, 'g', 'panel-bottom').attr('transform', `translate(0,${yBot0})`);
+
+  // Unassembled stretches: a light band in both panels explains the gaps.
+  const runs = unassembledRuns(data.theta2Deg, data.detJ);
+  for (const [panel, h] of [
+    [top, hTop],
+    [bot, hBot],
+  ] as const) {
+    child(panel, 'g', 'bands')
+      .selectAll<SVGRectElement, [number, number]>('rect')
+      .data(runs)
+      .join('rect')
+      .attr('x', (r) => sc.x(r[0]))
+      .attr('width', (r) => Math.max(1, sc.x(r[1]) - sc.x(r[0])))
+      .attr('y', 0)
+      .attr('height', h)
+      .attr('fill', CHART_COLORS.unassembledBand);
+  }
+
+  // The top panel shares the x axis: tick marks only, the numbers are under the bottom panel.
+  drawPanelAxes(top, iw, hTop, sc, sc.yIt, sc.itTicks, (d) => `${d}`, false);
+  const detLabels = decadeLabels(sc.detTicks);
+  drawPanelAxes(bot, iw, hBot, sc, sc.yDet, sc.detTicks, (_d, i) => detLabels[i], true);
+  drawIterationLines(top, data, sc);
+  drawDetJ(bot, data, sc);
+
+  // Markers over both panels: input limits (dashed grey) and the current input angle (orange).
+  const markers = child(plot, 'g', 'markers');
+  markerLines(markers, 'limit', data.limitsDeg.filter(Number.isFinite).map(toAxisDeg), sc.x, yBot0 + hBot)
     .attr('stroke', CHART_STYLE.tolerance)
     .attr('stroke-width', 1.25)
     .attr('stroke-dasharray', '5 4');
   const cur = data.currentDeg;
-  markers
-    .selectAll<SVGLineElement, number>('line.current')
-    .data(cur !== undefined && Number.isFinite(cur) ? [toAxisDeg(cur)] : [])
-    .join('line')
-    .attr('class', 'current')
-    .attr('x1', (d) => x(d))
-    .attr('x2', (d) => x(d))
-    .attr('y1', 0)
-    .attr('y2', yBot0 + hBot)
+  markerLines(markers, 'current', cur !== undefined && Number.isFinite(cur) ? [toAxisDeg(cur)] : [], sc.x, yBot0 + hBot)
     .attr('stroke', CHART_STYLE.marker)
     .attr('stroke-width', 1.5);
 

@@ -6,6 +6,7 @@ import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
+import { formatSci } from '../../shared/format';
 import type { Margins, SvgSel } from '../../shared/charts/chartFrame';
 import {
   CHART_STYLE,
@@ -77,6 +78,11 @@ export function formatTol(tol: number | null, defaultText = 'default'): string {
   if (tol === null) return defaultText;
   if (!Number.isFinite(tol)) return String(tol);
   return tol.toExponential().replace('e+', 'e');
+}
+
+/** A max error for the lab's table and tooltips: two significant digits, a dash when it is not finite. */
+export function formatMaxError(x: number): string {
+  return Number.isFinite(x) ? formatSci(x, 2) : '—';
 }
 
 /** The y value a max error is drawn at (rad): NaN stays NaN (not drawn), anything below ERROR_FLOOR sits on it. */

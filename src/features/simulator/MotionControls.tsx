@@ -6,6 +6,7 @@ import { ALPHA_SLIDER, OMEGA_SLIDER, OMEGA_UNITS, omegaFromUnit, omegaToUnit } f
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { NumberControl } from '../../shared/ui/NumberControl';
 import { FlagToggles } from '../../shared/ui/Toggle';
+import { PanelSection } from '../../shared/ui/PanelSection';
 
 /** Props of MotionControls: the state and its dispatcher. */
 export interface MotionControlsProps {
@@ -25,10 +26,7 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
   const [unit, setUnit] = useState<OmegaUnit>('rad/s');
   const slider = OMEGA_SLIDER[unit];
   return (
-    <section className="panel-section" aria-labelledby="sec-motion">
-      <h2 id="sec-motion" className="section-title">
-        {t.sectionMotion}
-      </h2>
+    <PanelSection id="sec-motion" title={t.sectionMotion}>
       <NumberControl
         field="omega2"
         value={omegaToUnit(state.omega2RadPerS, unit)}
@@ -63,6 +61,6 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
         onCommit={(v) => dispatch({ type: 'setInputMotion', alpha2RadPerS2: v })}
       />
       <FlagToggles flags={['showVelocity', 'showAcceleration']} state={state} dispatch={dispatch} />
-    </section>
+    </PanelSection>
   );
 }

@@ -12,6 +12,7 @@ import {
   drawLegend,
   minus,
   prepareSvg,
+  sameText,
   styleAxis,
 } from './chartFrame';
 import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
@@ -276,12 +277,6 @@ export function markerPlacement(at: MarkerAt | null, frame: Pick<Frame, 'x' | 'y
 /** Plain number labels with a typographic minus. */
 const plainFormat = () => (d: number) => minus(`${d}`);
 
-/** True when the two texts have the same keys and values. */
-function sameText<T extends object>(a: T, b: T): boolean {
-  const ka = Object.keys(a) as (keyof T)[];
-  return ka.length === Object.keys(b).length && ka.every((k) => a[k] === b[k]);
-}
-
 /** Which optional parts a chart has: a clip of its curves to the plot, a layer under the grid, one over the curves. */
 interface PartsPlan {
   clipToPlot?: boolean;
@@ -394,6 +389,50 @@ function drawTexts(parts: ChartParts, text: ChartTexts, frame: Frame, size: Char
   );
 }
 
+/** What a live chart draws from: its size, texts, data and their curves, marker, x rules and scales. */
+interface ChartState<D, M, T extends ChartTexts> {
+  size: ChartSize;
+  text: T;
+  data: D;
+  curves: readonly Curve[];
+  marker: M | null;
+  xMarks: readonly XMark[];
+  frame: Frame;
+  /** What the axes and legend were last drawn for: each is redrawn only when its key changes. */
+  keys: { x: string; y: string; legend: string };
+}
+
+/** Draws the x and y axes (and the clip to the plot), each only when its size, domain or ticks changed. */
+function drawAxes<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>) {
+  const { frame, keys } = st;
+  const { iw, ih, x, y, xTicks, yTicks } = frame;
+  parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
+  const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
+  if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame), st.xMarks);
+  const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
+  if (yKey !== keys.y) drawYAxis(parts, frame, (spec.yTickFormat ?? plainFormat)(frame));
+  Object.assign(keys, { x: xKey, y: yKey });
+}
+
+/** Draws the data: the layer under the grid, the curves, the layer over them. */
+function drawData<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>) {
+  if (parts.under) spec.under?.draw(parts.under, st.data, st.frame, parts.defs);
+  drawCurves(parts, st.curves, st.frame);
+  if (parts.over) spec.over?.draw(parts.over, st.data, st.frame, parts.defs);
+}
+
+/** Draws the legend (the spec's items, or one per curve) when its labels, colours or faintness changed. */
+function drawLegendIfChanged<D, M, T extends ChartTexts>(
+  parts: ChartParts,
+  spec: ChartSpec<D, M, T>,
+  st: ChartState<D, M, T>,
+) {
+  const items = spec.legend ? spec.legend(st.curves, st.text) : st.curves;
+  const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
+  if (key !== st.keys.legend) drawLegend(parts.s, items, 14, 33);
+  st.keys.legend = key;
+}
+
 let clipCounter = 0;
 
 /**
@@ -408,96 +447,76 @@ export function createChart<D, M, T extends ChartTexts>(
   spec: ChartSpec<D, M, T>,
   empty: D,
 ): Chart<D, M, T> {
-  let size = chartSize(options);
-  let text: T = { ...initialText };
-  let data = empty;
-  let curves = spec.curves(data);
-  let marker: M | null = null;
-  let xMarks: readonly XMark[] = options.xMarks ?? [];
-  let frame = chartFrame(spec, data, size);
-  // What the axes and legend were last drawn for: each is redrawn only when its key changes.
-  const keys = { x: '', y: '', legend: '' };
-  const laidOut = () => size.width > 0 && size.height > 0;
+  const size = chartSize(options);
+  const st: ChartState<D, M, T> = {
+    size,
+    text: { ...initialText },
+    data: empty,
+    curves: spec.curves(empty),
+    marker: null,
+    xMarks: options.xMarks ?? [],
+    frame: chartFrame(spec, empty, size),
+    keys: { x: '', y: '', legend: '' },
+  };
+  const laidOut = () => st.size.width > 0 && st.size.height > 0;
   // The id e2e reads on the rate chart's clipped lines.
   const parts = chartParts(svg, spec, `theta2-clip-${++clipCounter}`);
   const mark = chartMarker(parts.plot.node() as SVGGElement, options.markerHost);
 
-  const drawAxes = () => {
-    const { iw, ih, x, y, xTicks, yTicks } = frame;
-    parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
-    const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
-    if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame), xMarks);
-    const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
-    if (yKey !== keys.y) drawYAxis(parts, frame, (spec.yTickFormat ?? plainFormat)(frame));
-    Object.assign(keys, { x: xKey, y: yKey });
-  };
-  const drawData = () => {
-    if (parts.under) spec.under?.draw(parts.under, data, frame, parts.defs);
-    drawCurves(parts, curves, frame);
-    if (parts.over) spec.over?.draw(parts.over, data, frame, parts.defs);
-  };
-  const drawLegendIfChanged = () => {
-    const items = spec.legend ? spec.legend(curves, text) : curves;
-    const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-    if (key !== keys.legend) drawLegend(parts.s, items, 14, 33);
-    keys.legend = key;
-  };
   const drawMarker = () => {
-    const at = marker === null || !spec.marker ? null : spec.marker(marker, data);
-    const box = { left: size.margins.left, top: size.margins.top, height: frame.ih };
-    mark.draw(markerPlacement(at, frame), box, size.width, size.height);
+    const at = st.marker === null || !spec.marker ? null : spec.marker(st.marker, st.data);
+    const box = { left: st.size.margins.left, top: st.size.margins.top, height: st.frame.ih };
+    mark.draw(markerPlacement(at, st.frame), box, st.size.width, st.size.height);
   };
   const drawAll = () => {
     if (!laidOut()) return;
-    prepareSvg(svg, size.width, size.height);
-    parts.plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
-    drawAxes();
-    drawData();
-    drawTexts(parts, text, frame, size);
-    drawLegendIfChanged();
+    prepareSvg(svg, st.size.width, st.size.height);
+    parts.plot.attr('transform', `translate(${st.size.margins.left},${st.size.margins.top})`);
+    drawAxes(parts, spec, st);
+    drawData(parts, spec, st);
+    drawTexts(parts, st.text, st.frame, st.size);
+    drawLegendIfChanged(parts, spec, st);
     drawMarker();
   };
 
   drawAll();
   return {
     update(next) {
-      data = next;
-      curves = spec.curves(data);
-      frame = chartFrame(spec, data, size);
+      Object.assign(st, { data: next, curves: spec.curves(next), frame: chartFrame(spec, next, st.size) });
       if (!laidOut()) return;
-      drawAxes();
-      drawData();
-      drawLegendIfChanged();
+      drawAxes(parts, spec, st);
+      drawData(parts, spec, st);
+      drawLegendIfChanged(parts, spec, st);
       drawMarker();
     },
     setMarker(next) {
-      marker = next;
+      st.marker = next;
       if (laidOut()) drawMarker();
     },
     resize(width, height) {
-      if (width === size.width && height === size.height) return;
-      size = chartSize({ ...size, width, height });
-      frame = chartFrame(spec, data, size);
+      if (width === st.size.width && height === st.size.height) return;
+      st.size = chartSize({ ...st.size, width, height });
+      st.frame = chartFrame(spec, st.data, st.size);
       drawAll();
     },
     setText(next) {
-      if (sameText(next, text)) return;
-      text = { ...next };
+      if (sameText(next, st.text)) return;
+      st.text = { ...next };
       if (!laidOut()) return;
-      drawTexts(parts, text, frame, size);
-      drawLegendIfChanged();
+      drawTexts(parts, st.text, st.frame, st.size);
+      drawLegendIfChanged(parts, spec, st);
     },
     setXMarks(next) {
-      xMarks = next;
-      if (laidOut()) drawXMarks(parts.marksG, xMarks, frame.x, frame.ih);
+      st.xMarks = next;
+      if (laidOut()) drawXMarks(parts.marksG, st.xMarks, st.frame.x, st.frame.ih);
     },
     refresh() {
       if (!laidOut()) return;
-      drawData();
+      drawData(parts, spec, st);
       drawMarker();
     },
     scale(name) {
-      return (name === 'x' ? frame.x : frame.y).copy();
+      return (name === 'x' ? st.frame.x : st.frame.y).copy();
     },
   };
 }

@@ -227,3 +227,9 @@ export function drawChartText(
     .attr('fill', CHART_STYLE.muted)
     .text(empty.text ?? '');
 }
+
+/** Whether two sets of chart texts are equal: the same keys with the same values. */
+export function sameText<T extends object>(a: T, b: T): boolean {
+  const ka = Object.keys(a) as (keyof T)[];
+  return ka.length === Object.keys(b).length && ka.every((k) => a[k] === b[k]);
+}

@@ -1,5 +1,6 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
+import type { Selection } from 'd3-selection';
 import type { Margins } from './chartFrame';
 import {
   CHART_STYLE,
@@ -10,6 +11,7 @@ import {
   estimateTextWidth,
   minus,
   prepareSvg,
+  sameText,
   styleAxis,
 } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
@@ -150,29 +152,10 @@ export function convergenceFrame(data: ConvergenceChartData, size: ConvergenceSi
 /** One dot of a run: iteration, residual, colour and whether the run is faint. */
 type RunDot = [number, number, string, boolean];
 
-/**
- * Creates the NR convergence chart in svg (residual |f| against iteration on a log scale, the tolerance
- * as a dashed line, zero residuals on the floor) and returns its handle; the scales live in the handle.
- * Options are read once here. Draws nothing while width or height is 0.
- */
-export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceChartOptions): ConvergenceChart {
-  let size: ConvergenceSize = {
-    width: Math.max(0, options.width),
-    height: Math.max(0, options.height),
-    margins: options.margins ?? DEFAULT_MARGINS,
-    xTickSpacing: options.xTickSpacing ?? DEFAULT_X_TICK_SPACING,
-    yTickSpacing: options.yTickSpacing ?? DEFAULT_Y_TICK_SPACING,
-  };
-  let text: ConvergenceChartText = { ...options };
-  let data: ConvergenceChartData = { runs: [] };
-  let frame = convergenceFrame(data, size);
-  // What the axes and legend were last drawn for: they are redrawn only when this changes.
-  let xAxisKey = '';
-  let yAxisKey = '';
-  let legendKey = '';
-  let wasEmpty: boolean | null = null;
-  const laidOut = () => size.width > 0 && size.height > 0;
+type G = Selection<SVGGElement, unknown, null, undefined>;
 
+/** The groups of the convergence chart's SVG, made once in their drawing order. */
+function convergenceParts(svg: SVGSVGElement) {
   const s = select(svg);
   child(s, 'rect', 'bg'); // first child, so the background stays under the plot
   const plot = child(s, 'g', 'plot');
@@ -181,131 +164,171 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
   const ay = child(plot, 'g', 'axis-y');
   const tolG = child(plot, 'g', 'tolerance');
   const runsG = child(plot, 'g', 'runs');
+  return { s, plot, grid, ax, ay, tolG, runsG };
+}
 
-  const drawAxes = () => {
-    const { iw, ih, x, y, xTicks, yTicks } = frame;
-    const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
-    if (xKey !== xAxisKey) {
-      xAxisKey = xKey;
-      ax.attr('transform', `translate(0,${ih})`).call(
-        axisBottom(x)
-          .tickValues(xTicks)
-          .tickFormat((d) => `${d}`)
-          .tickSizeOuter(0),
-      );
-      styleAxis(ax);
-    }
-    const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
-    if (yKey !== yAxisKey) {
-      yAxisKey = yKey;
-      drawGridY(grid, iw, yTicks, y);
-      ay.call(
-        axisLeft(y)
-          .tickValues(yTicks)
-          .tickFormat((d) => formatPowerOfTen(Number(d)))
-          .tickSizeOuter(0),
-      );
-      styleAxis(ay);
-    }
+/** The groups of a convergence chart's SVG. */
+type ConvergenceParts = ReturnType<typeof convergenceParts>;
+
+/** Draws the axes and the grid, each only when its key (size, domain, ticks) differs from the last drawn. */
+function drawConvergenceAxes(parts: ConvergenceParts, frame: ConvergenceFrame, keys: { x: string; y: string }): void {
+  const { iw, ih, x, y, xTicks, yTicks } = frame;
+  const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
+  if (xKey !== keys.x) {
+    keys.x = xKey;
+    parts.ax.attr('transform', `translate(0,${ih})`).call(
+      axisBottom(x)
+        .tickValues(xTicks)
+        .tickFormat((d) => `${d}`)
+        .tickSizeOuter(0),
+    );
+    styleAxis(parts.ax);
+  }
+  const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
+  if (yKey !== keys.y) {
+    keys.y = yKey;
+    drawGridY(parts.grid, iw, yTicks, y);
+    parts.ay.call(
+      axisLeft(y)
+        .tickValues(yTicks)
+        .tickFormat((d) => formatPowerOfTen(Number(d)))
+        .tickSizeOuter(0),
+    );
+    styleAxis(parts.ay);
+  }
+}
+
+/** The dashed tolerance line and its label at the right end; nothing when the tolerance is absent or not finite. */
+function drawTolerance(tolG: G, frame: ConvergenceFrame, tol: number | undefined, label: string): void {
+  const { iw, y } = frame;
+  const tolData = tol !== undefined && tol > 0 && Number.isFinite(tol) ? [tol] : [];
+  tolG
+    .selectAll<SVGLineElement, number>('line')
+    .data(tolData)
+    .join('line')
+    .attr('x1', 0)
+    .attr('x2', iw)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.tolerance)
+    .attr('stroke-dasharray', '5 4');
+  tolG
+    .selectAll<SVGTextElement, number>('text')
+    .data(tolData)
+    .join('text')
+    .attr('x', iw - 4)
+    .attr('y', (d) => y(d) - 4)
+    .attr('text-anchor', 'end')
+    .attr('fill', CHART_STYLE.muted)
+    .text(label);
+}
+
+/** One group per run: its line (faint runs dashed and thinner) and a dot per iteration, hollow where |f| is 0. */
+function drawRunLines(runsG: G, runs: readonly ConvergenceRun[], frame: ConvergenceFrame): void {
+  const { x, y } = frame;
+  const d0 = y.domain()[0];
+  const floor = (v: number) => (v > 0 && Number.isFinite(v) ? v : d0);
+  const path = (r: ConvergenceRun) =>
+    linePath(
+      r.iterations,
+      (it) => x(it),
+      (_it, i) => y(floor(r.residuals[i])),
+    );
+  const runSel = runsG
+    .selectAll<SVGGElement, ConvergenceRun>('g.run')
+    .data(runs)
+    .join((enter) => {
+      const g = enter.append('g').attr('class', 'run');
+      g.append('path');
+      return g;
+    });
+  runSel
+    .select('path')
+    .attr('fill', 'none')
+    .attr('stroke', (d) => d.color)
+    .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
+    .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
+    .attr('stroke-opacity', (d) => (d.faint ? 0.6 : 1))
+    .attr('d', path);
+  runSel
+    .selectAll<SVGCircleElement, RunDot>('circle')
+    .data((d) => d.iterations.map((it, i): RunDot => [it, d.residuals[i], d.color, d.faint === true]))
+    .join('circle')
+    .attr('cx', (d) => x(d[0]))
+    .attr('cy', (d) => y(floor(d[1])))
+    .attr('r', (d) => (d[3] ? 2 : 3))
+    .attr('fill', (d) => (d[1] > 0 ? d[2] : CHART_STYLE.background))
+    .attr('stroke', (d) => d[2])
+    .attr('stroke-width', 1.25);
+}
+
+/** Size options with their defaults filled in. */
+function convergenceSize(options: ConvergenceChartOptions): ConvergenceSize {
+  return {
+    width: Math.max(0, options.width),
+    height: Math.max(0, options.height),
+    margins: options.margins ?? DEFAULT_MARGINS,
+    xTickSpacing: options.xTickSpacing ?? DEFAULT_X_TICK_SPACING,
+    yTickSpacing: options.yTickSpacing ?? DEFAULT_Y_TICK_SPACING,
   };
+}
+
+/**
+ * Creates the NR convergence chart in svg (residual |f| against iteration on a log scale, the tolerance
+ * as a dashed line, zero residuals on the floor) and returns its handle; the scales live in the handle.
+ * Options are read once here. Draws nothing while width or height is 0.
+ */
+export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceChartOptions): ConvergenceChart {
+  let size = convergenceSize(options);
+  let text: ConvergenceChartText = { ...options };
+  let data: ConvergenceChartData = { runs: [] };
+  let frame = convergenceFrame(data, size);
+  // What the axes and legend were last drawn for: they are redrawn only when this changes.
+  const keys = { x: '', y: '', legend: '' };
+  let wasEmpty: boolean | null = null;
+  const laidOut = () => size.width > 0 && size.height > 0;
+  const parts = convergenceParts(svg);
 
   const drawRuns = () => {
-    const { iw, x, y } = frame;
-    const d0 = y.domain()[0];
-    const tol = data.tolerance;
-    const tolData = tol !== undefined && tol > 0 && Number.isFinite(tol) ? [tol] : [];
-    tolG
-      .selectAll<SVGLineElement, number>('line')
-      .data(tolData)
-      .join('line')
-      .attr('x1', 0)
-      .attr('x2', iw)
-      .attr('y1', (d) => y(d))
-      .attr('y2', (d) => y(d))
-      .attr('stroke', CHART_STYLE.tolerance)
-      .attr('stroke-dasharray', '5 4');
-    tolG
-      .selectAll<SVGTextElement, number>('text')
-      .data(tolData)
-      .join('text')
-      .attr('x', iw - 4)
-      .attr('y', (d) => y(d) - 4)
-      .attr('text-anchor', 'end')
-      .attr('fill', CHART_STYLE.muted)
-      .text(text.toleranceLabel ?? '');
-
-    const floor = (v: number) => (v > 0 && Number.isFinite(v) ? v : d0);
-    const path = (r: ConvergenceRun) =>
-      linePath(
-        r.iterations,
-        (it) => x(it),
-        (_it, i) => y(floor(r.residuals[i])),
-      );
-    const runSel = runsG
-      .selectAll<SVGGElement, ConvergenceRun>('g.run')
-      .data(data.runs)
-      .join((enter) => {
-        const g = enter.append('g').attr('class', 'run');
-        g.append('path');
-        return g;
-      });
-    runSel
-      .select('path')
-      .attr('fill', 'none')
-      .attr('stroke', (d) => d.color)
-      .attr('stroke-width', (d) => (d.faint ? 1 : 1.75))
-      .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null))
-      .attr('stroke-opacity', (d) => (d.faint ? 0.6 : 1))
-      .attr('d', path);
-    runSel
-      .selectAll<SVGCircleElement, RunDot>('circle')
-      .data((d) => d.iterations.map((it, i): RunDot => [it, d.residuals[i], d.color, d.faint === true]))
-      .join('circle')
-      .attr('cx', (d) => x(d[0]))
-      .attr('cy', (d) => y(floor(d[1])))
-      .attr('r', (d) => (d[3] ? 2 : 3))
-      .attr('fill', (d) => (d[1] > 0 ? d[2] : CHART_STYLE.background))
-      .attr('stroke', (d) => d[2])
-      .attr('stroke-width', 1.25);
-
+    drawTolerance(parts.tolG, frame, data.tolerance, text.toleranceLabel ?? '');
+    drawRunLines(parts.runsG, data.runs, frame);
     const key = data.runs.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-    if (key !== legendKey) {
-      legendKey = key;
-      drawLegend(s, data.runs, 14, 33);
+    if (key !== keys.legend) {
+      keys.legend = key;
+      drawLegend(parts.s, data.runs, 14, 33);
     }
   };
-
   const drawText = () => {
     const m = size.margins;
     const empty = data.runs.length === 0;
     wasEmpty = empty;
+    const centerY = m.top + frame.ih / 2;
     drawChartText(
-      s,
-      { title: text.title, xLabel: text.xLabel, yLabels: [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }] },
+      parts.s,
+      { title: text.title, xLabel: text.xLabel, yLabels: [{ text: text.yLabel, centerY }] },
       m.left,
       frame.iw,
       size.width,
       size.height,
-      { plot, text: empty ? (text.emptyText ?? '') : null, centerY: m.top + frame.ih / 2 },
+      { plot: parts.plot, text: empty ? (text.emptyText ?? '') : null, centerY },
     );
   };
-
   const drawAll = () => {
     if (!laidOut()) return;
     prepareSvg(svg, size.width, size.height);
-    plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
-    drawAxes();
+    parts.plot.attr('transform', `translate(${size.margins.left},${size.margins.top})`);
+    drawConvergenceAxes(parts, frame, keys);
     drawRuns();
     drawText();
   };
 
   drawAll();
-  const chart: ConvergenceChart = {
+  return {
     update(next) {
       data = next;
       frame = convergenceFrame(data, size);
       if (!laidOut()) return;
-      drawAxes();
+      drawConvergenceAxes(parts, frame, keys);
       drawRuns();
       if (wasEmpty !== (data.runs.length === 0)) drawText();
     },
@@ -316,8 +339,7 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
       drawAll();
     },
     setText(next) {
-      const same = (Object.keys(next) as (keyof ConvergenceChartText)[]).every((k) => next[k] === text[k]);
-      if (same && Object.keys(text).length === Object.keys(next).length) return;
+      if (sameText(next, text)) return;
       const labelChanged = next.toleranceLabel !== text.toleranceLabel;
       text = { ...next };
       if (!laidOut()) return;
@@ -326,7 +348,6 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
     },
     scale: ((name: 'x' | 'y') => (name === 'x' ? frame.x.copy() : frame.y.copy())) as ConvergenceChart['scale'],
   };
-  return chart;
 }
 
 /** Draws a complete convergence chart into svg in one call (the off-screen path of PNG export) and returns its handle. */

@@ -6,7 +6,7 @@ import type { LabelRequest, Obstacle } from '../canvas/labelPlacement';
 import { candidatesAround, placeLabels } from '../canvas/labelPlacement';
 import type { Px, ScreenRect } from '../canvas/rect';
 import { halfExtentAlong, rectAround } from '../canvas/rect';
-import type { LinkageScene, ScenePose } from './scene';
+import type { LinkageScene, ScenePose, SceneText } from './scene';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
 import { gridLines, toScreenX, toScreenY } from '../canvas/view';
@@ -257,6 +257,159 @@ function poseArcs(
   };
 }
 
+/** Labels to place and what each says: add measures a label and asks its candidate centres for that size. */
+interface LabelCollector {
+  requests: LabelRequest<LabelId>[];
+  meta: Map<LabelId, { text: string; font: LabelFont; color: string }>;
+  add: (id: LabelId, text: string, font: LabelFont, color: string, make: (w: number, h: number) => Px[]) => void;
+}
+
+function labelCollector(measure: MeasureText): LabelCollector {
+  const requests: LabelRequest<LabelId>[] = [];
+  const meta: LabelCollector['meta'] = new Map();
+  const add: LabelCollector['add'] = (id, text, font, color, make) => {
+    const width = measure(text, font) + 2 * LABEL_PAD_X;
+    const height = FONT_PX[font] + 2 * LABEL_PAD_Y;
+    meta.set(id, { text, font, color });
+    requests.push({ id, width, height, candidates: make(width, height) });
+  };
+  return { requests, meta, add };
+}
+
+/** The warning box's request (top centre, or left, or under each exclusion; never dropped) and its first box. */
+function warningRequest(
+  text: SceneText,
+  view: ViewTransform,
+  measure: MeasureText,
+  exclusions: readonly ScreenRect[],
+): { request: LabelRequest<LabelId>; warning: WarningBox } | null {
+  if (!text.warning) return null;
+  const w = Math.min(
+    view.width - 2 * WARNING_BOX.margin,
+    Math.max(measure(text.warning, 'bold'), text.warningDetail ? measure(text.warningDetail, 'regular') : 0) +
+      2 * WARNING_BOX.padX,
+  );
+  const h = text.warningDetail ? WARNING_BOX.heightTwoLines : WARNING_BOX.heightOneLine;
+  const xs = [view.width / 2, WARNING_BOX.margin + w / 2];
+  const ys = [WARNING_BOX.top, ...exclusions.map((e) => e.y + e.height + 6)].map((y) => y + h / 2);
+  const candidates = ys.flatMap((y) => xs.map((x) => ({ x, y })));
+  return {
+    request: { id: 'warning', width: w, height: h, candidates, required: true },
+    warning: { box: rectAround(candidates[0], w, h), title: text.warning, detail: text.warningDetail },
+  };
+}
+
+/** The grid spacing label's candidates: the four corners, bottom left first. */
+function gridLabelCandidates(view: ViewTransform, w: number, h: number): Px[] {
+  return [
+    { x: 8 + w / 2, y: view.height - 6 - h / 2 },
+    { x: view.width - 8 - w / 2, y: view.height - 6 - h / 2 },
+    { x: 8 + w / 2, y: 6 + h / 2 },
+    { x: view.width - 8 - w / 2, y: 6 + h / 2 },
+  ];
+}
+
+/** The arcs drawn, reference lines and labels of θ2, θ3, θ4 and μ (μ in the warning colour outside the design band). */
+function addAngleLabels(
+  scene: LinkageScene,
+  pose: ScenePose,
+  j: { O2: Px; A: Px; B: Px; O4: Px },
+  labels: LabelCollector,
+  obstacles: Obstacle[],
+): { arcs: SceneArc[]; references: [Px, Px][] } {
+  const t = scene.text;
+  const { A, O4 } = j;
+  const deg = (r: number) => t.formatAngle(radToDeg(r));
+  const a = poseArcs(pose, j);
+  const arcs: SceneArc[] = [];
+  const references: [Px, Px][] = [
+    [A, { x: A.x + REFERENCE_LENGTH_PX, y: A.y }],
+    [O4, { x: O4.x + REFERENCE_LENGTH_PX, y: O4.y }],
+  ];
+  const texts = {
+    theta2: `θ2 ${deg(a.theta2.toRad)}`,
+    theta3: `θ3 ${deg(a.theta3.toRad)}`,
+    theta4: `θ4 ${deg(a.theta4.toRad)}`,
+    mu: `μ ${deg(pose.mu)}`,
+  };
+  for (const id of ['theta2', 'theta3', 'theta4', 'mu'] as const) {
+    const arc = a[id];
+    if (Math.abs(arc.toRad - arc.fromRad) < 1e-9) continue;
+    arcs.push(arc);
+    obstacles.push(...arcObstacles(arc, 1, id));
+    const color = id === 'mu' && muOutsideBand(scene.design, pose.mu) ? THEME.warning : arc.color;
+    labels.add(id, texts[id], 'regular', color, (w, h) => besideArc(arc, w, h));
+  }
+  for (const [p, q] of references) obstacles.push({ kind: 'segment', a: p, b: q, halfWidth: 1, weight: 1 });
+  return { arcs, references };
+}
+
+/** The labels of B and P, and the obstacles of B, P, the coupler and the rocker. */
+function addPoseLabels(
+  j: { A: Px; B: Px; P: Px; O4: Px },
+  t: SceneText,
+  labels: LabelCollector,
+  obstacles: Obstacle[],
+): void {
+  const { A, B, P, O4 } = j;
+  const jointClear = STROKES.jointRadius + 2;
+  labels.add('B', t.B, 'bold', THEME.text, (w, h) => aroundPoint(B, awayFrom(B, [A, O4]), jointClear, w, h));
+  labels.add('P', t.P, 'bold', THEME.couplerPoint, (w, h) =>
+    aroundPoint(P, awayFrom(P, [A, B]), STROKES.couplerPointRadius + 2, w, h),
+  );
+  obstacles.push(
+    jointBox(B, STROKES.jointRadius, 4),
+    jointBox(P, STROKES.couplerPointRadius, 4),
+    { kind: 'segment', a: A, b: B, halfWidth: STROKES.link / 2, weight: 3, owner: 'r3' },
+    { kind: 'segment', a: B, b: O4, halfWidth: STROKES.link / 2, weight: 3, owner: 'r4' },
+    { kind: 'segment', a: A, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
+    { kind: 'segment', a: B, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
+  );
+}
+
+/** The link labels r2, r3 and r4 beside their links (the angle labels are placed before them). */
+function addLinkLabels(pose: ScenePose, j: { O2: Px; A: Px; B: Px; P: Px; O4: Px }, labels: LabelCollector): void {
+  const { O2, A, B, P, O4 } = j;
+  // The coupler label goes away from P when P is off the line AB, else away from O2.
+  const pOffLine =
+    Math.abs((B.x - A.x) * (P.y - A.y) - (B.y - A.y) * (P.x - A.x)) > 4 * Math.hypot(B.x - A.x, B.y - A.y);
+  const t2 = angleDiff(pose.theta2, 0);
+  const t2Half = (t2 >= 0 ? t2 : TWO_PI + t2) / 2;
+  const arcMid = { x: O2.x + 30 * Math.cos(t2Half), y: O2.y - 30 * Math.sin(t2Half) };
+  const linkClear = STROKES.link / 2;
+  labels.add('r2', 'r2', 'regular', THEME.crank, (w, h) => besideSegment(O2, A, arcMid, linkClear, w, h));
+  labels.add('r3', 'r3', 'regular', THEME.coupler, (w, h) => besideSegment(A, B, pOffLine ? P : O2, linkClear, w, h));
+  labels.add('r4', 'r4', 'regular', THEME.rocker, (w, h) => besideSegment(B, O4, A, linkClear, w, h));
+}
+
+/** The order labels are placed in: the warning, the grid label, the joints, angles and links, the design overlay; extras after. */
+const LABEL_ORDER: readonly LabelId[] = [
+  'warning',
+  'grid',
+  'O2',
+  'O4',
+  'A',
+  'B',
+  'P',
+  'theta2',
+  'theta3',
+  'theta4',
+  'mu',
+  'r2',
+  'r3',
+  'r4',
+  'r1',
+  'swing',
+  'I13',
+  'I24',
+];
+
+/** The rank of a label in LABEL_ORDER; labels not listed (the extras) come last, in their order. */
+function labelRank(id: LabelId): number {
+  const k = LABEL_ORDER.indexOf(id);
+  return k >= 0 ? k : LABEL_ORDER.length;
+}
+
 /**
  * Lays out the canvas: joint positions, angle arcs and every label, placed so that no two labels overlap and
  * none overlaps an exclusion rectangle (the zoom buttons: canvasToolsRect) or leaves the canvas. Labels are
@@ -282,49 +435,25 @@ export function layoutScene(
   const P = pose ? px(v, pose.P) : null;
   const joints: SceneJoints = { O2, O4, A, B, P };
 
-  const requests: LabelRequest<LabelId>[] = [];
-  const meta = new Map<LabelId, { text: string; font: LabelFont; color: string }>();
-  const add = (id: LabelId, text: string, font: LabelFont, color: string, make: (w: number, h: number) => Px[]) => {
-    const width = measure(text, font) + 2 * LABEL_PAD_X;
-    const height = FONT_PX[font] + 2 * LABEL_PAD_Y;
-    meta.set(id, { text, font, color });
-    requests.push({ id, width, height, candidates: make(width, height) });
-  };
-
-  let warning: WarningBox | null = null;
-  if (t.warning) {
-    const w = Math.min(
-      v.width - 2 * WARNING_BOX.margin,
-      Math.max(measure(t.warning, 'bold'), t.warningDetail ? measure(t.warningDetail, 'regular') : 0) +
-        2 * WARNING_BOX.padX,
-    );
-    const h = t.warningDetail ? WARNING_BOX.heightTwoLines : WARNING_BOX.heightOneLine;
-    const xs = [v.width / 2, WARNING_BOX.margin + w / 2];
-    const ys = [WARNING_BOX.top, ...exclusions.map((e) => e.y + e.height + 6)].map((y) => y + h / 2);
-    const candidates = ys.flatMap((y) => xs.map((x) => ({ x, y })));
-    requests.push({ id: 'warning', width: w, height: h, candidates, required: true });
-    warning = { box: rectAround(candidates[0], w, h), title: t.warning, detail: t.warningDetail };
-  }
-
+  const labels = labelCollector(measure);
+  const warned = warningRequest(t, v, measure, exclusions);
+  if (warned) labels.requests.push(warned.request);
   const grid = scene.showGrid ? gridLines(v, GRID_TARGET_PX) : null;
   if (grid) {
-    add('grid', t.gridSpacing(t.formatLength(grid.step)), 'regular', THEME.gridText, (w, h) => [
-      { x: 8 + w / 2, y: v.height - 6 - h / 2 },
-      { x: v.width - 8 - w / 2, y: v.height - 6 - h / 2 },
-      { x: 8 + w / 2, y: 6 + h / 2 },
-      { x: v.width - 8 - w / 2, y: 6 + h / 2 },
-    ]);
+    labels.add('grid', t.gridSpacing(t.formatLength(grid.step)), 'regular', THEME.gridText, (w, h) =>
+      gridLabelCandidates(v, w, h),
+    );
   }
 
   const jointClear = STROKES.jointRadius + 2;
   const pivotClear = STROKES.pivotRadius + 2;
-  add('O2', t.O2, 'bold', THEME.text, (w, h) =>
+  labels.add('O2', t.O2, 'bold', THEME.text, (w, h) =>
     aroundPoint(O2, awayFrom(O2, [A, O4, { x: O2.x, y: O2.y + 1 }]), pivotClear, w, h),
   );
-  add('O4', t.O4, 'bold', THEME.text, (w, h) =>
+  labels.add('O4', t.O4, 'bold', THEME.text, (w, h) =>
     aroundPoint(O4, awayFrom(O4, [B ?? A, O2, { x: O4.x, y: O4.y + 1 }]), pivotClear, w, h),
   );
-  add('A', t.A, 'bold', THEME.text, (w, h) => aroundPoint(A, awayFrom(A, B ? [O2, B] : [O2]), jointClear, w, h));
+  labels.add('A', t.A, 'bold', THEME.text, (w, h) => aroundPoint(A, awayFrom(A, B ? [O2, B] : [O2]), jointClear, w, h));
 
   const obstacles: Obstacle[] = [
     jointBox(O2, STROKES.pivotRadius, 4),
@@ -335,102 +464,45 @@ export function layoutScene(
     { kind: 'segment', a: O2, b: O4, halfWidth: STROKES.ground, weight: 1, owner: 'r1' },
     { kind: 'segment', a: O2, b: A, halfWidth: STROKES.link / 2, weight: 3, owner: 'r2' },
   ];
-  const arcs: SceneArc[] = [];
-  const references: [Px, Px][] = [];
-
+  let drawnAngles: { arcs: SceneArc[]; references: [Px, Px][] } = { arcs: [], references: [] };
   if (pose && B && P) {
-    add('B', t.B, 'bold', THEME.text, (w, h) => aroundPoint(B, awayFrom(B, [A, O4]), jointClear, w, h));
-    add('P', t.P, 'bold', THEME.couplerPoint, (w, h) =>
-      aroundPoint(P, awayFrom(P, [A, B]), STROKES.couplerPointRadius + 2, w, h),
-    );
-    obstacles.push(
-      jointBox(B, STROKES.jointRadius, 4),
-      jointBox(P, STROKES.couplerPointRadius, 4),
-      { kind: 'segment', a: A, b: B, halfWidth: STROKES.link / 2, weight: 3, owner: 'r3' },
-      { kind: 'segment', a: B, b: O4, halfWidth: STROKES.link / 2, weight: 3, owner: 'r4' },
-      { kind: 'segment', a: A, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
-      { kind: 'segment', a: B, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
-    );
-    if (scene.showAngles) {
-      const deg = (r: number) => t.formatAngle(radToDeg(r));
-      const a = poseArcs(pose, { O2, A, B, O4 });
-      references.push([A, { x: A.x + REFERENCE_LENGTH_PX, y: A.y }], [O4, { x: O4.x + REFERENCE_LENGTH_PX, y: O4.y }]);
-      const texts = {
-        theta2: `θ2 ${deg(a.theta2.toRad)}`,
-        theta3: `θ3 ${deg(a.theta3.toRad)}`,
-        theta4: `θ4 ${deg(a.theta4.toRad)}`,
-        mu: `μ ${deg(pose.mu)}`,
-      };
-      for (const id of ['theta2', 'theta3', 'theta4', 'mu'] as const) {
-        const arc = a[id];
-        if (Math.abs(arc.toRad - arc.fromRad) < 1e-9) continue;
-        arcs.push(arc);
-        obstacles.push(...arcObstacles(arc, 1, id));
-        const color = id === 'mu' && muOutsideBand(scene.design, pose.mu) ? THEME.warning : arc.color;
-        add(id, texts[id], 'regular', color, (w, h) => besideArc(arc, w, h));
-      }
-      for (const [p, q] of references) obstacles.push({ kind: 'segment', a: p, b: q, halfWidth: 1, weight: 1 });
-    }
-    // The coupler label goes away from P when P is off the line AB, else away from O2.
-    const pOffLine =
-      Math.abs((B.x - A.x) * (P.y - A.y) - (B.y - A.y) * (P.x - A.x)) > 4 * Math.hypot(B.x - A.x, B.y - A.y);
-    const t2 = angleDiff(pose.theta2, 0);
-    const t2Half = (t2 >= 0 ? t2 : TWO_PI + t2) / 2;
-    const arcMid = { x: O2.x + 30 * Math.cos(t2Half), y: O2.y - 30 * Math.sin(t2Half) };
-    const linkClear = STROKES.link / 2;
-    add('r2', 'r2', 'regular', THEME.crank, (w, h) => besideSegment(O2, A, arcMid, linkClear, w, h));
-    add('r3', 'r3', 'regular', THEME.coupler, (w, h) => besideSegment(A, B, pOffLine ? P : O2, linkClear, w, h));
-    add('r4', 'r4', 'regular', THEME.rocker, (w, h) => besideSegment(B, O4, A, linkClear, w, h));
+    const posed = { O2, A, B, P, O4 };
+    addPoseLabels(posed, t, labels, obstacles);
+    if (scene.showAngles) drawnAngles = addAngleLabels(scene, pose, posed, labels, obstacles);
+    addLinkLabels(pose, posed, labels);
   }
-  add('r1', 'r1', 'regular', THEME.ground, (w, h) =>
+  labels.add('r1', 'r1', 'regular', THEME.ground, (w, h) =>
     besideSegment(O2, O4, { x: (O2.x + O4.x) / 2, y: (O2.y + O4.y) / 2 - 1 }, STROKES.ground, w, h),
   );
 
   const design = scene.design ? layoutDesign(scene.design, l, v, joints, bounds) : null;
   if (scene.design && design) {
-    for (const d of designLabels(scene.design, design)) add(d.id, d.text, 'regular', d.color, d.candidates);
+    for (const d of designLabels(scene.design, design)) labels.add(d.id, d.text, 'regular', d.color, d.candidates);
   }
-
   if (extras) {
-    for (const e of extras.labels) add(e.id, e.text, e.font, e.color, e.candidates);
+    for (const e of extras.labels) labels.add(e.id, e.text, e.font, e.color, e.candidates);
     obstacles.push(...extras.obstacles);
   }
 
-  // The warning first and the grid label next, then the joints, angles and links, then the design overlay and the extras in their order.
-  const order: LabelId[] = [
-    'warning',
-    'grid',
-    'O2',
-    'O4',
-    'A',
-    'B',
-    'P',
-    'theta2',
-    'theta3',
-    'theta4',
-    'mu',
-    'r2',
-    'r3',
-    'r4',
-    'r1',
-    'swing',
-    'I13',
-    'I24',
-  ];
-  const rank = (id: LabelId) => {
-    const k = order.indexOf(id);
-    return k >= 0 ? k : order.length;
-  };
-  requests.sort((x, y) => rank(x.id) - rank(y.id));
-  const { placed, dropped } = placeLabels(requests, bounds, exclusions, obstacles);
-  const labels: SceneLabel[] = [];
+  labels.requests.sort((x, y) => labelRank(x.id) - labelRank(y.id));
+  const { placed, dropped } = placeLabels(labels.requests, bounds, exclusions, obstacles);
+  let warning = warned?.warning ?? null;
+  const sceneLabels: SceneLabel[] = [];
   for (const p of placed) {
     if (p.id === 'warning') {
       if (warning) warning = { ...warning, box: p.box };
       continue;
     }
-    const m = meta.get(p.id)!;
-    labels.push({ id: p.id, text: m.text, font: m.font, color: m.color, centre: p.centre, box: p.box });
+    const m = labels.meta.get(p.id)!;
+    sceneLabels.push({ id: p.id, text: m.text, font: m.font, color: m.color, centre: p.centre, box: p.box });
   }
-  return { joints, arcs, references, labels, warning, dropped, design };
+  return {
+    joints,
+    arcs: drawnAngles.arcs,
+    references: drawnAngles.references,
+    labels: sceneLabels,
+    warning,
+    dropped,
+    design,
+  };
 }

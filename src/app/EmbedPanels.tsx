@@ -1,0 +1,57 @@
+import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
+import { DesignPanel } from '../features/simulator/DesignPanel';
+import { ExportPanel } from '../features/export/ExportPanel';
+import type { EmbedPanel } from '../shared/url/url';
+import { SolverStatus } from '../shared/jobs/SolverStatus';
+import { SimulatorPlots } from './SimulatorPlots';
+import type { SimulatorSession } from './useSimulatorSession';
+
+/** Props of EmbedPanels: the session, which panels the widget shows and whether θ2 is locked. */
+export interface EmbedPanelsProps {
+  session: SimulatorSession;
+  show: (panel: EmbedPanel) => boolean;
+  theta2Locked: boolean;
+}
+
+/** The widget's panels under the linkage, as its URL asks: numbers and design, plots, export; then the solver's status. */
+export function EmbedPanels({ session, show, theta2Locked }: EmbedPanelsProps) {
+  const { state, dispatch, t, cycle, cycleError, point, table, design, plotsRef } = session;
+  const { onPng, onSvg, onCsv, onAnimation, solverMode, solverReason } = session;
+  return (
+    <>
+      {show('info') ? (
+        <section className="card embed-card">
+          <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+        </section>
+      ) : null}
+      {show('info') ? (
+        <section className="card embed-card" aria-label={t.sectionDesign}>
+          <DesignPanel
+            design={design}
+            muBandLoDeg={state.muBandLoDeg}
+            muBandHiDeg={state.muBandHiDeg}
+            dispatch={dispatch}
+            theta2Locked={theta2Locked}
+            compact
+          />
+        </section>
+      ) : null}
+      {show('plots') ? (
+        <section className="card embed-card embed-plots" ref={plotsRef}>
+          <SimulatorPlots session={session} />
+        </section>
+      ) : null}
+      {show('export') ? (
+        <section className="card embed-card">
+          <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
+        </section>
+      ) : null}
+      <SolverStatus mode={solverMode} reason={solverReason} />
+      {cycleError ? (
+        <p className="note note-error" role="alert">
+          {cycleError}
+        </p>
+      ) : null}
+    </>
+  );
+}

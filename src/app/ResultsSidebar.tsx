@@ -1,0 +1,66 @@
+import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
+import { ConvergencePanel } from '../features/simulator/ConvergencePanel';
+import { DesignPanel } from '../features/simulator/DesignPanel';
+import { MotionPanel } from '../features/simulator/MotionPanel';
+import { useFrameMotion } from '../features/simulator/useFrameMotion';
+import { useLinkagePose } from '../features/simulator/useLinkagePose';
+import { ExportPanel } from '../features/export/ExportPanel';
+import { SharePanel } from '../features/share/SharePanel';
+import { useLatest } from '../shared/hooks/useLatest';
+import { SolverStatus } from '../shared/jobs/SolverStatus';
+import { PanelSection } from '../shared/ui/PanelSection';
+import type { SimulatorSession } from './useSimulatorSession';
+
+/** Props of ResultsSidebar: the simulator session and the sidebar's accessible name. */
+export interface ResultsSidebarProps {
+  session: SimulatorSession;
+  label: string;
+}
+
+/** The full app's right sidebar: numbers, design, motion, NR convergence, export, share and the solver's status. */
+export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
+  const { state, dispatch, t, cycle, cycleError, point, table, design } = session;
+  // The numbers panel follows the state (a few times a second while playing); the canvas and the plot
+  // markers follow every frame through the FramePoseProvider.
+  const { local } = useLinkagePose(state, false);
+  const motion = useFrameMotion(state, local);
+  const stateRef = useLatest(state);
+  return (
+    <aside className="rightbar" aria-label={label}>
+      <PanelSection className="card" id="sec-analysis" title={t.sectionAnalysis}>
+        <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+        {cycleError ? (
+          <p className="note note-error" role="alert">
+            {cycleError}
+          </p>
+        ) : null}
+      </PanelSection>
+      <PanelSection className="card" id="sec-design" title={t.sectionDesign}>
+        <DesignPanel
+          design={design}
+          muBandLoDeg={state.muBandLoDeg}
+          muBandHiDeg={state.muBandHiDeg}
+          dispatch={dispatch}
+        />
+      </PanelSection>
+      <PanelSection className="card" id="sec-motion-results" title={t.motionPanelTitle}>
+        <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
+      </PanelSection>
+      <section className="card convergence-card">
+        <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />
+      </section>
+      <PanelSection className="card" id="sec-export" title={t.sectionExport}>
+        <ExportPanel
+          onPng={session.onPng}
+          onSvg={session.onSvg}
+          onCsv={session.onCsv}
+          onAnimation={session.onAnimation}
+        />
+      </PanelSection>
+      <PanelSection className="card" id="sec-share" title={t.sectionShare}>
+        <SharePanel stateRef={stateRef} />
+      </PanelSection>
+      <SolverStatus mode={session.solverMode} reason={session.solverReason} />
+    </aside>
+  );
+}

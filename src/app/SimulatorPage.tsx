@@ -1,0 +1,45 @@
+import { Suspense, lazy } from 'react';
+import { LinkageStage } from '../features/simulator/LinkageStage';
+import { shellMessages } from './shellMessages';
+import { SimulatorPlots } from './SimulatorPlots';
+import type { SimulatorSession } from './useSimulatorSession';
+
+// The transmission plot (its chart module) loads after the first paint.
+const TransmissionPanel = lazy(() =>
+  import('../features/simulator/TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })),
+);
+
+/** The full app's simulator page: the linkage, its angle plots and the transmission plot. */
+export function SimulatorPage({ session }: { session: SimulatorSession }) {
+  const { state, t, cycle, design, deg, xMarks, plotsRef } = session;
+  const shell = shellMessages(state.locale);
+  return (
+    <>
+      <section className="card stage">
+        <LinkageStage
+          cycle={cycle}
+          design={design}
+          onViewChange={session.onViewChange}
+          onTheta2={session.onTheta2}
+          onCoupler={session.onCoupler}
+          onSize={session.onCanvasSize}
+          hint={shell.canvasHint({ crank: true, coupler: true })}
+          onShown={session.onShown}
+        />
+      </section>
+      <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
+        <SimulatorPlots session={session} />
+      </section>
+      <section className="card transmission-card" aria-label={t.chartTransmission}>
+        <Suspense fallback={null}>
+          <TransmissionPanel
+            deg={deg}
+            muBandLoDeg={state.muBandLoDeg}
+            muBandHiDeg={state.muBandHiDeg}
+            xMarks={xMarks}
+          />
+        </Suspense>
+      </section>
+    </>
+  );
+}

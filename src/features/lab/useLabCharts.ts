@@ -1,0 +1,79 @@
+import { useCallback, useMemo } from 'react';
+import { drawCycleChart } from './cycleChart';
+import { drawWorkPrecisionChart, formatMaxError, formatTol } from './workPrecisionChart';
+import type { WorkPrecisionChartOptions } from './workPrecisionChart';
+import type { LabPoint, LabResult, LabSeries } from '../../study/workPrecision';
+import type { SweepMethod } from '../../solver/types';
+import type { Messages } from '../../shared/i18n/messages';
+import type { LabMessages } from './labMessages';
+
+/** The lab's two charts: the diagram's options (shared with its export) and the draws of both SVG views. */
+export interface LabCharts {
+  chartOptions: Omit<WorkPrecisionChartOptions, 'width' | 'height'>;
+  drawDiagram: (svg: SVGSVGElement, width: number, height: number) => void;
+  drawCycle: (svg: SVGSVGElement, width: number, height: number) => void;
+}
+
+/** Options and draw callbacks of the work-precision diagram and the cycle chart, stable while their inputs are. */
+export function useLabCharts(
+  result: LabResult | null,
+  t: Messages,
+  lt: LabMessages,
+  method: SweepMethod,
+  tol: number | null,
+  theta2Deg: number,
+): LabCharts {
+  const highlight = useMemo(() => ({ method, tol }), [method, tol]);
+  const methodLabels = t.methodNames;
+  const chartOptions = useMemo(
+    () => ({
+      title: lt.labDiagramTitle,
+      xLabel: lt.labDiagramX,
+      yLabel: lt.labDiagramY,
+      highlight,
+      methodLabels,
+      defaultTolText: lt.labToleranceDefault,
+      defaultLegend: lt.labLegendDefault,
+      failureLegend: lt.labLegendFailed,
+      tooltip: (s: LabSeries, p: LabPoint) =>
+        lt.labPointTooltip(
+          t.methodNames[s.method],
+          formatTol(p.tol, lt.labToleranceDefault),
+          p.nsPerPoint.toFixed(0),
+          formatMaxError(p.maxError),
+        ),
+      emptyText: t.labRun + '…',
+    }),
+    [t, lt, highlight, methodLabels],
+  );
+  const drawDiagram = useCallback(
+    (svg: SVGSVGElement, width: number, height: number) =>
+      drawWorkPrecisionChart(svg, result ? result.series : [], { ...chartOptions, width, height }),
+    [result, chartOptions],
+  );
+  const drawCycle = useCallback(
+    (svg: SVGSVGElement, width: number, height: number) => {
+      if (!result) return;
+      drawCycleChart(
+        svg,
+        {
+          theta2Deg: result.theta2Deg,
+          detJ: result.detJ,
+          iterations: result.iterations.map((it) => ({ ...it, label: t.methodNames[it.method] })),
+          limitsDeg: result.limitsDeg,
+          currentDeg: theta2Deg,
+        },
+        {
+          width,
+          height,
+          title: lt.labCycleTitle,
+          xLabel: t.axisTheta2,
+          iterationsLabel: lt.labCycleIterations,
+          detJLabel: lt.labCycleDetJ,
+        },
+      );
+    },
+    [result, t, lt, theta2Deg],
+  );
+  return { chartOptions, drawDiagram, drawCycle };
+}

@@ -1,0 +1,256 @@
+import type { Dispatch } from 'react';
+import type { Linkage } from '../../solver/types';
+import type { Action, AppState, Direction } from '../../shared/state/appState';
+import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../shared/state/appState';
+import { THETA2_DECIMALS } from '../../shared/format';
+import type { PresetId } from '../../shared/state/presets';
+import { PRESETS, getPreset } from '../../shared/state/presets';
+import type { LockableParam } from '../../shared/url/url';
+import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Icon } from '../../shared/ui/Icon';
+import { NumberControl } from '../../shared/ui/NumberControl';
+import { PanelSection } from '../../shared/ui/PanelSection';
+import { Segmented } from '../../shared/ui/Segmented';
+import { FlagToggles } from '../../shared/ui/Toggle';
+import type { SliderRange } from './sliderRange';
+
+/** The four link lengths, in the order the controls show them. */
+export const LENGTH_FIELDS: readonly (keyof Linkage)[] = ['r1', 'r2', 'r3', 'r4'];
+
+/** Props every section of the controls gets: the state, its dispatcher and which parameters are locked. */
+export interface ControlsSectionProps {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+  isLocked: (p: LockableParam) => boolean;
+}
+
+/** The preset menu (disabled while a length is locked); a preset sets the lengths, θ2, branch and coupler point. */
+export function PresetSection({
+  presetId,
+  disabled,
+  dispatch,
+}: {
+  presetId: PresetId | null;
+  disabled: boolean;
+  dispatch: Dispatch<Action>;
+}) {
+  const t = useMessages();
+  return (
+    <PanelSection id="sec-preset" title={t.preset}>
+      <select
+        className="select"
+        aria-label={t.preset}
+        value={presetId ?? ''}
+        disabled={disabled}
+        onChange={(e) => {
+          if (!e.target.value) return;
+          const p = getPreset(e.target.value as PresetId);
+          dispatch({
+            type: 'applyPreset',
+            linkage: p.linkage,
+            theta2Deg: p.theta2Deg,
+            branch: p.branch,
+            coupler: p.coupler,
+          });
+        }}
+      >
+        <option value="">{t.presetPlaceholder}</option>
+        {PRESETS.map((p) => (
+          <option key={p.id} value={p.id}>
+            {t.presetNames[p.id]}
+          </option>
+        ))}
+      </select>
+    </PanelSection>
+  );
+}
+
+/** The four link lengths, each a slider and field on the shared range. */
+export function LinksSection({ state, dispatch, isLocked, range }: ControlsSectionProps & { range: SliderRange }) {
+  const t = useMessages();
+  return (
+    <PanelSection id="sec-links" title={t.sectionLinks}>
+      {LENGTH_FIELDS.map((f) => (
+        <NumberControl
+          key={f}
+          field={f}
+          value={state.linkage[f]}
+          min={range.min}
+          max={range.max}
+          step={range.step}
+          locked={isLocked(f)}
+          onCommit={(v) => dispatch({ type: 'setLength', field: f, value: v })}
+        />
+      ))}
+    </PanelSection>
+  );
+}
+
+/** The input angle θ2 and the assembly branch. */
+export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps) {
+  const t = useMessages();
+  return (
+    <PanelSection id="sec-input" title={t.sectionInput}>
+      <NumberControl
+        field="theta2"
+        value={state.theta2Deg}
+        decimals={THETA2_DECIMALS}
+        min={0}
+        max={360}
+        step={0.5}
+        unit="°"
+        locked={isLocked('theta2')}
+        onCommit={(v) => dispatch({ type: 'setTheta2', deg: v })}
+      />
+      <Segmented
+        legend={t.branch}
+        value={state.branch}
+        locked={isLocked('branch')}
+        options={[
+          { value: 'open', label: t.branchOpen },
+          { value: 'crossed', label: t.branchCrossed },
+        ]}
+        onChange={(b) => dispatch({ type: 'setBranch', branch: b })}
+      />
+    </PanelSection>
+  );
+}
+
+/** Step back, Play/Pause and step forward. */
+function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & { onStep: (sign: 1 | -1) => void }) {
+  const t = useMessages();
+  const playLocked = isLocked('play');
+  return (
+    <div className="play-row">
+      <button
+        type="button"
+        className="icon-btn"
+        aria-label={t.stepBack}
+        title={t.stepBack}
+        disabled={isLocked('theta2')}
+        onClick={() => onStep(-1)}
+      >
+        <Icon name="stepBack" />
+      </button>
+      <button
+        type="button"
+        className={`btn btn-primary play-btn${playLocked ? ' is-locked' : ''}`}
+        disabled={playLocked}
+        title={playLocked ? t.locked : undefined}
+        onClick={() => dispatch({ type: 'setPlaying', playing: !state.playing })}
+      >
+        <Icon name={state.playing ? 'pause' : 'play'} size={14} />
+        <span>{state.playing ? t.pause : t.play}</span>
+      </button>
+      <button
+        type="button"
+        className="icon-btn"
+        aria-label={t.stepForward}
+        title={t.stepForward}
+        disabled={isLocked('theta2')}
+        onClick={() => onStep(1)}
+      >
+        <Icon name="stepForward" />
+      </button>
+    </div>
+  );
+}
+
+/** Props of AnimationSection: a section's props, the step handler, the layout and whether the input rocks. */
+export interface AnimationSectionProps extends ControlsSectionProps {
+  onStep: (sign: 1 | -1) => void;
+  compact: boolean;
+  rocking: boolean;
+}
+
+/** Play and step; in the full layout also the speed and direction; a note when the input only rocks. */
+export function AnimationSection({ compact, rocking, ...props }: AnimationSectionProps) {
+  const t = useMessages();
+  const { state, dispatch } = props;
+  return (
+    <PanelSection id="sec-anim" title={t.sectionAnimation}>
+      <PlayRow {...props} />
+      {!compact ? (
+        <>
+          <NumberControl
+            field="speed"
+            value={state.speedDegPerFrame}
+            min={SPEED_MIN}
+            max={SPEED_MAX}
+            step={SPEED_STEP}
+            onCommit={(v) => dispatch({ type: 'setSpeed', degPerFrame: v })}
+          />
+          <Segmented<'1' | '-1'>
+            legend={t.direction}
+            value={String(state.direction) as '1' | '-1'}
+            options={[
+              { value: '1', label: t.ccw },
+              { value: '-1', label: t.cw },
+            ]}
+            onChange={(d) => dispatch({ type: 'setDirection', direction: Number(d) as Direction })}
+          />
+        </>
+      ) : null}
+      {rocking ? <p className="note">{t.rockingNote}</p> : null}
+    </PanelSection>
+  );
+}
+
+/** The coupler point: its distance along the coupler (on the lengths' range) and its angle. */
+export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSectionProps & { range: SliderRange }) {
+  const t = useMessages();
+  return (
+    <PanelSection id="sec-coupler" title={t.sectionCoupler}>
+      <NumberControl
+        field="couplerDistance"
+        value={state.coupler.distance}
+        min={0}
+        max={range.max}
+        step={range.step}
+        locked={isLocked('coupler')}
+        onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { distance: v } })}
+      />
+      <NumberControl
+        field="couplerAngle"
+        value={state.coupler.angleDeg}
+        min={-180}
+        max={180}
+        step={1}
+        unit="°"
+        locked={isLocked('coupler')}
+        onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { angleDeg: v } })}
+      />
+    </PanelSection>
+  );
+}
+
+/** The canvas's display toggles and the number of cycle samples (an unusual count from a link is kept listed). */
+export function DisplaySection({ state, dispatch }: Omit<ControlsSectionProps, 'isLocked'>) {
+  const t = useMessages();
+  const choices = SAMPLE_CHOICES.includes(state.samples)
+    ? SAMPLE_CHOICES
+    : [...SAMPLE_CHOICES, state.samples].sort((a, b) => a - b);
+  return (
+    <PanelSection id="sec-display" title={t.sectionDisplay}>
+      <FlagToggles
+        flags={['showGrid', 'showAngles', 'showGhost', 'showTrace', 'showDeadCentres', 'showInstantCentres']}
+        state={state}
+        dispatch={dispatch}
+      />
+      <label className="inline-field">
+        <span>{t.samples}</span>
+        <select
+          className="select select-small"
+          value={String(state.samples)}
+          onChange={(e) => dispatch({ type: 'setSamples', samples: Number(e.target.value) })}
+        >
+          {choices.map((n) => (
+            <option key={n} value={n}>
+              {n + 1}
+            </option>
+          ))}
+        </select>
+      </label>
+    </PanelSection>
+  );
+}
