@@ -1,6 +1,7 @@
 import './EmbedLayout.css';
 import { useCallback, useState } from 'react';
-import type { AppState } from '../shared/state/appState';
+import type { Dispatch } from 'react';
+import type { Action, AppState } from '../shared/state/appState';
 import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../shared/url/url';
 import { appUrl } from '../shared/url/url';
 import { ControlsPanel } from '../features/simulator/ControlsPanel';
@@ -10,7 +11,7 @@ import { EmbedPanels } from './EmbedPanels';
 import { LanguageSelect } from './LanguageSelect';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { LinkageStage } from '../features/simulator/LinkageStage';
-import { MessagesContext } from '../shared/i18n/MessagesContext';
+import { MessagesContext, useMessages } from '../shared/i18n/MessagesContext';
 import { shellMessages } from './shellMessages';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useSimulatorSession } from './useSimulatorSession';
@@ -40,6 +41,24 @@ function fullAppHref(state: AppState): string {
   } catch {
     return '';
   }
+}
+
+/** The widget's title bar: its title, the language, and a link to the full simulator where there is one. */
+function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Dispatch<Action>; fullHref: string }) {
+  const t = useMessages();
+  return (
+    <header className="embed-bar">
+      <h1 className="embed-title">{t.embedTitle}</h1>
+      <div className="embed-bar-right">
+        <LanguageSelect locale={state.locale} dispatch={dispatch} />
+        {fullHref ? (
+          <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
+            {t.openFull} ↗
+          </a>
+        ) : null}
+      </div>
+    </header>
+  );
 }
 
 /**
@@ -73,17 +92,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
     <MessagesContext.Provider value={t}>
       <FramePoseProvider state={state} playhead={playhead} ghostShown>
         <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
-          <header className="embed-bar">
-            <h1 className="embed-title">{t.embedTitle}</h1>
-            <div className="embed-bar-right">
-              <LanguageSelect locale={state.locale} dispatch={dispatch} />
-              {fullHref ? (
-                <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
-                  {t.openFull} ↗
-                </a>
-              ) : null}
-            </div>
-          </header>
+          <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
           <UrlNotice ignored={initial.ignored} />
           <main className="embed-main">
             <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>

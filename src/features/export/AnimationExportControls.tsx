@@ -28,23 +28,25 @@ interface Running {
   total: number;
 }
 
+/** The animation's settings as the panel holds them: the size, the typed frames per cycle and the loop. */
+interface AnimationSettings {
+  size: AnimationSize;
+  framesText: string;
+  loop: boolean;
+}
+
 /**
- * The animation part of the Export panel: size (screen or 720p), frames per cycle, loop, the GIF and WebM
- * buttons, and while one runs a progress bar with Cancel; a status line says how it ended.
+ * One animation export at a time: start runs it (refusing frames out of range), cancel stops it; running is its
+ * progress and status how the last one ended. Leaving the panel (or the page) stops an export still drawing frames.
  */
-export function AnimationExportControls({ onAnimation }: AnimationExportControlsProps) {
+function useAnimationRun(onAnimation: AnimationExportControlsProps['onAnimation']) {
   const t = useMessages();
-  const framesId = useId();
-  const [size, setSize] = useState<AnimationSize>('screen');
-  const [framesText, setFramesText] = useState(String(FRAMES_PER_CYCLE.initial));
-  const [loop, setLoop] = useState(true);
   const [running, setRunning] = useState<Running | null>(null);
   const [status, setStatus] = useState('');
   const abort = useRef<AbortController | null>(null);
-  // Leaving the panel (or the page) stops an export that is still drawing frames.
   useEffect(() => () => abort.current?.abort(), []);
 
-  const start = (format: AnimationFormat) => {
+  const start = (format: AnimationFormat, { size, framesText, loop }: AnimationSettings) => {
     const framesPerCycle = parseFramesPerCycle(framesText);
     if (framesPerCycle === null) {
       setStatus(t.framesOutOfRange(FRAMES_PER_CYCLE.min, FRAMES_PER_CYCLE.max));
@@ -73,6 +75,21 @@ export function AnimationExportControls({ onAnimation }: AnimationExportControls
         setRunning(null);
       });
   };
+  return { running, status, start, cancel: () => abort.current?.abort() };
+}
+
+/**
+ * The animation part of the Export panel: size (screen or 720p), frames per cycle, loop, the GIF and WebM
+ * buttons, and while one runs a progress bar with Cancel; a status line says how it ended.
+ */
+export function AnimationExportControls({ onAnimation }: AnimationExportControlsProps) {
+  const t = useMessages();
+  const framesId = useId();
+  const [size, setSize] = useState<AnimationSize>('screen');
+  const [framesText, setFramesText] = useState(String(FRAMES_PER_CYCLE.initial));
+  const [loop, setLoop] = useState(true);
+  const { running, status, start: run, cancel } = useAnimationRun(onAnimation);
+  const start = (format: AnimationFormat) => run(format, { size, framesText, loop });
 
   return (
     <div className="anim-export">
@@ -120,7 +137,7 @@ export function AnimationExportControls({ onAnimation }: AnimationExportControls
             max={running.total}
             value={running.done}
           />
-          <button type="button" className="btn btn-small" onClick={() => abort.current?.abort()}>
+          <button type="button" className="btn btn-small" onClick={cancel}>
             {t.cancel}
           </button>
         </div>

@@ -51,6 +51,45 @@ export interface Exports {
   onCanvasSize: (width: number, height: number) => void;
 }
 
+/** Encodes the animation of the frame on screen at the canvas's size (GIF or WebM, as the request says). */
+async function exportAnimation(
+  s: ExportSources,
+  canvasSize: { width: number; height: number },
+  request: AnimationRequest,
+): Promise<AnimationExportResult> {
+  const { cycle, t } = s;
+  const { state, scene } = exportFrame(s);
+  if (!cycle) throw new Error('the cycle is still being solved');
+  // The frame planner, the encoders and their worker load on the first animation export.
+  const { exportLinkageAnimation } = await import('./animationExporter');
+  const { width, height } = canvasSize;
+  const devicePixelRatio = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
+  return exportLinkageAnimation(
+    { state, cycle, scene, viewWidth: width, viewHeight: height, devicePixelRatio, t },
+    request,
+  );
+}
+
+/** Solves the n-point table (with the motion columns) on the export channel and downloads it as CSV. */
+async function exportTableCsv({ state: s, client }: ExportSources): Promise<void> {
+  if (!client) throw new Error('the solver is still starting');
+  // The export always carries the motion columns, for the input motion as the panel shows it.
+  const motion = {
+    input: effectiveInputMotion(s.omega2RadPerS, s.alpha2RadPerS2, s.direction),
+    coupler: { distance: s.coupler.distance, angleRad: degToRad(s.coupler.angleDeg) },
+  };
+  const [{ exportCsv }, tbl] = await Promise.all([
+    import('./exporters'),
+    client.run(
+      'table',
+      { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol }, motion },
+      { channel: 'export' },
+    ).result,
+  ]);
+  // A newer export request superseded this one: it downloads instead.
+  if (tbl) exportCsv(tbl);
+}
+
 /** The export callbacks: stable identities (the export panel does not re-render), always reading the latest sources. */
 export function useExports(sources: ExportSources): Exports {
   const canvasSize = useRef({ width: 640, height: 420 });
@@ -81,40 +120,9 @@ export function useExports(sources: ExportSources): Exports {
     [context],
   );
   const onAnimation = useCallback(
-    async (request: AnimationRequest) => {
-      const s = latest.current;
-      const { cycle, t } = s;
-      const { state, scene } = exportFrame(s);
-      if (!cycle) throw new Error('the cycle is still being solved');
-      // The frame planner, the encoders and their worker load on the first animation export.
-      const { exportLinkageAnimation } = await import('./animationExporter');
-      const { width, height } = canvasSize.current;
-      const devicePixelRatio = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
-      return exportLinkageAnimation(
-        { state, cycle, scene, viewWidth: width, viewHeight: height, devicePixelRatio, t },
-        request,
-      );
-    },
+    (request: AnimationRequest) => exportAnimation(latest.current, canvasSize.current, request),
     [latest],
   );
-  const onCsv = useCallback(async () => {
-    const { state: s, client } = latest.current;
-    if (!client) throw new Error('the solver is still starting');
-    // The export always carries the motion columns, for the input motion as the panel shows it.
-    const motion = {
-      input: effectiveInputMotion(s.omega2RadPerS, s.alpha2RadPerS2, s.direction),
-      coupler: { distance: s.coupler.distance, angleRad: degToRad(s.coupler.angleDeg) },
-    };
-    const [{ exportCsv }, tbl] = await Promise.all([
-      import('./exporters'),
-      client.run(
-        'table',
-        { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol }, motion },
-        { channel: 'export' },
-      ).result,
-    ]);
-    // A newer export request superseded this one: it downloads instead.
-    if (tbl) exportCsv(tbl);
-  }, [latest]);
+  const onCsv = useCallback(() => exportTableCsv(latest.current), [latest]);
   return { onPng, onSvg, onCsv, onAnimation, onCanvasSize };
 }

@@ -1,7 +1,7 @@
 import { useCallback, useMemo } from 'react';
 import { drawCycleChart } from './cycleChart';
 import { drawWorkPrecisionChart, formatMaxError, formatTol } from './workPrecisionChart';
-import type { WorkPrecisionChartOptions } from './workPrecisionChart';
+import type { WorkPrecisionChartOptions, WorkPrecisionHighlight } from './workPrecisionChart';
 import type { LabPoint, LabResult, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import type { Messages } from '../../shared/i18n/messages';
@@ -14,6 +14,28 @@ export interface LabCharts {
   drawCycle: (svg: SVGSVGElement, width: number, height: number) => void;
 }
 
+/** The work-precision diagram's texts, highlight and tooltips, in the page's language (any size). */
+function diagramOptions(t: Messages, lt: LabMessages, highlight: WorkPrecisionHighlight): LabCharts['chartOptions'] {
+  return {
+    title: lt.labDiagramTitle,
+    xLabel: lt.labDiagramX,
+    yLabel: lt.labDiagramY,
+    highlight,
+    methodLabels: t.methodNames,
+    defaultTolText: lt.labToleranceDefault,
+    defaultLegend: lt.labLegendDefault,
+    failureLegend: lt.labLegendFailed,
+    tooltip: (s: LabSeries, p: LabPoint) =>
+      lt.labPointTooltip(
+        t.methodNames[s.method],
+        formatTol(p.tol, lt.labToleranceDefault),
+        p.nsPerPoint.toFixed(0),
+        formatMaxError(p.maxError),
+      ),
+    emptyText: t.labRun + '…',
+  };
+}
+
 /** Options and draw callbacks of the work-precision diagram and the cycle chart, stable while their inputs are. */
 export function useLabCharts(
   result: LabResult | null,
@@ -24,28 +46,7 @@ export function useLabCharts(
   theta2Deg: number,
 ): LabCharts {
   const highlight = useMemo(() => ({ method, tol }), [method, tol]);
-  const methodLabels = t.methodNames;
-  const chartOptions = useMemo(
-    () => ({
-      title: lt.labDiagramTitle,
-      xLabel: lt.labDiagramX,
-      yLabel: lt.labDiagramY,
-      highlight,
-      methodLabels,
-      defaultTolText: lt.labToleranceDefault,
-      defaultLegend: lt.labLegendDefault,
-      failureLegend: lt.labLegendFailed,
-      tooltip: (s: LabSeries, p: LabPoint) =>
-        lt.labPointTooltip(
-          t.methodNames[s.method],
-          formatTol(p.tol, lt.labToleranceDefault),
-          p.nsPerPoint.toFixed(0),
-          formatMaxError(p.maxError),
-        ),
-      emptyText: t.labRun + '…',
-    }),
-    [t, lt, highlight, methodLabels],
-  );
+  const chartOptions = useMemo(() => diagramOptions(t, lt, highlight), [t, lt, highlight]);
   const drawDiagram = useCallback(
     (svg: SVGSVGElement, width: number, height: number) =>
       drawWorkPrecisionChart(svg, result ? result.series : [], { ...chartOptions, width, height }),

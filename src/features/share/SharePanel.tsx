@@ -22,12 +22,29 @@ function presetOf(id: EmbedPresetId) {
   return EMBED_PRESETS.find((p) => p.id === id) ?? DEFAULT_EMBED_PRESET;
 }
 
+/** The list with item added (kept in the order of all) or removed. */
+function toggled<T>(all: readonly T[], list: readonly T[], item: T, on: boolean): T[] {
+  return on ? all.filter((x) => x === item || list.includes(x)) : list.filter((x) => x !== item);
+}
+
+/** Copies a text to the clipboard; status says whether it worked, shown is the text (to copy by hand if not). */
+function useCopy() {
+  const t = useMessages();
+  const [status, setStatus] = useState('');
+  const [shown, setShown] = useState<string | null>(null);
+  const copy = async (text: string) => {
+    const ok = await copyText(text);
+    setStatus(ok ? t.copied : t.copyFailed);
+    setShown(text);
+  };
+  return { status, shown, copy };
+}
+
 function SharePanelImpl({ stateRef }: SharePanelProps) {
   const t = useMessages();
   const [embed, setEmbed] = useState<EmbedOptions>(DEFAULT_EMBED);
   const [presetId, setPresetId] = useState<EmbedPresetId>(DEFAULT_EMBED_PRESET.id);
-  const [status, setStatus] = useState('');
-  const [shown, setShown] = useState<string | null>(null);
+  const { status, shown, copy } = useCopy();
   // The generator (options, preview, code) renders only once opened; its URL is taken when an option changes.
   const [src, setSrc] = useState<string | null>(null);
 
@@ -39,29 +56,14 @@ function SharePanelImpl({ stateRef }: SharePanelProps) {
     return u.toString();
   };
   const codeFor = (s: string, id: EmbedPresetId) => embedSnippet({ src: s, title: t.embedTitle, preset: presetOf(id) });
-  const copy = async (text: string) => {
-    const ok = await copyText(text);
-    setStatus(ok ? t.copied : t.copyFailed);
-    setShown(text);
-  };
   const change = (next: EmbedOptions) => {
     setEmbed(next);
     if (src !== null) setSrc(srcFor(next));
   };
   const togglePanel = (p: EmbedPanel, on: boolean) =>
-    change({
-      ...embed,
-      panels: on
-        ? EMBED_PANELS.filter((x) => x === p || embed.panels.includes(x))
-        : embed.panels.filter((x) => x !== p),
-    });
+    change({ ...embed, panels: toggled(EMBED_PANELS, embed.panels, p, on) });
   const toggleLock = (p: LockableParam, on: boolean) =>
-    change({
-      ...embed,
-      locked: on
-        ? LOCKABLE_PARAMS.filter((x) => x === p || embed.locked.includes(x))
-        : embed.locked.filter((x) => x !== p),
-    });
+    change({ ...embed, locked: toggled(LOCKABLE_PARAMS, embed.locked, p, on) });
 
   return (
     <div className="share-panel">

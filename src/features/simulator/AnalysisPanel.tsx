@@ -8,6 +8,7 @@ import { grashofSumsText } from './grashofText';
 import { formatInputRange } from '../../shared/state/inputRange';
 import type { CycleResponse, PointResponse, TableResponse } from '../../shared/jobs/protocol';
 import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Fact } from './Fact';
 
 /** Props of AnalysisPanel: the latest cycle and point answers, the branch and the chosen NR start. */
 export interface AnalysisPanelProps {
@@ -41,57 +42,40 @@ function AnalysisPanelImpl({ cycle, table, point, branch, nrStart }: AnalysisPan
             <span className={`badge ${c?.grashof ? 'badge-ok' : 'badge-warn'}`}>{verdict}</span>
           </dd>
         </div>
-        <div className="fact">
-          <dt>{t.linkageType}</dt>
-          <dd data-testid="linkage-type">{c ? t.types[c.type] : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>{t.barker}</dt>
-          <dd className="mono">{c ? c.barker : '—'}</dd>
-        </div>
-        <div className="fact fact-wide">
-          <dt>{t.inputRange}</dt>
-          <dd>{range}</dd>
-        </div>
+        <Fact label={t.linkageType} testId="linkage-type">
+          {c ? t.types[c.type] : '—'}
+        </Fact>
+        <Fact label={t.barker} mono>
+          {c ? c.barker : '—'}
+        </Fact>
+        <Fact label={t.inputRange} wide>
+          {range}
+        </Fact>
       </dl>
       <h3 className="subhead">{t.atTheta2(theta2)}</h3>
       <dl className="facts facts-grid">
-        <div className="fact">
-          <dt>θ3</dt>
-          <dd className="mono">{pose ? deg(pose.theta3) : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>θ4</dt>
-          <dd className="mono">{pose ? deg(pose.theta4) : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>{t.transmissionAngle}</dt>
-          <dd className="mono">{pose ? `${formatDeg(radToDeg(pose.mu), 3)}°` : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>{t.status}</dt>
-          <dd>
-            {point ? (pose ? (nr ? t.newtonStatus[nr.status] : t.pointStatus.ok) : t.pointStatus.unreachable) : '—'}
-          </dd>
-        </div>
-        <div className="fact">
-          <dt>{t.nrIterations}</dt>
-          <dd className="mono" data-testid="nr-iterations">
-            {nr ? String(nr.iterations) : '—'}
-          </dd>
-        </div>
-        <div className="fact">
-          <dt>{t.residual}</dt>
-          <dd className="mono">{nr ? formatSci(nr.residual) : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>{t.detJ}</dt>
-          <dd className="mono">{nr ? formatSci(nr.detJ, 4) : '—'}</dd>
-        </div>
-        <div className="fact">
-          <dt>{t.nrStartLabel}</dt>
-          <dd>{nr ? (nr.start === 'continuation' ? t.nrContinuation : t.nrCold) : '—'}</dd>
-        </div>
+        <Fact label="θ3" mono>
+          {pose ? deg(pose.theta3) : '—'}
+        </Fact>
+        <Fact label="θ4" mono>
+          {pose ? deg(pose.theta4) : '—'}
+        </Fact>
+        <Fact label={t.transmissionAngle} mono>
+          {pose ? `${formatDeg(radToDeg(pose.mu), 3)}°` : '—'}
+        </Fact>
+        <Fact label={t.status}>
+          {point ? (pose ? (nr ? t.newtonStatus[nr.status] : t.pointStatus.ok) : t.pointStatus.unreachable) : '—'}
+        </Fact>
+        <Fact label={t.nrIterations} mono testId="nr-iterations">
+          {nr ? String(nr.iterations) : '—'}
+        </Fact>
+        <Fact label={t.residual} mono>
+          {nr ? formatSci(nr.residual) : '—'}
+        </Fact>
+        <Fact label={t.detJ} mono>
+          {nr ? formatSci(nr.detJ, 4) : '—'}
+        </Fact>
+        <Fact label={t.nrStartLabel}>{nr ? (nr.start === 'continuation' ? t.nrContinuation : t.nrCold) : '—'}</Fact>
       </dl>
       {table && table.branch === branch ? (
         <p className="note">

@@ -2,11 +2,12 @@ import './DesignPanel.css';
 import { memo, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Action } from '../../shared/state/appState';
-import type { DesignStop } from '../../shared/linkage/designFacts';
+import type { DesignFacts, DesignStop } from '../../shared/linkage/designFacts';
 import { designFacts } from '../../shared/linkage/designFacts';
 import type { DesignInfo } from './useDesignMetrics';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { NumberControl } from '../../shared/ui/NumberControl';
+import { Fact } from './Fact';
 
 /** Props of DesignPanel: the design metrics (null when the lengths are refused), the μ band and the dispatcher. */
 export interface DesignPanelProps {
@@ -48,6 +49,108 @@ function GoTo({ what, at, testId, onGo }: GoToProps) {
   );
 }
 
+/** A fact with its value (or a dash without metrics) and, under it, the θ2 it is reached at. */
+function ValueFact({
+  label,
+  text,
+  at,
+  testId,
+}: {
+  label: string;
+  text: string | null;
+  at?: DesignStop;
+  testId: string;
+}) {
+  return (
+    <div className="fact fact-wide">
+      <dt>{label}</dt>
+      <dd className="mono" data-testid={testId}>
+        {text ?? '—'}
+      </dd>
+      {at ? <GoTo what={label} at={at} testId={`${testId}-at`} onGo={null} /> : null}
+    </div>
+  );
+}
+
+/** The design facts: μ extremes, dead centres, swing, time ratio and input limits, with go-to buttons where allowed. */
+function DesignFactList({ facts, onGo }: { facts: DesignFacts | null; onGo: ((theta2Deg: number) => void) | null }) {
+  const t = useMessages();
+  const names = { extended: t.deadCentreExtended, folded: t.deadCentreFolded };
+  return (
+    <dl className="facts">
+      <ValueFact label={t.designMuMin} text={facts?.muMinText ?? null} at={facts?.muMinAt} testId="design-mu-min" />
+      <ValueFact label={t.designMuMax} text={facts?.muMaxText ?? null} at={facts?.muMaxAt} testId="design-mu-max" />
+      {facts?.deadCentres
+        ? facts.deadCentres.map((dc) => (
+            <div className="fact fact-wide" key={dc.kind} data-testid={`design-dc-${dc.kind}`}>
+              <dt>{names[dc.kind]}</dt>
+              <GoTo what={names[dc.kind]} at={dc} testId={`design-dc-${dc.kind}-at`} onGo={onGo} />
+              <dd className="mono" data-testid={`design-dc-${dc.kind}-theta4`}>
+                {t.deadCentreTheta4(dc.theta4Text)}
+              </dd>
+            </div>
+          ))
+        : null}
+      {facts?.swingText ? (
+        <Fact label={t.swing} mono testId="design-swing">
+          {facts.swingText}
+        </Fact>
+      ) : null}
+      {facts?.timeRatioText ? (
+        <Fact label={t.timeRatio} mono testId="design-time-ratio">
+          {facts.timeRatioText}
+        </Fact>
+      ) : null}
+      {facts
+        ? facts.limits.map((at, i) => (
+            <div className="fact fact-wide" key={`limit-${i}`}>
+              <dt>{`${t.inputLimit} ${i + 1}`}</dt>
+              <GoTo what={`${t.inputLimit} ${i + 1}`} at={at} testId={`design-limit-${i}`} onGo={onGo} />
+            </div>
+          ))
+        : null}
+    </dl>
+  );
+}
+
+/** The usable μ band's two fields; a band whose ends are out of order is refused with a message. */
+function MuBandFields({ loDeg, hiDeg, dispatch }: { loDeg: number; hiDeg: number; dispatch: Dispatch<Action> }) {
+  const t = useMessages();
+  const [bandError, setBandError] = useState(false);
+  const setBand = (lo: number, hi: number) => {
+    setBandError(!(lo < hi));
+    if (lo < hi) dispatch({ type: 'setMuBand', loDeg: lo, hiDeg: hi });
+  };
+  return (
+    <div className="band-fields" role="group" aria-label={t.muBand}>
+      <h3 className="subhead">{t.muBand}</h3>
+      <NumberControl
+        field="muBandLo"
+        value={loDeg}
+        min={0}
+        max={180}
+        step={1}
+        unit="°"
+        onCommit={(v) => setBand(v, hiDeg)}
+      />
+      <NumberControl
+        field="muBandHi"
+        value={hiDeg}
+        min={0}
+        max={180}
+        step={1}
+        unit="°"
+        onCommit={(v) => setBand(loDeg, v)}
+      />
+      {bandError ? (
+        <p className="note note-error" role="alert">
+          {t.muBandOrder}
+        </p>
+      ) : null}
+    </div>
+  );
+}
+
 function DesignPanelImpl({
   design,
   muBandLoDeg,
@@ -58,101 +161,18 @@ function DesignPanelImpl({
 }: DesignPanelProps) {
   const t = useMessages();
   const facts = useMemo(() => (design ? designFacts(design.metrics, design.range) : null), [design]);
-  const [bandError, setBandError] = useState(false);
+  // "Go to" stops Play first, so the chosen θ2 is the one that stays on screen.
   const onGo = theta2Locked
     ? null
     : (theta2Deg: number) => {
         dispatch({ type: 'setPlaying', playing: false });
         dispatch({ type: 'setTheta2', deg: theta2Deg });
       };
-  const setBand = (loDeg: number, hiDeg: number) => {
-    setBandError(!(loDeg < hiDeg));
-    if (loDeg < hiDeg) dispatch({ type: 'setMuBand', loDeg, hiDeg });
-  };
-  const names = { extended: t.deadCentreExtended, folded: t.deadCentreFolded };
-
   return (
     <div className="design analysis">
-      <dl className="facts">
-        <div className="fact fact-wide">
-          <dt>{t.designMuMin}</dt>
-          <dd className="mono" data-testid="design-mu-min">
-            {facts ? facts.muMinText : '—'}
-          </dd>
-          {facts ? <GoTo what={t.designMuMin} at={facts.muMinAt} testId="design-mu-min-at" onGo={null} /> : null}
-        </div>
-        <div className="fact fact-wide">
-          <dt>{t.designMuMax}</dt>
-          <dd className="mono" data-testid="design-mu-max">
-            {facts ? facts.muMaxText : '—'}
-          </dd>
-          {facts ? <GoTo what={t.designMuMax} at={facts.muMaxAt} testId="design-mu-max-at" onGo={null} /> : null}
-        </div>
-        {facts?.deadCentres
-          ? facts.deadCentres.map((dc) => (
-              <div className="fact fact-wide" key={dc.kind} data-testid={`design-dc-${dc.kind}`}>
-                <dt>{names[dc.kind]}</dt>
-                <GoTo what={names[dc.kind]} at={dc} testId={`design-dc-${dc.kind}-at`} onGo={onGo} />
-                <dd className="mono" data-testid={`design-dc-${dc.kind}-theta4`}>
-                  {t.deadCentreTheta4(dc.theta4Text)}
-                </dd>
-              </div>
-            ))
-          : null}
-        {facts?.swingText ? (
-          <div className="fact">
-            <dt>{t.swing}</dt>
-            <dd className="mono" data-testid="design-swing">
-              {facts.swingText}
-            </dd>
-          </div>
-        ) : null}
-        {facts?.timeRatioText ? (
-          <div className="fact">
-            <dt>{t.timeRatio}</dt>
-            <dd className="mono" data-testid="design-time-ratio">
-              {facts.timeRatioText}
-            </dd>
-          </div>
-        ) : null}
-        {facts
-          ? facts.limits.map((at, i) => (
-              <div className="fact fact-wide" key={`limit-${i}`}>
-                <dt>{`${t.inputLimit} ${i + 1}`}</dt>
-                <GoTo what={`${t.inputLimit} ${i + 1}`} at={at} testId={`design-limit-${i}`} onGo={onGo} />
-              </div>
-            ))
-          : null}
-      </dl>
+      <DesignFactList facts={facts} onGo={onGo} />
       {facts && !facts.deadCentres && facts.limits.length === 0 ? <p className="note">{t.noDeadCentres}</p> : null}
-      {!compact ? (
-        <div className="band-fields" role="group" aria-label={t.muBand}>
-          <h3 className="subhead">{t.muBand}</h3>
-          <NumberControl
-            field="muBandLo"
-            value={muBandLoDeg}
-            min={0}
-            max={180}
-            step={1}
-            unit="°"
-            onCommit={(v) => setBand(v, muBandHiDeg)}
-          />
-          <NumberControl
-            field="muBandHi"
-            value={muBandHiDeg}
-            min={0}
-            max={180}
-            step={1}
-            unit="°"
-            onCommit={(v) => setBand(muBandLoDeg, v)}
-          />
-          {bandError ? (
-            <p className="note note-error" role="alert">
-              {t.muBandOrder}
-            </p>
-          ) : null}
-        </div>
-      ) : null}
+      {!compact ? <MuBandFields loDeg={muBandLoDeg} hiDeg={muBandHiDeg} dispatch={dispatch} /> : null}
     </div>
   );
 }

@@ -1,5 +1,6 @@
 import './LinkageCanvas.css';
 import { memo, useEffect, useId, useRef, useState } from 'react';
+import type { RefObject } from 'react';
 import { flushSync } from 'react-dom';
 import { radToDeg360, wrapDeg360 } from '../../solver/angles';
 import type { LinkageScene } from '../../shared/linkage/scene';
@@ -34,6 +35,83 @@ export interface LinkageCanvasProps {
 /** Degrees the arrow keys turn the crank (with Shift: ten times as far). */
 const KEY_STEP_DEG = 1;
 
+/** The crank turn (degrees) an arrow key asks for, ten times as far with Shift; null for any other key. */
+function keyTurnDeg(e: { key: string; shiftKey: boolean }): number | null {
+  const step = e.shiftKey ? 10 * KEY_STEP_DEG : KEY_STEP_DEG;
+  if (e.key === 'ArrowRight' || e.key === 'ArrowUp') return step;
+  if (e.key === 'ArrowLeft' || e.key === 'ArrowDown') return -step;
+  return null;
+}
+
+/** The zoom in, zoom out and fit buttons over the canvas. */
+function CanvasTools({ zoomBy, resetView }: { zoomBy: (factor: number) => void; resetView: () => void }) {
+  const t = useMessages();
+  return (
+    <div className="canvas-tools">
+      <button type="button" className="icon-btn" aria-label={t.zoomIn} title={t.zoomIn} onClick={() => zoomBy(1.25)}>
+        <Icon name="plus" />
+      </button>
+      <button type="button" className="icon-btn" aria-label={t.zoomOut} title={t.zoomOut} onClick={() => zoomBy(0.8)}>
+        <Icon name="minus" />
+      </button>
+      <button type="button" className="icon-btn" aria-label={t.resetView} title={t.resetView} onClick={resetView}>
+        <Icon name="fit" />
+      </button>
+    </div>
+  );
+}
+
+/** What useCanvasHandles needs: the canvas, its scene, size and view, and the edits a drag of A or P makes. */
+type CanvasHandlesOptions = Pick<LinkageCanvasProps, 'scene' | 'view' | 'onViewChange' | 'onTheta2' | 'onCoupler'> & {
+  canvasRef: RefObject<HTMLCanvasElement | null>;
+  width: number;
+  height: number;
+};
+
+/**
+ * Pan and zoom of the canvas with grab-and-drag of the crank pin A and the coupler point P; returns the bounds to
+ * fit (held while a handle is dragged) with usePanZoom's handlers.
+ */
+function useCanvasHandles({
+  scene,
+  view,
+  onViewChange,
+  onTheta2,
+  onCoupler,
+  canvasRef,
+  width,
+  height,
+}: CanvasHandlesOptions) {
+  // While A or P is dragged the fit stays put: a new cycle (P moved) would otherwise rescale the view under
+  // the pointer and the joint would drift away from it.
+  const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
+  const bounds = heldBounds ?? scene.bounds;
+  const transform = () => fitView(bounds, width, height, view);
+  const movable = { A: Boolean(onTheta2), P: Boolean(onCoupler) };
+  // Drags commit synchronously: the pose under the finger is drawn in the same frame as the move.
+  const dragTo = (kind: 'A' | 'P', p: ScreenPoint) => {
+    if (kind === 'A') {
+      const deg = crankAngleAt(transform(), p);
+      if (deg !== null && onTheta2) flushSync(() => onTheta2(deg));
+    } else {
+      const c = couplerAt(scene, transform(), p);
+      if (c && onCoupler) flushSync(() => onCoupler(c));
+    }
+  };
+  const panZoom = usePanZoom<'A' | 'P'>({
+    canvasRef,
+    view,
+    onViewChange,
+    width,
+    height,
+    grab: (p, pointerType) => hitHandle(scene, transform(), p, grabRadiusPx(pointerType), movable),
+    onDrag: dragTo,
+    // While A or P is dragged the fit holds (see heldBounds).
+    onGrab: (handle) => setHeldBounds(handle ? scene.bounds : null),
+  });
+  return { bounds, ...panZoom };
+}
+
 function LinkageCanvasImpl({
   scene,
   view,
@@ -49,40 +127,20 @@ function LinkageCanvasImpl({
   const wrapRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const { width, height } = useElementSize(wrapRef);
-  // While A or P is dragged the fit stays put: a new cycle (P moved) would otherwise rescale the view under
-  // the pointer and the joint would drift away from it.
-  const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
-  const bounds = heldBounds ?? scene.bounds;
-
   useEffect(() => {
     if (width > 0 && height > 0) onSize?.(width, height);
   }, [width, height, onSize]);
-
-  useLinkageDrawing(canvasRef, scene, bounds, view, width, height);
-
-  const transform = () => fitView(bounds, width, height, view);
-  const movable = { A: Boolean(onTheta2), P: Boolean(onCoupler) };
-  // Drags commit synchronously: the pose under the finger is drawn in the same frame as the move.
-  const dragTo = (kind: 'A' | 'P', p: ScreenPoint) => {
-    if (kind === 'A') {
-      const deg = crankAngleAt(transform(), p);
-      if (deg !== null && onTheta2) flushSync(() => onTheta2(deg));
-    } else {
-      const c = couplerAt(scene, transform(), p);
-      if (c && onCoupler) flushSync(() => onCoupler(c));
-    }
-  };
-  const { pointerHandlers, zoomBy, resetView, onZoomKey } = usePanZoom<'A' | 'P'>({
-    canvasRef,
+  const { bounds, pointerHandlers, zoomBy, resetView, onZoomKey } = useCanvasHandles({
+    scene,
     view,
     onViewChange,
+    onTheta2,
+    onCoupler,
+    canvasRef,
     width,
     height,
-    grab: (p, pointerType) => hitHandle(scene, transform(), p, grabRadiusPx(pointerType), movable),
-    onDrag: dragTo,
-    // While A or P is dragged the fit holds (see heldBounds).
-    onGrab: (handle) => setHeldBounds(handle ? scene.bounds : null),
   });
+  useLinkageDrawing(canvasRef, scene, bounds, view, width, height);
   const turnBy = (deltaDeg: number) => {
     if (!onTheta2) return;
     const next = wrapDeg360(Math.round((radToDeg360(scene.theta2) + deltaDeg) * 100) / 100);
@@ -102,27 +160,15 @@ function LinkageCanvasImpl({
         tabIndex={0}
         {...pointerHandlers}
         onKeyDown={(e) => {
-          const step = e.shiftKey ? 10 * KEY_STEP_DEG : KEY_STEP_DEG;
-          const forward = e.key === 'ArrowRight' || e.key === 'ArrowUp';
-          const back = e.key === 'ArrowLeft' || e.key === 'ArrowDown';
           if (!onZoomKey(e)) {
-            if (!onTheta2 || !(forward || back)) return;
-            turnBy(forward ? step : -step);
+            const turn = keyTurnDeg(e);
+            if (!onTheta2 || turn === null) return;
+            turnBy(turn);
           }
           e.preventDefault();
         }}
       />
-      <div className="canvas-tools">
-        <button type="button" className="icon-btn" aria-label={t.zoomIn} title={t.zoomIn} onClick={() => zoomBy(1.25)}>
-          <Icon name="plus" />
-        </button>
-        <button type="button" className="icon-btn" aria-label={t.zoomOut} title={t.zoomOut} onClick={() => zoomBy(0.8)}>
-          <Icon name="minus" />
-        </button>
-        <button type="button" className="icon-btn" aria-label={t.resetView} title={t.resetView} onClick={resetView}>
-          <Icon name="fit" />
-        </button>
-      </div>
+      <CanvasTools zoomBy={zoomBy} resetView={resetView} />
       <p id={hintId} className="canvas-hint">
         {hint}
       </p>

@@ -4,6 +4,7 @@ import { radToDeg360 } from '../../solver/angles';
 import { formatDeg } from '../../shared/format';
 import type { FrameMotion } from '../../shared/linkage/frameMotion';
 import { useMessages } from '../../shared/i18n/MessagesContext';
+import { Fact } from './Fact';
 import { motionFacts } from './motionFacts';
 
 /** Props of MotionPanel: this frame's motion (null when the linkage does not assemble) and its theta2 (radians). */
@@ -21,12 +22,15 @@ function MotionPanelImpl({ motion, theta2Rad }: MotionPanelProps) {
       {motion ? (
         <dl className="facts facts-grid">
           {facts.map((f) => (
-            <div key={f.key} className={f.key.startsWith('v') || f.key === 'aP' ? 'fact fact-wide' : 'fact'}>
-              <dt>{f.label}</dt>
-              <dd className="mono" data-testid={`motion-${f.key}`}>
-                {f.value}
-              </dd>
-            </div>
+            <Fact
+              key={f.key}
+              label={f.label}
+              wide={f.key.startsWith('v') || f.key === 'aP'}
+              mono
+              testId={`motion-${f.key}`}
+            >
+              {f.value}
+            </Fact>
           ))}
         </dl>
       ) : (

@@ -31,6 +31,30 @@ export interface AnglePlotsPanelProps {
   rates?: CycleRates | null;
 }
 
+/** The plots' choosers: which plots (angles, velocities, accelerations) and whether θ3 and θ4 share a chart. */
+function PlotsHead({ kind, layout, dispatch }: { kind: PlotKind; layout: PlotLayout; dispatch: Dispatch<Action> }) {
+  const t = useMessages();
+  return (
+    <div className="plots-head">
+      <Segmented<PlotKind>
+        legend={t.plotKind}
+        value={kind}
+        options={PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] }))}
+        onChange={(v) => dispatch({ type: 'setPlotKind', kind: v })}
+      />
+      <Segmented<PlotLayout>
+        legend={t.plotLayout}
+        value={layout}
+        options={[
+          { value: 'separate', label: t.plotSeparate },
+          { value: 'together', label: t.plotTogether },
+        ]}
+        onChange={(v) => dispatch({ type: 'setPlotLayout', layout: v })}
+      />
+    </div>
+  );
+}
+
 function AnglePlotsPanelImpl({
   deg,
   showOther,
@@ -53,23 +77,7 @@ function AnglePlotsPanelImpl({
   const mBoth = useMemo(() => angleMarker('both', point), [point]);
   return (
     <div className="plots-panel">
-      <div className="plots-head">
-        <Segmented<PlotKind>
-          legend={t.plotKind}
-          value={kind}
-          options={PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] }))}
-          onChange={(v) => dispatch({ type: 'setPlotKind', kind: v })}
-        />
-        <Segmented<PlotLayout>
-          legend={t.plotLayout}
-          value={layout}
-          options={[
-            { value: 'separate', label: t.plotSeparate },
-            { value: 'together', label: t.plotTogether },
-          ]}
-          onChange={(v) => dispatch({ type: 'setPlotLayout', layout: v })}
-        />
-      </div>
+      <PlotsHead kind={kind} layout={layout} dispatch={dispatch} />
       {kind === 'velocities' || kind === 'accelerations' ? (
         <Suspense fallback={<p className="note">…</p>}>
           <RatePlots

@@ -4,7 +4,8 @@ import { radToDeg, radToDeg360 } from '../../solver/angles';
 import type { Branch } from '../../solver/types';
 import type { SceneDesign } from '../../shared/linkage/designOverlay';
 import type { SceneVectors } from '../../shared/linkage/motionVectors';
-import type { BranchExtent, LinkageScene, SceneText } from '../../shared/linkage/scene';
+import type { BranchExtent, LinkageScene, ScenePose, SceneText } from '../../shared/linkage/scene';
+import type { Bounds } from '../../shared/canvas/view';
 import { sceneBounds, sceneCurves, scenePose } from '../../shared/linkage/scene';
 import type { AppState } from '../../shared/state/appState';
 import { formatDeg, formatNumber } from '../../shared/format';
@@ -17,6 +18,46 @@ import type { LocalPose } from '../../shared/linkage/localPose';
 export interface LinkageSceneView {
   scene: LinkageScene;
   description: string;
+}
+
+/**
+ * Bounds to fit that stay put while the linkage moves: the cycle's (both branches when the ghost shows or the input
+ * rocks, which switches branch) once it has arrived, before that the pose itself.
+ */
+function useSceneBounds(
+  cycle: CycleResponse | null,
+  branch: Branch,
+  showGhost: boolean,
+  linkage: LocalPose['linkage'],
+  pose: ScenePose | null,
+  ghost: ScenePose | null,
+): Bounds {
+  const range = cycle?.classification.inputRange;
+  const rocking = range ? !range.full && range.intervals.length > 0 : false;
+  const cycleBounds = useMemo(() => {
+    if (!cycle) return null;
+    const other: Branch = branch === 'open' ? 'crossed' : 'open';
+    const ext = (b: Branch): BranchExtent => ({ theta4: cycle[b].theta4, px: cycle[b].px, py: cycle[b].py });
+    const both = showGhost || rocking;
+    return sceneBounds(cycle.linkage, both ? [ext(branch), ext(other)] : [ext(branch)], [], []);
+  }, [cycle, branch, showGhost, rocking]);
+  const poseBounds = useMemo(() => sceneBounds(linkage, [], [], [pose, ghost]), [linkage, pose, ghost]);
+  return cycleBounds ?? poseBounds;
+}
+
+/** The scene's texts in the page's language: joint names, the warning, the grid's spacing and number formats. */
+function useSceneText(t: Messages, warning: string | null, warningDetail: string | null): SceneText {
+  return useMemo(
+    () => ({
+      ...t.jointLabels,
+      warning,
+      warningDetail,
+      gridSpacing: t.gridSpacing,
+      formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
+      formatLength: (x: number) => formatNumber(x, 4),
+    }),
+    [t, warning, warningDetail],
+  );
 }
 
 /**
@@ -35,34 +76,13 @@ export function useLinkageScene(
   const { linkage, coupler, theta2Rad, branch } = local;
   const pose = useMemo(() => scenePose(linkage, local.pose, coupler), [linkage, local.pose, coupler]);
   const ghost = useMemo(() => scenePose(linkage, local.ghost, coupler), [linkage, local.ghost, coupler]);
-  const range = cycle?.classification.inputRange;
-  const rocking = range ? !range.full && range.intervals.length > 0 : false;
   const curves = useMemo(() => (cycle ? sceneCurves(cycle.curves, branch, theta2Rad) : []), [cycle, branch, theta2Rad]);
-  const cycleBounds = useMemo(() => {
-    if (!cycle) return null;
-    const other: Branch = branch === 'open' ? 'crossed' : 'open';
-    const ext = (b: Branch): BranchExtent => ({ theta4: cycle[b].theta4, px: cycle[b].px, py: cycle[b].py });
-    const both = state.showGhost || rocking;
-    return sceneBounds(cycle.linkage, both ? [ext(branch), ext(other)] : [ext(branch)], [], []);
-  }, [cycle, branch, state.showGhost, rocking]);
-  // Before the first cycle arrives, fit the pose itself.
-  const poseBounds = useMemo(() => sceneBounds(linkage, [], [], [pose, ghost]), [linkage, pose, ghost]);
-  const bounds = cycleBounds ?? poseBounds;
+  const bounds = useSceneBounds(cycle, branch, state.showGhost, linkage, pose, ghost);
 
   const classification = cycle?.classification ?? null;
   const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
   const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
-  const text: SceneText = useMemo(
-    () => ({
-      ...t.jointLabels,
-      warning,
-      warningDetail,
-      gridSpacing: t.gridSpacing,
-      formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
-      formatLength: (x: number) => formatNumber(x, 4),
-    }),
-    [t, warning, warningDetail],
-  );
+  const text = useSceneText(t, warning, warningDetail);
   const { showGrid, showAngles, showGhost, showTrace } = state;
   const scene: LinkageScene = useMemo(
     () => ({

@@ -54,18 +54,12 @@ export function canvasPoint(e: { clientX: number; clientY: number; currentTarget
   return { x: e.clientX - r.left, y: e.clientY - r.top };
 }
 
-/**
- * Pan and zoom for a canvas (mafs calls its equivalent useCamera): drag on empty space pans, a second finger
- * pinches, the wheel zooms about the pointer (a native non-passive listener, so the page does not scroll),
- * double-click fits, + - 0 on the keyboard; a pointer that lands on a handle (options.grab) drags it instead.
- * The view is the caller's state: the hook only calls onViewChange.
- */
-export function usePanZoom<H>(options: PanZoomOptions<H>): PanZoom {
-  const { canvasRef, view, onViewChange, width, height, grab, onDrag, onGrab, onTap } = options;
-  // Pointers down on the canvas and the gesture they make; touched in handlers only.
-  const pointers = useRef(new Map<number, ScreenPoint>());
-  const gesture = useRef<Gesture<H> | null>(null);
-
+/** Zooms a canvas about the pointer on the wheel, through a native non-passive listener so the page does not scroll. */
+function useWheelZoom(
+  canvasRef: RefObject<HTMLCanvasElement | null>,
+  view: ViewOffset,
+  onViewChange: (view: ViewOffset) => void,
+): void {
   const onWheel = useEffectEvent((e: WheelEvent, canvas: HTMLCanvasElement) => {
     e.preventDefault();
     const r = canvas.getBoundingClientRect();
@@ -79,6 +73,52 @@ export function usePanZoom<H>(options: PanZoomOptions<H>): PanZoom {
     canvas.addEventListener('wheel', listener, { passive: false });
     return () => canvas.removeEventListener('wheel', listener);
   }, [canvasRef]);
+}
+
+/** The gesture a pointer going down starts: a pinch with a second pointer, else a drag of the handle under it, else a pan. */
+function startGesture<H>(
+  pointers: Map<number, ScreenPoint>,
+  id: number,
+  p: ScreenPoint,
+  view: ViewOffset,
+  handleAt: () => H | null,
+): Gesture<H> {
+  if (pointers.size >= 2) {
+    const [[ia, a], [ib, b]] = [...pointers.entries()];
+    return { kind: 'pinch', ids: [ia, ib], from: [a, b], view };
+  }
+  const handle = handleAt();
+  if (handle !== null) return { kind: 'handle', handle, id };
+  return { kind: 'pan', id, from: p, panX: view.panX, panY: view.panY, moved: false };
+}
+
+/** The view a pan has reached with its pointer at p; null until the pointer has moved past TAP_SLOP_PX (a tap). */
+function pannedView(
+  g: Extract<Gesture<unknown>, { kind: 'pan' }>,
+  p: ScreenPoint,
+  zoom: number,
+  width: number,
+  height: number,
+): ViewOffset | null {
+  if (width <= 0 || height <= 0) return null;
+  if (Math.hypot(p.x - g.from.x, p.y - g.from.y) > TAP_SLOP_PX) g.moved = true;
+  if (!g.moved) return null;
+  return { zoom, panX: g.panX + (p.x - g.from.x) / width, panY: g.panY + (p.y - g.from.y) / height };
+}
+
+/**
+ * Pan and zoom for a canvas (mafs calls its equivalent useCamera): drag on empty space pans, a second finger
+ * pinches, the wheel zooms about the pointer (a native non-passive listener, so the page does not scroll),
+ * double-click fits, + - 0 on the keyboard; a pointer that lands on a handle (options.grab) drags it instead.
+ * The view is the caller's state: the hook only calls onViewChange.
+ */
+export function usePanZoom<H>(options: PanZoomOptions<H>): PanZoom {
+  const { canvasRef, view, onViewChange, width, height, grab, onDrag, onGrab, onTap } = options;
+  // Pointers down on the canvas and the gesture they make; touched in handlers only.
+  const pointers = useRef(new Map<number, ScreenPoint>());
+  const gesture = useRef<Gesture<H> | null>(null);
+
+  useWheelZoom(canvasRef, view, onViewChange);
 
   const zoomBy = (factor: number) => onViewChange(zoomAbout(view, factor, width / 2, height / 2, width, height));
   const resetView = () => onViewChange({ zoom: 1, panX: 0, panY: 0 });
@@ -97,20 +137,11 @@ export function usePanZoom<H>(options: PanZoomOptions<H>): PanZoom {
         e.currentTarget.setPointerCapture(e.pointerId);
         const p = canvasPoint(e);
         pointers.current.set(e.pointerId, p);
-        if (pointers.current.size >= 2) {
-          // A second finger turns any drag into a pinch.
-          if (gesture.current?.kind === 'handle') onGrab?.(null);
-          const [[ia, a], [ib, b]] = [...pointers.current.entries()];
-          gesture.current = { kind: 'pinch', ids: [ia, ib], from: [a, b], view };
-          return;
-        }
-        const handle = grab ? grab(p, e.pointerType) : null;
-        if (handle !== null) {
-          gesture.current = { kind: 'handle', handle, id: e.pointerId };
-          onGrab?.(handle);
-        } else {
-          gesture.current = { kind: 'pan', id: e.pointerId, from: p, panX: view.panX, panY: view.panY, moved: false };
-        }
+        // A second finger turns any drag into a pinch.
+        if (pointers.current.size >= 2 && gesture.current?.kind === 'handle') onGrab?.(null);
+        const g = startGesture(pointers.current, e.pointerId, p, view, () => (grab ? grab(p, e.pointerType) : null));
+        gesture.current = g;
+        if (g.kind === 'handle') onGrab?.(g.handle);
       },
       onPointerMove(e) {
         const p = canvasPoint(e);
@@ -130,14 +161,8 @@ export function usePanZoom<H>(options: PanZoomOptions<H>): PanZoom {
         } else if (g.id !== e.pointerId) {
           return;
         } else if (g.kind === 'pan') {
-          if (width <= 0 || height <= 0) return;
-          if (Math.hypot(p.x - g.from.x, p.y - g.from.y) > TAP_SLOP_PX) g.moved = true;
-          if (!g.moved) return;
-          onViewChange({
-            zoom: view.zoom,
-            panX: g.panX + (p.x - g.from.x) / width,
-            panY: g.panY + (p.y - g.from.y) / height,
-          });
+          const next = pannedView(g, p, view.zoom, width, height);
+          if (next) onViewChange(next);
         } else {
           onDrag?.(g.handle, p);
         }

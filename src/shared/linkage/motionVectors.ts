@@ -143,6 +143,40 @@ function aroundTip(tip: Px, ux: number, uy: number, width: number, height: numbe
   return candidatesAround(tip, { x: ux, y: uy }, TIP_ROTATIONS, [3, 9, 18], 0, width, height);
 }
 
+/** One kind of arrow to draw: its kind, the world vectors at A, B and P (null: not shown), its scale and colour. */
+type KindPlan = [VectorKind, Record<VectorPoint, WorldVector> | null, ArrowScale | null, string];
+
+/** The rows of the scale legend: one per kind shown, then the clamped and limit notes when they apply. */
+function legendRows(vectors: SceneVectors, kinds: readonly KindPlan[], anyClamped: boolean): LegendRow[] {
+  const t = vectors.text;
+  const rows: LegendRow[] = [];
+  for (const [kind, vs, scale, color] of kinds) {
+    if (!vs) continue;
+    const bar = kind === 'v' ? t.velocityBar : t.accelerationBar;
+    rows.push(
+      scale
+        ? { barPx: scale.barPx, color, text: bar(t.formatValue(scale.value)), dashed: false }
+        : { barPx: 0, color, text: `${t.symbol[kind]}: ${t.zero}`, dashed: false },
+    );
+  }
+  if (anyClamped) rows.push({ barPx: 24, color: THEME.textMuted, text: t.clamped, dashed: true });
+  if (vectors.limit && rows.length > 0) rows.push({ barPx: 0, color: THEME.warning, text: t.limit, dashed: false });
+  return rows;
+}
+
+/** The legend's box in the bottom-right corner, sized to its widest row; null without rows. */
+function placeLegend(rows: LegendRow[], view: ViewTransform, measure: MeasureText): VectorLegend | null {
+  if (rows.length === 0) return null;
+  let w = 0;
+  for (const r of rows) w = Math.max(w, (r.barPx > 0 ? r.barPx + LEGEND.gapPx : 0) + measure(r.text, 'regular'));
+  const width = w + 2 * LEGEND.pad;
+  const height = rows.length * LEGEND.rowPx + 2 * LEGEND.pad - 4;
+  return {
+    box: { x: view.width - LEGEND.margin - width, y: view.height - LEGEND.margin - height, width, height },
+    rows,
+  };
+}
+
 /**
  * Lays out the vector overlay for a pose: an arrow at A, B and P for each kind shown (screen direction of
  * the world vector, length from the kind's scale, clamped), their labels as layoutScene extras next to the
@@ -159,65 +193,36 @@ export function vectorOverlay(
   const arrows: VectorArrow[] = [];
   const labels: ExtraLabel[] = [];
   const obstacles: Obstacle[] = [];
-  const kinds: [VectorKind, Record<VectorPoint, WorldVector> | null, ArrowScale | null, string][] = [
+  const kinds: KindPlan[] = [
     ['v', vectors.velocity, vectors.velocityScale, THEME.velocity],
     ['a', vectors.acceleration, vectors.accelerationScale, THEME.acceleration],
   ];
   let anyClamped = false;
-  if (pose) {
-    for (const [kind, vs, scale, color] of kinds) {
-      if (!vs || !scale) continue;
-      for (const at of ['A', 'B', 'P'] as const) {
-        const w = vs[at];
-        const len = arrowLength(Math.hypot(w.x, w.y), scale.pxPerUnit);
-        if (!len) continue;
-        const from = { x: toScreenX(view, pose[at].x), y: toScreenY(view, pose[at].y) };
-        const m = Math.hypot(w.x, w.y);
-        // Screen y runs down: the world's y component flips.
-        const ux = w.x / m;
-        const uy = -w.y / m;
-        const to = { x: from.x + ux * len.lengthPx, y: from.y + uy * len.lengthPx };
-        if (len.clamp !== 'none') anyClamped = true;
-        arrows.push({ kind, at, from, to, clamp: len.clamp, color });
-        obstacles.push({ kind: 'segment', a: from, b: to, halfWidth: STROKES.vector, weight: 2 });
-        labels.push({
-          id: `extra:${kind}${at}`,
-          text: `${t.symbol[kind]}${at}`,
-          font: 'regular',
-          color,
-          candidates: (width, height) => aroundTip(to, ux, uy, width, height),
-        });
-      }
+  for (const [kind, vs, scale, color] of kinds) {
+    if (!pose || !vs || !scale) continue;
+    for (const at of ['A', 'B', 'P'] as const) {
+      const w = vs[at];
+      const len = arrowLength(Math.hypot(w.x, w.y), scale.pxPerUnit);
+      if (!len) continue;
+      const from = { x: toScreenX(view, pose[at].x), y: toScreenY(view, pose[at].y) };
+      const m = Math.hypot(w.x, w.y);
+      // Screen y runs down: the world's y component flips.
+      const ux = w.x / m;
+      const uy = -w.y / m;
+      const to = { x: from.x + ux * len.lengthPx, y: from.y + uy * len.lengthPx };
+      if (len.clamp !== 'none') anyClamped = true;
+      arrows.push({ kind, at, from, to, clamp: len.clamp, color });
+      obstacles.push({ kind: 'segment', a: from, b: to, halfWidth: STROKES.vector, weight: 2 });
+      labels.push({
+        id: `extra:${kind}${at}`,
+        text: `${t.symbol[kind]}${at}`,
+        font: 'regular',
+        color,
+        candidates: (width, height) => aroundTip(to, ux, uy, width, height),
+      });
     }
   }
-  const rows: LegendRow[] = [];
-  for (const [kind, vs, scale, color] of kinds) {
-    if (!vs) continue;
-    const bar = kind === 'v' ? t.velocityBar : t.accelerationBar;
-    rows.push(
-      scale
-        ? { barPx: scale.barPx, color, text: bar(t.formatValue(scale.value)), dashed: false }
-        : { barPx: 0, color, text: `${t.symbol[kind]}: ${t.zero}`, dashed: false },
-    );
-  }
-  if (anyClamped) rows.push({ barPx: 24, color: THEME.textMuted, text: t.clamped, dashed: true });
-  if (vectors.limit && rows.length > 0) rows.push({ barPx: 0, color: THEME.warning, text: t.limit, dashed: false });
-  let legend: VectorLegend | null = null;
-  if (rows.length > 0) {
-    let w = 0;
-    for (const r of rows) w = Math.max(w, (r.barPx > 0 ? r.barPx + LEGEND.gapPx : 0) + measure(r.text, 'regular'));
-    const width = w + 2 * LEGEND.pad;
-    const height = rows.length * LEGEND.rowPx + 2 * LEGEND.pad - 4;
-    legend = {
-      box: {
-        x: view.width - LEGEND.margin - width,
-        y: view.height - LEGEND.margin - height,
-        width,
-        height,
-      },
-      rows,
-    };
-  }
+  const legend = placeLegend(legendRows(vectors, kinds, anyClamped), view, measure);
   return { arrows, legend, exclusions: legend ? [legend.box] : [], extras: { labels, obstacles } };
 }
 

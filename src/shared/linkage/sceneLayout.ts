@@ -410,6 +410,38 @@ function labelRank(id: LabelId): number {
   return k >= 0 ? k : LABEL_ORDER.length;
 }
 
+/** What the labels avoid before the pose: the pivots, the crank pin, the ground symbols, the frame and the crank. */
+function groundObstacles(O2: Px, O4: Px, A: Px): Obstacle[] {
+  return [
+    jointBox(O2, STROKES.pivotRadius, 4),
+    jointBox(O4, STROKES.pivotRadius, 4),
+    jointBox(A, STROKES.jointRadius, 4),
+    { kind: 'rect', rect: groundSymbolRect(O2), weight: 2 },
+    { kind: 'rect', rect: groundSymbolRect(O4), weight: 2 },
+    { kind: 'segment', a: O2, b: O4, halfWidth: STROKES.ground, weight: 1, owner: 'r1' },
+    { kind: 'segment', a: O2, b: A, halfWidth: STROKES.link / 2, weight: 3, owner: 'r2' },
+  ];
+}
+
+/** The placed labels with their texts, and the warning box moved to where it was placed. */
+function sceneLabels(
+  placed: readonly { id: LabelId; centre: Px; box: ScreenRect }[],
+  meta: LabelCollector['meta'],
+  warning: WarningBox | null,
+): { labels: SceneLabel[]; warning: WarningBox | null } {
+  const labels: SceneLabel[] = [];
+  let placedWarning = warning;
+  for (const p of placed) {
+    if (p.id === 'warning') {
+      if (placedWarning) placedWarning = { ...placedWarning, box: p.box };
+      continue;
+    }
+    const m = meta.get(p.id)!;
+    labels.push({ id: p.id, text: m.text, font: m.font, color: m.color, centre: p.centre, box: p.box });
+  }
+  return { labels, warning: placedWarning };
+}
+
 /**
  * Lays out the canvas: joint positions, angle arcs and every label, placed so that no two labels overlap and
  * none overlaps an exclusion rectangle (the zoom buttons: canvasToolsRect) or leaves the canvas. Labels are
@@ -455,15 +487,7 @@ export function layoutScene(
   );
   labels.add('A', t.A, 'bold', THEME.text, (w, h) => aroundPoint(A, awayFrom(A, B ? [O2, B] : [O2]), jointClear, w, h));
 
-  const obstacles: Obstacle[] = [
-    jointBox(O2, STROKES.pivotRadius, 4),
-    jointBox(O4, STROKES.pivotRadius, 4),
-    jointBox(A, STROKES.jointRadius, 4),
-    { kind: 'rect', rect: groundSymbolRect(O2), weight: 2 },
-    { kind: 'rect', rect: groundSymbolRect(O4), weight: 2 },
-    { kind: 'segment', a: O2, b: O4, halfWidth: STROKES.ground, weight: 1, owner: 'r1' },
-    { kind: 'segment', a: O2, b: A, halfWidth: STROKES.link / 2, weight: 3, owner: 'r2' },
-  ];
+  const obstacles = groundObstacles(O2, O4, A);
   let drawnAngles: { arcs: SceneArc[]; references: [Px, Px][] } = { arcs: [], references: [] };
   if (pose && B && P) {
     const posed = { O2, A, B, P, O4 };
@@ -486,22 +510,13 @@ export function layoutScene(
 
   labels.requests.sort((x, y) => labelRank(x.id) - labelRank(y.id));
   const { placed, dropped } = placeLabels(labels.requests, bounds, exclusions, obstacles);
-  let warning = warned?.warning ?? null;
-  const sceneLabels: SceneLabel[] = [];
-  for (const p of placed) {
-    if (p.id === 'warning') {
-      if (warning) warning = { ...warning, box: p.box };
-      continue;
-    }
-    const m = labels.meta.get(p.id)!;
-    sceneLabels.push({ id: p.id, text: m.text, font: m.font, color: m.color, centre: p.centre, box: p.box });
-  }
+  const placedLabels = sceneLabels(placed, labels.meta, warned?.warning ?? null);
   return {
     joints,
     arcs: drawnAngles.arcs,
     references: drawnAngles.references,
-    labels: sceneLabels,
-    warning,
+    labels: placedLabels.labels,
+    warning: placedLabels.warning,
     dropped,
     design,
   };

@@ -36,6 +36,94 @@ function LockMark() {
   );
 }
 
+/** The field's text as typed, its error, and what the field's events do with them. */
+interface FieldDraft {
+  draft: string;
+  error: string | null;
+  onText: (text: string) => void;
+  onFocus: () => void;
+  onBlur: () => void;
+  /** Restores the last valid value's text. */
+  onEscape: () => void;
+  clearError: () => void;
+}
+
+/**
+ * The text of a number field: it follows the value unless the person is typing, commits each valid text, and
+ * for a bad one keeps the last valid value and names the problem.
+ */
+function useFieldDraft(
+  field: FieldName,
+  value: number,
+  decimals: number | undefined,
+  editable: boolean,
+  onCommit: (value: number) => void,
+): FieldDraft {
+  const t = useMessages();
+  const shown = fieldText(value, decimals);
+  const [draft, setDraft] = useState(shown);
+  const [error, setError] = useState<string | null>(null);
+  const [focused, setFocused] = useState(false);
+  const [shownValue, setShownValue] = useState(value);
+
+  if (value !== shownValue) {
+    // Follow outside changes (slider, preset, animation) unless the person is typing a different value; a field
+    // that is locked or disabled cannot be typed in, even if it kept the focus it had before the lock came.
+    // Adjusted while rendering, not in an effect: an effect's update would outlive each input of a burst
+    // and React would count them as nested updates (error #185).
+    setShownValue(value);
+    if (!focused || !editable) {
+      setDraft(shown);
+      setError(null);
+    }
+  }
+
+  const onText = (text: string) => {
+    setDraft(text);
+    const r = parseField(field, text);
+    if (r.ok) {
+      setError(null);
+      if (r.value !== value) onCommit(r.value);
+    } else {
+      const e = r.error;
+      setError(
+        `${t.fieldError(e, { raw: truncateText(text.trim(), ECHO_MAX_CHARS), min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
+      );
+    }
+  };
+  return {
+    draft,
+    error,
+    onText,
+    onFocus: () => setFocused(true),
+    onBlur: () => {
+      setFocused(false);
+      if (!error) setDraft(shown);
+    },
+    onEscape: () => {
+      setDraft(shown);
+      setError(null);
+    },
+    clearError: () => setError(null),
+  };
+}
+
+/** The field's label, with a lock mark (and its text for screen readers) when an embed locked the value. */
+function NumberLabel({ htmlFor, label, locked }: { htmlFor: string; label: string; locked: boolean }) {
+  const t = useMessages();
+  return (
+    <label className="numctl-label" htmlFor={htmlFor} title={locked ? `${label} (${t.locked})` : undefined}>
+      {label}
+      {locked ? (
+        <>
+          <span className="sr-only"> ({t.locked})</span>
+          <LockMark />
+        </>
+      ) : null}
+    </label>
+  );
+}
+
 /**
  * A slider and a numeric field for one value. Typing a bad value (empty, text, zero, negative, too large)
  * shows an inline message naming the field and the value (cut to ECHO_MAX_CHARS) and keeps the last valid
@@ -55,52 +143,19 @@ export function NumberControl({
 }: NumberControlProps) {
   const t = useMessages();
   const id = useId();
-  const shown = fieldText(value, decimals);
-  const [draft, setDraft] = useState(shown);
-  const [error, setError] = useState<string | null>(null);
-  const [focused, setFocused] = useState(false);
-  const [shownValue, setShownValue] = useState(value);
+  const { draft, error, onText, onFocus, onBlur, onEscape, clearError } = useFieldDraft(
+    field,
+    value,
+    decimals,
+    !locked && !disabled,
+    onCommit,
+  );
   const label = t.fieldLabels[field];
-
-  if (value !== shownValue) {
-    // Follow outside changes (slider, preset, animation) unless the person is typing a different value; a field
-    // that is locked or disabled cannot be typed in, even if it kept the focus it had before the lock came.
-    // Adjusted while rendering, not in an effect: an effect's update would outlive each input of a burst
-    // and React would count them as nested updates (error #185).
-    setShownValue(value);
-    if (!focused || locked || disabled) {
-      setDraft(shown);
-      setError(null);
-    }
-  }
-
-  const onText = (text: string) => {
-    setDraft(text);
-    const r = parseField(field, text);
-    if (r.ok) {
-      setError(null);
-      if (r.value !== value) onCommit(r.value);
-    } else {
-      const e = r.error;
-      setError(
-        `${t.fieldError(e, { raw: truncateText(text.trim(), ECHO_MAX_CHARS), min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
-      );
-    }
-  };
-
   const sliderValue = Math.min(max, Math.max(min, value));
   return (
     <div className={`numctl${error ? ' numctl-invalid' : ''}${locked ? ' is-locked' : ''}`}>
       <div className="numctl-row">
-        <label className="numctl-label" htmlFor={`${id}-field`} title={locked ? `${label} (${t.locked})` : undefined}>
-          {label}
-          {locked ? (
-            <>
-              <span className="sr-only"> ({t.locked})</span>
-              <LockMark />
-            </>
-          ) : null}
-        </label>
+        <NumberLabel htmlFor={`${id}-field`} label={label} locked={locked} />
         <span className="numctl-field-wrap">
           <input
             id={`${id}-field`}
@@ -116,19 +171,13 @@ export function NumberControl({
             aria-disabled={locked ? true : undefined}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${id}-error` : undefined}
-            onFocus={() => setFocused(true)}
-            onBlur={() => {
-              setFocused(false);
-              if (!error) setDraft(shown);
-            }}
+            onFocus={onFocus}
+            onBlur={onBlur}
             onChange={(e) => {
               if (!locked) onText(e.target.value);
             }}
             onKeyDown={(e) => {
-              if (e.key === 'Escape') {
-                setDraft(shown);
-                setError(null);
-              }
+              if (e.key === 'Escape') onEscape();
             }}
           />
           {unit ? (
@@ -150,7 +199,7 @@ export function NumberControl({
         onChange={(e) => {
           const v = Number(e.target.value);
           if (Number.isFinite(v)) {
-            setError(null);
+            clearError();
             onCommit(field === 'theta2' || field === 'couplerAngle' || field === 'speed' ? v : Math.max(min, v));
           }
         }}
