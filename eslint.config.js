@@ -37,9 +37,9 @@ export default tseslint.config(
     ...reactHooks.configs.flat['recommended-latest'],
   },
   {
-    // useSolverClient creates the worker's client in an effect (a worker must not start during render, and the
+    // useJobClient creates the worker's client in an effect (a worker must not start during render, and the
     // effect's cleanup terminates it) and stores it in state: the one setState in an effect the app keeps.
-    files: ['src/shared/jobs/useSolver.ts'],
+    files: ['src/shared/jobs/useJobClient.ts'],
     rules: { 'react-hooks/set-state-in-effect': 'off' },
   },
   {

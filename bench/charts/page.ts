@@ -5,7 +5,7 @@
  */
 import { plotDegrees } from '../../src/shared/charts/chartInputs';
 import { adaptiveGrid, degToRad, radToDeg, solveClosedForm, sweep } from '../../src/solver';
-import type { PlotSeries, PointResponse } from '../../src/shared/jobs/protocol';
+import type { PlotSeries, PointResponse } from '../../src/shared/solution';
 import { makeAnglePlots } from './plots';
 
 /** Result of one run: milliseconds of JS per r3 step. */

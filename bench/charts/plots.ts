@@ -2,7 +2,7 @@ import { createAngleChart } from '../../src/shared/charts/theta2Chart';
 import type { CycleDegrees } from '../../src/shared/charts/chartInputs';
 import { angleChartInputs, angleMarker } from '../../src/shared/charts/chartInputs';
 import { messagesEn } from '../../src/shared/i18n/messagesEn';
-import type { PointResponse } from '../../src/shared/jobs/protocol';
+import type { PointResponse } from '../../src/shared/solution';
 
 /** The two separate angle plots of the main page, driven the way AngleChartView drives them: update, then setMarker. */
 export function makeAnglePlots(svgs: SVGSVGElement[], width: number, height: number) {

@@ -17,8 +17,8 @@ import {
 import type { InputMotion } from '../solver';
 import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
 import { couplerCurves } from './couplerCurves';
-import { sweepOptions } from '../shared/jobs/plotSeries';
-import { encodeStatuses } from '../shared/jobs/statusCodes';
+import { sweepOptions } from '../shared/charts/plotSeries';
+import { encodeStatuses } from '../shared/pointStatusCodes';
 import type {
   BranchCycle,
   CouplerSpec,
@@ -30,7 +30,7 @@ import type {
   PoseAngles,
   TableParams,
   TableResponse,
-} from '../shared/jobs/protocol';
+} from '../shared/solution';
 import type { CycleParams, PointParams } from '../features/simulator/jobs';
 
 /** Most intervals of the cycle's view grid (half a degree): enough for bounds and a smooth coupler curve on screen. */

@@ -12,7 +12,7 @@ import type { AppState } from '../../shared/state/appState';
 import { rangeToDeg } from '../../shared/state/animation';
 import { animationFileName } from '../../shared/fileNames';
 import type { Messages } from '../../shared/i18n/messages';
-import type { CycleResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse } from '../../shared/solution';
 import { sceneAtFrame } from '../../shared/linkage/frameScene';
 
 /** What the user chose in the Export panel for one animation export. */

@@ -7,7 +7,7 @@ import { degToRad } from '../../solver/angles';
 import { effectiveInputMotion } from '../../shared/state/inputMotion';
 import type { Messages } from '../../shared/i18n/messages';
 import type { JobRunner } from '../../shared/jobs/jobClient';
-import type { CycleResponse, PointResponse, TableJobs } from '../../shared/jobs/protocol';
+import type { CycleResponse, PointResponse, TableJobs } from '../../shared/solution';
 import type { AnimationRequest } from './animationExporter';
 import type { ExportContext } from './exporters';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';

@@ -6,7 +6,7 @@ import { radToDeg, radToDeg180, radToDeg360 } from '../../solver/angles';
 import { formatDeg, formatSci } from '../../shared/format';
 import { grashofSumsText } from './grashofText';
 import { formatInputRange } from '../../shared/state/inputRange';
-import type { CycleResponse, PointResponse, TableResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse, PointResponse, TableResponse } from '../../shared/solution';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { Fact } from './Fact';
 

@@ -2,7 +2,7 @@ import './ConvergencePanel.css';
 import type { Dispatch } from 'react';
 import { memo, useMemo } from 'react';
 import type { Action, NrStart } from '../../shared/state/appState';
-import type { PointResponse } from '../../shared/jobs/protocol';
+import type { PointResponse } from '../../shared/solution';
 import { convergenceInputs } from '../../shared/charts/chartInputs';
 import { ConvergenceChartView } from '../../shared/charts/ConvergenceChartView';
 import { useMessages } from '../../shared/i18n/MessagesContext';

@@ -1,6 +1,6 @@
 import { useLayoutEffect } from 'react';
 import type { ViewOffset, CouplerPoint } from '../../shared/state/appState';
-import type { CycleResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse } from '../../shared/solution';
 import { useFramePose } from '../../shared/linkage/FramePoseContext';
 import { LinkageCanvas } from './LinkageCanvas';
 import { useMessages } from '../../shared/i18n/MessagesContext';

@@ -7,7 +7,7 @@ import type {
   PointResponse,
   TableParams,
   TableResponse,
-} from '../../shared/jobs/protocol';
+} from '../../shared/solution';
 
 /** The cycle the view draws: classification, both branches on the view grid (NR statistics), coupler curves. */
 export interface CycleParams {

@@ -2,7 +2,7 @@ import { useMemo } from 'react';
 import type { InputRangeDeg } from '../../shared/state/animation';
 import type { Direction } from '../../shared/state/appState';
 import { isRocking, rangeToDeg } from '../../shared/state/animation';
-import type { CycleResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse } from '../../shared/solution';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
 import { cycleDegrees, plotDegrees } from '../../shared/charts/chartInputs';
 import type { CycleRates } from '../../shared/charts/rateInputs';

@@ -1,6 +1,6 @@
 import { useLayoutEffect } from 'react';
 import type { Linkage } from '../../solver/types';
-import { benchMark } from '../../shared/jobs/benchMarks';
+import { benchMark } from '../../shared/benchMarks';
 
 /**
  * Marks `name` (with the lengths drawn) once the views show something new solved for some lengths, for the UI

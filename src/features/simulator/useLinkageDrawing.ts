@@ -6,7 +6,7 @@ import { fitView, toScreenX, toScreenY } from '../../shared/canvas/view';
 import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../../shared/linkage/drawLinkage';
 import type { LinkageScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
-import { benchMark } from '../../shared/jobs/benchMarks';
+import { benchMark } from '../../shared/benchMarks';
 
 /** The cached background bitmap (device pixels) and what it was drawn for. */
 interface Background {

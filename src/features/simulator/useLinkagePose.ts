@@ -1,6 +1,6 @@
 import { useMemo } from 'react';
 import type { AppState } from '../../shared/state/appState';
-import type { PointResponse } from '../../shared/jobs/protocol';
+import type { PointResponse } from '../../shared/solution';
 import type { LocalPose } from '../../shared/linkage/localPose';
 import { localPose, poseAsPoint } from '../../shared/linkage/localPose';
 

@@ -10,7 +10,7 @@ import { sceneBounds, sceneCurves, scenePose } from '../../shared/linkage/scene'
 import type { AppState } from '../../shared/state/appState';
 import { formatDeg, formatNumber } from '../../shared/format';
 import type { Messages } from '../../shared/i18n/messages';
-import type { CycleResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse } from '../../shared/solution';
 import { sceneWarning } from '../../shared/linkage/frameScene';
 import type { LocalPose } from '../../shared/linkage/localPose';
 

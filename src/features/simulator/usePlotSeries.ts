@@ -1,8 +1,8 @@
 import { useMemo } from 'react';
 import type { InputMotion } from '../../solver/rates';
 import type { Branch, Linkage } from '../../solver/types';
-import { plotSeries } from '../../shared/jobs/plotSeries';
-import type { MethodChoice, PlotSeries } from '../../shared/jobs/protocol';
+import { plotSeries } from '../../shared/charts/plotSeries';
+import type { MethodChoice, PlotSeries } from '../../shared/solution';
 
 /** What the visible plots need: their pixel width, the branches drawn, the method, the rates' input motion. */
 export interface PlotNeeds {

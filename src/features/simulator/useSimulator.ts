@@ -3,7 +3,7 @@ import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
 import { reducer } from '../../shared/state/appState';
 import type { JobRunner } from '../../shared/jobs/jobClient';
-import type { CycleResponse, PointResponse } from '../../shared/jobs/protocol';
+import type { CycleResponse, PointResponse } from '../../shared/solution';
 import type { SolvedPlot } from './usePlotSeries';
 import { usePlotSeries } from './usePlotSeries';
 import { useCycle, usePoint } from './useSolver';

@@ -4,9 +4,9 @@ import { flushSync } from 'react-dom';
 import { degToRad } from '../../solver/angles';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../../shared/state/appState';
-import { benchMark } from '../../shared/jobs/benchMarks';
+import { benchMark } from '../../shared/benchMarks';
 import type { JobRunner } from '../../shared/jobs/jobClient';
-import type { CycleResponse, MethodChoice, PointResponse, WorkCount } from '../../shared/jobs/protocol';
+import type { CycleResponse, MethodChoice, PointResponse, WorkCount } from '../../shared/solution';
 import type { SimulatorJobs } from './jobs';
 
 /**

@@ -6,7 +6,7 @@ import { radToDeg180, radToDeg360 } from '../../solver/angles';
 import type { NrStart } from '../state/appState';
 import { formatDeg } from '../format';
 import type { Messages } from '../i18n/messages';
-import type { CycleResponse, PlotSeries, PointResponse } from '../jobs/protocol';
+import type { CycleResponse, PlotSeries, PointResponse } from '../solution';
 
 /** The angle charts the app shows and exports. */
 export type AngleChartKind = 'theta3' | 'theta4' | 'both';

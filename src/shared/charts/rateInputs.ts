@@ -4,7 +4,7 @@ import type { Branch } from '../../solver/types';
 import type { LinkRates } from '../../solver/rates';
 import type { Direction, PlotLayout } from '../state/appState';
 import type { Messages } from '../i18n/messages';
-import type { PlotSeries, RateSeries } from '../jobs/protocol';
+import type { PlotSeries, RateSeries } from '../solution';
 
 /** The rate charts: ω3, ω4 or both; α3, α4 or both. */
 export type RateChartKind = 'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth';

@@ -7,7 +7,7 @@ import type { DesignMetrics } from '../../solver/metrics';
 import { deadCentreMarks } from '../linkage/designFacts';
 import { formatNumber } from '../format';
 import type { Messages } from '../i18n/messages';
-import type { PointResponse } from '../jobs/protocol';
+import type { PointResponse } from '../solution';
 import type { CycleDegrees } from './chartInputs';
 
 /** Everything the transmission chart shows but its size and marker. */

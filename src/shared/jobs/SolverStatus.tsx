@@ -1,6 +1,6 @@
 import type { JobClientMode, JobClientModeReason } from './jobClient';
 import { useMessages } from '../i18n/MessagesContext';
-import { solverStatusText } from './useSolver';
+import { solverStatusText } from './useJobClient';
 
 /** Props of SolverStatus: where the solver runs and why it left the worker. */
 export interface SolverStatusProps {

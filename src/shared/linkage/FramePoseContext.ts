@@ -1,6 +1,6 @@
 import { createContext, useContext } from 'react';
 import type { AppState } from '../state/appState';
-import type { PointResponse } from '../jobs/protocol';
+import type { PointResponse } from '../solution';
 import type { FrameMotion } from './frameMotion';
 import type { LocalPose } from './localPose';
 

@@ -7,7 +7,7 @@ import { formatDeg } from '../format';
 import { formatInputRange } from '../state/inputRange';
 import type { Messages } from '../i18n/messages';
 import type { Classification } from '../../solver/types';
-import type { CouplerCurve } from '../jobs/protocol';
+import type { CouplerCurve } from '../solution';
 import { localPose } from './localPose';
 
 /** The canvas's message when the linkage cannot be drawn assembled, and a hint where it can be; both null when assembled. */

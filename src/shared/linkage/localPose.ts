@@ -4,7 +4,7 @@ import { solveClosedForm } from '../../solver/closedForm';
 import { transmissionAngle } from '../../solver/kinematics';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../state/appState';
-import type { CouplerSpec, MethodChoice, PointResponse, PoseAngles } from '../jobs/protocol';
+import type { CouplerSpec, MethodChoice, PointResponse, PoseAngles } from '../solution';
 
 /** A pose solved on the main thread for the frame being drawn: the inputs it was solved for and the angles. */
 export interface LocalPose {

@@ -3,7 +3,7 @@ import { couplerPoint, jointPositions } from '../../solver/kinematics';
 import type { Point } from '../../solver/kinematics';
 import type { Linkage } from '../../solver/types';
 import type { SceneVectors } from './motionVectors';
-import type { CouplerCurve, PoseAngles } from '../jobs/protocol';
+import type { CouplerCurve, PoseAngles } from '../solution';
 import type { SceneDesign } from './designOverlay';
 import type { Bounds } from '../canvas/view';
 import { emptyBounds, extendBounds, extendBoundsCircle } from '../canvas/view';

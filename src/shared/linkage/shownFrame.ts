@@ -1,6 +1,6 @@
 import type { LinkageScene } from './scene';
 import type { AppState } from '../state/appState';
-import type { PointResponse } from '../jobs/protocol';
+import type { PointResponse } from '../solution';
 import type { FrameMotion } from './frameMotion';
 
 /** The frame the linkage view drew last: its state (Play's frame applied), its pose as a point and its scene. */

@@ -11,7 +11,7 @@ import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { AppState } from '../../../src/shared/state/appState';
 import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
-import type { PointResponse } from '../../../src/shared/jobs/protocol';
+import type { PointResponse } from '../../../src/shared/solution';
 import { referenceMotion } from '../../oracle/rates';
 
 /** The frame an export reads: this state's pose at its θ2, with its motion (scene not needed by rate exports). */

@@ -13,7 +13,7 @@ import {
 import type { Branch } from '../../../src/solver/types';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import { COLORS } from '../../../src/shared/theme/tokens';
-import type { CycleResponse, NewtonSummary, PlotSeries, PointResponse } from '../../../src/shared/jobs/protocol';
+import type { CycleResponse, NewtonSummary, PlotSeries, PointResponse } from '../../../src/shared/solution';
 import type { LinkLengths, Sigma } from '../../oracle/reference';
 import { deg, exactToDeg, referenceAngles } from '../../oracle/reference';
 

@@ -3,7 +3,7 @@ import { sceneAtFrame, sceneWarning } from '../../../src/shared/linkage/frameSce
 import { classify } from '../../../src/solver';
 import type { Branch, Linkage } from '../../../src/solver/types';
 import { getMessages } from '../../../src/shared/i18n/i18n';
-import type { CouplerCurve } from '../../../src/shared/jobs/protocol';
+import type { CouplerCurve } from '../../../src/shared/solution';
 import { angleDiff, referenceSolve } from '../../oracle/reference';
 import { angleTolerance } from '../../oracle/tolerance';
 import { rad, sweepScenes } from './fixtures';

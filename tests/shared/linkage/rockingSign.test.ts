@@ -7,7 +7,7 @@ import type { Branch } from '../../../src/solver/types';
 import { advanceTheta2, rangeToDeg } from '../../../src/shared/state/animation';
 import type { Direction } from '../../../src/shared/state/appState';
 import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
-import type { PlotSeries } from '../../../src/shared/jobs/protocol';
+import type { PlotSeries } from '../../../src/shared/solution';
 import { referenceAngles } from '../../oracle/reference';
 
 /** A triple rocker: the input rocks between two limits (the e2e export case). */

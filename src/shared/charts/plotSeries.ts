@@ -6,7 +6,7 @@ import { sweepRates } from '../../solver/rates';
 import { adaptiveGrid } from '../../solver/sampling';
 import { sweep } from '../../solver/sweep';
 import type { Branch, Linkage } from '../../solver/types';
-import type { MethodChoice, PlotSeries } from './protocol';
+import type { MethodChoice, PlotSeries } from '../solution';
 
 /** Sweep options for a method choice: an explicit tolerance turns polishing off, so the tolerance shows. */
 export function sweepOptions(branch: Branch, solver: MethodChoice) {

@@ -1,10 +1,7 @@
 import { useEffect, useState } from 'react';
-import type { Branch, Linkage } from '../../solver/types';
 import type { Messages } from '../i18n/messages';
-import { benchMark } from './benchMarks';
-import type { JobClient, JobClientMode, JobClientModeReason, JobRunner } from './jobClient';
+import type { JobClient, JobClientMode, JobClientModeReason } from './jobClient';
 import type { JobTable } from './jobTable';
-import type { MethodChoice, TableJobs, TableResponse } from './protocol';
 
 /** A job client made by create() once mounted and disposed on unmount, where it runs and why; null until mounted. */
 export function useJobClient<T extends JobTable<T>>(
@@ -41,39 +38,4 @@ export function solverStatusText(
   if (mode === 'restarted') return t.solverRestarted;
   if (mode === 'main-thread') return reason === 'stopped' ? t.solverStoppedTwice : t.solvingOnMainThread;
   return null;
-}
-
-/** Wait after the last input change before the table is solved (ms): a drag solves only the view grid. */
-const TABLE_DELAY_MS = 150;
-
-/**
- * The whole samples + 1 table of a branch (the cycle summary's counts), solved once the inputs rest
- * and only while enabled; the last table stays meanwhile (check its linkage and samples). Latest wins.
- */
-export function useCycleTable(
-  client: JobRunner<TableJobs> | null,
-  linkage: Linkage,
-  samples: number,
-  branch: Branch,
-  solver: MethodChoice,
-  enabled: boolean,
-): TableResponse | null {
-  const [table, setTable] = useState<TableResponse | null>(null);
-  const { r1, r2, r3, r4 } = linkage;
-  const { method, tol } = solver;
-  useEffect(() => {
-    if (!client || !enabled) return;
-    const id = setTimeout(() => {
-      client.run('table', { linkage: { r1, r2, r3, r4 }, samples, branch, solver: { method, tol } }).result.then(
-        (r) => {
-          if (!r) return;
-          setTable(r);
-          benchMark('fourbar:work:table', { ...r.work, elapsedMs: undefined });
-        },
-        (e: unknown) => console.warn(`Table solve failed: ${e instanceof Error ? e.message : String(e)}`),
-      );
-    }, TABLE_DELAY_MS);
-    return () => clearTimeout(id);
-  }, [client, enabled, r1, r2, r3, r4, samples, branch, method, tol]);
-  return table;
 }

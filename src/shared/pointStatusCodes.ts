@@ -1,4 +1,4 @@
-import type { PointStatus } from '../../solver/types';
+import type { PointStatus } from '../solver/types';
 
 /** Point statuses by code: a cycle sends one byte per point (a transferable Uint8Array), not thousands of strings. */
 export const POINT_STATUSES: readonly PointStatus[] = ['ok', 'unreachable', 'singular', 'failed'];

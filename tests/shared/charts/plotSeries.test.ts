@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { degToRad } from '../../../src/solver/angles';
-import { plotSeries } from '../../../src/shared/jobs/plotSeries';
+import { plotSeries } from '../../../src/shared/charts/plotSeries';
 import { referenceAngles } from '../../oracle/reference';
 import { referenceMotion } from '../../oracle/rates';
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { solverStatusText } from '../../../src/shared/jobs/useSolver';
+import { solverStatusText } from '../../../src/shared/jobs/useJobClient';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
 

@@ -1,11 +1,12 @@
 /**
- * The solver jobs' answers: what the worker sends back, read by several features (simulator, export) and kits
- * (charts, linkage), so it lives here rather than in one feature. The requests and policies of the jobs are
+ * The solver's answers (cycle, point, table) and the plotted series: what the worker sends back or the main thread
+ * solves, read by several features (simulator, export) and kits (charts, linkage), so it lives here rather than in
+ * one feature. The requests and policies of the jobs are
  * declared by their features (features/simulator/jobs.ts, features/lab/jobs.ts); only the table request is
  * here too, because the export asks for the table as the simulator does.
  */
-import type { JobSpec } from './jobTable';
-import type { InputMotion } from '../../solver/rates';
+import type { JobSpec } from './jobs/jobTable';
+import type { InputMotion } from '../solver/rates';
 import type {
   Angles,
   Branch,
@@ -14,7 +15,7 @@ import type {
   Linkage,
   NewtonStatus,
   SweepMethod,
-} from '../../solver/types';
+} from '../solver/types';
 
 /** The solver method and NR tolerance the main view uses (chosen in the solver lab); tol null = the method's default. */
 export interface MethodChoice {
@@ -80,7 +81,7 @@ export interface PlotBranch {
 
 /**
  * Plot samples: an adaptive theta2 grid (about one sample per plot pixel, refined at limits and fast turns). Solved
- * on the main thread (shared/jobs/plotSeries.ts, usePlotSeries), not asked of the worker.
+ * on the main thread (shared/charts/plotSeries.ts, usePlotSeries), not asked of the worker.
  */
 export interface PlotSeries {
   theta2Deg: Float64Array;
