@@ -6,6 +6,7 @@ import { loadLanguage } from '../shared/i18n/messageModule';
 import { LOCALE_STORAGE_KEY, writeStorage } from '../shared/storage';
 import { Icon } from '../shared/ui/Icon';
 import { useMessages } from '../shared/i18n/MessagesContext';
+import { SelectMenu } from '../shared/ui/SelectMenu';
 
 /** Props of LanguageSelect: the current language and the dispatcher that changes it. */
 export interface LanguageSelectProps {
@@ -21,12 +22,11 @@ function LanguageSelectImpl({ locale, dispatch }: LanguageSelectProps) {
       <span className="lang-icon">
         <Icon name="language" />
       </span>
-      <select
-        className="select select-small"
-        aria-label={t.language}
+      <SelectMenu<Locale>
+        label={t.language}
         value={locale}
-        onChange={(e) => {
-          const l = e.target.value as Locale;
+        options={LOCALES.map((l) => ({ value: l, label: t.languageNames[l] }))}
+        onChange={(l) => {
           writeStorage(LOCALE_STORAGE_KEY, l);
           // The state changes once the strings are there, so no frame shows a mix of languages.
           loadLanguage(l).then(
@@ -34,13 +34,7 @@ function LanguageSelectImpl({ locale, dispatch }: LanguageSelectProps) {
             () => dispatch({ type: 'setLocale', locale: l }),
           );
         }}
-      >
-        {LOCALES.map((l) => (
-          <option key={l} value={l}>
-            {t.languageNames[l]}
-          </option>
-        ))}
-      </select>
+      />
     </label>
   );
 }

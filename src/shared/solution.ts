@@ -149,15 +149,21 @@ export interface PoseAngles {
   mu: number;
 }
 
-/** The point answer: the pose on the requested branch (null when it cannot assemble), the other branch, two NR runs. */
-export interface PointResponse {
+/** A pose solved at theta2: the inputs it was solved for, and the angles on the branch and on the other one. */
+export interface SolvedPose {
   /** The request's linkage and coupler point, so a pose is always drawn with the lengths it was solved for. */
   linkage: Linkage;
   coupler: CouplerSpec;
   theta2Rad: number;
   branch: Branch;
+  /** The pose on the branch (radians), null when the loop cannot close at theta2. */
   pose: PoseAngles | null;
+  /** The other branch's pose (null when it cannot close, or when it was not asked for). */
   ghost: PoseAngles | null;
+}
+
+/** The point answer: the pose on the requested branch (null when it cannot assemble), the other branch, two NR runs. */
+export interface PointResponse extends SolvedPose {
   /** NR from the solution one cycle step back (or null when that point cannot assemble). */
   continuation: NewtonSummary | null;
   /** NR from the fixed first guess of the report (docs/report.md). */

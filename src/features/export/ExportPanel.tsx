@@ -4,7 +4,7 @@ import type { ExportSubject, PngSize } from '../../shared/fileNames';
 import type { AnimationRequest } from './animationExporter';
 import { AnimationExportControls } from './AnimationExportControls';
 import { useMessages } from '../../shared/i18n/MessagesContext';
-import { Segmented } from '../../shared/ui/Segmented';
+import { PngSizeChoice } from '../../shared/ui/PngSizeChoice';
 
 /** Props of ExportPanel: handlers that build and download each file; they reject with a reason on failure. */
 export interface ExportPanelProps {
@@ -36,16 +36,7 @@ function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false }: 
   const shown = compact ? items.filter((i) => i.subject === 'linkage' || i.subject === 'both') : items;
   return (
     <div className="export-panel">
-      <Segmented<PngSize>
-        legend={t.exportSize}
-        value={size}
-        options={[
-          { value: 'screen', label: t.sizeScreen },
-          { value: '2x', label: t.size2x },
-          { value: 'print', label: t.sizePrint },
-        ]}
-        onChange={setSize}
-      />
+      <PngSizeChoice value={size} onChange={setSize} />
       <div className="export-buttons">
         {shown.map((i) => (
           <button

@@ -1,5 +1,4 @@
-import type { PngSize } from '../../shared/fileNames';
-import { Segmented } from '../../shared/ui/Segmented';
+import { PngSizeChoice } from '../../shared/ui/PngSizeChoice';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { LabMessages } from './labMessages';
 import type { LabExports } from './useLabExports';
@@ -16,16 +15,7 @@ export function LabExportButtons({ exports, disabled, lt }: LabExportButtonsProp
   const t = useMessages();
   return (
     <div className="export-buttons lab-export">
-      <Segmented<PngSize>
-        legend={t.exportSize}
-        value={exports.pngSize}
-        options={[
-          { value: 'screen', label: t.sizeScreen },
-          { value: '2x', label: t.size2x },
-          { value: 'print', label: t.sizePrint },
-        ]}
-        onChange={exports.setPngSize}
-      />
+      <PngSizeChoice value={exports.pngSize} onChange={exports.setPngSize} />
       <button type="button" className="btn btn-small" onClick={() => void exports.onPng()} disabled={disabled}>
         {lt.exportLabPng}
       </button>

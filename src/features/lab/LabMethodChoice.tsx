@@ -6,6 +6,7 @@ import { SWEEP_METHODS } from '../../solver/methods';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { LabMessages } from './labMessages';
 import { formatTol } from './workPrecisionChart';
+import { SelectMenu } from '../../shared/ui/SelectMenu';
 
 /** Props of LabMethodChoice: the chosen method and tolerance, their dispatch, the lab's strings. */
 export interface LabMethodChoiceProps {
@@ -22,37 +23,27 @@ export function LabMethodChoice({ method, tol, lt, dispatch }: LabMethodChoicePr
     <div className="lab-choose">
       <label className="field-inline">
         <span>{lt.labMethod}</span>
-        <select
+        <SelectMenu<SweepMethod>
           className="select"
-          aria-label={lt.labMethod}
+          label={lt.labMethod}
           value={method}
-          onChange={(e) => dispatch({ type: 'setMethod', method: e.target.value as SweepMethod, tol })}
-        >
-          {SWEEP_METHODS.map((m) => (
-            <option key={m} value={m}>
-              {t.methodNames[m]}
-            </option>
-          ))}
-        </select>
+          options={SWEEP_METHODS.map((m) => ({ value: m, label: t.methodNames[m] }))}
+          onChange={(m) => dispatch({ type: 'setMethod', method: m, tol })}
+        />
       </label>
       <label className="field-inline">
         <span>{lt.labTolerance}</span>
-        <select
+        <SelectMenu
           className="select"
-          aria-label={lt.labTolerance}
+          label={lt.labTolerance}
           value={tol === null ? 'default' : String(tol)}
           disabled={method === 'closed-form' || method === 'closed-form-polish'}
-          onChange={(e) =>
-            dispatch({ type: 'setMethod', method, tol: e.target.value === 'default' ? null : Number(e.target.value) })
-          }
-        >
-          <option value="default">{lt.labToleranceDefault}</option>
-          {LAB_TOLERANCES.map((x) => (
-            <option key={x} value={String(x)}>
-              {formatTol(x)}
-            </option>
-          ))}
-        </select>
+          options={[
+            { value: 'default', label: lt.labToleranceDefault },
+            ...LAB_TOLERANCES.map((x) => ({ value: String(x), label: formatTol(x) })),
+          ]}
+          onChange={(v) => dispatch({ type: 'setMethod', method, tol: v === 'default' ? null : Number(v) })}
+        />
       </label>
       <p className="note note-muted">{lt.labChooseNote}</p>
     </div>

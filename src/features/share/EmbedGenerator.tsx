@@ -6,6 +6,7 @@ import { EmbedPreview } from './EmbedPreview';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { Segmented } from '../../shared/ui/Segmented';
 import { Toggle } from '../../shared/ui/Toggle';
+import { ShareText } from './ShareText';
 
 /** Props of EmbedGenerator: the chosen options, the widget URL and snippet for them, and how to change them. */
 export interface EmbedGeneratorProps {
@@ -46,14 +47,7 @@ export function EmbedGenerator({ embed, presetId, src, code, onPreset, onPanel, 
       </fieldset>
       <EmbedPreview src={src} preset={preset} title={t.embedPreview} />
       <p className="embed-preview-note">{t.embedPreviewNote}</p>
-      <textarea
-        className="share-text"
-        readOnly
-        value={code}
-        aria-label={t.embedCodeLabel}
-        rows={4}
-        onFocus={(e) => e.currentTarget.select()}
-      />
+      <ShareText value={code} label={t.embedCodeLabel} rows={4} />
     </div>
   );
 }

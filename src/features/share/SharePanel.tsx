@@ -8,6 +8,7 @@ import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/u
 import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS, embedUrl, serializeState } from '../../shared/url/url';
 import { copyText } from '../../shared/ui/clipboard';
 import { useMessages } from '../../shared/i18n/MessagesContext';
+import { ShareText } from './ShareText';
 
 /** Props of SharePanel: how to read the state to share when a copy button is pressed. */
 export interface SharePanelProps {
@@ -94,16 +95,7 @@ function SharePanelImpl({ stateRef }: SharePanelProps) {
       <p className="status-line" role="status" aria-live="polite">
         {status}
       </p>
-      {shown ? (
-        <textarea
-          className="share-text"
-          readOnly
-          value={shown}
-          aria-label={t.sectionShare}
-          rows={3}
-          onFocus={(e) => e.currentTarget.select()}
-        />
-      ) : null}
+      {shown ? <ShareText value={shown} label={t.sectionShare} rows={3} /> : null}
     </div>
   );
 }

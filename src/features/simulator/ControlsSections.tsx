@@ -11,6 +11,7 @@ import { Icon } from '../../shared/ui/Icon';
 import { NumberControl } from '../../shared/ui/NumberControl';
 import { PanelSection } from '../../shared/ui/PanelSection';
 import { Segmented } from '../../shared/ui/Segmented';
+import { SelectMenu } from '../../shared/ui/SelectMenu';
 import { FlagToggles } from '../../shared/ui/Toggle';
 import type { SliderRange } from './sliderRange';
 
@@ -37,14 +38,18 @@ export function PresetSection({
   const t = useMessages();
   return (
     <PanelSection id="sec-preset" title={t.preset}>
-      <select
+      <SelectMenu<PresetId | ''>
         className="select"
-        aria-label={t.preset}
+        label={t.preset}
         value={presetId ?? ''}
         disabled={disabled}
-        onChange={(e) => {
-          if (!e.target.value) return;
-          const p = getPreset(e.target.value as PresetId);
+        options={[
+          { value: '', label: t.presetPlaceholder },
+          ...PRESETS.map((p) => ({ value: p.id, label: t.presetNames[p.id] })),
+        ]}
+        onChange={(id) => {
+          if (!id) return;
+          const p = getPreset(id);
           dispatch({
             type: 'applyPreset',
             linkage: p.linkage,
@@ -53,14 +58,7 @@ export function PresetSection({
             coupler: p.coupler,
           });
         }}
-      >
-        <option value="">{t.presetPlaceholder}</option>
-        {PRESETS.map((p) => (
-          <option key={p.id} value={p.id}>
-            {t.presetNames[p.id]}
-          </option>
-        ))}
-      </select>
+      />
     </PanelSection>
   );
 }
@@ -116,22 +114,32 @@ export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps
   );
 }
 
+/** A step button beside Play: an icon, named by its label. */
+function StepButton({
+  label,
+  icon,
+  disabled,
+  onClick,
+}: {
+  label: string;
+  icon: 'stepBack' | 'stepForward';
+  disabled: boolean;
+  onClick: () => void;
+}) {
+  return (
+    <button type="button" className="icon-btn" aria-label={label} title={label} disabled={disabled} onClick={onClick}>
+      <Icon name={icon} />
+    </button>
+  );
+}
+
 /** Step back, Play/Pause and step forward. */
 function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & { onStep: (sign: 1 | -1) => void }) {
   const t = useMessages();
   const playLocked = isLocked('play');
   return (
     <div className="play-row">
-      <button
-        type="button"
-        className="icon-btn"
-        aria-label={t.stepBack}
-        title={t.stepBack}
-        disabled={isLocked('theta2')}
-        onClick={() => onStep(-1)}
-      >
-        <Icon name="stepBack" />
-      </button>
+      <StepButton label={t.stepBack} icon="stepBack" disabled={isLocked('theta2')} onClick={() => onStep(-1)} />
       <button
         type="button"
         className={`btn btn-primary play-btn${playLocked ? ' is-locked' : ''}`}
@@ -142,16 +150,7 @@ function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & {
         <Icon name={state.playing ? 'pause' : 'play'} size={14} />
         <span>{state.playing ? t.pause : t.play}</span>
       </button>
-      <button
-        type="button"
-        className="icon-btn"
-        aria-label={t.stepForward}
-        title={t.stepForward}
-        disabled={isLocked('theta2')}
-        onClick={() => onStep(1)}
-      >
-        <Icon name="stepForward" />
-      </button>
+      <StepButton label={t.stepForward} icon="stepForward" disabled={isLocked('theta2')} onClick={() => onStep(1)} />
     </div>
   );
 }

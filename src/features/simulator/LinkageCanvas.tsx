@@ -61,27 +61,16 @@ function CanvasTools({ zoomBy, resetView }: { zoomBy: (factor: number) => void; 
   );
 }
 
-/** What useCanvasHandles needs: the canvas, its scene, size and view, and the edits a drag of A or P makes. */
-type CanvasHandlesOptions = Pick<LinkageCanvasProps, 'scene' | 'view' | 'onViewChange' | 'onTheta2' | 'onCoupler'> & {
-  canvasRef: RefObject<HTMLCanvasElement | null>;
-  width: number;
-  height: number;
-};
-
 /**
  * Pan and zoom of the canvas with grab-and-drag of the crank pin A and the coupler point P; returns the bounds to
  * fit (held while a handle is dragged) with usePanZoom's handlers.
  */
-function useCanvasHandles({
-  scene,
-  view,
-  onViewChange,
-  onTheta2,
-  onCoupler,
-  canvasRef,
-  width,
-  height,
-}: CanvasHandlesOptions) {
+function useCanvasHandles(
+  { scene, view, onViewChange, onTheta2, onCoupler }: LinkageCanvasProps,
+  canvasRef: RefObject<HTMLCanvasElement | null>,
+  width: number,
+  height: number,
+) {
   // While A or P is dragged the fit stays put: a new cycle (P moved) would otherwise rescale the view under
   // the pointer and the joint would drift away from it.
   const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
@@ -112,16 +101,8 @@ function useCanvasHandles({
   return { bounds, ...panZoom };
 }
 
-function LinkageCanvasImpl({
-  scene,
-  view,
-  onViewChange,
-  onTheta2,
-  onCoupler,
-  onSize,
-  description,
-  hint,
-}: LinkageCanvasProps) {
+function LinkageCanvasImpl(props: LinkageCanvasProps) {
+  const { scene, view, onTheta2, onSize, description, hint } = props;
   const t = useMessages();
   const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
@@ -130,16 +111,7 @@ function LinkageCanvasImpl({
   useEffect(() => {
     if (width > 0 && height > 0) onSize?.(width, height);
   }, [width, height, onSize]);
-  const { bounds, pointerHandlers, zoomBy, resetView, onZoomKey } = useCanvasHandles({
-    scene,
-    view,
-    onViewChange,
-    onTheta2,
-    onCoupler,
-    canvasRef,
-    width,
-    height,
-  });
+  const { bounds, pointerHandlers, zoomBy, resetView, onZoomKey } = useCanvasHandles(props, canvasRef, width, height);
   useLinkageDrawing(canvasRef, scene, bounds, view, width, height);
   const turnBy = (deltaDeg: number) => {
     if (!onTheta2) return;

@@ -7,6 +7,7 @@ import { useMessages } from '../../shared/i18n/MessagesContext';
 import { NumberControl } from '../../shared/ui/NumberControl';
 import { FlagToggles } from '../../shared/ui/Toggle';
 import { PanelSection } from '../../shared/ui/PanelSection';
+import { SelectMenu } from '../../shared/ui/SelectMenu';
 
 /** Props of MotionControls: the state and its dispatcher. */
 export interface MotionControlsProps {
@@ -38,18 +39,12 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
       />
       <label className="inline-field">
         <span>{t.omegaUnit}</span>
-        <select
-          className="select select-small"
-          aria-label={t.omegaUnit}
+        <SelectMenu<OmegaUnit>
+          label={t.omegaUnit}
           value={unit}
-          onChange={(e) => setUnit(e.target.value as OmegaUnit)}
-        >
-          {OMEGA_UNITS.map((u) => (
-            <option key={u} value={u}>
-              {t.omegaUnits[u]}
-            </option>
-          ))}
-        </select>
+          options={OMEGA_UNITS.map((u) => ({ value: u, label: t.omegaUnits[u] }))}
+          onChange={setUnit}
+        />
       </label>
       <NumberControl
         field="alpha2"

@@ -1,3 +1,5 @@
+import type { ScreenRect } from './rect';
+
 /**
  * The part of a 2D canvas context the linkage drawing uses. A canvas's or an OffscreenCanvas's context
  * is one, and so is SvgContext: whatever draws through this interface exports to SVG as well.
@@ -31,4 +33,15 @@ export interface DrawContext {
   fillText(text: string, x: number, y: number): void;
   strokeText(text: string, x: number, y: number): void;
   measureText(text: string): { width: number };
+}
+
+/** Fills and outlines a rounded box (1 px line, on the half pixel so it stays crisp) for a legend or a notice. */
+export function drawPanelBox(ctx: DrawContext, box: ScreenRect, fill: string, stroke: string, radiusPx: number): void {
+  ctx.fillStyle = fill;
+  ctx.strokeStyle = stroke;
+  ctx.lineWidth = 1;
+  ctx.beginPath();
+  ctx.roundRect(box.x + 0.5, box.y + 0.5, box.width, box.height, radiusPx);
+  ctx.fill();
+  ctx.stroke();
 }

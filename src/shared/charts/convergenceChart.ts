@@ -2,6 +2,7 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
 import type { Selection } from 'd3-selection';
 import type { Margins } from './chartFrame';
+import type { Frame } from './chart';
 import {
   CHART_STYLE,
   child,
@@ -116,13 +117,9 @@ interface ConvergenceSize {
 }
 
 /** The plot area (pixels inside the margins), the scales and the ticks of the convergence chart. */
-export interface ConvergenceFrame {
-  iw: number;
-  ih: number;
-  x: ScaleLinear<number, number>;
+export interface ConvergenceFrame extends Omit<Frame, 'y'> {
+  /** Residual (log) to plot pixels. */
   y: ScaleContinuousNumeric<number, number>;
-  xTicks: number[];
-  yTicks: number[];
 }
 
 /** Scales and ticks for these runs at this size: x 0..last iteration, y residualDomain; tick counts follow the pixel size. */

@@ -2,6 +2,7 @@ import { TWO_PI } from '../../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
 import type { DrawContext } from '../canvas/drawContext';
+import { drawPanelBox } from '../canvas/drawContext';
 import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
 import type { Px, ScreenRect } from '../canvas/rect';
 import type { LinkageScene, ScenePose } from './scene';
@@ -251,13 +252,7 @@ function drawUnassembled(ctx: Ctx, scene: LinkageScene, v: ViewTransform, layout
 
 function drawWarning(ctx: Ctx, w: WarningBox): void {
   const { box } = w;
-  ctx.fillStyle = THEME.warningFill;
-  ctx.strokeStyle = THEME.warning;
-  ctx.lineWidth = 1;
-  ctx.beginPath();
-  ctx.roundRect(box.x + 0.5, box.y + 0.5, box.width, box.height, 6);
-  ctx.fill();
-  ctx.stroke();
+  drawPanelBox(ctx, box, THEME.warningFill, THEME.warning, 6);
   const cx = box.x + box.width / 2;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'middle';

@@ -4,19 +4,10 @@ import { solveClosedForm } from '../../solver/closedForm';
 import { transmissionAngle } from '../../solver/kinematics';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from '../state/appState';
-import type { CouplerSpec, MethodChoice, PointResponse, PoseAngles } from '../solution';
+import type { MethodChoice, PointResponse, PoseAngles, SolvedPose } from '../solution';
 
-/** A pose solved on the main thread for the frame being drawn: the inputs it was solved for and the angles. */
-export interface LocalPose {
-  linkage: Linkage;
-  coupler: CouplerSpec;
-  theta2Rad: number;
-  branch: Branch;
-  /** The pose on the branch (radians), null when the loop cannot close at theta2. */
-  pose: PoseAngles | null;
-  /** The other branch's pose, solved only when asked for (the ghost is drawn). */
-  ghost: PoseAngles | null;
-}
+/** A pose solved on the main thread for the frame being drawn (the ghost only when it is drawn). */
+export type LocalPose = SolvedPose;
 
 function anglesAt(l: Linkage, theta2Rad: number, branch: Branch): PoseAngles | null {
   const a = solveClosedForm(l, theta2Rad, branch);

@@ -1,4 +1,5 @@
 import type { DrawContext } from '../canvas/drawContext';
+import { drawPanelBox } from '../canvas/drawContext';
 import { PI } from '../../solver/angles';
 import { FONT_SIZES, STROKES } from '../theme/tokens';
 import type { Obstacle } from '../canvas/labelPlacement';
@@ -264,13 +265,7 @@ export function drawVectorLegend(ctx: Ctx, overlay: VectorOverlay): void {
   const lg = overlay.legend;
   if (!lg) return;
   const { box } = lg;
-  ctx.fillStyle = THEME.labelHalo;
-  ctx.strokeStyle = THEME.reference;
-  ctx.lineWidth = 1;
-  ctx.beginPath();
-  ctx.roundRect(box.x + 0.5, box.y + 0.5, box.width, box.height, 4);
-  ctx.fill();
-  ctx.stroke();
+  drawPanelBox(ctx, box, THEME.labelHalo, THEME.reference, 4);
   ctx.font = THEME.font;
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'left';

@@ -6,7 +6,7 @@ import type { GifJobs } from './gifJobs';
 import { gifJobs } from './gifJobs';
 import type { FrameSurface } from './frameSurface';
 import { createFrameSurface, drawFrame } from './frameSurface';
-import type { AnimationExportResult, ExportProgress, RenderFrame } from './types';
+import type { AnimationExportResult, EncoderOptions } from './types';
 import type { AnimationFrame } from './animationFrames';
 
 /** Frames spread over the cycle that the global palette is computed from. */
@@ -15,19 +15,9 @@ export const PALETTE_SAMPLE_FRAMES = 6;
 /** Frames rendered ahead of the encoder: enough to keep it busy, few enough to bound memory (4 bytes a pixel each). */
 export const FRAMES_IN_FLIGHT = 3;
 
-/** Checked options of a GIF export (see AnimationExportOptions). */
-export interface GifExportOptions {
-  frames: readonly AnimationFrame[];
-  width: number;
-  height: number;
-  viewWidth: number;
-  viewHeight: number;
-  fps: number;
+/** Checked options of a GIF export: an encoder's, and whether the GIF loops forever. */
+export interface GifExportOptions extends EncoderOptions {
   loop: boolean;
-  background: string;
-  renderFrame: RenderFrame;
-  signal?: AbortSignal;
-  onProgress?: (p: ExportProgress) => void;
 }
 
 /** Seams for tests and hosts: the drawing surface and the worker (null: encode on the main thread). */

@@ -47,6 +47,20 @@ export interface AnimationExportOptions {
   onProgress?: (p: ExportProgress) => void;
 }
 
+/** The checked options every encoder gets: exportAnimation's, with the view size and background filled in. */
+export interface EncoderOptions {
+  frames: readonly AnimationFrame[];
+  width: number;
+  height: number;
+  viewWidth: number;
+  viewHeight: number;
+  fps: number;
+  background: string;
+  renderFrame: RenderFrame;
+  signal?: AbortSignal;
+  onProgress?: (p: ExportProgress) => void;
+}
+
 /** Outcome of exportAnimation: a file, a cancel, or a browser that cannot make this format (with a reason to show). */
 export type AnimationExportResult =
   { status: 'done'; blob: Blob } | { status: 'cancelled' } | { status: 'unsupported'; reason: string };

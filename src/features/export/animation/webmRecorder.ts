@@ -1,6 +1,5 @@
-import type { AnimationFrame } from './animationFrames';
 import { drawFrame } from './frameSurface';
-import type { AnimationExportResult, ExportProgress, RenderFrame } from './types';
+import type { AnimationExportResult, EncoderOptions } from './types';
 
 /** Container and codecs tried in order: VP9, then VP8, then whatever WebM the browser picks. */
 export const WEBM_MIME_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm'] as const;
@@ -20,20 +19,6 @@ export function webmSupport(): WebmSupport {
   const mimeType = WEBM_MIME_TYPES.find((t) => MediaRecorder.isTypeSupported(t));
   if (!mimeType) return { ok: false, reason: 'this browser cannot record WebM video' };
   return { ok: true, mimeType };
-}
-
-/** Checked options of a WebM recording (see AnimationExportOptions). */
-export interface WebmExportOptions {
-  frames: readonly AnimationFrame[];
-  width: number;
-  height: number;
-  viewWidth: number;
-  viewHeight: number;
-  fps: number;
-  background: string;
-  renderFrame: RenderFrame;
-  signal?: AbortSignal;
-  onProgress?: (p: ExportProgress) => void;
 }
 
 /** Bit rate for a width x height video at fps: about 0.1 bit a pixel a frame, from 1 to 8 Mbit/s (flat line art). */
@@ -66,7 +51,7 @@ function sleepUntil(atMs: number, signal?: AbortSignal): Promise<void> {
  * as long as the animation plays. Resolves to unsupported (with the reason) where the browser cannot record,
  * cancelled once the signal aborts, else done with the video.
  */
-export async function recordWebm(o: WebmExportOptions): Promise<AnimationExportResult> {
+export async function recordWebm(o: EncoderOptions): Promise<AnimationExportResult> {
   const support = webmSupport();
   if (!support.ok) return { status: 'unsupported', reason: support.reason };
   const { frames, width, height, signal } = o;
