@@ -11,6 +11,7 @@ import { shellMessages } from './shellMessages';
 import { SimulatorPage } from './SimulatorPage';
 import { SkipLink } from './SkipLink';
 import { useDocumentMeta } from './useDocumentMeta';
+import { useAfterFirstFrame } from '../shared/hooks/useAfterFirstFrame';
 import { useSimulatorSession } from './useSimulatorSession';
 import type { ShownFor } from './useSimulatorSession';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
@@ -45,6 +46,9 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const { state, dispatch, client, cycle, point, t, rocking, playhead, onStep } = session;
   const onLab = state.page === 'lab';
   const shell = shellMessages(state.locale);
+  // The results column comes after the first frame: the first render posts the solver's jobs sooner, and the
+  // worker solves while the column renders (the first load on a phone, docs/ARCHITECTURE.md).
+  const resultsShown = useAfterFirstFrame();
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
 
@@ -52,7 +56,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
     <MessagesContext.Provider value={t}>
       <FramePoseProvider state={state} playhead={playhead} ghostShown={!onLab}>
         <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
-        <div className="app" data-ready={cycle && point ? 'true' : 'false'}>
+        <div className="app" data-ready={cycle && point && resultsShown ? 'true' : 'false'}>
           <header className="topbar">
             <Brand />
             <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
@@ -78,7 +82,11 @@ export function AppLayout({ initial }: AppLayoutProps) {
               )}
             </div>
           </main>
-          <ResultsSidebar session={session} label={shell.resultsLabel} />
+          {resultsShown ? (
+            <ResultsSidebar session={session} label={shell.resultsLabel} />
+          ) : (
+            <aside className="rightbar" aria-label={shell.resultsLabel} />
+          )}
         </div>
       </FramePoseProvider>
     </MessagesContext.Provider>
