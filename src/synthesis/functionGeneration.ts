@@ -10,6 +10,8 @@
 import { PI, angleDiff, inputRange, solveClosedForm } from '../solver';
 import type { Branch, Linkage } from '../solver';
 import { leastSquares } from './dense';
+import { triangleAngle } from '../solver/triangle';
+import { normalizeLinkage } from '../solver/validate';
 import { checkArray, checkFiniteNumber, checkPositive, show } from './validate';
 
 /** A prescribed input/output angle pair (radians, from the ground line O2→O4). */
@@ -239,22 +241,24 @@ export function outputTurnsBack(links: Linkage, branch: Branch, lo: number, hi: 
   const { r1, r2, r3, r4 } = links;
   const turn = 2 * PI;
   const candidates: number[] = [];
+  // The angle at O2 of the triangle O2 O4 B, by the solver's cancellation-free half-angle form (as its dead centres).
+  const n = normalizeLinkage(links);
   for (const [d, flip] of [
-    [r2 + r3, 0],
-    [Math.abs(r3 - r2), r3 > r2 ? PI : 0],
+    [[n.r2, n.r3], 0],
+    [r3 > r2 ? [n.r3, -n.r2] : [n.r2, -n.r3], r3 > r2 ? PI : 0],
   ] as const) {
-    const c = (r1 * r1 + d * d - r4 * r4) / (2 * r1 * d);
-    if (!(Math.abs(c) <= 1)) continue;
-    const alpha = Math.acos(c);
-    candidates.push(alpha + flip, -alpha + flip);
+    if (!(d[0] + d[1] > 0)) continue;
+    const alpha = triangleAngle([n.r1], d, [n.r4]);
+    if (!alpha.closes) continue;
+    candidates.push(alpha.angle + flip, -alpha.angle + flip);
   }
   const scale = Math.max(r1, r2, r3, r4);
   for (const t of candidates) {
     const inside = lo + (t - lo - turn * Math.floor((t - lo) / turn));
     if (!(inside > lo && inside < hi)) continue;
     const a = solveClosedForm(links, t, branch);
-    // On the collinear branch sin(θ3 − θ2) vanishes to rounding (acos loses half the digits near c = ±1, hence
-    // the square root of ε); on the other branch it is of the order of the branch separation.
+    // On the collinear branch sin(θ3 − θ2) vanishes to rounding (the closed form loses half the digits at a limit,
+    // hence about the square root of ε); on the other branch it is of the order of the branch separation.
     if (a && Math.abs(Math.sin(a.theta3 - t)) <= 1e-6 * Math.max(1, scale / Math.min(r2, r3))) return true;
   }
   return false;

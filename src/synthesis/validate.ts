@@ -1,22 +1,12 @@
 import type { Point } from '../solver';
+import { checkFinite, describe } from '../solver/validate';
 import type { Pose } from './types';
 
-/** A value as it should appear in an error message (strings quoted, objects as JSON). */
-export function show(value: unknown): string {
-  if (typeof value === 'string') return JSON.stringify(value);
-  if (value === undefined) return 'undefined (missing)';
-  if (typeof value === 'number') return String(value);
-  try {
-    return JSON.stringify(value) ?? String(value);
-  } catch {
-    return String(value);
-  }
-}
+/** A value as it should appear in an error message (the solver's describe: strings quoted, objects as JSON). */
+export const show = describe;
 
-/** Throws unless v is a finite number: `${name} must be a finite ${what}, got …`. */
-export function checkFiniteNumber(name: string, v: unknown, what = 'number'): asserts v is number {
-  if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`${name} must be a finite ${what}, got ${show(v)}`);
-}
+/** Throws unless v is a finite number: `${name} must be a finite ${what}, got …` (the solver's checkFinite). */
+export const checkFiniteNumber: (name: string, v: unknown, what?: string) => asserts v is number = checkFinite;
 
 /** Throws unless v is a positive finite number. */
 export function checkPositive(name: string, v: unknown, what = 'number'): asserts v is number {
