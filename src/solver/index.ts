@@ -45,3 +45,13 @@ export { designMetrics } from './metrics';
 export type { DeadCentre, DesignMetrics, TransmissionExtremes } from './metrics';
 export { PARALLEL_SIN, instantCenters } from './instantCenters';
 export type { InstantCenters } from './instantCenters';
+export { linkForces, sweepForces } from './forces';
+export type { JointForces, LinkInertia, LinkInertias, Loads, SweepForces } from './forces';
+export { DEFAULT_CYCLE_POINTS, DEFAULT_SPEED_FLUCTUATION, forceCycle, torqueCycleStats } from './forcesCycle';
+export type {
+  ForceCycle,
+  ForceCycleOptions,
+  ForceCycleStatus,
+  TorqueCycleStats,
+  TorqueCycleStatus,
+} from './forcesCycle';
