@@ -28,8 +28,8 @@ export interface AppLayoutProps {
 
 /** The full app solves the stage and the plots on the simulator page, the NR runs always (the lab uses them too). */
 const appViews: ShownFor = (s, plotPixels) => ({
-  stage: s.page !== 'lab',
-  plotPixels: s.page !== 'lab' ? plotPixels : 0,
+  stage: s.shell.page !== 'lab',
+  plotPixels: s.shell.page !== 'lab' ? plotPixels : 0,
   newton: true,
 });
 
@@ -44,8 +44,8 @@ const PANEL_ID = 'page-panel';
 export function AppLayout({ initial }: AppLayoutProps) {
   const session = useSimulatorSession(initial.state, appViews, true);
   const { state, dispatch, client, cycle, point, t, rocking, playhead, onStep } = session;
-  const onLab = state.page === 'lab';
-  const shell = shellMessages(state.locale);
+  const onLab = state.shell.page === 'lab';
+  const shell = shellMessages(state.shell.locale);
   // The results column comes after the first frame: the first render posts the solver's jobs sooner, and the
   // worker solves while the column renders (the first load on a phone, docs/ARCHITECTURE.md).
   const resultsShown = useAfterFirstFrame();
@@ -59,8 +59,8 @@ export function AppLayout({ initial }: AppLayoutProps) {
         <div className="app" data-ready={cycle && point && resultsShown ? 'true' : 'false'}>
           <header className="topbar">
             <Brand />
-            <PageTabs page={state.page} dispatch={dispatch} panelId={PANEL_ID} />
-            <LanguageSelect locale={state.locale} dispatch={dispatch} />
+            <PageTabs page={state.shell.page} dispatch={dispatch} panelId={PANEL_ID} />
+            <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
           </header>
           <UrlNotice ignored={initial.ignored} />
           <aside className="sidebar" aria-label={shell.controlsLabel}>
@@ -71,7 +71,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
               className={`main${onLab ? ' main-lab' : ''}`}
               id={PANEL_ID}
               role="tabpanel"
-              aria-labelledby={pageTabId(state.page)}
+              aria-labelledby={pageTabId(state.shell.page)}
             >
               {onLab ? (
                 <Suspense fallback={<p className="note">{t.labRun}…</p>}>

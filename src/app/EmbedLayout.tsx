@@ -50,7 +50,7 @@ function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Di
     <header className="embed-bar">
       <h1 className="embed-title">{t.embedTitle}</h1>
       <div className="embed-bar-right">
-        <LanguageSelect locale={state.locale} dispatch={dispatch} />
+        <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
         {fullHref ? (
           <a className="embed-link" href={fullHref} target="_blank" rel="noopener noreferrer">
             {t.openFull} ↗
@@ -81,7 +81,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const { onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
   const crankMovable = !embed.locked.includes('theta2');
   const couplerMovable = !embed.locked.includes('coupler');
-  const shell = shellMessages(state.locale);
+  const shell = shellMessages(state.shell.locale);
   useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
   useUrlSync(state, embed, ownsPage);
   useEmbedMessages(bridge, state, dispatch, embed.locked);

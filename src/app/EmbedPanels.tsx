@@ -21,15 +21,21 @@ export function EmbedPanels({ session, show, theta2Locked }: EmbedPanelsProps) {
     <>
       {show('info') ? (
         <section className="card embed-card">
-          <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+          <AnalysisPanel
+            cycle={cycle}
+            table={table}
+            point={point}
+            branch={state.design.branch}
+            nrStart={state.solver.nrStart}
+          />
         </section>
       ) : null}
       {show('info') ? (
         <section className="card embed-card" aria-label={t.sectionDesign}>
           <DesignPanel
             design={design}
-            muBandLoDeg={state.muBandLoDeg}
-            muBandHiDeg={state.muBandHiDeg}
+            muBandLoDeg={state.display.muBandLoDeg}
+            muBandHiDeg={state.display.muBandHiDeg}
             dispatch={dispatch}
             theta2Locked={theta2Locked}
             compact

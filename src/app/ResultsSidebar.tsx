@@ -28,7 +28,13 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
   return (
     <aside className="rightbar" aria-label={label}>
       <PanelSection className="card" id="sec-analysis" title={t.sectionAnalysis}>
-        <AnalysisPanel cycle={cycle} table={table} point={point} branch={state.branch} nrStart={state.nrStart} />
+        <AnalysisPanel
+          cycle={cycle}
+          table={table}
+          point={point}
+          branch={state.design.branch}
+          nrStart={state.solver.nrStart}
+        />
         {cycleError ? (
           <p className="note note-error" role="alert">
             {cycleError}
@@ -38,8 +44,8 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
       <PanelSection className="card" id="sec-design" title={t.sectionDesign}>
         <DesignPanel
           design={design}
-          muBandLoDeg={state.muBandLoDeg}
-          muBandHiDeg={state.muBandHiDeg}
+          muBandLoDeg={state.display.muBandLoDeg}
+          muBandHiDeg={state.display.muBandHiDeg}
           dispatch={dispatch}
         />
       </PanelSection>
@@ -47,7 +53,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
         <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
       </PanelSection>
       <section className="card convergence-card">
-        <ConvergencePanel point={point} nrStart={state.nrStart} dispatch={dispatch} />
+        <ConvergencePanel point={point} nrStart={state.solver.nrStart} dispatch={dispatch} />
       </section>
       <PanelSection className="card" id="sec-export" title={t.sectionExport}>
         <ExportPanel

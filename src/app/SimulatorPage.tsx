@@ -12,7 +12,7 @@ const TransmissionPanel = lazy(() =>
 /** The full app's simulator page: the linkage, its angle plots and the transmission plot. */
 export function SimulatorPage({ session }: { session: SimulatorSession }) {
   const { state, t, cycle, design, deg, xMarks, plotsRef } = session;
-  const shell = shellMessages(state.locale);
+  const shell = shellMessages(state.shell.locale);
   return (
     <>
       <section className="card stage">
@@ -34,8 +34,8 @@ export function SimulatorPage({ session }: { session: SimulatorSession }) {
         <Suspense fallback={null}>
           <TransmissionPanel
             deg={deg}
-            muBandLoDeg={state.muBandLoDeg}
-            muBandHiDeg={state.muBandHiDeg}
+            muBandLoDeg={state.display.muBandLoDeg}
+            muBandHiDeg={state.display.muBandHiDeg}
             xMarks={xMarks}
           />
         </Suspense>

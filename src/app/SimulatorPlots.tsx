@@ -7,11 +7,11 @@ export function SimulatorPlots({ session }: { session: SimulatorSession }) {
   return (
     <AnglePlotsPanel
       deg={deg}
-      showOther={state.showGhost}
-      layout={state.plotLayout}
+      showOther={state.display.showGhost}
+      layout={state.display.plotLayout}
       dispatch={dispatch}
       xMarks={xMarks}
-      kind={state.plotKind}
+      kind={state.display.plotKind}
       rates={rates}
     />
   );

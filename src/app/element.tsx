@@ -67,7 +67,7 @@ export class FourbarLabElement extends HTMLElement {
     this.root = createRoot(container);
     // The strings of the element's language load before it first draws (as mount.tsx does for the page), so a
     // zh-TW element never shows English under a menu that says 繁體中文; offline, English stays.
-    const locale = this.parsed.state.locale;
+    const locale = this.parsed.state.shell.locale;
     loadLanguage(locale)
       .catch(() => undefined)
       .then(() => this.render());
@@ -119,7 +119,7 @@ export class FourbarLabElement extends HTMLElement {
     };
     this.root.render(
       <StrictMode>
-        <ErrorBoundary key={this.generation} messages={getMessages(parsed.state.locale)} onReset={reset}>
+        <ErrorBoundary key={this.generation} messages={getMessages(parsed.state.shell.locale)} onReset={reset}>
           <EmbedLayout initial={parsed} embed={parsed.embed} bridge={this.bridge} ownsPage={false} />
         </ErrorBoundary>
       </StrictMode>,

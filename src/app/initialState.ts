@@ -11,6 +11,9 @@ import { parseUrl } from '../shared/url/url';
  */
 export function initialState(search: string, languages: readonly string[], storedLocale: string | null): ParsedUrl {
   const stored = storedLocale ? parseLocale(storedLocale) : null;
-  const base: AppState = { ...DEFAULT_STATE, locale: stored ?? detectLocale(languages) };
+  const base: AppState = {
+    ...DEFAULT_STATE,
+    shell: { ...DEFAULT_STATE.shell, locale: stored ?? detectLocale(languages) },
+  };
   return parseUrl(search, base);
 }

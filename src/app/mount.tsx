@@ -23,7 +23,7 @@ export async function mount(Layout: ComponentType<LayoutProps>): Promise<void> {
   const languages = typeof navigator !== 'undefined' ? (navigator.languages ?? [navigator.language]) : [];
   const initial = initialState(window.location.search, languages, readStorage(LOCALE_STORAGE_KEY));
   try {
-    await loadLanguage(initial.state.locale);
+    await loadLanguage(initial.state.shell.locale);
   } catch {
     // The language chunk could not load (offline): the English strings are there.
   }
@@ -36,7 +36,7 @@ export async function mount(Layout: ComponentType<LayoutProps>): Promise<void> {
   };
   createRoot(root).render(
     <StrictMode>
-      <ErrorBoundary messages={getMessages(initial.state.locale)} onReset={reset}>
+      <ErrorBoundary messages={getMessages(initial.state.shell.locale)} onReset={reset}>
         <Layout initial={initial} />
       </ErrorBoundary>
     </StrictMode>,

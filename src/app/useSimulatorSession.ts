@@ -36,17 +36,30 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   const { client, mode: solverMode, reason: solverReason } = useJobClient(createSolverClient, 'Solver');
   const sim = useSimulator(initial, views, client);
   const { state, dispatch, cycle, point, plot } = sim;
-  const solverChoice = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
-  const table = useCycleTable(client, state.linkage, state.samples, state.branch, solverChoice, tableShown);
-  const t = getMessages(state.locale);
-  const facts = useCycleFacts(cycle, plot, state.direction);
-  const design = useDesignMetrics(state.linkage, state.branch);
+  const solverChoice = useMemo(
+    () => ({ method: state.solver.method, tol: state.solver.tol }),
+    [state.solver.method, state.solver.tol],
+  );
+  const table = useCycleTable(
+    client,
+    state.design.linkage,
+    state.solver.samples,
+    state.design.branch,
+    solverChoice,
+    tableShown,
+  );
+  const t = getMessages(state.shell.locale);
+  const facts = useCycleFacts(cycle, plot, state.motion.direction);
+  const design = useDesignMetrics(state.design.linkage, state.design.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { shown, onShown } = useShownFrame();
   const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t });
   const [playhead] = useState(() => new Playhead());
   const onStep = useAnimation(state, dispatch, facts.rangeDeg, playhead);
-  const onViewChange = useCallback((view: AppState['view']) => dispatch({ type: 'setView', view }), [dispatch]);
+  const onViewChange = useCallback(
+    (view: AppState['display']['view']) => dispatch({ type: 'setView', view }),
+    [dispatch],
+  );
   const edits = useCanvasEdits(dispatch);
   useDrawnMark('fourbar:cycle-drawn', cycle);
   useDrawnMark('fourbar:plot-drawn', plot);

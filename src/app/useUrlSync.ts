@@ -13,7 +13,7 @@ const URL_DEBOUNCE_MS = 250;
  */
 export function useUrlSync(state: AppState, embed?: EmbedOptions, enabled = true): void {
   useEffect(() => {
-    if (state.playing || !enabled) return;
+    if (state.motion.playing || !enabled) return;
     const id = setTimeout(() => {
       try {
         const q = serializeState(state, embed);

@@ -48,24 +48,24 @@ export async function exportLinkageAnimation(
 ): Promise<AnimationExportResult> {
   const { state: s, cycle, scene, t } = src;
   const plan = planAnimationFrames({
-    theta2Deg: s.theta2Deg,
-    direction: s.direction,
-    branch: s.branch,
+    theta2Deg: s.motion.theta2Deg,
+    direction: s.motion.direction,
+    branch: s.design.branch,
     range: rangeToDeg(cycle.classification.inputRange),
     framesPerCycle: req.framesPerCycle,
   });
   if (plan.frames.length === 0) return { status: 'unsupported', reason: t.cannotAssembleAny };
   // A still (zero-width range) has no cycle time: show its one frame for a second.
-  const fps = Math.min(MAX_FPS, playbackFps(plan, s.speedDegPerFrame) || 1);
+  const fps = Math.min(MAX_FPS, playbackFps(plan, s.motion.speedDegPerFrame) || 1);
   const frameSource = {
     base: scene,
-    coupler: s.coupler,
+    coupler: s.design.coupler,
     curves: cycle.curves,
     classification: cycle.classification,
     t,
   };
   const renderFrame: RenderFrame = (ctx, f, w, h) => {
-    drawLinkage(ctx, sceneAtFrame(frameSource, f.theta2Rad, f.branch), fitView(scene.bounds, w, h, s.view));
+    drawLinkage(ctx, sceneAtFrame(frameSource, f.theta2Rad, f.branch), fitView(scene.bounds, w, h, s.display.view));
   };
   const { width, height } = exportSizePx(req.size, src.viewWidth, src.viewHeight, src.devicePixelRatio);
   const result = await exportAnimation({
@@ -82,7 +82,10 @@ export async function exportLinkageAnimation(
     onProgress: req.onProgress,
   });
   if (result.status === 'done') {
-    downloadBlob(result.blob, animationFileName(s.linkage, s.branch, req.framesPerCycle, req.size, req.format));
+    downloadBlob(
+      result.blob,
+      animationFileName(s.design.linkage, s.design.branch, req.framesPerCycle, req.size, req.format),
+    );
   }
   return result;
 }

@@ -53,11 +53,17 @@ export interface ExportContext {
 export function rateExport(subject: 'omega' | 'alpha', frame: ShownFrame, t: Messages) {
   const s = frame.state;
   const chart: RateChartKind = subject === 'omega' ? 'omegaBoth' : 'alphaBoth';
-  const branches: Branch[] = s.showGhost ? ['open', 'crossed'] : [s.branch];
-  const input = { omega2: s.omega2RadPerS, alpha2: s.alpha2RadPerS2 };
-  const plot = plotSeries(s.linkage, RATE_EXPORT_PIXELS, branches, { method: s.method, tol: s.tol }, input);
+  const branches: Branch[] = s.display.showGhost ? ['open', 'crossed'] : [s.design.branch];
+  const input = { omega2: s.motion.omega2RadPerS, alpha2: s.motion.alpha2RadPerS2 };
+  const plot = plotSeries(
+    s.design.linkage,
+    RATE_EXPORT_PIXELS,
+    branches,
+    { method: s.solver.method, tol: s.solver.tol },
+    input,
+  );
   return {
-    inputs: rateChartInputs(chart, plotRates(plot, s.direction), s.branch, s.showGhost, t),
+    inputs: rateChartInputs(chart, plotRates(plot, s.motion.direction), s.design.branch, s.display.showGhost, t),
     marker: rateMarker(chart, radToDeg360(frame.marker.theta2Rad), frame.motion ? frame.motion.rates : null),
   };
 }
@@ -66,7 +72,7 @@ export function rateExport(subject: 'omega' | 'alpha', frame: ShownFrame, t: Mes
 export function plotExport(subject: Exclude<ExportSubject, 'linkage'>, c: ExportContext): ChartExport {
   const { state: s, marker } = c.frame;
   if (subject === 'convergence') {
-    const { runs, tolerance, ...text } = convergenceInputs(c.point, s.nrStart, c.t);
+    const { runs, tolerance, ...text } = convergenceInputs(c.point, s.solver.nrStart, c.t);
     return {
       ...CONVERGENCE_EXPORT_SIZE,
       draw: (svg, width, height) => drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height }),
@@ -77,7 +83,7 @@ export function plotExport(subject: Exclude<ExportSubject, 'linkage'>, c: Export
     const { data, ...text } = inputs;
     return { ...ANGLE_EXPORT_SIZE, draw: specDrawing(rateSpec, text, data, at) };
   }
-  const { data, ...text } = angleChartInputs(subject, c.deg, s.branch, s.showGhost, c.t);
+  const { data, ...text } = angleChartInputs(subject, c.deg, s.design.branch, s.display.showGhost, c.t);
   return { ...ANGLE_EXPORT_SIZE, draw: specDrawing(angleSpec, text, data, angleMarker(subject, marker)) };
 }
 
@@ -86,9 +92,9 @@ export async function exportPng(subject: ExportSubject, size: PngSize, c: Export
   const { state: s, scene } = c.frame;
   const bytes =
     subject === 'linkage'
-      ? await linkagePng(scene, s.view, c.canvasSize.width, c.canvasSize.height, size)
+      ? await linkagePng(scene, s.display.view, c.canvasSize.width, c.canvasSize.height, size)
       : await exportChart(plotExport(subject, c), size);
-  downloadPng(bytes, pngFileName(s.linkage, s.branch, s.theta2Deg, subject, size));
+  downloadPng(bytes, pngFileName(s.design.linkage, s.design.branch, s.motion.theta2Deg, subject, size));
 }
 
 /** Builds and downloads the SVG of a subject (text as text). */
@@ -96,9 +102,13 @@ export function exportSvg(subject: ExportSubject, c: ExportContext): void {
   const { state: s, scene } = c.frame;
   const text =
     subject === 'linkage'
-      ? linkageSvg(scene, s.view, c.canvasSize.width, c.canvasSize.height)
+      ? linkageSvg(scene, s.display.view, c.canvasSize.width, c.canvasSize.height)
       : exportChart(plotExport(subject, c), 'svg');
-  downloadText(text, svgFileName(s.linkage, s.branch, s.theta2Deg, subject), 'image/svg+xml;charset=utf-8');
+  downloadText(
+    text,
+    svgFileName(s.design.linkage, s.design.branch, s.motion.theta2Deg, subject),
+    'image/svg+xml;charset=utf-8',
+  );
 }
 
 /** The CSV writer's table from the worker's full n-point table (statuses decoded). */

@@ -34,7 +34,11 @@ export interface ExportSources {
  */
 function exportFrame({ state, shown, t }: ExportSources): ShownFrame {
   const frame = shown();
-  if (!frame || frame.state.linkage !== state.linkage || frame.state.coupler !== state.coupler)
+  if (
+    !frame ||
+    frame.state.design.linkage !== state.design.linkage ||
+    frame.state.design.coupler !== state.design.coupler
+  )
     throw new Error(t.exportNeedsLinkageView);
   return frame;
 }
@@ -75,14 +79,20 @@ async function exportTableCsv({ state: s, client }: ExportSources): Promise<void
   if (!client) throw new Error('the solver is still starting');
   // The export always carries the motion columns, for the input motion as the panel shows it.
   const motion = {
-    input: effectiveInputMotion(s.omega2RadPerS, s.alpha2RadPerS2, s.direction),
-    coupler: { distance: s.coupler.distance, angleRad: degToRad(s.coupler.angleDeg) },
+    input: effectiveInputMotion(s.motion.omega2RadPerS, s.motion.alpha2RadPerS2, s.motion.direction),
+    coupler: { distance: s.design.coupler.distance, angleRad: degToRad(s.design.coupler.angleDeg) },
   };
   const [{ exportCsv }, tbl] = await Promise.all([
     import('./exporters'),
     client.run(
       'table',
-      { linkage: s.linkage, samples: s.samples, branch: s.branch, solver: { method: s.method, tol: s.tol }, motion },
+      {
+        linkage: s.design.linkage,
+        samples: s.solver.samples,
+        branch: s.design.branch,
+        solver: { method: s.solver.method, tol: s.solver.tol },
+        motion,
+      },
       { channel: 'export' },
     ).result,
   ]);

@@ -51,10 +51,10 @@ function LabLimits({ result, theta2Deg, lt }: { result: LabResult; theta2Deg: nu
  */
 export function LabPanel({ client, state, dispatch }: LabPanelProps) {
   const t = useMessages();
-  const lt = labMessagesFor(state.locale);
-  const lab = useLab(client, state.linkage, state.branch, state.labStepDeg);
+  const lt = labMessagesFor(state.shell.locale);
+  const lab = useLab(client, state.design.linkage, state.design.branch, state.lab.stepDeg);
   const result = lab.result;
-  const charts = useLabCharts(result, t, lt, state.method, state.tol, state.theta2Deg);
+  const charts = useLabCharts(result, t, lt, state.solver.method, state.solver.tol, state.motion.theta2Deg);
   const exports = useLabExports(result, charts.chartOptions, t);
 
   return (
@@ -64,16 +64,16 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
           {lt.labTitle}
         </h2>
         <p className="note">{lt.labIntro}</p>
-        <LabToolbar lab={lab} stepDeg={state.labStepDeg} canRun={client !== null} lt={lt} dispatch={dispatch} />
+        <LabToolbar lab={lab} stepDeg={state.lab.stepDeg} canRun={client !== null} lt={lt} dispatch={dispatch} />
         <SvgChartView
           draw={charts.drawDiagram}
           label={lt.labDiagramTitle}
           className="lab-diagram"
           testId="work-precision"
         />
-        <LabTable series={result?.series ?? []} method={state.method} tol={state.tol} lt={lt} />
-        <LabMethodChoice method={state.method} tol={state.tol} lt={lt} dispatch={dispatch} />
-        {result ? <LabLimits result={result} theta2Deg={state.theta2Deg} lt={lt} /> : null}
+        <LabTable series={result?.series ?? []} method={state.solver.method} tol={state.solver.tol} lt={lt} />
+        <LabMethodChoice method={state.solver.method} tol={state.solver.tol} lt={lt} dispatch={dispatch} />
+        {result ? <LabLimits result={result} theta2Deg={state.motion.theta2Deg} lt={lt} /> : null}
         <SvgChartView draw={charts.drawCycle} label={lt.labCycleTitle} className="lab-cycle" />
         <LabExportButtons exports={exports} disabled={!result} lt={lt} />
         <p className="note">{lt.labWhatItMeans}</p>

@@ -2,6 +2,7 @@ import './SharePanel.css';
 import { Suspense, lazy, memo, useState } from 'react';
 import type { RefObject } from 'react';
 import type { AppState } from '../../shared/state/appState';
+import { reducer } from '../../shared/state/appState';
 import type { EmbedPresetId } from './embedSnippet';
 import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from './embedSnippet';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
@@ -49,10 +50,11 @@ function SharePanelImpl({ stateRef }: SharePanelProps) {
   // The generator (options, preview, code) renders only once opened; its URL is taken when an option changes.
   const [src, setSrc] = useState<string | null>(null);
 
-  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, { ...stateRef.current, playing: false }, e);
+  const pausedState = () => reducer(stateRef.current, { type: 'setPlaying', playing: false });
+  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, pausedState(), e);
   const linkHref = () => {
     const u = new URL(window.location.href);
-    u.search = `?${serializeState({ ...stateRef.current, playing: false })}`;
+    u.search = `?${serializeState(pausedState())}`;
     u.hash = '';
     return u.toString();
   };

@@ -40,7 +40,7 @@ function useLengthRange(values: readonly number[]): SliderRange {
 }
 
 function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rocking, onStep }: ControlsPanelProps) {
-  const l = state.linkage;
+  const l = state.design.linkage;
   const range = useLengthRange([l.r1, l.r2, l.r3, l.r4]);
   const isLocked = (p: LockableParam) => locked.includes(p);
   const section = { state, dispatch, isLocked };
@@ -48,7 +48,7 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
     <div className="controls">
       {!compact ? (
         <PresetSection
-          presetId={matchPreset(l, state.branch, state.coupler)}
+          presetId={matchPreset(l, state.design.branch, state.design.coupler)}
           disabled={LENGTH_FIELDS.some((f) => isLocked(f))}
           dispatch={dispatch}
         />

@@ -72,7 +72,7 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
         <NumberControl
           key={f}
           field={f}
-          value={state.linkage[f]}
+          value={state.design.linkage[f]}
           min={range.min}
           max={range.max}
           step={range.step}
@@ -91,7 +91,7 @@ export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps
     <PanelSection id="sec-input" title={t.sectionInput}>
       <NumberControl
         field="theta2"
-        value={state.theta2Deg}
+        value={state.motion.theta2Deg}
         decimals={THETA2_DECIMALS}
         min={0}
         max={360}
@@ -102,7 +102,7 @@ export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps
       />
       <Segmented
         legend={t.branch}
-        value={state.branch}
+        value={state.design.branch}
         locked={isLocked('branch')}
         options={[
           { value: 'open', label: t.branchOpen },
@@ -145,10 +145,10 @@ function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & {
         className={`btn btn-primary play-btn${playLocked ? ' is-locked' : ''}`}
         disabled={playLocked}
         title={playLocked ? t.locked : undefined}
-        onClick={() => dispatch({ type: 'setPlaying', playing: !state.playing })}
+        onClick={() => dispatch({ type: 'setPlaying', playing: !state.motion.playing })}
       >
-        <Icon name={state.playing ? 'pause' : 'play'} size={14} />
-        <span>{state.playing ? t.pause : t.play}</span>
+        <Icon name={state.motion.playing ? 'pause' : 'play'} size={14} />
+        <span>{state.motion.playing ? t.pause : t.play}</span>
       </button>
       <StepButton label={t.stepForward} icon="stepForward" disabled={isLocked('theta2')} onClick={() => onStep(1)} />
     </div>
@@ -173,7 +173,7 @@ export function AnimationSection({ compact, rocking, ...props }: AnimationSectio
         <>
           <NumberControl
             field="speed"
-            value={state.speedDegPerFrame}
+            value={state.motion.speedDegPerFrame}
             min={SPEED_MIN}
             max={SPEED_MAX}
             step={SPEED_STEP}
@@ -181,7 +181,7 @@ export function AnimationSection({ compact, rocking, ...props }: AnimationSectio
           />
           <Segmented<'1' | '-1'>
             legend={t.direction}
-            value={String(state.direction) as '1' | '-1'}
+            value={String(state.motion.direction) as '1' | '-1'}
             options={[
               { value: '1', label: t.ccw },
               { value: '-1', label: t.cw },
@@ -202,7 +202,7 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
     <PanelSection id="sec-coupler" title={t.sectionCoupler}>
       <NumberControl
         field="couplerDistance"
-        value={state.coupler.distance}
+        value={state.design.coupler.distance}
         min={0}
         max={range.max}
         step={range.step}
@@ -211,7 +211,7 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
       />
       <NumberControl
         field="couplerAngle"
-        value={state.coupler.angleDeg}
+        value={state.design.coupler.angleDeg}
         min={-180}
         max={180}
         step={1}
@@ -226,21 +226,21 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
 /** The canvas's display toggles and the number of cycle samples (an unusual count from a link is kept listed). */
 export function DisplaySection({ state, dispatch }: Omit<ControlsSectionProps, 'isLocked'>) {
   const t = useMessages();
-  const choices = SAMPLE_CHOICES.includes(state.samples)
+  const choices = SAMPLE_CHOICES.includes(state.solver.samples)
     ? SAMPLE_CHOICES
-    : [...SAMPLE_CHOICES, state.samples].sort((a, b) => a - b);
+    : [...SAMPLE_CHOICES, state.solver.samples].sort((a, b) => a - b);
   return (
     <PanelSection id="sec-display" title={t.sectionDisplay}>
       <FlagToggles
         flags={['showGrid', 'showAngles', 'showGhost', 'showTrace', 'showDeadCentres', 'showInstantCentres']}
-        state={state}
+        state={state.display}
         dispatch={dispatch}
       />
       <label className="inline-field">
         <span>{t.samples}</span>
         <select
           className="select select-small"
-          value={String(state.samples)}
+          value={String(state.solver.samples)}
           onChange={(e) => dispatch({ type: 'setSamples', samples: Number(e.target.value) })}
         >
           {choices.map((n) => (

@@ -48,7 +48,7 @@ export function LinkageStage({
   return (
     <LinkageCanvas
       scene={scene}
-      view={state.view}
+      view={state.display.view}
       onViewChange={onViewChange}
       onTheta2={onTheta2}
       onCoupler={onCoupler}

@@ -30,7 +30,7 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
     <PanelSection id="sec-motion" title={t.sectionMotion}>
       <NumberControl
         field="omega2"
-        value={omegaToUnit(state.omega2RadPerS, unit)}
+        value={omegaToUnit(state.motion.omega2RadPerS, unit)}
         decimals={MOTION_DECIMALS}
         min={slider.min}
         max={slider.max}
@@ -48,14 +48,14 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
       </label>
       <NumberControl
         field="alpha2"
-        value={state.alpha2RadPerS2}
+        value={state.motion.alpha2RadPerS2}
         decimals={MOTION_DECIMALS}
         min={ALPHA_SLIDER.min}
         max={ALPHA_SLIDER.max}
         step={ALPHA_SLIDER.step}
         onCommit={(v) => dispatch({ type: 'setInputMotion', alpha2RadPerS2: v })}
       />
-      <FlagToggles flags={['showVelocity', 'showAcceleration']} state={state} dispatch={dispatch} />
+      <FlagToggles flags={['showVelocity', 'showAcceleration']} state={state.display} dispatch={dispatch} />
     </PanelSection>
   );
 }

@@ -67,7 +67,9 @@ function AnglePlotsPanelImpl({
   const t = useMessages();
   // The frame on screen: the markers (and the branch, which a rocking input switches) follow every frame of Play.
   const { state, marker: point, motion } = useFramePose();
-  const { branch } = state;
+  const {
+    design: { branch },
+  } = state;
   const currentRates = motion?.rates ?? null;
   const in3 = useMemo(() => angleChartInputs('theta3', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const in4 = useMemo(() => angleChartInputs('theta4', deg, branch, showOther, t), [deg, branch, showOther, t]);

@@ -19,7 +19,9 @@ export interface TransmissionPanelProps {
 export function TransmissionPanel({ deg, muBandLoDeg, muBandHiDeg, xMarks }: TransmissionPanelProps) {
   const t = useMessages();
   const { state, marker: point } = useFramePose();
-  const { branch } = state;
+  const {
+    design: { branch },
+  } = state;
   const data = useMemo(() => transmissionData(deg, branch), [deg, branch]);
   const band = useMemo(() => ({ loDeg: muBandLoDeg, hiDeg: muBandHiDeg }), [muBandLoDeg, muBandHiDeg]);
   const inputs = useMemo(() => transmissionInputs(data, band, xMarks, t), [data, band, xMarks, t]);

@@ -33,9 +33,9 @@ export function useAnimation(
   const seen = useRef<PlayFrame | null>(null);
   const committed = useRef<PlayFrame[]>([]);
   const lastCommitMs = useRef(0);
-  useAnimationFrame(state.playing, (dt, now) => {
+  useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
-    if (!rangeDeg || !state.playing) return;
+    if (!rangeDeg || !state.motion.playing) return;
     const own = frameOf(state);
     const i = committed.current.findIndex((c) => sameFrame(c, own));
     const base = playBase(own, seen.current, playhead.get(), committed.current);
@@ -43,7 +43,7 @@ export function useAnimation(
     seen.current = own;
     const next = advanceTheta2(
       base.theta2Deg,
-      degreesForElapsed(state.speedDegPerFrame, dt),
+      degreesForElapsed(state.motion.speedDegPerFrame, dt),
       base.direction,
       base.branch,
       rangeDeg,
@@ -58,7 +58,7 @@ export function useAnimation(
   // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead. An edit that came with
   // the stop (a "Go to" sets θ2 as it stops Play) wins over the frame on screen: the state already holds the pose.
   useEffect(() => {
-    if (state.playing) return;
+    if (state.motion.playing) return;
     const own = frameOf(state);
     const edited =
       seen.current !== null && !sameFrame(own, seen.current) && !committed.current.some((c) => sameFrame(c, own));
@@ -75,7 +75,11 @@ export function useAnimation(
     else dispatch({ type: 'animate', ...frame });
   }, [state, playhead, dispatch]);
   return useCallback(
-    (sign: 1 | -1) => dispatch({ type: 'animate', ...stepTheta2(state, rangeDeg, sign) }),
+    (sign: 1 | -1) =>
+      dispatch({
+        type: 'animate',
+        ...stepTheta2({ ...frameOf(state), samples: state.solver.samples }, rangeDeg, sign),
+      }),
     [state, rangeDeg, dispatch],
   );
 }

@@ -15,7 +15,9 @@ import type { DesignInfo } from './useDesignMetrics';
  * instant centres when that toggle is on.
  */
 export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {
-  const { showDeadCentres, showInstantCentres, muBandLoDeg, muBandHiDeg } = state;
+  const {
+    display: { showDeadCentres, showInstantCentres, muBandLoDeg, muBandHiDeg },
+  } = state;
   const output = design?.metrics.output ?? null;
   const dead = useMemo(
     () => (showDeadCentres && output ? [output.extended, output.folded] : null),

@@ -10,7 +10,9 @@ import type { LocalPose } from '../../shared/linkage/localPose';
  * the state sets with ω2 signed by the animation direction; null when there is no pose.
  */
 export function useFrameMotion(state: AppState, local: LocalPose): FrameMotion | null {
-  const { omega2RadPerS, alpha2RadPerS2, direction } = state;
+  const {
+    motion: { omega2RadPerS, alpha2RadPerS2, direction },
+  } = state;
   const input = useMemo(
     () => effectiveInputMotion(omega2RadPerS, alpha2RadPerS2, direction),
     [omega2RadPerS, alpha2RadPerS2, direction],

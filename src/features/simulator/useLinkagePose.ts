@@ -16,8 +16,12 @@ export interface FramePose {
  * branch) is solved only when it is drawn.
  */
 export function useLinkagePose(state: AppState, ghostShown: boolean): FramePose {
-  const { linkage, theta2Deg, branch, coupler, method, tol } = state;
-  const withGhost = ghostShown && state.showGhost;
+  const {
+    design: { linkage, branch, coupler },
+    motion: { theta2Deg },
+    solver: { method, tol },
+  } = state;
+  const withGhost = ghostShown && state.display.showGhost;
   const local = useMemo(
     () => localPose(linkage, theta2Deg, branch, coupler, withGhost),
     [linkage, theta2Deg, branch, coupler, withGhost],

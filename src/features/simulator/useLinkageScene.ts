@@ -77,13 +77,15 @@ export function useLinkageScene(
   const pose = useMemo(() => scenePose(linkage, local.pose, coupler), [linkage, local.pose, coupler]);
   const ghost = useMemo(() => scenePose(linkage, local.ghost, coupler), [linkage, local.ghost, coupler]);
   const curves = useMemo(() => (cycle ? sceneCurves(cycle.curves, branch, theta2Rad) : []), [cycle, branch, theta2Rad]);
-  const bounds = useSceneBounds(cycle, branch, state.showGhost, linkage, pose, ghost);
+  const bounds = useSceneBounds(cycle, branch, state.display.showGhost, linkage, pose, ghost);
 
   const classification = cycle?.classification ?? null;
   const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
   const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
   const text = useSceneText(t, warning, warningDetail);
-  const { showGrid, showAngles, showGhost, showTrace } = state;
+  const {
+    display: { showGrid, showAngles, showGhost, showTrace },
+  } = state;
   const scene: LinkageScene = useMemo(
     () => ({
       linkage,

@@ -21,8 +21,11 @@ function accelerations(m: FrameMotion): Record<'A' | 'B' | 'P', WorldVector> {
  * crank pin's own speed r2 |ω2| and acceleration r2 sqrt(ω2⁴ + α2²), so they stay put while the linkage moves.
  */
 export function useSceneVectors(state: AppState, motion: FrameMotion | null, t: Messages): SceneVectors | null {
-  const { showVelocity, showAcceleration, omega2RadPerS: w, alpha2RadPerS2: a } = state;
-  const r2 = state.linkage.r2;
+  const {
+    display: { showVelocity, showAcceleration },
+    motion: { omega2RadPerS: w, alpha2RadPerS2: a },
+  } = state;
+  const r2 = state.design.linkage.r2;
   const velocityScale = useMemo(() => arrowScale(r2 * Math.abs(w)), [r2, w]);
   const accelerationScale = useMemo(() => arrowScale(r2 * Math.hypot(w * w, a)), [r2, w, a]);
   const text: VectorText = useMemo(

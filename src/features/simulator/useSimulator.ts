@@ -47,33 +47,55 @@ export function useSimulator(
 ): Simulator {
   const [state, dispatch] = useReducer(reducer, initial);
   const { stage, plotPixels, newton } = shownFor(state);
-  const solver = useMemo(() => ({ method: state.method, tol: state.tol }), [state.method, state.tol]);
+  const solver = useMemo(
+    () => ({ method: state.solver.method, tol: state.solver.tol }),
+    [state.solver.method, state.solver.tol],
+  );
   // Rates only for a visible rate plot, for ω2 as set: the plots flip ω3 and ω4 with the direction themselves.
-  const ratePlot = plotPixels > 0 && state.plotKind !== 'angles';
+  const ratePlot = plotPixels > 0 && state.display.plotKind !== 'angles';
   const rates = useMemo(
-    () => (ratePlot ? { omega2: state.omega2RadPerS, alpha2: state.alpha2RadPerS2 } : null),
-    [ratePlot, state.omega2RadPerS, state.alpha2RadPerS2],
+    () => (ratePlot ? { omega2: state.motion.omega2RadPerS, alpha2: state.motion.alpha2RadPerS2 } : null),
+    [ratePlot, state.motion.omega2RadPerS, state.motion.alpha2RadPerS2],
   );
   const cycleNeeds = useMemo(
-    () => ({ solver, branch: state.branch, otherBranch: state.showGhost, curves: state.showTrace && stage }),
-    [solver, state.branch, state.showGhost, state.showTrace, stage],
+    () => ({
+      solver,
+      branch: state.design.branch,
+      otherBranch: state.display.showGhost,
+      curves: state.display.showTrace && stage,
+    }),
+    [solver, state.design.branch, state.display.showGhost, state.display.showTrace, stage],
   );
-  const plot = usePlotSeries(state.linkage, {
+  const plot = usePlotSeries(state.design.linkage, {
     plotPixels,
-    branch: state.branch,
-    otherBranch: state.showGhost,
+    branch: state.design.branch,
+    otherBranch: state.display.showGhost,
     solver,
     rates,
   });
   // The worker's pose answer feeds the numbers and the NR runs only: the canvas draws a pose solved on the
   // main thread (useLinkagePose), ghost included, so the worker need not solve the ghost.
   const pointNeeds = useMemo(() => ({ solver, ghost: false, newton }), [solver, newton]);
-  const { cycle, error } = useCycle(client, state.linkage, state.samples, state.coupler, cycleNeeds);
+  const { cycle, error } = useCycle(
+    client,
+    state.design.linkage,
+    state.solver.samples,
+    state.design.coupler,
+    cycleNeeds,
+  );
   // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
   // numbers and the NR plot, which follow the state (a few times a second while playing, see useAnimation).
   // While a length or P is dragged the pose request follows a few times a second (the cycle goes first).
-  const pointLinkage = useThrottledValue(state.linkage, POINT_FOLLOW_MS);
-  const pointCoupler = useThrottledValue(state.coupler, POINT_FOLLOW_MS);
-  const point = usePoint(client, pointLinkage, state.branch, state.theta2Deg, state.samples, pointCoupler, pointNeeds);
+  const pointLinkage = useThrottledValue(state.design.linkage, POINT_FOLLOW_MS);
+  const pointCoupler = useThrottledValue(state.design.coupler, POINT_FOLLOW_MS);
+  const point = usePoint(
+    client,
+    pointLinkage,
+    state.design.branch,
+    state.motion.theta2Deg,
+    state.solver.samples,
+    pointCoupler,
+    pointNeeds,
+  );
   return { state, dispatch, cycle, cycleError: error, point, plot };
 }

@@ -1,6 +1,7 @@
 import { radToDeg } from '../../solver/angles';
 import type { AngleInterval, Branch } from '../../solver/types';
-import type { AppState, Direction } from './appState';
+import type { Direction } from './appState';
+import type { PlayFrame } from './playhead';
 import { NOMINAL_FPS, normalizeTheta2Deg } from './appState';
 
 /** The next animation state: input angle in degrees [0, 360), direction and branch. */
@@ -129,7 +130,9 @@ export function advanceTheta2(
 }
 
 /** The state a Step button reads: input angle, samples per turn (one step is 360 / samples degrees), direction, branch. */
-export type StepState = Pick<AppState, 'theta2Deg' | 'samples' | 'direction' | 'branch'>;
+export interface StepState extends PlayFrame {
+  samples: number;
+}
 
 /**
  * One press of Step forward (sign +1) or Step back (-1): 360 / samples degrees along the animation's direction

@@ -9,8 +9,8 @@ export interface PlayFrame {
 }
 
 /** The frame fields of a state. */
-export function frameOf(state: Pick<AppState, 'theta2Deg' | 'direction' | 'branch'>): PlayFrame {
-  return { theta2Deg: state.theta2Deg, direction: state.direction, branch: state.branch };
+export function frameOf(state: Pick<AppState, 'motion' | 'design'>): PlayFrame {
+  return { theta2Deg: state.motion.theta2Deg, direction: state.motion.direction, branch: state.design.branch };
 }
 
 /** Whether two frames are the same pose and direction. */
@@ -21,7 +21,8 @@ export function sameFrame(a: PlayFrame, b: PlayFrame): boolean {
 /** The state with a frame's fields, or the state itself when the frame is null or already its own. */
 export function withFrame(state: AppState, frame: PlayFrame | null): AppState {
   if (!frame || sameFrame(frame, frameOf(state))) return state;
-  return { ...state, ...frame };
+  const { theta2Deg, direction, branch } = frame;
+  return { ...state, motion: { ...state.motion, theta2Deg, direction }, design: { ...state.design, branch } };
 }
 
 /**

@@ -23,7 +23,7 @@ export function Toggle({ label, checked, onChange, disabled }: ToggleProps) {
 /** Props of FlagToggles: which of the state's display flags to offer, the state and its dispatcher. */
 export interface FlagTogglesProps {
   flags: readonly ViewFlag[];
-  state: Pick<AppState, ViewFlag>;
+  state: Pick<AppState['display'], ViewFlag>;
   dispatch: Dispatch<Action>;
 }
 

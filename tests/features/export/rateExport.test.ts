@@ -13,21 +13,36 @@ import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import type { PointResponse } from '../../../src/shared/solution';
 import { referenceMotion } from '../../oracle/rates';
+import { withFields } from '../../shared/state/stateFixtures';
 
 /** The frame an export reads: this state's pose at its θ2, with its motion (scene not needed by rate exports). */
 function frameOf(state: AppState): ShownFrame {
-  const local = localPose(state.linkage, state.theta2Deg, state.branch, state.coupler, false);
-  const motion = frameMotion(local, effectiveInputMotion(state.omega2RadPerS, state.alpha2RadPerS2, state.direction));
-  const marker = { theta2Rad: degToRad(state.theta2Deg) } as PointResponse;
+  const local = localPose(
+    state.design.linkage,
+    state.motion.theta2Deg,
+    state.design.branch,
+    state.design.coupler,
+    false,
+  );
+  const motion = frameMotion(
+    local,
+    effectiveInputMotion(state.motion.omega2RadPerS, state.motion.alpha2RadPerS2, state.motion.direction),
+  );
+  const marker = { theta2Rad: degToRad(state.motion.theta2Deg) } as PointResponse;
   return { state, marker, motion, scene: null as unknown as ShownFrame['scene'] };
 }
 
 describe('rateExport', () => {
   for (const direction of [1, -1] as const) {
     it(`solves ω3, ω4 and α3, α4 as the oracle gives them, for ${direction === 1 ? 'counter-' : ''}clockwise input`, () => {
-      const state: AppState = { ...DEFAULT_STATE, direction, omega2RadPerS: 3, alpha2RadPerS2: -2, showGhost: false };
-      const input = effectiveInputMotion(state.omega2RadPerS, state.alpha2RadPerS2, direction);
-      const sigma = state.branch === 'open' ? 1 : -1;
+      const state: AppState = withFields(DEFAULT_STATE, {
+        direction,
+        omega2RadPerS: 3,
+        alpha2RadPerS2: -2,
+        showGhost: false,
+      });
+      const input = effectiveInputMotion(state.motion.omega2RadPerS, state.motion.alpha2RadPerS2, direction);
+      const sigma = state.design.branch === 'open' ? 1 : -1;
       for (const subject of ['omega', 'alpha'] as const) {
         const { inputs, marker } = rateExport(subject, frameOf(state), messagesEn);
         expect(inputs.title).toBe(subject === 'omega' ? 'ω3 and ω4 against θ2' : 'α3 and α4 against θ2');
@@ -36,14 +51,14 @@ describe('rateExport', () => {
         expect(theta2Deg.length).toBeGreaterThan(600);
         let checked = 0;
         for (let i = 0; i < theta2Deg.length; i += 37) {
-          const ref = referenceMotion(state.linkage, degToRad(theta2Deg[i]), sigma, input);
+          const ref = referenceMotion(state.design.linkage, degToRad(theta2Deg[i]), sigma, input);
           const want = subject === 'omega' ? [ref.omega3, ref.omega4] : [ref.alpha3, ref.alpha4];
           series.forEach((s, k) => expect(s.values[i]).toBeCloseTo(want[k], 8));
           checked++;
         }
         expect(checked).toBeGreaterThan(15);
-        const at = referenceMotion(state.linkage, degToRad(state.theta2Deg), sigma, input);
-        expect(marker.theta2Deg).toBeCloseTo(state.theta2Deg, 12);
+        const at = referenceMotion(state.design.linkage, degToRad(state.motion.theta2Deg), sigma, input);
+        expect(marker.theta2Deg).toBeCloseTo(state.motion.theta2Deg, 12);
         const wantAt = subject === 'omega' ? [at.omega3, at.omega4] : [at.alpha3, at.alpha4];
         marker.values.forEach((v, k) => expect(v).toBeCloseTo(wantAt[k], 8));
       }
@@ -51,7 +66,7 @@ describe('rateExport', () => {
   }
 
   it('draws the other branch faint when the ghost shows', () => {
-    const { inputs } = rateExport('omega', frameOf({ ...DEFAULT_STATE, showGhost: true }), messagesEn);
+    const { inputs } = rateExport('omega', frameOf(withFields(DEFAULT_STATE, { showGhost: true })), messagesEn);
     expect(inputs.data.series.map((s) => s.faint === true)).toEqual([true, false, true, false]);
   });
 });
@@ -62,7 +77,7 @@ describe('plotExport', () => {
     uninstall = installFakeSvgDom();
   });
   afterAll(() => uninstall());
-  const state: AppState = { ...DEFAULT_STATE, omega2RadPerS: 3, showGhost: false };
+  const state: AppState = withFields(DEFAULT_STATE, { omega2RadPerS: 3, showGhost: false });
   const context = { frame: frameOf(state), point: null, deg: null, t: messagesEn, canvasSize: { width: 0, height: 0 } };
 
   it('exports ω3 and ω4 at 640 x 360 with its title and the marker at θ2 on both curves', () => {
@@ -73,7 +88,7 @@ describe('plotExport', () => {
     expect(svg).toContain('>θ2 (°)</text>');
     // Plot 640 - 50 - 14 = 576 px wide for 360 degrees.
     const x1 = Number(/<line class="mline"[^>]* x1="([^"]+)"/.exec(svg)?.[1]);
-    expect(x1).toBeCloseTo((state.theta2Deg * 576) / 360, 9);
+    expect(x1).toBeCloseTo((state.motion.theta2Deg * 576) / 360, 9);
     const dots = [...svg.matchAll(/<circle [^>]*cx="([^"]+)"/g)].map((m) => Number(m[1]));
     expect(dots).toHaveLength(2);
     dots.forEach((cx) => expect(cx).toBeCloseTo(x1, 9));
@@ -82,6 +97,8 @@ describe('plotExport', () => {
   it('exports the convergence chart at its own size, with its title', () => {
     const chart = plotExport('convergence', context);
     expect([chart.width, chart.height]).toEqual([560, 340]);
-    expect(exportChart(chart, 'svg')).toContain(`>${convergenceInputs(null, state.nrStart, messagesEn).title}</text>`);
+    expect(exportChart(chart, 'svg')).toContain(
+      `>${convergenceInputs(null, state.solver.nrStart, messagesEn).title}</text>`,
+    );
   });
 });

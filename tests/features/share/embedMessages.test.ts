@@ -1,14 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
-import type { AppState } from '../../../src/shared/state/appState';
 import { applyPatch, readSetState, stateEvent, stateValues } from '../../../src/features/share/embedMessages';
+import { withFields } from '../../shared/state/stateFixtures';
 import { parseUrl, serializeState } from '../../../src/shared/url/url';
 
 const quiet = () => undefined;
 
 // A state off the defaults in every field a host is likely to read.
-const MOVED: AppState = {
-  ...DEFAULT_STATE,
+const MOVED = withFields(DEFAULT_STATE, {
   linkage: { r1: 7.5, r2: 1.25, r3: 6, r4: 4.5 },
   theta2Deg: 248.98895999999954,
   branch: 'crossed',
@@ -17,7 +16,7 @@ const MOVED: AppState = {
   direction: -1,
   showGrid: false,
   locale: 'zh-TW',
-};
+});
 
 describe('stateValues', () => {
   it('gives the share-link keys with numbers, booleans and URL words', () => {
@@ -80,15 +79,15 @@ describe('applyPatch', () => {
   it('sets lengths, the input angle and the branch through the URL codecs', () => {
     const r = applyPatch(DEFAULT_STATE, { r3: 5.5, t2: 370, br: 'crossed', play: true });
     expect(r.applied).toEqual(['r3', 't2', 'br', 'play']);
-    expect(r.state.linkage).toEqual({ r1: 6, r2: 2, r3: 5.5, r4: 5 });
-    expect(r.state.theta2Deg).toBe(10); // the URL codec wraps 370 degrees into [0, 360)
-    expect(r.state.branch).toBe('crossed');
-    expect(r.state.playing).toBe(true);
+    expect(r.state.design.linkage).toEqual({ r1: 6, r2: 2, r3: 5.5, r4: 5 });
+    expect(r.state.motion.theta2Deg).toBe(10); // the URL codec wraps 370 degrees into [0, 360)
+    expect(r.state.design.branch).toBe('crossed');
+    expect(r.state.motion.playing).toBe(true);
   });
 
   it('reads strings as URL text, as a link would', () => {
     const r = applyPatch(DEFAULT_STATE, { r1: '7', play: '1', dir: 'cw' });
-    expect([r.state.linkage.r1, r.state.playing, r.state.direction]).toEqual([7, true, -1]);
+    expect([r.state.design.linkage.r1, r.state.motion.playing, r.state.motion.direction]).toEqual([7, true, -1]);
   });
 
   it('ignores unknown keys and embed-only keys, keeping the rest', () => {
@@ -140,18 +139,18 @@ describe('applyPatch', () => {
       { key: 'pa', why: 'locked (coupler)' },
       { key: 'play', why: 'locked (play)' },
     ]);
-    expect([r.state.linkage.r1, r.state.theta2Deg, r.state.coupler.angleDeg, r.state.playing]).toEqual([
-      6,
-      45,
-      30,
-      false,
-    ]);
+    expect([
+      r.state.design.linkage.r1,
+      r.state.motion.theta2Deg,
+      r.state.design.coupler.angleDeg,
+      r.state.motion.playing,
+    ]).toEqual([6, 45, 30, false]);
   });
 
   it('reverts keys that break a rule between keys', () => {
     const r = applyPatch(DEFAULT_STATE, { mulo: 150, r3: 4 });
     expect(r.applied).toEqual(['r3']);
     expect(r.refused).toEqual([{ key: 'mulo', why: 'the transmission band needs mulo < muhi' }]);
-    expect(r.state.muBandLoDeg).toBe(DEFAULT_STATE.muBandLoDeg);
+    expect(r.state.display.muBandLoDeg).toBe(DEFAULT_STATE.display.muBandLoDeg);
   });
 });

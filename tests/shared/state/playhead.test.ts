@@ -1,3 +1,4 @@
+import { withFields } from './stateFixtures';
 import { describe, expect, it, vi } from 'vitest';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { PlayFrame } from '../../../src/shared/state/playhead';
@@ -42,13 +43,8 @@ describe('withFrame', () => {
   it('puts the frame over the state and keeps everything else', () => {
     const s = withFrame(DEFAULT_STATE, f(123.5, -1, 'crossed'));
     expect(frameOf(s)).toEqual(f(123.5, -1, 'crossed'));
-    expect(s.linkage).toBe(DEFAULT_STATE.linkage);
-    expect({ ...s, theta2Deg: 0, direction: 1, branch: 'open' }).toEqual({
-      ...DEFAULT_STATE,
-      theta2Deg: 0,
-      direction: 1,
-      branch: 'open',
-    });
+    expect(s.design.linkage).toBe(DEFAULT_STATE.design.linkage);
+    expect(withFields(s, { theta2Deg: 45, direction: 1, branch: 'open' })).toEqual(DEFAULT_STATE);
   });
 });
 

@@ -6,6 +6,8 @@ import { SWEEP_METHODS } from '../../../src/solver/methods';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../../src/shared/url/url';
 import { DEFAULT_TARGET, URL_KEYS } from '../../../src/shared/url/urlKeys';
+import type { FlatState } from '../state/stateFixtures';
+import { withFields } from '../state/stateFixtures';
 
 const quiet = () => undefined;
 const SEED = 20251222;
@@ -69,7 +71,7 @@ const gridState: fc.Arbitrary<AppState> = fc
     alpha2RadPerS2: fc.double({ min: -1e9, max: 1e9, noNaN: true }),
     band,
   })
-  .map(({ band: [lo, hi], ...s }) => ({ ...s, muBandLoDeg: lo, muBandHiDeg: hi }));
+  .map(({ band: [lo, hi], ...s }) => withFields(DEFAULT_STATE, { ...s, muBandLoDeg: lo, muBandHiDeg: hi }));
 
 /** -0 and 0 serialise alike; the state never needs to tell them apart. */
 function withoutNegativeZero<T>(x: T): T {
@@ -111,22 +113,21 @@ describe('serializeState and parseUrl', () => {
     });
     fc.assert(
       fc.property(raw, ({ theta2Deg, angleDeg, zoom, panX }) => {
-        const s: AppState = {
-          ...DEFAULT_STATE,
+        const s = withFields(DEFAULT_STATE, {
           theta2Deg,
-          coupler: { ...DEFAULT_STATE.coupler, angleDeg },
+          coupler: { ...DEFAULT_STATE.design.coupler, angleDeg },
           view: { zoom, panX, panY: 0 },
-        };
+        });
         const q = serializeState(s);
         const back = parseUrl(q, DEFAULT_STATE, quiet).state;
         expect(serializeState(back)).toBe(q);
         // Rounding to 9 decimals moves an angle by at most half a unit in the last place, 5e-10 deg.
-        expect(angleGapDeg(back.theta2Deg, theta2Deg)).toBeLessThanOrEqual(5e-10 + 1e-12);
-        expect(angleGapDeg(back.coupler.angleDeg, angleDeg)).toBeLessThanOrEqual(5e-10 + 1e-12);
-        expect(back.theta2Deg).toBeGreaterThanOrEqual(0);
-        expect(back.theta2Deg).toBeLessThan(360);
+        expect(angleGapDeg(back.motion.theta2Deg, theta2Deg)).toBeLessThanOrEqual(5e-10 + 1e-12);
+        expect(angleGapDeg(back.design.coupler.angleDeg, angleDeg)).toBeLessThanOrEqual(5e-10 + 1e-12);
+        expect(back.motion.theta2Deg).toBeGreaterThanOrEqual(0);
+        expect(back.motion.theta2Deg).toBeLessThan(360);
         // Six significant digits: relative change at most 5e-6.
-        expect(Math.abs(back.view.zoom - zoom)).toBeLessThanOrEqual(5e-6 * zoom);
+        expect(Math.abs(back.display.view.zoom - zoom)).toBeLessThanOrEqual(5e-6 * zoom);
       }),
       { seed: SEED, numRuns: 300 },
     );
@@ -142,54 +143,19 @@ describe('serializeState and parseUrl', () => {
     }
   });
 
-  it('keeps every documented key, in the historical order', () => {
-    expect(URL_KEYS.map((k) => k.name)).toEqual([
-      'r1',
-      'r2',
-      'r3',
-      'r4',
-      't2',
-      'br',
-      'pd',
-      'pa',
-      'play',
-      'spd',
-      'dir',
-      'grid',
-      'ang',
-      'ghost',
-      'trace',
-      'nr',
-      'plots',
-      'n',
-      'lang',
-      'm',
-      'tol',
-      'page',
-      'lstep',
-      'w2',
-      'a2',
-      'vel',
-      'acc',
-      'plot',
-      'mulo',
-      'muhi',
-      'dc',
-      'ic',
-      'z',
-      'px',
-      'py',
-      'panels',
-      'lock',
-    ]);
+  it('keeps every documented key, grouped by the slice that owns it', () => {
+    // Design, motion, display, solver, shell, lab, then the embed-only keys.
+    expect(URL_KEYS.map((k) => k.name).join(' ')).toBe(
+      'r1 r2 r3 r4 br pd pa t2 play spd dir w2 a2 grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
+        'nr n m tol lang page lstep panels lock',
+    );
   });
 
   it('writes the optional keys only when they differ from the default', () => {
     const plain = new URLSearchParams(serializeState(DEFAULT_STATE));
     for (const k of ['page', 'lstep', 'w2', 'a2', 'mulo', 'muhi', 'z', 'px', 'py', 'panels', 'lock'])
       expect(plain.has(k), k).toBe(false);
-    const s: AppState = {
-      ...DEFAULT_STATE,
+    const s = withFields(DEFAULT_STATE, {
       page: 'lab',
       labStepDeg: 5,
       omega2RadPerS: -2.5,
@@ -197,7 +163,7 @@ describe('serializeState and parseUrl', () => {
       muBandLoDeg: 30,
       muBandHiDeg: 150,
       view: { zoom: 1, panX: 0.25, panY: 0 },
-    };
+    });
     const q = new URLSearchParams(serializeState(s));
     expect(Object.fromEntries(q)).toMatchObject({
       page: 'lab',
@@ -213,13 +179,12 @@ describe('serializeState and parseUrl', () => {
   });
 
   it('writes numbers compactly: t2 from Play without float noise, lengths exactly, the view to six digits', () => {
-    const s: AppState = {
-      ...DEFAULT_STATE,
+    const s = withFields(DEFAULT_STATE, {
       linkage: { r1: 4, r2: 1, r3: 3, r4: 2.000000001 },
       theta2Deg: 248.98895999999954,
       coupler: { distance: 0.1 + 0.2, angleDeg: -20.000000000000004 },
       view: { zoom: 1.1 * 1.1, panX: -0.1 - 0.2, panY: 0 },
-    };
+    });
     const q = new URLSearchParams(serializeState(s));
     expect(q.get('t2')).toBe('248.98896');
     expect(q.get('r4')).toBe('2.000000001');
@@ -231,28 +196,30 @@ describe('serializeState and parseUrl', () => {
   });
 
   it('writes an angle that rounds up to 360 as 0', () => {
-    const s = { ...DEFAULT_STATE, theta2Deg: 359.9999999999 };
+    const s = withFields(DEFAULT_STATE, { theta2Deg: 359.9999999999 });
     expect(new URLSearchParams(serializeState(s)).get('t2')).toBe('0');
-    expect(parseUrl(serializeState(s), DEFAULT_STATE, quiet).state.theta2Deg).toBe(0);
+    expect(parseUrl(serializeState(s), DEFAULT_STATE, quiet).state.motion.theta2Deg).toBe(0);
   });
 
   it('keeps lengths like 2.000000001 exactly', () => {
-    const s = { ...DEFAULT_STATE, linkage: { r1: 4, r2: 1, r3: 3, r4: 2.000000001 } };
-    expect(parseUrl(serializeState(s), DEFAULT_STATE, quiet).state.linkage.r4).toBe(2.000000001);
+    const s = withFields(DEFAULT_STATE, { linkage: { r1: 4, r2: 1, r3: 3, r4: 2.000000001 } });
+    expect(parseUrl(serializeState(s), DEFAULT_STATE, quiet).state.design.linkage.r4).toBe(2.000000001);
   });
 
   it('takes a partial URL on top of the base state', () => {
     const r = parseUrl('r2=2.5&t2=-30&br=crossed&lang=zh-TW&pa=270', DEFAULT_STATE, quiet);
-    expect(r.state.linkage).toEqual({ r1: 6, r2: 2.5, r3: 5, r4: 5 });
-    expect(r.state.theta2Deg).toBe(330);
-    expect(r.state.coupler.angleDeg).toBe(-90);
-    expect(r.state.branch).toBe('crossed');
-    expect(r.state.locale).toBe('zh-TW');
+    expect(r.state.design.linkage).toEqual({ r1: 6, r2: 2.5, r3: 5, r4: 5 });
+    expect(r.state.motion.theta2Deg).toBe(330);
+    expect(r.state.design.coupler.angleDeg).toBe(-90);
+    expect(r.state.design.branch).toBe('crossed');
+    expect(r.state.shell.locale).toBe('zh-TW');
   });
 
   it('reads the input motion and the transmission band', () => {
     const r = parseUrl('w2=-3.5&a2=12&mulo=30&muhi=150', DEFAULT_STATE, quiet);
-    expect(r.state).toMatchObject({ omega2RadPerS: -3.5, alpha2RadPerS2: 12, muBandLoDeg: 30, muBandHiDeg: 150 });
+    expect(r.state).toEqual(
+      withFields(DEFAULT_STATE, { omega2RadPerS: -3.5, alpha2RadPerS2: 12, muBandLoDeg: 30, muBandHiDeg: 150 }),
+    );
     expect(r.ignored).toEqual([]);
   });
 
@@ -275,8 +242,8 @@ describe('serializeState and parseUrl', () => {
   });
 
   it('accepts the sample-count option n=3600', () => {
-    expect(parseUrl('n=3600', DEFAULT_STATE, quiet).state.samples).toBe(3600);
-    expect(parseUrl('n=3600.5', DEFAULT_STATE, quiet).state.samples).toBe(360);
+    expect(parseUrl('n=3600', DEFAULT_STATE, quiet).state.solver.samples).toBe(3600);
+    expect(parseUrl('n=3600.5', DEFAULT_STATE, quiet).state.solver.samples).toBe(360);
   });
 });
 
@@ -391,24 +358,24 @@ describe('parseUrl range checks', () => {
 
   it('refuses a transmission band whose edges cross, reverting the keys that broke it', () => {
     const both = parseUrl('mulo=100&muhi=60', DEFAULT_STATE, quiet);
-    expect([both.state.muBandLoDeg, both.state.muBandHiDeg]).toEqual([40, 140]);
+    expect([both.state.display.muBandLoDeg, both.state.display.muBandHiDeg]).toEqual([40, 140]);
     expect(both.ignored.map((p) => [p.key, p.value])).toEqual([
       ['mulo', '100'],
       ['muhi', '60'],
     ]);
     const lo = parseUrl('mulo=150', DEFAULT_STATE, quiet);
-    expect(lo.state.muBandLoDeg).toBe(40);
+    expect(lo.state.display.muBandLoDeg).toBe(40);
     expect(lo.ignored.map((p) => p.key)).toEqual(['mulo']);
     const equal = parseUrl('mulo=90&muhi=90', DEFAULT_STATE, quiet);
     expect(equal.ignored).toHaveLength(2);
     const fine = parseUrl('mulo=150&muhi=170', DEFAULT_STATE, quiet);
-    expect([fine.state.muBandLoDeg, fine.state.muBandHiDeg]).toEqual([150, 170]);
+    expect([fine.state.display.muBandLoDeg, fine.state.display.muBandHiDeg]).toEqual([150, 170]);
   });
 });
 
 describe('parseUrl meanings', () => {
   it('reads each word as the state it names', () => {
-    const cases: Array<[string, Partial<AppState>]> = [
+    const cases: Array<[string, Partial<FlatState>]> = [
       ['br=crossed', { branch: 'crossed' }],
       ['dir=cw', { direction: -1 }],
       ['dir=ccw', { direction: 1 }],
@@ -426,8 +393,11 @@ describe('parseUrl meanings', () => {
       ],
       ['m=seed', { method: 'seed' }],
     ];
-    for (const [q, expected] of cases) expect(parseUrl(q, DEFAULT_STATE, quiet).state, q).toMatchObject(expected);
-    const back = new URLSearchParams(serializeState({ ...DEFAULT_STATE, direction: -1, nrStart: 'cold', page: 'lab' }));
+    for (const [q, expected] of cases)
+      expect(parseUrl(q, DEFAULT_STATE, quiet).state, q).toEqual(withFields(DEFAULT_STATE, expected));
+    const back = new URLSearchParams(
+      serializeState(withFields(DEFAULT_STATE, { direction: -1, nrStart: 'cold', page: 'lab' })),
+    );
     expect([back.get('dir'), back.get('nr'), back.get('page')]).toEqual(['cw', 'cold', 'lab']);
   });
 });
@@ -472,7 +442,7 @@ describe('parseUrl ignored parameters', () => {
 
   it('keeps the last valid value of a repeated key and reports the bad one', () => {
     const r = parseUrl('r1=5&r1=oops', DEFAULT_STATE, quiet);
-    expect(r.state.linkage.r1).toBe(5);
+    expect(r.state.design.linkage.r1).toBe(5);
     expect(r.ignored.map((p) => p.value)).toEqual(['oops']);
   });
 });
