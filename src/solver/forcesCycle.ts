@@ -2,12 +2,13 @@
  * Cycle quantities of the input torque: mean, RMS and peak, the energy fluctuation and the flywheel
  * inertia for a coefficient of speed fluctuation (Norton, Design of Machinery, section 11.11).
  *
- * The sampled torque is taken as piecewise linear in theta2 and everything is exact for that curve:
- * the mean and RMS are trapezoid integrals, and the running energy E(theta2) = ∫ (T - mean) dtheta2 is
- * integrated interval by interval, with its extremes inside an interval (where T crosses the mean) found
- * at the crossing. Against the true smooth torque the error is that of linear interpolation, O(h^2) in
- * the step h: for a uniform grid the mean is spectrally accurate (the trapezoid rule on a periodic
- * function) and E at most about (pi / 6) h^2 max |T''| off (docs/forces.md has the measured figures).
+ * The mean and RMS are trapezoid integrals over the grid: on a uniform grid over a turn of a smooth
+ * periodic torque they are spectrally accurate (the trapezoid rule's error falls faster than any power of
+ * the step). The running energy E(theta2) = ∫ (T - mean) dtheta2 is exact for the piecewise-linear
+ * interpolant of the samples: integrated interval by interval, with its extremes inside an interval (where
+ * the interpolant crosses the mean) taken at the crossing. Against the true torque E is off by at most
+ * about (h^2 / 12) times the integral of |T''| up to theta2, O(h^2) in the step h (docs/forces.md has the
+ * measured figures).
  */
 import { TWO_PI } from './angles';
 import { branchSign } from './closedForm';
@@ -110,8 +111,7 @@ export function torqueCycleStats(
     const u = torque[i] / scale;
     const v = torque[i + 1] / scale;
     sum += 0.5 * h * (u + v);
-    // The exact integral of the square of the linear interpolant: h (u^2 + u v + v^2) / 3.
-    sumSq += (h * (u * u + u * v + v * v)) / 3;
+    sumSq += 0.5 * h * (u * u + v * v);
   }
   const span = theta2[n - 1] - theta2[0];
   const mean = (sum / span) * scale;
