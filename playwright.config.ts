@@ -2,8 +2,9 @@ import { defineConfig } from '@playwright/test';
 import { findChromium } from './scripts/ensure-chromium.mjs';
 
 // No browser download here: use the system Chromium (or CHROMIUM_PATH).
-/** Preview port; E2E_PORT lets two checkouts run e2e side by side. */
+/** Preview port and build folder; E2E_PORT and E2E_DIST let several builds run e2e side by side. */
 const port = Number(process.env.E2E_PORT ?? 4173);
+const outDir = process.env.E2E_DIST ?? 'dist';
 const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
 
 /** Playwright against the built app (npm run build first), served by vite preview, in headless Chromium. */
@@ -37,7 +38,7 @@ export default defineConfig({
   },
   webServer: {
     // vite.config.ts turns CORS on for the preview server, as static hosts send it (the sandboxed embed needs it).
-    command: `npx vite preview --port ${port} --strictPort`,
+    command: `npx vite preview --port ${port} --strictPort --outDir ${outDir}`,
     url: `http://localhost:${port}/`,
     reuseExistingServer: !process.env.CI,
     env: { VITE_CONFIG_NATIVE_IGNORE_WARNING: 'true' },
