@@ -6,7 +6,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { JointForces, LinkInertia } from '../../src/solver';
-import { LIMIT_SIN_MU, classify, linkForces, solveClosedForm, sweepForces } from '../../src/solver';
+import { LIMIT_SIN_MU, classify, linkForces, solveClosedForm, sweepForces, wrapAngle } from '../../src/solver';
 import { forceCaseArb } from './forcesOracle';
 
 const STILL = { omega2: 0, alpha2: 0 };
@@ -139,6 +139,38 @@ describe('linkForces at and near limit positions', () => {
       expect(f43 * Math.abs(sinMu), `d ${d}`).toBeLessThan(17);
       // Along the line: F43 is parallel to the rocker.
       expect(Math.abs(f.F43.x * Math.sin(pose.theta4) - f.F43.y * Math.cos(pose.theta4)) / f43).toBeLessThan(1e-12);
+    }
+  });
+});
+
+describe('linkForces with huge angles', () => {
+  it('answers for angles a whole number of turns away as for the same angles wrapped', () => {
+    // theta4 = 6283185307179588 is an integer double 1e15 turns out; wrapAngle reduces it exactly (to an ulp).
+    // A plain theta4 - theta3 would round it by up to half a radian before the sine.
+    const l = { r1: 0.3, r2: 0.1, r3: 0.25, r4: 0.25 };
+    const heavy: LinkInertia = { mass: 2, inertia: 0.03, cg: { dist: 0.1, angle: 0.2 } };
+    const inertia = { crank: heavy, coupler: heavy, rocker: heavy };
+    const loads = { gravity: { g: 9.81, angle: -1.2 }, couplerForce: { pDist: 0.1, pAngle: 1, fx: 5, fy: 7 } };
+    const input = { omega2: 12, alpha2: -3 };
+    for (const [theta2, theta3, theta4] of [
+      [0.7, 0.3, 6283185307179588],
+      [0.7 + 2 * Math.PI * 1e12, -2e16, 0.9],
+    ]) {
+      const far = linkForces(l, theta2, { theta3, theta4 }, input, inertia, loads);
+      const near = linkForces(
+        l,
+        wrapAngle(theta2),
+        { theta3: wrapAngle(theta3), theta4: wrapAngle(theta4) },
+        input,
+        inertia,
+        loads,
+      );
+      const scale = Math.max(...[near.F12, near.F32, near.F43, near.F14].map((f) => Math.hypot(f.x, f.y)));
+      for (const k of ['F12', 'F32', 'F43', 'F14', 'shakingForce'] as const) {
+        // The two poses differ by the reduction's ulp and by how cos and sin round each form: a few eps.
+        expect(Math.abs(far[k].x - near[k].x) / scale, `${k}.x at ${theta4}`).toBeLessThanOrEqual(1e-13);
+        expect(Math.abs(far[k].y - near[k].y) / scale, `${k}.y at ${theta4}`).toBeLessThanOrEqual(1e-13);
+      }
     }
   });
 });

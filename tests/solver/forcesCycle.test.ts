@@ -175,6 +175,13 @@ describe('forceCycle', () => {
     const parallelogram = forceCycle({ r1: 0.2, r2: 0.1, r3: 0.2, r4: 0.1 }, 'open', input, inertia, loads);
     expect(parallelogram.status).toBe('limit-position');
     expect(parallelogram.stats.mean).toBeNaN();
+    // Lengths a rounding away from a change point (0.11 + 0.35 against 0.29 + 0.17): at theta2 = 0 the pose is
+    // not quite flat (sin mu = 9e-9), so every force is finite there, but some 1e8 times the loads.
+    const nearlyFlat = { r1: 0.29, r2: 0.11, r3: 0.17, r4: 0.35 };
+    const almost = forceCycle(nearlyFlat, 'open', input, inertia, loads);
+    expect(almost.forces.torque.every(Number.isFinite)).toBe(true);
+    expect(almost.status).toBe('limit-position');
+    expect(almost.stats.energyFluctuation).toBeNaN();
     // A drag link (double crank) turns fully.
     const dragLink = forceCycle({ r1: 0.1, r2: 0.2, r3: 0.229, r4: 0.15 }, 'open', input, inertia, loads);
     expect(dragLink.status).toBe('ok');
