@@ -1,8 +1,8 @@
 /**
  * Solver benchmark: speed against error. Prints a work-precision table, the continuation stress rows
  * (a 100-turn sweep and a sweep starting at a fold: iterations per point, max error, error / bound),
- * the 361-point targets against a lean implementation of the report's algorithm (bench/leanReport.ts)
- * and the 10-million-point time and memory per method, and writes bench/results/solver.json,
+ * the 361-point targets against a lean implementation of the report's algorithm (bench/leanReport.ts),
+ * the 10-million-point time and memory per method and the cost of sweepForces per point, and writes bench/results/solver.json,
  * solver-table.md and work-precision.svg. Error is measured against the tests' 60-digit decimal.js
  * oracle (tests/oracle/reference.ts). The targets and the large sweeps run bundled in a child node
  * process (bench/nodeBundle.ts, bench/nodeChild.ts), as the app ships the solver.
@@ -13,8 +13,8 @@ import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { LAB_TOLERANCES } from '../src/study/options';
 import { medianTime, scoreSweep } from '../src/study/workPrecision';
-import { sweep, theta2Grid } from '../src/solver';
-import type { Linkage, SweepMethod } from '../src/solver';
+import { STATUS_CODE, sweep, sweepForces, theta2Grid } from '../src/solver';
+import type { LinkInertia, Linkage, SweepMethod } from '../src/solver';
 import { classify } from '../src/solver';
 import { angleDiff, referenceAngles } from '../tests/oracle/reference';
 import { errorBound } from '../tests/oracle/tolerance';
@@ -234,8 +234,34 @@ function printStress(rows: StressRow[]): void {
   }
 }
 
+interface ForcesRow {
+  points: number;
+  nsPerPoint: number;
+}
+
+/**
+ * sweepForces over a solved 1-degree turn of the report's case (uniform bars of 2 kg/m, gravity, a coupler
+ * force and a load torque), its rates included: ns per point, the positions not counted.
+ */
+function forcesRow(): ForcesRow {
+  const l = CASES[0].linkage;
+  const grid = theta2Grid(0, 360, 1);
+  const r = sweep(l, grid, { branch: 'open' });
+  const ok = (i: number) => r.statusCodes[i] === STATUS_CODE.ok;
+  const bar = (L: number): LinkInertia => ({ mass: 2 * L, inertia: (2 * L ** 3) / 12, cg: { dist: L / 2, angle: 0 } });
+  const inertia = { crank: bar(l.r2), coupler: bar(l.r3), rocker: bar(l.r4) };
+  const loads = { gravity: { g: 9.81 }, couplerForce: { pDist: 3, pAngle: 0.5, fx: 10, fy: -20 }, outputTorque: -5 };
+  const input = { omega2: 10, alpha2: 0 };
+  const ms = medianTime(
+    () => sweepForces(l, r.theta2, r.theta3, r.theta4, ok, input, inertia, loads),
+    () => performance.now(),
+    MIN_MS,
+  );
+  return { points: grid.length, nsPerPoint: (ms * 1e6) / grid.length };
+}
+
 /** The README's tables: every case at 1 deg, default settings; the stress rows; targets and scale. */
-function markdownTable(rows: Row[], st: StressRow[], t: Targets, sc: Scale, mem: Memory): string {
+function markdownTable(rows: Row[], st: StressRow[], t: Targets, sc: Scale, mem: Memory, fr: ForcesRow): string {
   const e = (x: number) => (Number.isNaN(x) ? '-' : x.toExponential(1));
   const lines = [
     '| case | method | ns/point | iterations/point | max error (rad) | p99 error (rad) | failed | wrong branch | false conv. |',
@@ -273,6 +299,9 @@ function markdownTable(rows: Row[], st: StressRow[], t: Targets, sc: Scale, mem:
         .join(', ') +
       `. Peak resident memory of a ${mem.points.toExponential(0)}-point ${mem.method} sweep: ${mem.before.toFixed(0)} MiB before (grid), ` +
       `${mem.afterSweep.toFixed(0)} MiB after, ${mem.afterStatus.toFixed(0)} MiB once the string \`status\` array is read.`,
+    '',
+    `Forces (sweepForces with its rates, report's case, ${fr.points} points, inertia, gravity, a coupler force and a ` +
+      `load torque): ${fr.nsPerPoint.toFixed(0)} ns/point.`,
   );
   return lines.join('\n') + '\n';
 }
@@ -311,6 +340,10 @@ async function main(): Promise<void> {
   );
   const st = stressRows();
   printStress(st);
+  const fr = forcesRow();
+  console.log(
+    `\n== sweepForces (rates included), ${report.name}, ${fr.points} points: ${fr.nsPerPoint.toFixed(0)} ns/point`,
+  );
 
   const bundle = await bundleForNode(resolve(here, 'nodeChild.ts'));
   let t: Targets;
@@ -391,6 +424,7 @@ async function main(): Promise<void> {
         targets: t,
         scale: sc,
         memory: mem,
+        forces: fr,
         stress: st,
         rows,
       },
@@ -398,7 +432,7 @@ async function main(): Promise<void> {
       2,
     ),
   );
-  writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, st, t, sc, mem));
+  writeFileSync(resolve(outDir, 'solver-table.md'), markdownTable(rows, st, t, sc, mem, fr));
   console.log(
     `\nwrote bench/results/solver.json, solver-table.md and bench/results/work-precision.svg (${((performance.now() - t0) / 1000).toFixed(1)} s)`,
   );

@@ -189,16 +189,22 @@ function planForces(l: Linkage, inertia: LinkInertias, loads: Loads): ForcePlan 
 
 const parts: AngleParts = { hi: 0, lo: 0 };
 
+// Module-local copies of imports read per point: loaders that turn imports into getters (vite-node) would
+// otherwise call a getter on every read (as in rates.ts).
+const SMALL_ANGLE = TWO_SUM_MAX_RAD;
+const reduce = reduceDifference;
+const LIMIT = LIMIT_SIN_MU;
+
 /** sin(b - a) of the exact difference, to full relative accuracy also near 0 and pi (see angles.ts). */
 function sinOfDifference(b: number, a: number): number {
   let hi: number;
   let lo: number;
-  if (Math.abs(a) <= TWO_SUM_MAX_RAD && Math.abs(b) <= TWO_SUM_MAX_RAD) {
+  if (Math.abs(a) <= SMALL_ANGLE && Math.abs(b) <= SMALL_ANGLE) {
     hi = b - a;
     const bb = hi - b;
     lo = b - (hi - bb) - (a + bb);
   } else {
-    reduceDifference(b, a, parts);
+    reduce(b, a, parts);
     hi = parts.hi;
     lo = parts.lo;
   }
@@ -256,7 +262,7 @@ function forcesInto(
   out: SweepForces,
 ): void {
   const s = sinOfDifference(t4, t3);
-  if (!(Math.abs(s) > LIMIT_SIN_MU)) return nanInto(out, i);
+  if (!(Math.abs(s) > LIMIT)) return nanInto(out, i);
   const c2 = Math.cos(t2);
   const s2 = Math.sin(t2);
   const c3 = Math.cos(t3);

@@ -1,6 +1,6 @@
 /**
  * Cycle quantities of the input torque: mean, RMS and peak, the energy fluctuation and the flywheel
- * inertia for a coefficient of speed fluctuation (Norton, Design of Machinery, section 11.11).
+ * inertia for a coefficient of speed fluctuation (Norton, Design of Machinery, chapter 11: flywheels).
  *
  * The mean and RMS are trapezoid integrals over the grid: on a uniform grid over a turn of a smooth
  * periodic torque they are spectrally accurate (the trapezoid rule's error falls faster than any power of

@@ -14,8 +14,9 @@ const EPS = Number.EPSILON;
 describe('linkForces against the 40-digit Newton–Euler oracle', () => {
   it('matches on random cases with the positions and rates solved by the oracle (seeded)', () => {
     // The solver's pose carries up to a few eps / |sin mu| of rounding (the position problem's condition),
-    // and the forces amplify a change of pose by another 1 / |sin mu|: K eps / sin² mu, K = 32 (measured 6).
-    // Where |sin mu| >= 0.2 this is below 2e-13, and the error measured there is 1.4e-14.
+    // and the forces amplify a change of pose by another 1 / |sin mu|: K eps / sin² mu with K = 32. Measured
+    // over these 500 cases: 3 eps / sin² mu, and 2.5e-15 where |sin mu| >= 0.2 (over 3000 cases of the same
+    // generator: 5.5 eps / sin² mu and 1.4e-14).
     let worstWellConditioned = 0;
     fc.assert(
       fc.property(forceCaseArb, (c) => {
