@@ -134,20 +134,36 @@ export interface StepState extends PlayFrame {
   samples: number;
 }
 
+/** How far a fraction of a step may be off the grid and still count as on it (float noise of Play and the URL). */
+const ON_GRID = 1e-7;
+
 /**
- * One press of Step forward (sign +1) or Step back (-1): 360 / samples degrees along the animation's direction
- * (Clockwise steps forward to smaller angles), or against it. A rocking input reverses at a limit and switches
- * branch as in Play, and the direction follows, so Step back undoes Step forward everywhere. A null range (the
- * cycle is not solved yet) steps as a full turn.
+ * Degrees from theta2Deg to the next multiple of stepDeg in direction moving: a whole step from a grid point,
+ * less from between two (Play and a drag leave θ2 anywhere, and Step then lands on round values again).
+ */
+export function stepToGrid(theta2Deg: number, stepDeg: number, moving: Direction): number {
+  const k = theta2Deg / stepDeg;
+  const nearest = Math.round(k);
+  if (Math.abs(k - nearest) < ON_GRID) return stepDeg;
+  const target = moving === 1 ? Math.ceil(k) : Math.floor(k);
+  return Math.abs(target - k) * stepDeg;
+}
+
+/**
+ * One press of Step forward (sign +1) or Step back (-1) along the animation's direction (Clockwise steps forward
+ * to smaller angles), or against it. A full-turn input goes to the next multiple of 360 / samples degrees (a
+ * whole step from a grid point); a rocking input goes a whole step, reverses at a limit and switches branch as in
+ * Play, and the direction follows, so Step back undoes Step forward. A null range (the cycle is not solved yet)
+ * steps as a full turn.
  */
 export function stepTheta2(state: StepState, range: InputRangeDeg | null, sign: 1 | -1): AnimationStep {
   const moving = (sign * state.direction) as Direction;
-  const next = advanceTheta2(
-    state.theta2Deg,
-    360 / state.samples,
-    moving,
-    state.branch,
-    range ?? { full: true, intervals: [] },
-  );
-  return { theta2Deg: next.theta2Deg, branch: next.branch, direction: (sign * next.direction) as Direction };
+  const step = 360 / state.samples;
+  const r = range ?? { full: true, intervals: [] };
+  // A rocking input reflects at its limits, off any grid: it steps whole steps, so that Step back undoes Step forward.
+  const delta = r.full ? stepToGrid(state.theta2Deg, step, moving) : step;
+  const next = advanceTheta2(state.theta2Deg, delta, moving, state.branch, r);
+  // On a full turn the result is a grid point: write it as one, so steps never collect rounding.
+  const theta2Deg = r.full ? normalizeTheta2Deg(Math.round(next.theta2Deg / step) * step) : next.theta2Deg;
+  return { theta2Deg, branch: next.branch, direction: (sign * next.direction) as Direction };
 }

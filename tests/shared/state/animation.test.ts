@@ -144,10 +144,20 @@ describe('stepTheta2', () => {
     expect(stepTheta2({ ...at(10, 1), samples: 720 }, null, 1).theta2Deg).toBe(10.5);
   });
 
+  it('lands on the step grid from an angle between two grid points, both ways', () => {
+    expect(stepTheta2(at(202.98804, 1), FULL, 1).theta2Deg).toBe(203);
+    expect(stepTheta2(at(202.98804, 1), FULL, -1).theta2Deg).toBe(202);
+    expect(stepTheta2(at(202.98804, -1), FULL, 1).theta2Deg).toBe(202);
+    expect(stepTheta2({ ...at(359.7, 1), samples: 720 }, FULL, 1).theta2Deg).toBe(0);
+    // Float noise from Play or the URL counts as on the grid: a whole step, not a sliver.
+    expect(stepTheta2(at(45.00000000001, 1), FULL, 1).theta2Deg).toBe(46);
+  });
+
   it('follows a rocking input past its limit: branch and direction switch as in Play', () => {
     const s = stepTheta2(at(135.5, 1), ROCKING, 1);
     expect(s.branch).toBe('crossed');
     expect(s.direction).toBe(-1);
+    // A rocking input steps whole steps (its reflections are off any grid): 0.55 past the limit, reflected.
     expect(s.theta2Deg).toBeCloseTo(135.95 - 0.55, 5);
     // The next forward step keeps going the same way along the motion, not back over the limit.
     const s2 = stepTheta2({ ...at(s.theta2Deg, s.direction), branch: s.branch }, ROCKING, 1);
@@ -155,11 +165,12 @@ describe('stepTheta2', () => {
     expect(s2.theta2Deg).toBeCloseTo(s.theta2Deg - 1, 9);
   });
 
-  it('is undone by Step back, across limits too', () => {
+  it('is undone by Step back (from a grid point on a full turn), across limits too', () => {
     // Every start lies inside the reachable ±135.95° (225° is −135°), some within a step of a limit.
+    const starts = (range: typeof FULL) => (range.full ? [0, 45, 135, 225, 359] : [0, 45, 135.2, 135.5, 224.5, 225]);
     for (const range of [FULL, ROCKING])
       for (const direction of [1, -1] as const)
-        for (const start of [0, 45, 135.2, 135.5, 224.5, 225, 359.5]) {
+        for (const start of starts(range)) {
           const s0 = at(start, direction);
           const s1 = stepTheta2(s0, range, 1);
           const s2 = stepTheta2({ ...s0, ...s1 }, range, -1);
