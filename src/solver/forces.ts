@@ -212,9 +212,9 @@ function sinOfDifference(b: number, a: number): number {
 }
 
 /**
- * The inertia-minus-weight load of one link, q = m (a_G - g), and its moment about the link's first joint
- * plus I alpha: the scratch `link` gets [qx, qy, I alpha + rG × q]. The joint moves with acceleration
- * (ax, ay); the link points along (c, s) at rate w, acceleration a; the CG sits (u, v) in its frame.
+ * Link k's inertia-minus-weight load q = m (a_G - g) and I alpha + rG × q (its moment about the link's
+ * first joint), written to out as [qx, qy, moment]. The joint moves with acceleration (ax, ay); the link
+ * points along (c, s) and turns at rate w with acceleration a; the CG's offset in the link's frame is the plan's.
  */
 function linkLoad(
   p: ForcePlan,
