@@ -17,9 +17,13 @@ import type { ShownFor } from './useSimulatorSession';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
+import { createSolverPool } from '../workers/solverClient';
 
-// The solver lab (its charts and tables) loads only when it is opened.
+// The solver lab (its charts and tables) and the synthesis page load only when they are opened.
 const LabPanel = lazy(() => import('../features/lab/LabPanel').then((m) => ({ default: m.LabPanel })));
+const SynthesisPage = lazy(() =>
+  import('../features/synthesis/SynthesisPage').then((m) => ({ default: m.SynthesisPage })),
+);
 
 /** Props of AppLayout: the state parsed from the URL. */
 export interface AppLayoutProps {
@@ -28,10 +32,13 @@ export interface AppLayoutProps {
 
 /** The full app solves the stage and the plots on the simulator page, the NR runs always (the lab uses them too). */
 const appViews: ShownFor = (s, plotPixels) => ({
-  stage: s.shell.page !== 'lab',
-  plotPixels: s.shell.page !== 'lab' ? plotPixels : 0,
+  stage: s.shell.page === 'simulator',
+  plotPixels: s.shell.page === 'simulator' ? plotPixels : 0,
   newton: true,
 });
+
+/** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
+const createSynthesisPool = () => createSolverPool();
 
 /** Ids of the main landmark (the skip link's target) and of the page tab panel inside it. */
 const MAIN_ID = 'main-content';
@@ -45,6 +52,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   const session = useSimulatorSession(initial.state, appViews, true);
   const { state, dispatch, client, cycle, point, t, rocking, playhead, onStep } = session;
   const onLab = state.shell.page === 'lab';
+  const onSynthesis = state.shell.page === 'synthesis';
   const shell = shellMessages(state.shell.locale);
   // The results column comes after the first frame: the first render posts the solver's jobs sooner, and the
   // worker solves while the column renders (the first load on a phone, docs/ARCHITECTURE.md).
@@ -56,24 +64,38 @@ export function AppLayout({ initial }: AppLayoutProps) {
     <MessagesContext.Provider value={t}>
       <FramePoseProvider state={state} playhead={playhead} ghostShown={!onLab}>
         <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
-        <div className="app" data-ready={cycle && point && resultsShown ? 'true' : 'false'}>
+        <div
+          className={`app${onSynthesis ? ' app-synthesis' : ''}`}
+          data-ready={cycle && point && resultsShown ? 'true' : 'false'}
+        >
           <header className="topbar">
             <Brand />
-            <PageTabs page={state.shell.page} dispatch={dispatch} panelId={PANEL_ID} />
+            <PageTabs
+              page={state.shell.page}
+              dispatch={dispatch}
+              panelId={PANEL_ID}
+              synthesisLabel={shell.viewSynthesis}
+            />
             <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
           </header>
           <UrlNotice ignored={initial.ignored} />
-          <aside className="sidebar" aria-label={shell.controlsLabel}>
-            <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
-          </aside>
+          {onSynthesis ? null : (
+            <aside className="sidebar" aria-label={shell.controlsLabel}>
+              <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
+            </aside>
+          )}
           <main className="app-main" id={MAIN_ID} tabIndex={-1}>
             <div
-              className={`main${onLab ? ' main-lab' : ''}`}
+              className={`main${onLab ? ' main-lab' : ''}${onSynthesis ? ' main-synthesis' : ''}`}
               id={PANEL_ID}
               role="tabpanel"
               aria-labelledby={pageTabId(state.shell.page)}
             >
-              {onLab ? (
+              {onSynthesis ? (
+                <Suspense fallback={<p className="note">{shell.viewSynthesis}…</p>}>
+                  <SynthesisPage state={state} dispatch={dispatch} createPool={createSynthesisPool} />
+                </Suspense>
+              ) : onLab ? (
                 <Suspense fallback={<p className="note">{t.labRun}…</p>}>
                   <LabPanel client={client} state={state} dispatch={dispatch} />
                 </Suspense>
@@ -82,7 +104,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
               )}
             </div>
           </main>
-          {resultsShown ? (
+          {onSynthesis ? null : resultsShown ? (
             <ResultsSidebar session={session} label={shell.resultsLabel} />
           ) : (
             <aside className="rightbar" aria-label={shell.resultsLabel} />

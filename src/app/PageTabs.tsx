@@ -3,11 +3,12 @@ import type { Dispatch, KeyboardEvent } from 'react';
 import type { Action, Page } from '../shared/state/appState';
 import { useMessages } from '../shared/i18n/MessagesContext';
 
-/** Props of PageTabs: the page shown, the dispatcher, and the id of the tab panel the tabs control. */
+/** Props of PageTabs: the page shown, the dispatcher, the id of the tab panel the tabs control, the synthesis tab's name. */
 export interface PageTabsProps {
   page: Page;
   dispatch: Dispatch<Action>;
   panelId: string;
+  synthesisLabel: string;
 }
 
 /** Id of a page's tab, for the tab panel's aria-labelledby. */
@@ -15,7 +16,7 @@ export function pageTabId(page: Page): string {
   return `tab-${page}`;
 }
 
-const PAGES: readonly Page[] = ['simulator', 'lab'];
+const PAGES: readonly Page[] = ['simulator', 'lab', 'synthesis'];
 
 /** The page a key moves to from page in the WAI-ARIA tabs pattern (arrows wrap, Home/End), or null. */
 export function pageForKey(page: Page, key: string): Page | null {
@@ -28,9 +29,10 @@ export function pageForKey(page: Page, key: string): Page | null {
   return null;
 }
 
-function PageTabsImpl({ page, dispatch, panelId }: PageTabsProps) {
+function PageTabsImpl({ page, dispatch, panelId, synthesisLabel }: PageTabsProps) {
   const t = useMessages();
   const tabs = useRef(new Map<Page, HTMLButtonElement>());
+  const names: Record<Page, string> = { simulator: t.viewSimulator, lab: t.viewLab, synthesis: synthesisLabel };
   const onKeyDown = (e: KeyboardEvent<HTMLButtonElement>) => {
     const next = pageForKey(page, e.key);
     if (!next) return;
@@ -40,7 +42,7 @@ function PageTabsImpl({ page, dispatch, panelId }: PageTabsProps) {
     dispatch({ type: 'setPage', page: next });
   };
   return (
-    <div className="page-tabs" role="tablist" aria-label={`${t.viewSimulator} / ${t.viewLab}`}>
+    <div className="page-tabs" role="tablist" aria-label={PAGES.map((p) => names[p]).join(' / ')}>
       {PAGES.map((p) => (
         <button
           key={p}
@@ -58,7 +60,7 @@ function PageTabsImpl({ page, dispatch, panelId }: PageTabsProps) {
           onClick={() => dispatch({ type: 'setPage', page: p })}
           onKeyDown={onKeyDown}
         >
-          {p === 'simulator' ? t.viewSimulator : t.viewLab}
+          {names[p]}
         </button>
       ))}
     </div>
@@ -66,7 +68,7 @@ function PageTabsImpl({ page, dispatch, panelId }: PageTabsProps) {
 }
 
 /**
- * The Simulator / Solver lab tabs in the top bar, with the WAI-ARIA tabs keyboard pattern: one Tab stop
+ * The Simulator / Solver lab / Synthesis tabs in the top bar, with the WAI-ARIA tabs keyboard pattern: one Tab stop
  * (roving tabindex), Left/Right arrows move between the tabs and wrap, Home and End go to the first and last.
  */
 export const PageTabs = memo(PageTabsImpl);

@@ -42,3 +42,5 @@ export type { TwoPositionRocker, TwoPositionRockerTask } from './twoPosition';
 export { CURVE_FAR, DEFAULT_CURVE_SAMPLES, burmesterCurves, burmesterFourBars, burmesterPoints } from './burmester';
 export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
+export { robertsCognates } from './cognates';
+export type { RobertsCognate } from './cognates';

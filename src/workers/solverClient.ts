@@ -2,11 +2,14 @@ import type { JobClientOptions, WorkerLike } from '../shared/jobs/jobClient';
 import { JobClient } from '../shared/jobs/jobClient';
 import { combineJobs } from '../shared/jobs/jobTable';
 import { createMainThreadWorker } from '../shared/jobs/mainThread';
+import type { WorkerPool } from '../shared/jobs/workerPool';
+import { createWorkerPool } from '../shared/jobs/workerPool';
 import { labJobs } from '../features/lab/jobs';
 import { simulatorJobs } from '../features/simulator/jobs';
+import { synthesisJobs } from '../features/synthesis/jobs';
 
-/** Every job of the solver worker: the simulator's and the lab's tables (the handlers are in solverHandlers.ts). */
-export const solverJobs = combineJobs(simulatorJobs, labJobs);
+/** Every job of the solver worker: the simulator's, the lab's and synthesis's tables (handlers: solverHandlers.ts). */
+export const solverJobs = combineJobs(combineJobs(simulatorJobs, labJobs), synthesisJobs);
 
 /** The solver worker's job table. */
 export type SolverJobs = typeof solverJobs;
@@ -65,4 +68,12 @@ export function createSolverClient(options: Partial<JobClientOptions> = {}): Sol
     restarts: 1,
     ...options,
   });
+}
+
+/**
+ * A pool of size solver workers (default: cores − 1, at least 1), each a client of its own new worker with the
+ * usual restart and main-thread fallback: the synthesis page runs the parts of a path synthesis on it.
+ */
+export function createSolverPool(size?: number): WorkerPool<SolverJobs> {
+  return createWorkerPool((): SolverClient => createSolverClient({ createWorker: startSolverWorker }), size);
 }

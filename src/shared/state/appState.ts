@@ -10,6 +10,8 @@ import type { ShellAction, ShellState } from './slices/shellSlice';
 import { DEFAULT_SHELL, shellReducer } from './slices/shellSlice';
 import type { SolverAction, SolverState } from './slices/solverSlice';
 import { DEFAULT_SOLVER, solverReducer } from './slices/solverSlice';
+import type { SynPathAction, SynPathState } from './slices/synthesisSlice';
+import { DEFAULT_SYN_PATH, synPathReducer } from './slices/synthesisSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -22,6 +24,7 @@ export { NOMINAL_FPS, SPEED_MAX, SPEED_MIN, SPEED_STEP, clamp, normalizeTheta2De
 export type { Locale, Page, ShellState } from './slices/shellSlice';
 export type { NrStart, SolverState } from './slices/solverSlice';
 export { SAMPLES_MAX, SAMPLES_MIN, SAMPLE_CHOICES } from './slices/solverSlice';
+export type { PathInput, PathTiming, PivotBox, SynPathState, SynthesisMode } from './slices/synthesisSlice';
 
 /**
  * The whole shareable state of the app, one slice per concern; lengths in one user unit, angles in degrees.
@@ -40,6 +43,8 @@ export interface AppState {
   shell: ShellState;
   /** The solver lab's own settings. */
   lab: LabState;
+  /** The synthesis page's mode and its Path mode's task. */
+  synPath: SynPathState;
 }
 
 /** The report's linkage at 45 degrees on the open branch, with every slice at its default. */
@@ -50,6 +55,7 @@ export const DEFAULT_STATE: AppState = {
   solver: DEFAULT_SOLVER,
   shell: DEFAULT_SHELL,
   lab: DEFAULT_LAB,
+  synPath: DEFAULT_SYN_PATH,
 };
 
 /** Actions that more than one slice handles. */
@@ -62,7 +68,7 @@ export type SharedAction =
 
 /** Every state change the UI can make. */
 export type Action =
-  DesignAction | MotionAction | DisplayAction | SolverAction | ShellAction | LabAction | SharedAction;
+  DesignAction | MotionAction | DisplayAction | SolverAction | ShellAction | LabAction | SynPathAction | SharedAction;
 
 /**
  * The app's reducer: each slice's reducer sees every action (Redux's combineReducers); pure, and returns the
@@ -82,6 +88,7 @@ export function reducer(state: AppState, action: Action): AppState {
     solver: solverReducer(state.solver, action),
     shell: shellReducer(state.shell, action),
     lab: labReducer(state.lab, action),
+    synPath: synPathReducer(state.synPath, action),
   };
   const changed = (Object.keys(next) as (keyof AppState)[]).some((k) => next[k] !== state[k]);
   return changed ? next : state;

@@ -4,6 +4,7 @@ import { LAB_URL_KEYS } from '../state/slices/labSlice';
 import { MOTION_URL_KEYS } from '../state/slices/motionSlice';
 import { SHELL_URL_KEYS } from '../state/slices/shellSlice';
 import { SOLVER_URL_KEYS } from '../state/slices/solverSlice';
+import { SYN_PATH_URL_KEYS } from '../state/slices/synthesisSlice';
 import { DEFAULT_STATE } from '../state/appState';
 import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
 import { listCodec } from './urlCodec';
@@ -32,6 +33,7 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   ...SOLVER_URL_KEYS,
   ...SHELL_URL_KEYS,
   ...LAB_URL_KEYS,
+  ...SYN_PATH_URL_KEYS,
   ...EMBED_URL_KEYS,
 ];
 

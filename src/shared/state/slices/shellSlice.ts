@@ -7,8 +7,8 @@ import { LOCALES } from '../../i18n/i18n';
 /** UI languages: English (default) and Traditional Chinese. */
 export type Locale = 'en' | 'zh-TW';
 
-/** Which page the app shows: the simulator, or the solver lab (work-precision study of the current linkage). */
-export type Page = 'simulator' | 'lab';
+/** Which page the app shows: the simulator, the solver lab (work-precision study of the current linkage), or synthesis. */
+export type Page = 'simulator' | 'lab' | 'synthesis';
 
 /** The shell slice: the language and the page shown. */
 export interface ShellState {
@@ -44,6 +44,7 @@ export const SHELL_URL_KEYS: readonly UrlKey<unknown>[] = [
     enumCodec([
       ['sim', 'simulator'],
       ['lab', 'lab'],
+      ['syn', 'synthesis'],
     ] as const),
     field('page'),
     DEFAULT_SHELL.page,

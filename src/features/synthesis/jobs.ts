@@ -1,0 +1,40 @@
+import type { PathCandidate } from '../../synthesis/globalSearch';
+import type { PathSynthesisPartResult } from '../../synthesis/pathSynthesis';
+import type { PathSolution, PathTask } from '../../synthesis/types';
+import { job } from '../../shared/jobs/jobTable';
+
+/** One part of a path synthesis's global stage (pathSynthesisPart): rounds part, part + parts, … of a seed's run. */
+export interface PathPartParams {
+  task: PathTask;
+  seed: number;
+  part: number;
+  parts: number;
+  /** Most rounds of the whole run (all parts together). */
+  rounds: number;
+  /** Wall-clock budget of the part (ms). */
+  budgetMs: number;
+}
+
+/** The merge of the parts' candidates into checked answers (mergePathCandidates, no deadline: deterministic). */
+export interface PathMergeParams {
+  task: PathTask;
+  parts: PathCandidate[][];
+}
+
+/** Time allowed between two progress reports of a part (ms): one round on a slow phone, with room to spare. */
+export const PATH_ROUND_MS = 30_000;
+/** Time allowed for the merge (ms): the polish of 24 candidates on a slow phone. */
+export const PATH_MERGE_MS = 60_000;
+
+/**
+ * The synthesis page's jobs, served by the solver worker. Both are queue jobs: a pool sends one part to each of its
+ * workers at once; the page cancels a run through one AbortSignal. A part reports progress after each round, its
+ * stage being the best Σd² so far (a number as text).
+ */
+export const synthesisJobs = {
+  pathPart: job<PathPartParams, PathSynthesisPartResult>({ mode: 'queue', budgetMs: () => PATH_ROUND_MS }),
+  pathMerge: job<PathMergeParams, PathSolution[]>({ mode: 'queue', budgetMs: () => PATH_MERGE_MS }),
+};
+
+/** The synthesis page's job table. */
+export type SynthesisJobs = typeof synthesisJobs;

@@ -1,0 +1,79 @@
+import type { Dispatch } from 'react';
+import type { Point } from '../../../solver/kinematics';
+import type { PathSolution } from '../../../synthesis/types';
+import type { Messages } from '../../../shared/i18n/messages';
+import { formatDeg, formatNumber, formatSci } from '../../../shared/format';
+import type { Action } from '../../../shared/state/appState';
+import type { SynthesisMessages } from '../synthesisMessages';
+import type { CandidateFacts } from './candidateFacts';
+import { CandidateThumb } from './CandidateThumb';
+
+/** Props of CandidateList: the answers with their facts, the targets, which is chosen, and the dispatch. */
+export interface CandidateListProps {
+  solutions: readonly PathSolution[];
+  facts: readonly CandidateFacts[];
+  targets: readonly Point[];
+  chosen: number;
+  dispatch: Dispatch<Action>;
+  st: SynthesisMessages;
+  t: Messages;
+}
+
+/** The type in words: "Crank-rocker (Grashof)". */
+export function typeText(f: CandidateFacts, t: Messages, st: SynthesisMessages): string {
+  return `${t.types[f.type]} (${f.grashof ? st.grashof : st.nonGrashof})`;
+}
+
+/** The defects in words, or "none". */
+export function defectsText(f: CandidateFacts, st: SynthesisMessages): string {
+  if (f.defects.length === 0) return st.noDefects;
+  return f.defects
+    .map((d) =>
+      st.defectText[d.kind](d.kind === 'low-transmission' ? `${formatDeg(d.value, 1)}°` : formatNumber(d.value, 3)),
+    )
+    .join('; ');
+}
+
+/**
+ * The candidates, best first: each a button (pressed when chosen) with its thumbnail, Σd², max distance, type,
+ * smallest transmission angle and defects in words.
+ */
+export function CandidateList({ solutions, facts, targets, chosen, dispatch, st, t }: CandidateListProps) {
+  if (solutions.length === 0) return null;
+  return (
+    <section className="card syn-card" aria-labelledby="syn-results-title">
+      <h3 id="syn-results-title" className="syn-card-title">
+        {st.resultsTitle}
+      </h3>
+      <ol className="syn-candidates" data-testid="candidates">
+        {solutions.map((s, i) => {
+          const f = facts[i];
+          return (
+            <li key={i}>
+              <button
+                type="button"
+                className={`syn-candidate${i === chosen ? ' is-chosen' : ''}`}
+                aria-pressed={i === chosen}
+                onClick={() => dispatch({ type: 'chooseCandidate', index: i })}
+              >
+                <CandidateThumb curve={f.curve} targets={targets} />
+                <span className="syn-candidate-text">
+                  <strong>{st.candidateName(i + 1)}</strong>
+                  <span>
+                    {st.errorSum} {formatSci(s.error, 3)} · {st.maxDistance} {formatSci(s.maxDistance, 3)}
+                  </span>
+                  <span>
+                    {typeText(f, t, st)} · {st.minTransmission} {formatDeg(f.muMinDeg, 1)}°
+                  </span>
+                  <span className={f.defects.length > 0 ? 'syn-defects' : undefined}>
+                    {st.defects}: {defectsText(f, st)}
+                  </span>
+                </span>
+              </button>
+            </li>
+          );
+        })}
+      </ol>
+    </section>
+  );
+}

@@ -1,0 +1,181 @@
+import { useMemo, useRef, useState } from 'react';
+import type { Point } from '../../../solver/kinematics';
+import { robertsCognates } from '../../../synthesis/cognates';
+import { placedJoints } from '../../../synthesis/placed';
+import type { PlacedFourBar } from '../../../synthesis/types';
+import { fitView } from '../../../shared/canvas/view';
+import { useMessages } from '../../../shared/i18n/MessagesContext';
+import type { ViewOffset } from '../../../shared/state/appState';
+import type { SynthesisModeProps } from '../openDesign';
+import { synthesisMessagesFor } from '../synthesisMessages';
+import { CandidateList } from './CandidateList';
+import { candidateFacts, designFacts } from './candidateFacts';
+import type { DesignChoice } from './ChosenDesign';
+import { ChosenDesign } from './ChosenDesign';
+import type { PathCurve, PathScene } from './drawPathScene';
+import { pathSceneBounds } from './drawPathScene';
+import { exportPathPng, exportPathSvg, exportResultsCsv } from './pathExports';
+import { pathTaskOf, targetsExtent } from './pathTaskOf';
+import { RunControls } from './RunControls';
+import { TargetCanvas } from './TargetCanvas';
+import { TargetsCard } from './TargetsCard';
+import { TaskSettings } from './TaskSettings';
+import { useFitBounds } from './useFitBounds';
+import type { SynthesisPool } from './usePathSynthesis';
+import { usePathSynthesis } from './usePathSynthesis';
+
+/** Props of PathMode: a mode's props and how to make the pool of solver workers. */
+export interface PathModeProps extends SynthesisModeProps {
+  createPool: () => SynthesisPool;
+}
+
+/** The candidate chosen, and its cognates, each with the θ2 it passes the first target at. */
+function useChoices(
+  run: ReturnType<typeof usePathSynthesis>,
+  chosen: number,
+): { choices: (DesignChoice & { theta2: number })[]; facts: ReturnType<typeof candidateFacts>[] } {
+  const solutions = run.solutions;
+  const size = targetsExtent(run.task?.targets ?? []).size;
+  const facts = useMemo(() => (solutions ?? []).map((s) => candidateFacts(s, size)), [solutions, size]);
+  const choices = useMemo(() => {
+    const sol = solutions?.[chosen];
+    if (!sol) return [];
+    const first = { design: sol.design, facts: facts[chosen], theta2: sol.theta2[0] ?? 0 };
+    let cognates: { design: PlacedFourBar; theta2: number }[] = [];
+    try {
+      cognates = robertsCognates(sol.design, first.theta2);
+    } catch {
+      // A coupler point at a pin has no cognates with positive links: offer the candidate alone.
+    }
+    return [first, ...cognates.map((c) => ({ ...c, facts: designFacts(c.design, c.theta2, sol.maxDistance, size) }))];
+  }, [solutions, chosen, facts, size]);
+  return { choices, facts };
+}
+
+/**
+ * The Path mode: the targets on a canvas, in a text area and a table; timing, bounds and input; Synthesize on a pool
+ * of workers with progress and Cancel; the candidates; the chosen one (or a cognate) moving through the targets,
+ * "Open in simulator" and the exports.
+ */
+export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps) {
+  const st = synthesisMessagesFor(state.shell.locale);
+  const t = useMessages();
+  const s = state.synPath;
+  const run = usePathSynthesis(createPool);
+  const [selected, setSelected] = useState<number | null>(null);
+  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
+  const [shown, setShown] = useState(0);
+  const [replaced, setReplaced] = useState(0);
+  const canvasRef = useRef<HTMLCanvasElement>(null);
+  const solutions = run.solutions ?? [];
+  const chosen = Math.min(s.chosen, Math.max(0, solutions.length - 1));
+  const { choices, facts } = useChoices(run, chosen);
+  const choice = choices[Math.min(shown, choices.length - 1)] ?? null;
+
+  const curves: PathCurve[] = choice
+    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: c !== choice }))
+    : [];
+  const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  const content = pathSceneBounds({
+    targets: s.targets,
+    curves: curves.filter((c) => !c.faint),
+    pose: null,
+    design: choice?.design ?? null,
+  });
+  const bounds = useFitBounds(content, `${replaced}|${run.elapsedMs}|${chosen}|${shown}`);
+
+  const replace = (targets: Point[], theta2Deg: number[] | null) => {
+    dispatch({ type: 'setTargets', targets });
+    if (theta2Deg) {
+      dispatch({ type: 'setGivenTheta2', theta2Deg });
+      dispatch({ type: 'setTiming', timing: 'given' });
+    }
+    setSelected(null);
+    setReplaced((n) => n + 1);
+    setView({ zoom: 1, panX: 0, panY: 0 });
+  };
+  const exportScene = (): { scene: PathScene; view: ReturnType<typeof fitView> } | null => {
+    const canvas = canvasRef.current;
+    if (!canvas) return null;
+    const v = fitView(bounds, canvas.clientWidth, canvas.clientHeight, view);
+    const pose = choice ? placedJoints(choice.design, choice.theta2) : null;
+    const names = s.targets.map((_, i) => st.targetName(i + 1));
+    return { scene: { targets: s.targets, selected: null, names, curves, pose }, view: v };
+  };
+
+  return (
+    <div className="syn-path" data-testid="path-mode">
+      <p className="note syn-intro">{st.pathIntro}</p>
+      <div className="syn-stage card">
+        <TargetCanvas
+          targets={s.targets}
+          selected={selected}
+          curves={curves}
+          moving={moving}
+          bounds={bounds}
+          view={view}
+          onViewChange={setView}
+          onSelect={setSelected}
+          onMove={(i, p) => dispatch({ type: 'setTargets', targets: s.targets.map((q, k) => (k === i ? p : q)) })}
+          onAdd={(p) => {
+            dispatch({ type: 'setTargets', targets: [...s.targets, p] });
+            setSelected(s.targets.length);
+          }}
+          onRemove={(i) => {
+            dispatch({ type: 'setTargets', targets: s.targets.filter((_, k) => k !== i) });
+            dispatch({ type: 'setGivenTheta2', theta2Deg: s.givenTheta2Deg.filter((_, k) => k !== i) });
+            setSelected(null);
+          }}
+          canvasRef={canvasRef}
+          st={st}
+        />
+      </div>
+      <div className="syn-side">
+        <TargetsCard s={s} selected={selected} onSelect={setSelected} onReplace={replace} dispatch={dispatch} st={st} />
+        <TaskSettings s={s} dispatch={dispatch} st={st} />
+        <RunControls
+          run={run}
+          canRun={s.targets.length > 0}
+          onRun={() => {
+            dispatch({ type: 'chooseCandidate', index: 0 });
+            setShown(0);
+            void run.run(pathTaskOf(s), s.seed);
+          }}
+          onCancel={run.cancel}
+          st={st}
+        />
+        <CandidateList
+          solutions={solutions}
+          facts={facts}
+          targets={run.task?.targets ?? s.targets}
+          chosen={chosen}
+          dispatch={(a) => {
+            setShown(0);
+            dispatch(a);
+          }}
+          st={st}
+          t={t}
+        />
+        {choice ? (
+          <ChosenDesign
+            choices={choices}
+            shown={Math.min(shown, choices.length - 1)}
+            onShow={setShown}
+            onOpen={() => onOpen({ design: choice.design, markers: s.targets, theta2: choice.theta2 })}
+            onExportCsv={() => exportResultsCsv(solutions)}
+            onExportSvg={() => {
+              const e = exportScene();
+              if (e) exportPathSvg(e.scene, e.view);
+            }}
+            onExportPng={() => {
+              const e = exportScene();
+              if (e) void exportPathPng(e.scene, e.view);
+            }}
+            st={st}
+            t={t}
+          />
+        ) : null}
+      </div>
+    </div>
+  );
+}

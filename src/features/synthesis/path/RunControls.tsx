@@ -1,0 +1,72 @@
+import { formatNumber, formatSci } from '../../../shared/format';
+import type { SynthesisMessages } from '../synthesisMessages';
+import type { PathRunState } from './usePathSynthesis';
+
+/** Props of RunControls: the run, whether there are targets, and its actions. */
+export interface RunControlsProps {
+  run: PathRunState;
+  canRun: boolean;
+  onRun: () => void;
+  onCancel: () => void;
+  st: SynthesisMessages;
+}
+
+/** The run's status line (a live region), or null before the first run. */
+function statusText(run: PathRunState, st: SynthesisMessages): string | null {
+  switch (run.status) {
+    case 'running':
+      return st.statusRunning(run.workers);
+    case 'cancelled':
+      return st.statusCancelled;
+    case 'failed':
+      return st.statusFailed(run.error ?? '');
+    case 'done':
+      return run.solutions && run.solutions.length > 0
+        ? st.statusDone(run.solutions.length, formatNumber(run.elapsedMs / 1000, 2), run.workers)
+        : st.statusNone;
+    default:
+      return null;
+  }
+}
+
+/**
+ * "Synthesize" and "Cancel", the progress bar (role progressbar; its value text is the best Σd² so far) and the
+ * status line.
+ */
+export function RunControls({ run, canRun, onRun, onCancel, st }: RunControlsProps) {
+  const running = run.status === 'running';
+  const p = run.progress;
+  const percent = p ? Math.round(100 * p.fraction) : 0;
+  const best = p && Number.isFinite(p.best) ? formatSci(p.best, 3) : '—';
+  const status = statusText(run, st);
+  return (
+    <section className="card syn-card syn-run" data-status={run.status}>
+      <div className="syn-buttons">
+        <button type="button" className="btn btn-primary" disabled={!canRun || running} onClick={onRun}>
+          {st.synthesize}
+        </button>
+        <button type="button" className="btn" disabled={!running} onClick={onCancel}>
+          {st.cancel}
+        </button>
+      </div>
+      {!canRun ? <p className="note">{st.needTargets}</p> : null}
+      {running ? (
+        <div
+          className="syn-progress"
+          role="progressbar"
+          aria-label={st.progressLabel}
+          aria-valuemin={0}
+          aria-valuemax={100}
+          aria-valuenow={percent}
+          aria-valuetext={st.progressText(String(percent), best)}
+        >
+          <div className="syn-progress-bar" style={{ width: `${percent}%` }} />
+          <span className="syn-progress-text">{st.progressText(String(percent), best)}</span>
+        </div>
+      ) : null}
+      <p className="status-line" role="status" data-testid="synthesis-status">
+        {status}
+      </p>
+    </section>
+  );
+}

@@ -1,0 +1,192 @@
+import { useId, useLayoutEffect, useRef } from 'react';
+import type { RefObject } from 'react';
+import type { Point } from '../../../solver/kinematics';
+import type { PlacedFourBar } from '../../../synthesis/types';
+import { placedJoints } from '../../../synthesis/placed';
+import type { ScreenPoint } from '../../../shared/canvas/canvasGestures';
+import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
+import { usePanZoom } from '../../../shared/canvas/usePanZoom';
+import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
+import { fitView, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
+import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
+import { useElementSize } from '../../../shared/hooks/useElementSize';
+import type { ViewOffset } from '../../../shared/state/appState';
+import { Icon } from '../../../shared/ui/Icon';
+import type { SynthesisMessages } from '../synthesisMessages';
+import type { MotionRange } from './candidateFacts';
+import { theta2AtPhase } from './candidateFacts';
+import type { PathCurve, PathScene } from './drawPathScene';
+import { drawPathScene } from './drawPathScene';
+
+/** Props of TargetCanvas: the targets and the selection, what else to draw, the view, and the edits. */
+export interface TargetCanvasProps {
+  targets: readonly Point[];
+  selected: number | null;
+  curves: readonly PathCurve[];
+  /** The linkage to animate through its motion, or null. */
+  moving: { design: PlacedFourBar; motion: MotionRange } | null;
+  bounds: Bounds;
+  view: ViewOffset;
+  onViewChange: (view: ViewOffset) => void;
+  onSelect: (index: number | null) => void;
+  onMove: (index: number, p: Point) => void;
+  onAdd: (p: Point) => void;
+  onRemove: (index: number) => void;
+  /** The canvas element, for the exports (its size in CSS pixels). */
+  canvasRef: RefObject<HTMLCanvasElement | null>;
+  st: SynthesisMessages;
+}
+
+/** Seconds one cycle of the animation takes. */
+const CYCLE_SECONDS = 4;
+
+/** x rounded to a tenth of the grid step at this zoom (so a click gives 1.3, not 1.2999871), without float dust. */
+function snap(x: number, step: number): number {
+  return Number((Math.round(x / step) * step).toPrecision(12));
+}
+
+/** The target under a pointer at p (CSS pixels), the nearest within the grab radius, or null. */
+function targetAt(targets: readonly Point[], v: ViewTransform, p: ScreenPoint, radius: number): number | null {
+  let best: number | null = null;
+  let bestD = radius;
+  targets.forEach((t, i) => {
+    const d = Math.hypot(toScreenX(v, t.x) - p.x, toScreenY(v, t.y) - p.y);
+    if (d <= bestD) {
+      best = i;
+      bestD = d;
+    }
+  });
+  return best;
+}
+
+/** The world point under p, snapped to a tenth of the grid step. */
+function worldAt(v: ViewTransform, p: ScreenPoint): Point {
+  const w = toWorld(v, p.x, p.y);
+  const step = niceStep(v.scale) / 10;
+  return { x: snap(w.x, step), y: snap(w.y, step) };
+}
+
+/** Arrow keys move the selected target by a tenth of the grid step (Shift: a whole step); null for other keys. */
+function keyMove(e: { key: string; shiftKey: boolean }): [number, number] | null {
+  const k = e.shiftKey ? 10 : 1;
+  if (e.key === 'ArrowRight') return [k, 0];
+  if (e.key === 'ArrowLeft') return [-k, 0];
+  if (e.key === 'ArrowUp') return [0, k];
+  if (e.key === 'ArrowDown') return [0, -k];
+  return null;
+}
+
+/**
+ * The Path mode's canvas: the targets on a pan-and-zoom plane (click or tap adds one, drag moves one, Delete or
+ * Backspace removes the selected one, arrow keys move it) with the chosen linkage moving through its cycle. The
+ * canvas's data-view holds the transform (scale, centre, pan, size) so tests can find a world point's pixel.
+ */
+export function TargetCanvas(props: TargetCanvasProps) {
+  const { targets, selected, curves, moving, bounds, view, onViewChange, canvasRef, st } = props;
+  const hintId = useId();
+  const wrapRef = useRef<HTMLDivElement>(null);
+  const phase = useRef(0);
+  const { width, height } = useElementSize(wrapRef);
+  const transform = () => fitView(bounds, width, height, view);
+
+  const panZoom = usePanZoom<number>({
+    canvasRef,
+    view,
+    onViewChange,
+    width,
+    height,
+    grab: (p, pointerType) => targetAt(targets, transform(), p, grabRadiusPx(pointerType)),
+    onGrab: (i) => {
+      if (i !== null) props.onSelect(i);
+    },
+    onDrag: (i, p) => props.onMove(i, worldAt(transform(), p)),
+    onTap: (p) => {
+      props.onAdd(worldAt(transform(), p));
+    },
+  });
+
+  const names = targets.map((_, i) => st.targetName(i + 1));
+  const draw = () => {
+    const canvas = canvasRef.current;
+    if (!canvas || width <= 0 || height <= 0) return;
+    const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
+    const pw = Math.round(width * dpr);
+    const ph = Math.round(height * dpr);
+    if (canvas.width !== pw || canvas.height !== ph) {
+      canvas.width = pw;
+      canvas.height = ph;
+    }
+    const ctx = canvas.getContext('2d');
+    if (!ctx) return;
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const v = transform();
+    const pose = moving ? placedJoints(moving.design, theta2AtPhase(moving.motion, phase.current)) : null;
+    const scene: PathScene = { targets, selected, names, curves, pose };
+    drawPathScene(ctx, scene, v);
+    canvas.dataset.view = JSON.stringify({
+      scale: v.scale,
+      centerX: v.centerX,
+      centerY: v.centerY,
+      panXPx: v.panXPx,
+      panYPx: v.panYPx,
+      width: v.width,
+      height: v.height,
+    });
+  };
+  useLayoutEffect(draw);
+  useAnimationFrame(moving !== null, (dt) => {
+    phase.current = (phase.current + dt / CYCLE_SECONDS) % 1;
+    draw();
+  });
+
+  return (
+    <div className="syn-canvas-wrap" ref={wrapRef}>
+      <canvas
+        ref={canvasRef}
+        className="syn-canvas"
+        role="application"
+        aria-label={`${st.canvasLabel}: ${targets.length}`}
+        aria-describedby={hintId}
+        aria-keyshortcuts="Delete Backspace ArrowLeft ArrowRight ArrowUp ArrowDown + - 0"
+        title={st.canvasHint}
+        tabIndex={0}
+        data-testid="synthesis-canvas"
+        data-targets={targets.length}
+        {...panZoom.pointerHandlers}
+        onKeyDown={(e) => {
+          if (panZoom.onZoomKey(e)) {
+            e.preventDefault();
+            return;
+          }
+          if ((e.key === 'Delete' || e.key === 'Backspace') && selected !== null) {
+            props.onRemove(selected);
+            e.preventDefault();
+            return;
+          }
+          const move = keyMove(e);
+          if (move && selected !== null && targets[selected]) {
+            const step = niceStep(transform().scale) / 10;
+            const t = targets[selected];
+            props.onMove(selected, { x: snap(t.x + move[0] * step, step), y: snap(t.y + move[1] * step, step) });
+            e.preventDefault();
+          }
+        }}
+      />
+      <div className="syn-canvas-tools">
+        <button type="button" className="syn-icon-btn" aria-label={st.zoomIn} onClick={() => panZoom.zoomBy(1.25)}>
+          <Icon name="plus" />
+        </button>
+        <button type="button" className="syn-icon-btn" aria-label={st.zoomOut} onClick={() => panZoom.zoomBy(0.8)}>
+          <Icon name="minus" />
+        </button>
+        <button type="button" className="syn-icon-btn" aria-label={st.resetView} onClick={panZoom.resetView}>
+          <Icon name="fit" />
+        </button>
+      </div>
+      {targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
+      <p id={hintId} className="syn-canvas-hint">
+        {st.canvasHint}
+      </p>
+    </div>
+  );
+}

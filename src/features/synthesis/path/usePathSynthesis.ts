@@ -1,0 +1,142 @@
+import { useCallback, useEffect, useRef, useState } from 'react';
+import type { JobRunner } from '../../../shared/jobs/jobClient';
+import type { PathSolution, PathTask } from '../../../synthesis/types';
+import type { SynthesisJobs } from '../jobs';
+
+/** A pool of solver workers running the synthesis jobs (createSolverPool in the app). */
+export interface SynthesisPool extends JobRunner<SynthesisJobs> {
+  readonly size: number;
+  dispose(): void;
+}
+
+/** Rounds of the global stage a run deals to its parts (the search's default: a run that ends by them is reproducible). */
+export const PATH_ROUNDS = 400;
+/** Wall-clock budget of each part (ms): a run on a slow phone still ends; the best so far is kept. */
+export const PATH_PART_BUDGET_MS = 20_000;
+
+/** Where a run is: not started, running, finished (with answers), cancelled or failed. */
+export type PathRunStatus = 'idle' | 'running' | 'done' | 'cancelled' | 'failed';
+
+/** A run's state: its status, progress (fraction 0 … 1, best Σd² so far), the answers and what it took. */
+export interface PathRunState {
+  status: PathRunStatus;
+  progress: { fraction: number; best: number } | null;
+  solutions: PathSolution[] | null;
+  /** The task the answers are for (they stay when the task is edited, until the next run). */
+  task: PathTask | null;
+  error: string | null;
+  elapsedMs: number;
+  workers: number;
+}
+
+const IDLE: PathRunState = {
+  status: 'idle',
+  progress: null,
+  solutions: null,
+  task: null,
+  error: null,
+  elapsedMs: 0,
+  workers: 0,
+};
+
+/** The last finished run, kept across the page's unmounts (switching to the simulator and back). */
+let lastRun: PathRunState = IDLE;
+
+/**
+ * Runs a path synthesis on a pool of workers: the global stage's rounds dealt to pool.size parts (pathPart, seed and
+ * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() aborts every
+ * part at once: the run is marked cancelled at once and the workers stop at their next check. The pool is made on
+ * the first run and disposed with the page.
+ */
+export function usePathSynthesis(createPool: () => SynthesisPool) {
+  const [state, setState] = useState<PathRunState>(lastRun);
+  const pool = useRef<SynthesisPool | null>(null);
+  const abort = useRef<AbortController | null>(null);
+
+  useEffect(
+    () => () => {
+      abort.current?.abort();
+      pool.current?.dispose();
+      pool.current = null;
+    },
+    [],
+  );
+
+  const cancel = useCallback(() => {
+    abort.current?.abort();
+    abort.current = null;
+    setState((s) => (s.status === 'running' ? { ...s, status: 'cancelled', progress: null } : s));
+  }, []);
+
+  const run = useCallback(
+    async (task: PathTask, seed: number) => {
+      abort.current?.abort();
+      const controller = new AbortController();
+      abort.current = controller;
+      if (!pool.current) pool.current = createPool();
+      const p = pool.current;
+      const parts = p.size;
+      const start = performance.now();
+      const fractions = new Array<number>(parts).fill(0);
+      const bests = new Array<number>(parts).fill(Infinity);
+      setState((s) => ({
+        ...s,
+        status: 'running',
+        progress: { fraction: 0, best: Infinity },
+        error: null,
+        workers: parts,
+      }));
+      const onProgress = (i: number) => (fraction: number, stage: string) => {
+        if (controller.signal.aborted) return;
+        fractions[i] = fraction;
+        bests[i] = Math.min(bests[i], Number(stage));
+        const progress = { fraction: fractions.reduce((a, b) => a + b, 0) / parts, best: Math.min(...bests) };
+        setState((s) => (s.status === 'running' ? { ...s, progress } : s));
+      };
+      try {
+        const results = await Promise.all(
+          Array.from(
+            { length: parts },
+            (_, part) =>
+              p.run(
+                'pathPart',
+                { task, seed, part, parts, rounds: PATH_ROUNDS, budgetMs: PATH_PART_BUDGET_MS },
+                { signal: controller.signal, onProgress: onProgress(part) },
+              ).result,
+          ),
+        );
+        if (controller.signal.aborted || results.some((r) => r === null)) return;
+        const merged = await p.run(
+          'pathMerge',
+          { task, parts: results.map((r) => r!.candidates) },
+          { signal: controller.signal },
+        ).result;
+        if (controller.signal.aborted || merged === null) return;
+        const done: PathRunState = {
+          status: 'done',
+          progress: null,
+          solutions: merged,
+          task,
+          error: null,
+          elapsedMs: performance.now() - start,
+          workers: parts,
+        };
+        lastRun = done;
+        setState(done);
+      } catch (e) {
+        if (controller.signal.aborted) return;
+        setState((s) => ({
+          ...s,
+          status: 'failed',
+          progress: null,
+          error: e instanceof Error ? e.message : String(e),
+        }));
+      } finally {
+        if (abort.current === controller) abort.current = null;
+      }
+    },
+    [createPool],
+  );
+
+  return { ...state, run, cancel };
+}

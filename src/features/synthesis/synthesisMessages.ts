@@ -1,0 +1,114 @@
+import type { Locale } from '../../shared/state/appState';
+import { messageModule } from '../../shared/i18n/messageModule';
+import { synthesisMessagesEn } from './synthesisMessagesEn';
+import { synthesisMessagesZhTw } from './synthesisMessagesZhTw';
+
+/** Defects a path candidate can have, named in words on the page (see path/candidateFacts.ts). */
+export type PathDefect = 'not-crank' | 'low-transmission' | 'misses';
+
+/**
+ * The synthesis page's strings (page shell and Path mode), apart from the app's: only the synthesis page reads them,
+ * so they load with it, both languages together.
+ */
+export interface SynthesisMessages {
+  pageTitle: string;
+  pageIntro: string;
+  /** The mode control's legend and its choices. */
+  modeLegend: string;
+  modePath: string;
+  modeMotion: string;
+  modeFunction: string;
+  /** Shown while a mode's code loads. */
+  modeLoading: string;
+  pathIntro: string;
+  /** The targets canvas: name, hint and the empty state. */
+  canvasLabel: string;
+  canvasHint: string;
+  canvasEmpty: string;
+  zoomIn: string;
+  zoomOut: string;
+  resetView: string;
+  targetsTitle: string;
+  /** A target's name on the canvas and in the table (1-based). */
+  targetName: (n: number) => string;
+  tableX: string;
+  tableY: string;
+  tableTheta2: string;
+  removeTarget: (n: number) => string;
+  addTarget: string;
+  clearTargets: string;
+  exampleTargets: string;
+  pasteLabel: string;
+  pasteHelp: string;
+  /** The paste's error: line number and the line's text. */
+  pasteBadLine: (line: number, text: string) => string;
+  pasteTooMany: (max: number) => string;
+  badNumber: (text: string) => string;
+  importCsv: string;
+  exportCsv: string;
+  importFailed: (why: string) => string;
+  timingLegend: string;
+  timingFree: string;
+  timingStep: string;
+  timingGiven: string;
+  stepLabel: string;
+  boundsTitle: string;
+  boundLength: string;
+  boundCoupler: string;
+  pivotBox: string;
+  pivotMin: string;
+  pivotMax: string;
+  /** The placeholder of a bound left to its default. */
+  autoValue: (value: string) => string;
+  inputLegend: string;
+  inputCrank: string;
+  inputAny: string;
+  synthesize: string;
+  cancel: string;
+  needTargets: string;
+  progressLabel: string;
+  /** The progress bar's value text: percent done and the best Σd² so far. */
+  progressText: (percent: string, best: string) => string;
+  statusRunning: (workers: number) => string;
+  statusCancelled: string;
+  statusDone: (count: number, ms: string, workers: number) => string;
+  statusNone: string;
+  statusFailed: (why: string) => string;
+  resultsTitle: string;
+  /** One candidate's summary line (all numbers formatted). */
+  candidateName: (rank: number) => string;
+  errorSum: string;
+  maxDistance: string;
+  minTransmission: string;
+  linkageType: string;
+  defects: string;
+  noDefects: string;
+  defectText: Record<PathDefect, (value: string) => string>;
+  grashof: string;
+  nonGrashof: string;
+  chosenTitle: string;
+  cognatesTitle: string;
+  cognatesIntro: string;
+  cognateOriginal: string;
+  cognateName: (n: number) => string;
+  lengths: (r1: string, r2: string, r3: string, r4: string) => string;
+  openInSimulator: string;
+  exportResultsCsv: string;
+  exportSvg: string;
+  exportPng: string;
+  /** Words of the glossary the page uses (zh-TW: 路徑生成 …). */
+  precisionPoints: string;
+  structuralError: string;
+  centerPointCurve: string;
+  circlePointCurve: string;
+}
+
+/** The synthesis page's strings in every language (both bundled with the page's chunk). */
+export const synthesisMessages = messageModule<SynthesisMessages>(synthesisMessagesEn, {
+  'zh-TW': synthesisMessagesZhTw,
+});
+
+/** The synthesis page's strings in a language. */
+export function synthesisMessagesFor(locale: Locale): SynthesisMessages {
+  return synthesisMessages.get(locale);
+}

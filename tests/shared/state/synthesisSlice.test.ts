@@ -1,0 +1,147 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_STATE, reducer } from '../../../src/shared/state/appState';
+import {
+  DEFAULT_SYN_PATH,
+  MAX_TARGETS,
+  SYN_PATH_URL_KEYS,
+  synPathReducer,
+  targetsCodec,
+} from '../../../src/shared/state/slices/synthesisSlice';
+import { parseUrl, serializeState } from '../../../src/shared/url/url';
+
+const quiet = () => undefined;
+
+describe('synPathReducer', () => {
+  it('returns the same object for an action it does not handle, or a value it already has', () => {
+    expect(synPathReducer(DEFAULT_SYN_PATH, { type: 'setTheta2', deg: 10 })).toBe(DEFAULT_SYN_PATH);
+    expect(synPathReducer(DEFAULT_SYN_PATH, { type: 'setTiming', timing: 'free' })).toBe(DEFAULT_SYN_PATH);
+    expect(synPathReducer(DEFAULT_SYN_PATH, { type: 'setSynthesisMode', mode: 'path' })).toBe(DEFAULT_SYN_PATH);
+  });
+
+  it('sets the targets (copied, at most MAX_TARGETS) and goes back to the best candidate', () => {
+    const picked = synPathReducer(DEFAULT_SYN_PATH, { type: 'chooseCandidate', index: 3 });
+    const many = Array.from({ length: MAX_TARGETS + 5 }, (_, i) => ({ x: i, y: -i }));
+    const next = synPathReducer(picked, { type: 'setTargets', targets: many });
+    expect(next.targets).toHaveLength(MAX_TARGETS);
+    expect(next.targets[0]).not.toBe(many[0]);
+    expect(next.chosen).toBe(0);
+  });
+
+  it('sets timing, step, given angles, bounds, input, seed and mode', () => {
+    let s = DEFAULT_SYN_PATH;
+    s = synPathReducer(s, { type: 'setTiming', timing: 'given' });
+    s = synPathReducer(s, { type: 'setTimingStep', stepDeg: -15 });
+    s = synPathReducer(s, { type: 'setGivenTheta2', theta2Deg: [0, 30] });
+    s = synPathReducer(s, { type: 'setPathBounds', bounds: { boundLength: 12, boundCoupler: null } });
+    s = synPathReducer(s, { type: 'setPathInput', input: 'any' });
+    s = synPathReducer(s, { type: 'setPathSeed', seed: 7 });
+    s = synPathReducer(s, { type: 'setSynthesisMode', mode: 'function' });
+    expect(s).toMatchObject({
+      timing: 'given',
+      timingStepDeg: -15,
+      givenTheta2Deg: [0, 30],
+      boundLength: 12,
+      boundCoupler: null,
+      input: 'any',
+      seed: 7,
+      mode: 'function',
+    });
+  });
+
+  it('is composed into the app reducer', () => {
+    const next = reducer(DEFAULT_STATE, { type: 'setTargets', targets: [{ x: 1, y: 2 }] });
+    expect(next.synPath.targets).toEqual([{ x: 1, y: 2 }]);
+    expect(next.design).toBe(DEFAULT_STATE.design);
+  });
+});
+
+describe('synthesis URL keys', () => {
+  it('writes nothing for the default slice', () => {
+    const params = new URLSearchParams(serializeState(DEFAULT_STATE));
+    for (const k of SYN_PATH_URL_KEYS) expect(params.has(k.name), k.name).toBe(false);
+  });
+
+  it('round-trips a full task through the URL', () => {
+    const synPath = {
+      ...DEFAULT_SYN_PATH,
+      mode: 'path' as const,
+      targets: [
+        { x: 1.5, y: -2 },
+        { x: 0.1, y: 3e-7 },
+        { x: -4, y: 10 },
+      ],
+      timing: 'given' as const,
+      timingStepDeg: 12.5,
+      givenTheta2Deg: [0, 45.5, -90],
+      boundLength: 20,
+      boundCoupler: 7,
+      pivotBox: { min: { x: -5, y: -6 }, max: { x: 5, y: 6 } },
+      input: 'any' as const,
+      seed: 42,
+    };
+    const state = { ...DEFAULT_STATE, synPath, shell: { ...DEFAULT_STATE.shell, page: 'synthesis' as const } };
+    const back = parseUrl(serializeState(state), DEFAULT_STATE, quiet);
+    expect(back.ignored).toEqual([]);
+    expect(back.state.synPath).toEqual(synPath);
+    expect(back.state.shell.page).toBe('synthesis');
+  });
+
+  it('reads page=syn, syn=fn and tg/tm/ts as the issue writes them', () => {
+    const r = parseUrl('page=syn&syn=fn&tg=0,0;1,2.5;-3,4&tm=step&ts=20', DEFAULT_STATE, quiet);
+    expect(r.ignored).toEqual([]);
+    expect(r.state.shell.page).toBe('synthesis');
+    expect(r.state.synPath.mode).toBe('function');
+    expect(r.state.synPath.targets).toEqual([
+      { x: 0, y: 0 },
+      { x: 1, y: 2.5 },
+      { x: -3, y: 4 },
+    ]);
+    expect(r.state.synPath.timing).toBe('step');
+    expect(r.state.synPath.timingStepDeg).toBe(20);
+  });
+
+  it('ignores a bad value with the reason, keeping the default', () => {
+    const r = parseUrl('tg=1,2;x,3&ts=0&bp=1,1,0,0', DEFAULT_STATE, quiet);
+    expect(r.state.synPath).toEqual(DEFAULT_SYN_PATH);
+    expect(r.ignored.map((p) => [p.key, p.why])).toEqual([
+      ['tg', 'point 2 ("x,3") is not x,y'],
+      ['ts', 'expected a nonzero step in degrees from -180 to 180'],
+      ['bp', 'expected auto or x0,y0,x1,y1 with x0 < x1 and y0 < y1'],
+    ]);
+  });
+});
+
+describe('targetsCodec', () => {
+  it('refuses more than MAX_TARGETS points, hex and Infinity', () => {
+    const many = Array.from({ length: MAX_TARGETS + 1 }, () => '1,1').join(';');
+    expect(targetsCodec.parse(many).ok).toBe(false);
+    expect(targetsCodec.parse('0x10,1').ok).toBe(false);
+    expect(targetsCodec.parse('Infinity,1').ok).toBe(false);
+    expect(targetsCodec.parse('')).toEqual({ ok: true, value: [] });
+  });
+});
+
+describe('design placement keys', () => {
+  it('writes ox, oy and og only when the placement is not the default, and reads them back', () => {
+    expect(serializeState(DEFAULT_STATE)).not.toMatch(/\b(ox|oy|og)=/);
+    const placed = {
+      ...DEFAULT_STATE,
+      design: { ...DEFAULT_STATE.design, placement: { x: 2.5, y: -1, angleDeg: -30.25 } },
+    };
+    const text = serializeState(placed);
+    expect(text).toMatch(/ox=2\.5/);
+    expect(parseUrl(text, DEFAULT_STATE, quiet).state.design.placement).toEqual({ x: 2.5, y: -1, angleDeg: -30.25 });
+  });
+
+  it('goes back to the default placement with a preset', () => {
+    const placed = reducer(DEFAULT_STATE, { type: 'setPlacement', placement: { x: 1, y: 2, angleDeg: 3 } });
+    const preset = reducer(placed, {
+      type: 'applyPreset',
+      linkage: { r1: 4, r2: 1, r3: 4, r4: 3 },
+      theta2Deg: 0,
+      branch: 'open',
+      coupler: { distance: 1, angleDeg: 0 },
+    });
+    expect(preset.design.placement).toEqual({ x: 0, y: 0, angleDeg: 0 });
+  });
+});
