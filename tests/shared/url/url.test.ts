@@ -146,8 +146,8 @@ describe('serializeState and parseUrl', () => {
   it('keeps every documented key, grouped by the slice that owns it', () => {
     // Design, motion, display, solver, shell, lab, then the embed-only keys.
     expect(URL_KEYS.map((k) => k.name).join(' ')).toBe(
-      'r1 r2 r3 r4 br pd pa t2 play spd dir w2 a2 grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
-        'nr n m tol lang page lstep panels lock',
+      'r1 r2 r3 r4 br pd pa ox oy og t2 play spd dir w2 a2 grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
+        'nr n m tol lang page lstep syn tg tm ts tt bl bc bp in sd panels lock',
     );
   });
 
@@ -329,6 +329,33 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['lang', 'fr', false],
   ['m', 'bisection', false],
   ['page', 'debug', false],
+  ['page', 'syn', true],
+  ['ox', '-2.5', true],
+  ['ox', 'abc', false],
+  ['oy', '1e9', true],
+  ['oy', '1.1e9', false],
+  ['og', '-90', true],
+  ['og', '400', false],
+  ['syn', 'fn', true],
+  ['syn', 'function', false],
+  ['tg', '1,2;3,4.5;-1e-3,0', true],
+  ['tg', '1,2;3', false],
+  ['tm', 'step', true],
+  ['tm', 'timed', false],
+  ['ts', '-15', true],
+  ['ts', '0', false],
+  ['tt', '0,30,60', true],
+  ['tt', '0,x', false],
+  ['bl', '12', true],
+  ['bl', '-1', false],
+  ['bc', 'auto', true],
+  ['bc', '0', false],
+  ['bp', '-5,-5,5,5', true],
+  ['bp', '5,-5,-5,5', false],
+  ['in', 'any', true],
+  ['in', 'rocker', false],
+  ['sd', '7', true],
+  ['sd', '0', false],
 ];
 
 describe('parseUrl range checks', () => {
