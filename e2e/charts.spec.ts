@@ -175,8 +175,8 @@ test.describe('the angle and convergence charts', () => {
     await watchMutations(conv, ['g.axis-x', 'g.axis-y', 'g.runs']);
     const runBefore = await conv.locator('g.runs path').last().getAttribute('d');
     await stepSlider(page, /^θ2/, 'ArrowRight', 6);
-    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('48');
-    await expect(conv).toHaveAttribute('aria-label', /48/);
+    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('51');
+    await expect(conv).toHaveAttribute('aria-label', /51/);
     await expect.poll(() => conv.locator('g.runs path').last().getAttribute('d')).not.toBe(runBefore);
     const counts = await mutationCounts(conv);
     expect(counts['g.runs'].batches).toBeGreaterThan(0);

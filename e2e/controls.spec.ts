@@ -21,6 +21,30 @@ test.describe('controls and analysis details', () => {
     expect(await theta2.inputValue()).toMatch(/^\d+(\.\d{1,2})?$/);
   });
 
+  test('the θ2 slider turns by whole degrees around the circle, and End is 359°, not 0°', async ({ page }) => {
+    await page.goto('./?t2=202.98804');
+    await waitReady(page);
+    const theta2 = page.getByRole('textbox', { name: /^θ2/ });
+    await page.getByRole('slider', { name: /^θ2/ }).focus();
+    await page.keyboard.press('ArrowRight');
+    await expect(theta2).toHaveValue('203');
+    await page.keyboard.press('End');
+    await expect(theta2).toHaveValue('359');
+    await page.keyboard.press('ArrowRight');
+    await expect(theta2).toHaveValue('0');
+    await page.keyboard.press('PageDown');
+    await expect(theta2).toHaveValue('350');
+  });
+
+  test('Step from an angle between two steps lands on the step grid', async ({ page }) => {
+    await page.goto('./?t2=202.98804');
+    await waitReady(page);
+    await page.getByRole('button', { name: 'Step forward' }).click();
+    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('203');
+    await page.getByRole('button', { name: 'Step back' }).click();
+    await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('202');
+  });
+
   test('choosing Crossed keeps the preset named', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

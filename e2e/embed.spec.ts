@@ -32,7 +32,7 @@ test.describe('the embed widget', () => {
     // It still solves: move theta2 with the keyboard and the pose follows.
     await frame.getByRole('slider', { name: /^θ2/ }).focus();
     for (let i = 0; i < 4; i++) await page.keyboard.press('ArrowRight');
-    await expect(frame.getByRole('img', { name: /^Linkage view\. θ2 62\.00°/ })).toBeVisible();
+    await expect(frame.getByRole('img', { name: /^Linkage view\. θ2 64\.00°/ })).toBeVisible();
     await frame.getByRole('button', { name: 'Play' }).click();
     await expect(frame.getByRole('button', { name: 'Pause' })).toBeVisible();
     await frame.getByRole('button', { name: 'Pause' }).click();

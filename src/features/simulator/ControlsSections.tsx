@@ -84,6 +84,11 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
   );
 }
 
+/** θ2's slider keys: arrows 1°, Page Up/Down 10°, around the circle. */
+const THETA2_KEYS = { step: 1 } as const;
+/** The coupler angle's slider keys: the same steps on (−180°, 180°]. */
+const COUPLER_ANGLE_KEYS = { step: 1 } as const;
+
 /** The input angle θ2 and the assembly branch. */
 export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps) {
   const t = useMessages();
@@ -96,6 +101,7 @@ export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps
         min={0}
         max={360}
         step={0.5}
+        turn={THETA2_KEYS}
         unit="°"
         locked={isLocked('theta2')}
         onCommit={(v) => dispatch({ type: 'setTheta2', deg: v })}
@@ -215,6 +221,7 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
         min={-180}
         max={180}
         step={1}
+        turn={COUPLER_ANGLE_KEYS}
         unit="°"
         locked={isLocked('coupler')}
         onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { angleDeg: v } })}

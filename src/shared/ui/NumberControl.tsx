@@ -4,6 +4,8 @@ import type { FieldName } from './validateNumber';
 import { parseField } from './validateNumber';
 import { fieldText, formatNumber, truncateText } from '../format';
 import { useMessages } from '../i18n/MessagesContext';
+import type { TurnKeys } from './sliderKeys';
+import { turnKeyValue } from './sliderKeys';
 
 /** Props of NumberControl: the field, its value (field units) and slider range; onCommit gets only valid values. */
 export interface NumberControlProps {
@@ -20,6 +22,8 @@ export interface NumberControlProps {
   decimals?: number;
   /** Unit text after the field, e.g. '°'. */
   unit?: string;
+  /** An angle on the circle [min, max): the slider's keys step by turn.step and wrap around (turnKeyValue). */
+  turn?: TurnKeys;
 }
 
 /** Most characters of a rejected text that the inline message echoes. */
@@ -140,6 +144,7 @@ export function NumberControl({
   locked = false,
   decimals,
   unit,
+  turn,
 }: NumberControlProps) {
   const t = useMessages();
   const id = useId();
@@ -196,6 +201,13 @@ export function NumberControl({
         step={step}
         value={sliderValue}
         disabled={disabled || locked}
+        onKeyDown={(e) => {
+          const next = turn ? turnKeyValue(e.key, value, min, max, turn) : null;
+          if (next === null) return;
+          e.preventDefault();
+          clearError();
+          onCommit(next);
+        }}
         onChange={(e) => {
           const v = Number(e.target.value);
           if (Number.isFinite(v)) {
