@@ -45,6 +45,44 @@ test.describe('controls and analysis details', () => {
     await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('202');
   });
 
+  test('a linkage that assembles nowhere says so: no μ, no Play, no exports', async ({ page }) => {
+    await page.goto('./?r1=13&r2=2&r3=5&r4=5');
+    await waitReady(page);
+    await expect(page.getByTestId('design-cannot-assemble')).toHaveText(
+      'This linkage cannot be assembled at any input angle',
+    );
+    await expect(page.getByTestId('design-mu-min')).toHaveText('—');
+    await expect(page.getByTestId('design-mu-min-at')).toHaveCount(0);
+    await expect(page.getByRole('button', { name: 'Play' })).toBeDisabled();
+    for (const name of ['Export linkage view PNG', 'Export cycle CSV', 'Export animation GIF'])
+      await expect(page.getByRole('button', { name })).toBeDisabled();
+    // A length that makes it assemble again turns everything back on.
+    await page.getByRole('textbox', { name: /^r1/ }).fill('6');
+    await expect(page.getByRole('button', { name: 'Play' })).toBeEnabled();
+    await expect(page.getByRole('button', { name: 'Export cycle CSV' })).toBeEnabled();
+    await expect(page.getByTestId('design-cannot-assemble')).toHaveCount(0);
+  });
+
+  test('frames per cycle out of range says so as it is typed, and the animation waits for a good number', async ({
+    page,
+  }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const frames = page.getByRole('spinbutton', { name: 'Frames per cycle' });
+    const gif = page.getByRole('button', { name: 'Export animation GIF' });
+    for (const bad of ['0', '100000', '2.5']) {
+      await frames.fill(bad);
+      await expect(
+        page.getByRole('alert').filter({ hasText: 'Frames per cycle must be a whole number' }),
+      ).toBeVisible();
+      await expect(frames).toHaveAttribute('aria-invalid', 'true');
+      await expect(gif).toBeDisabled();
+    }
+    await frames.fill('90');
+    await expect(page.getByText('Frames per cycle must be a whole number')).toHaveCount(0);
+    await expect(gif).toBeEnabled();
+  });
+
   test('choosing Crossed keeps the preset named', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

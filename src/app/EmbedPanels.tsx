@@ -5,6 +5,7 @@ import type { EmbedPanel } from '../shared/url/url';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { SimulatorPlots } from './SimulatorPlots';
 import type { SimulatorSession } from './useSimulatorSession';
+import { exportBlocked } from './exportBlocked';
 
 /** Props of EmbedPanels: the session, which panels the widget shows and whether θ2 is locked. */
 export interface EmbedPanelsProps {
@@ -49,7 +50,14 @@ export function EmbedPanels({ session, show, theta2Locked }: EmbedPanelsProps) {
       ) : null}
       {show('export') ? (
         <section className="card embed-card">
-          <ExportPanel onPng={onPng} onSvg={onSvg} onCsv={onCsv} onAnimation={onAnimation} compact />
+          <ExportPanel
+            onPng={onPng}
+            onSvg={onSvg}
+            onCsv={onCsv}
+            onAnimation={onAnimation}
+            blocked={exportBlocked(design, t)}
+            compact
+          />
         </section>
       ) : null}
       <SolverStatus mode={solverMode} reason={solverReason} />

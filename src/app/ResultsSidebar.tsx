@@ -10,6 +10,7 @@ import { useLatest } from '../shared/hooks/useLatest';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { PanelSection } from '../shared/ui/PanelSection';
 import type { SimulatorSession } from './useSimulatorSession';
+import { exportBlocked } from './exportBlocked';
 
 /** Props of ResultsSidebar: the simulator session and the sidebar's accessible name. */
 export interface ResultsSidebarProps {
@@ -61,6 +62,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
           onSvg={session.onSvg}
           onCsv={session.onCsv}
           onAnimation={session.onAnimation}
+          blocked={exportBlocked(session.design, session.t)}
         />
       </PanelSection>
       <PanelSection className="card" id="sec-share" title={t.sectionShare}>

@@ -14,6 +14,8 @@ const FRAMES_PER_CYCLE = { min: FRAMES_PER_CYCLE_MIN, max: FRAMES_PER_CYCLE_MAX,
 /** Props of AnimationExportControls: the export itself (useExports' onAnimation). */
 export interface AnimationExportControlsProps {
   onAnimation: (request: AnimationRequest) => Promise<AnimationExportResult>;
+  /** Nothing to animate (a linkage that assembles nowhere): the buttons are disabled; default false. */
+  blocked?: boolean;
 }
 
 /** Frames per cycle typed in the field, or null when it is not a whole number from 36 to 720. */
@@ -82,7 +84,7 @@ function useAnimationRun(onAnimation: AnimationExportControlsProps['onAnimation'
  * The animation part of the Export panel: size (screen or 720p), frames per cycle, loop, the GIF and WebM
  * buttons, and while one runs a progress bar with Cancel; a status line says how it ended.
  */
-export function AnimationExportControls({ onAnimation }: AnimationExportControlsProps) {
+export function AnimationExportControls({ onAnimation, blocked = false }: AnimationExportControlsProps) {
   const t = useMessages();
   const framesId = useId();
   const [size, setSize] = useState<AnimationSize>('screen');
@@ -90,6 +92,10 @@ export function AnimationExportControls({ onAnimation }: AnimationExportControls
   const [loop, setLoop] = useState(true);
   const { running, status, start: run, cancel } = useAnimationRun(onAnimation);
   const start = (format: AnimationFormat) => run(format, { size, framesText, loop });
+  // The field says at once when its number is out of range, and the buttons wait for a good one.
+  const framesBad = parseFramesPerCycle(framesText) === null;
+  const errorId = `${framesId}-error`;
+  const cannotStart = running !== null || blocked || framesBad;
 
   return (
     <div className="anim-export">
@@ -116,16 +122,23 @@ export function AnimationExportControls({ onAnimation }: AnimationExportControls
           step={1}
           value={framesText}
           disabled={running !== null}
+          aria-invalid={framesBad ? true : undefined}
+          aria-describedby={framesBad ? errorId : undefined}
           onChange={(e) => setFramesText(e.target.value)}
           className="anim-export-frames-input"
         />
         <Toggle label={t.animationLoop} checked={loop} onChange={setLoop} disabled={running !== null} />
       </div>
+      {framesBad ? (
+        <p id={errorId} className="numctl-error" role="alert">
+          {t.framesOutOfRange(FRAMES_PER_CYCLE.min, FRAMES_PER_CYCLE.max)}
+        </p>
+      ) : null}
       <div className="export-buttons">
-        <button type="button" className="btn btn-small" disabled={running !== null} onClick={() => start('gif')}>
+        <button type="button" className="btn btn-small" disabled={cannotStart} onClick={() => start('gif')}>
           {t.exportGif}
         </button>
-        <button type="button" className="btn btn-small" disabled={running !== null} onClick={() => start('webm')}>
+        <button type="button" className="btn btn-small" disabled={cannotStart} onClick={() => start('webm')}>
           {t.exportWebm}
         </button>
       </div>

@@ -14,9 +14,11 @@ export interface ExportPanelProps {
   onAnimation: (request: AnimationRequest) => Promise<AnimationExportResult>;
   /** Hide the size choice and offer fewer buttons (embed). */
   compact?: boolean;
+  /** Why nothing can be exported now (a linkage that assembles nowhere): every button disabled, the reason shown. */
+  blocked?: string | null;
 }
 
-function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false }: ExportPanelProps) {
+function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false, blocked = null }: ExportPanelProps) {
   const t = useMessages();
   const [size, setSize] = useState<PngSize>('2x');
   const [status, setStatus] = useState('');
@@ -43,26 +45,33 @@ function ExportPanelImpl({ onPng, onSvg, onCsv, onAnimation, compact = false }: 
             key={i.subject}
             type="button"
             className="btn btn-small"
+            disabled={blocked !== null}
             onClick={() => run(() => onPng(i.subject, size))}
           >
             {i.label}
           </button>
         ))}
-        <button type="button" className="btn btn-small" onClick={() => run(onCsv)}>
+        <button type="button" className="btn btn-small" disabled={blocked !== null} onClick={() => run(onCsv)}>
           {t.exportCsv}
         </button>
       </div>
       <div className="export-buttons">
         {shown.map((i) => (
-          <button key={i.subject} type="button" className="btn btn-small" onClick={() => run(() => onSvg(i.subject))}>
+          <button
+            key={i.subject}
+            type="button"
+            className="btn btn-small"
+            disabled={blocked !== null}
+            onClick={() => run(() => onSvg(i.subject))}
+          >
             {i.svgLabel}
           </button>
         ))}
       </div>
       <p className="status-line" role="status" aria-live="polite">
-        {status}
+        {blocked ?? status}
       </p>
-      <AnimationExportControls onAnimation={onAnimation} />
+      <AnimationExportControls onAnimation={onAnimation} blocked={blocked !== null} />
     </div>
   );
 }

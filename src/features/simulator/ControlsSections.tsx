@@ -1,4 +1,8 @@
+import { useMemo } from 'react';
 import type { Dispatch } from 'react';
+// The solver's module itself, not its barrel (the barrel pulls the sweep and NR into the main bundle).
+import { inputRange } from '../../solver/classify';
+import { assemblesAnywhere } from '../../shared/state/animation';
 import type { Linkage } from '../../solver/types';
 import type { Action, AppState, Direction } from '../../shared/state/appState';
 import { SAMPLE_CHOICES, SPEED_MAX, SPEED_MIN, SPEED_STEP } from '../../shared/state/appState';
@@ -143,18 +147,20 @@ function StepButton({
 function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & { onStep: (sign: 1 | -1) => void }) {
   const t = useMessages();
   const playLocked = isLocked('play');
+  // A linkage that assembles nowhere has nothing to play (the canvas says why).
+  const assembles = useMemo(() => assemblesAnywhere(inputRange(state.design.linkage)), [state.design.linkage]);
   return (
     <div className="play-row">
       <StepButton label={t.stepBack} icon="stepBack" disabled={isLocked('theta2')} onClick={() => onStep(-1)} />
       <button
         type="button"
         className={`btn btn-primary play-btn${playLocked ? ' is-locked' : ''}`}
-        disabled={playLocked}
-        title={playLocked ? t.locked : undefined}
+        disabled={playLocked || !assembles}
+        title={playLocked ? t.locked : assembles ? undefined : t.cannotAssembleAny}
         onClick={() => dispatch({ type: 'setPlaying', playing: !state.motion.playing })}
       >
-        <Icon name={state.motion.playing ? 'pause' : 'play'} size={14} />
-        <span>{state.motion.playing ? t.pause : t.play}</span>
+        <Icon name={state.motion.playing && assembles ? 'pause' : 'play'} size={14} />
+        <span>{state.motion.playing && assembles ? t.pause : t.play}</span>
       </button>
       <StepButton label={t.stepForward} icon="stepForward" disabled={isLocked('theta2')} onClick={() => onStep(1)} />
     </div>

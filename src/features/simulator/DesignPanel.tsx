@@ -172,6 +172,11 @@ function DesignPanelImpl({
     <div className="design analysis">
       <DesignFactList facts={facts} onGo={onGo} />
       {facts && !facts.deadCentres && facts.limits.length === 0 ? <p className="note">{t.noDeadCentres}</p> : null}
+      {design && !facts ? (
+        <p className="note" data-testid="design-cannot-assemble">
+          {t.cannotAssembleAny}
+        </p>
+      ) : null}
       {!compact ? <MuBandFields loDeg={muBandLoDeg} hiDeg={muBandHiDeg} dispatch={dispatch} /> : null}
     </div>
   );

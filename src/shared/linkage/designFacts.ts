@@ -1,7 +1,7 @@
 import { radToDeg, wrapDeg360 } from '../../solver/angles';
 import type { DesignMetrics } from '../../solver/metrics';
 import type { InputRange } from '../../solver/types';
-import { LIMIT_INSET_DEG, rangeToDeg } from '../state/animation';
+import { LIMIT_INSET_DEG, assemblesAnywhere, rangeToDeg } from '../state/animation';
 import { formatDeg, formatNumber } from '../format';
 import { sliderIntervals } from '../state/inputRange';
 
@@ -43,12 +43,14 @@ function stop(theta2Deg: number): DesignStop {
 }
 
 /**
- * Formats designMetrics (radians) for the panel: angles in degrees to DESIGN_DECIMALS, every theta2 in the
+ * Formats designMetrics (radians) for the panel, or null for a linkage that assembles nowhere (it has no μ, no
+ * dead centre and no limit to show): angles in degrees to DESIGN_DECIMALS, every theta2 in the
  * slider's [0, 360) convention, the time ratio to TIME_RATIO_DIGITS significant digits. range is the input's
  * reachable range: a rocking input (not full, not empty) lists its limits, each go-to target inset by
  * LIMIT_INSET_DEG into the reachable side so the pose assembles there.
  */
-export function designFacts(m: DesignMetrics, range: InputRange): DesignFacts {
+export function designFacts(m: DesignMetrics, range: InputRange): DesignFacts | null {
+  if (!assemblesAnywhere(range)) return null;
   const tr = m.transmission;
   const deg = (rad: number) => formatDeg(radToDeg(rad), DESIGN_DECIMALS);
   const deadCentres: DeadCentreFact[] | null = m.output

@@ -37,6 +37,11 @@ export function inputTurnsFully(range: { full: boolean }): boolean {
   return range.full;
 }
 
+/** Whether the linkage assembles at some input angle (a full turn, or at least one interval). */
+export function assemblesAnywhere(range: { full: boolean; intervals: readonly unknown[] }): boolean {
+  return range.full || range.intervals.length > 0;
+}
+
 /** Whether the animation rocks: the input is limited and can move at all (a linkage that never assembles stays). */
 export function isRocking(range: { full: boolean; intervals: readonly unknown[] }): boolean {
   return !inputTurnsFully(range) && range.intervals.length > 0;

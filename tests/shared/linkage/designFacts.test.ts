@@ -6,7 +6,11 @@ import type { Branch, Linkage } from '../../../src/solver/types';
 import { deadCentreMarks, designFacts } from '../../../src/shared/linkage/designFacts';
 
 const REPORT: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
-const facts = (l: Linkage, b: Branch) => designFacts(designMetrics(l, b), inputRange(l));
+const facts = (l: Linkage, b: Branch) => {
+  const f = designFacts(designMetrics(l, b), inputRange(l));
+  if (!f) throw new Error(`no facts for ${JSON.stringify(l)}`);
+  return f;
+};
 
 /** Law of cosines in degrees, plain doubles: well conditioned for the lengths used here (oracle side). */
 const acosDeg = (c: number) => (Math.acos(c) * 180) / Math.PI;
@@ -66,6 +70,16 @@ describe('designFacts', () => {
         expect(solveClosedForm(l, (s.theta2Deg * Math.PI) / 180, b)).not.toBeNull();
       }
     }
+  });
+});
+
+describe('designFacts of a linkage that assembles nowhere', () => {
+  it('gives nothing to show (no μ with a dash, no θ2 = 0.000°), for 13-2-5-5 as for a far-too-long ground', () => {
+    for (const l of [
+      { r1: 13, r2: 2, r3: 5, r4: 5 },
+      { r1: 100, r2: 1, r3: 1, r4: 1 },
+    ])
+      expect(designFacts(designMetrics(l, 'open'), inputRange(l))).toBeNull();
   });
 });
 
