@@ -130,6 +130,12 @@ export const REFERENCE_LENGTH_PX = 46;
 /** Target spacing of grid lines in CSS pixels. */
 export const GRID_TARGET_PX = 64;
 
+/**
+ * Obstacle weight of a link bar: more than a label crossing an arc, a reference line and a plate edge together,
+ * so a label goes over a bar only when no other free spot is left (an angle text over the coupler read as part of it).
+ */
+const LINK_BAR_WEIGHT = 10;
+
 const FONT_PX: Record<LabelFont, number> = { regular: FONT_SIZES.canvas, bold: FONT_SIZES.canvasBold };
 const ROTATIONS = [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6].map((k) => (k * PI) / 6);
 
@@ -188,7 +194,9 @@ function besideArc(arc: SceneArc, width: number, height: number): Px[] {
   const sweep = arc.toRad - arc.fromRad;
   const angles = [0.5, 0.3, 0.7, 0.15, 0.85, 0, 1].map((f) => arc.fromRad + sweep * f);
   const mid = arc.fromRad + sweep / 2;
-  for (const k of [1, -1, 2, -2, 3, -3]) angles.push(mid + (k * PI) / 8 + (Math.sign(k) * Math.abs(sweep)) / 2);
+  // Then round the rest of the circle, so a crowded arc still finds a spot off the link bars.
+  for (const k of [1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7])
+    angles.push(mid + (k * PI) / 8 + (Math.sign(k) * Math.abs(sweep)) / 2);
   const out: Px[] = [];
   for (const gap of [3, 9, 18]) {
     for (const phi of angles) {
@@ -360,8 +368,8 @@ function addPoseLabels(
   obstacles.push(
     jointBox(B, STROKES.jointRadius, 4),
     jointBox(P, STROKES.couplerPointRadius, 4),
-    { kind: 'segment', a: A, b: B, halfWidth: STROKES.link / 2, weight: 3, owner: 'r3' },
-    { kind: 'segment', a: B, b: O4, halfWidth: STROKES.link / 2, weight: 3, owner: 'r4' },
+    { kind: 'segment', a: A, b: B, halfWidth: STROKES.link / 2, weight: LINK_BAR_WEIGHT, owner: 'r3' },
+    { kind: 'segment', a: B, b: O4, halfWidth: STROKES.link / 2, weight: LINK_BAR_WEIGHT, owner: 'r4' },
     { kind: 'segment', a: A, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
     { kind: 'segment', a: B, b: P, halfWidth: STROKES.couplerPlate, weight: 1 },
   );
@@ -419,7 +427,7 @@ function groundObstacles(O2: Px, O4: Px, A: Px): Obstacle[] {
     { kind: 'rect', rect: groundSymbolRect(O2), weight: 2 },
     { kind: 'rect', rect: groundSymbolRect(O4), weight: 2 },
     { kind: 'segment', a: O2, b: O4, halfWidth: STROKES.ground, weight: 1, owner: 'r1' },
-    { kind: 'segment', a: O2, b: A, halfWidth: STROKES.link / 2, weight: 3, owner: 'r2' },
+    { kind: 'segment', a: O2, b: A, halfWidth: STROKES.link / 2, weight: LINK_BAR_WEIGHT, owner: 'r2' },
   ];
 }
 
