@@ -129,7 +129,7 @@ export const messagesEn: Messages = {
         return `${name} must not be negative, got ${f.raw}.`;
       case 'tooSmall':
         return `${name}: ${f.raw} is too small (at least ${f.min}).`;
-      case 'tooLarge':
+      case 'outOfRange':
         return `${name}: ${f.raw} is out of range (${f.min} to ${f.max}).`;
     }
   },

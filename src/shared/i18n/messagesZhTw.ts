@@ -129,7 +129,7 @@ export const messagesZhTw: Messages = {
         return `${name} 不可為負數，目前為 ${f.raw}。`;
       case 'tooSmall':
         return `${name}：${f.raw} 太小（至少 ${f.min}）。`;
-      case 'tooLarge':
+      case 'outOfRange':
         return `${name}：${f.raw} 超出範圍（${f.min} 至 ${f.max}）。`;
     }
   },

@@ -14,7 +14,7 @@ export type FieldName =
   | 'muBandHi';
 
 /** Why a typed value was rejected. */
-export type FieldErrorKind = 'empty' | 'notNumber' | 'notPositive' | 'negative' | 'tooSmall' | 'tooLarge';
+export type FieldErrorKind = 'empty' | 'notNumber' | 'notPositive' | 'negative' | 'tooSmall' | 'outOfRange';
 
 /** A rejected value: the field, the text as typed, why, and the accepted range (field units). */
 export interface FieldError {
@@ -36,6 +36,8 @@ export interface FieldSpec {
   allowZero: boolean;
   /** Angles may be negative; lengths may not. */
   signed: boolean;
+  /** A field with a real range (speed 0.5 to 10): any value outside it, 0 and negatives too, is named out of range. */
+  bounded?: boolean;
 }
 
 /** Shortest and longest link length accepted, in the user's unit: the solver is scale-free; 1e308 is refused (squares of the sum overflow elsewhere). */
@@ -58,12 +60,12 @@ export const FIELD_SPECS: Record<FieldName, FieldSpec> = {
   theta2: { min: -ANGLE_ABS_MAX, max: ANGLE_ABS_MAX, allowZero: true, signed: true },
   couplerDistance: { min: 0, max: LENGTH_MAX, allowZero: true, signed: false },
   couplerAngle: { min: -ANGLE_ABS_MAX, max: ANGLE_ABS_MAX, allowZero: true, signed: true },
-  speed: { min: 0.5, max: 10, allowZero: false, signed: false },
+  speed: { min: 0.5, max: 10, allowZero: false, signed: false, bounded: true },
   omega2: { min: -OMEGA_ABS_MAX, max: OMEGA_ABS_MAX, allowZero: true, signed: true },
   alpha2: { min: -ALPHA_ABS_MAX, max: ALPHA_ABS_MAX, allowZero: true, signed: true },
   // Transmission angle band edges, degrees; lo < hi is checked where both are known (URL, controls).
-  muBandLo: { min: 0, max: 180, allowZero: true, signed: false },
-  muBandHi: { min: 0, max: 180, allowZero: true, signed: false },
+  muBandLo: { min: 0, max: 180, allowZero: true, signed: false, bounded: true },
+  muBandHi: { min: 0, max: 180, allowZero: true, signed: false, bounded: true },
 };
 
 const FULL_WIDTH = /[\uFF10-\uFF19\uFF0E\uFF0D\uFF0B\uFF45\uFF25]/g;
@@ -104,9 +106,10 @@ export function checkValue(field: FieldName, value: number, raw: string = String
     error: { field, raw, kind, min: spec.min, max: spec.max },
   });
   if (typeof value !== 'number' || Number.isNaN(value)) return fail('notNumber');
+  if (spec.bounded && !(value >= spec.min && value <= spec.max)) return fail('outOfRange');
   if (!spec.signed && value < 0) return fail('negative');
   if (!spec.allowZero && value === 0) return fail('notPositive');
-  if (value > spec.max || !Number.isFinite(value)) return fail('tooLarge');
-  if (value < spec.min) return fail(spec.signed ? 'tooLarge' : 'tooSmall');
+  if (value > spec.max || !Number.isFinite(value)) return fail('outOfRange');
+  if (value < spec.min) return fail(spec.signed ? 'outOfRange' : 'tooSmall');
   return { ok: true, value: value === 0 ? 0 : value };
 }

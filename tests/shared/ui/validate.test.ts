@@ -49,6 +49,11 @@ describe('parseField', () => {
     expect(parseField('couplerDistance', '0')).toEqual({ ok: true, value: 0 });
     expect(parseField('couplerDistance', '-1').ok).toBe(false);
   });
+  it('names the speed range for 0, a negative or a too-small speed, never "greater than 0"', () => {
+    for (const raw of ['0', '-1', '0.25', '11'])
+      expect(message('speed', raw), raw).toBe(`Speed: ${raw} is out of range (0.5 to 10).`);
+  });
+
   it('keeps the speed within 0.5 to 10 degrees per frame', () => {
     expect(parseField('speed', '10').ok).toBe(true);
     expect(parseField('speed', '11').ok).toBe(false);
