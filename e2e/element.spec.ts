@@ -120,3 +120,26 @@ test.describe('the <fourbar-lab> custom element in Traditional Chinese', () => {
     await expect(z.getByRole('button', { name: 'Play' })).toHaveCount(0);
   });
 });
+
+test.describe('the <fourbar-lab> custom element with a bad attribute', () => {
+  test('names the attribute in a notice that speaks of the element, not of a link', async ({ page }) => {
+    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
+      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
+    );
+    await page.route(PAGE, (route) =>
+      route.fulfill({
+        contentType: 'text/html',
+        body: `<!doctype html><html lang="en"><head><title>Week 3</title>
+<script src="./fourbar-lab.js"></script></head><body>
+<fourbar-lab id="bad" r3="abc" panels="controls"></fourbar-lab></body></html>`,
+      }),
+    );
+    await page.goto(PAGE);
+    const el = page.locator('#bad');
+    await expect(el.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+    await expect(el.getByTestId('url-notice')).toHaveText(
+      /^This element has an attribute value the simulator cannot use, so the default is shown instead: r3 = “abc”\./,
+    );
+    await expect(el.getByTestId('url-notice')).not.toContainText('link');
+  });
+});

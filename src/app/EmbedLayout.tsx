@@ -93,7 +93,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
       <FramePoseProvider state={state} playhead={playhead} ghostShown>
         <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
           <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
-          <UrlNotice ignored={initial.ignored} />
+          <UrlNotice ignored={initial.ignored} source={ownsPage ? 'link' : 'attributes'} />
           <main className="embed-main">
             <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
               <div className="embed-stage">

@@ -1,24 +1,27 @@
 import { useState } from 'react';
 import type { IgnoredParam } from '../shared/url/url';
+import type { IgnoredSource } from '../shared/url/ignoredNotice';
 import { ignoredNoticeText } from '../shared/url/ignoredNotice';
 import { useMessages } from '../shared/i18n/MessagesContext';
 
 /** Props of UrlNotice: the parameters the URL parser ignored (ParsedUrl.ignored). */
 export interface UrlNoticeProps {
   ignored: readonly IgnoredParam[];
+  /** Where the values came from: a link (default) or the custom element's attributes. */
+  source?: IgnoredSource;
 }
 
 /**
  * A dismissible notice naming the shared link's parameters that were ignored (bad or unknown values), so a
  * student knows the defaults are shown instead. Renders nothing when none was ignored or once dismissed.
  */
-export function UrlNotice({ ignored }: UrlNoticeProps) {
+export function UrlNotice({ ignored, source = 'link' }: UrlNoticeProps) {
   const t = useMessages();
   const [dismissed, setDismissed] = useState(false);
   if (dismissed || ignored.length === 0) return null;
   return (
     <div className="url-notice" role="status" data-testid="url-notice">
-      <p className="url-notice-text">{ignoredNoticeText(ignored, t)}</p>
+      <p className="url-notice-text">{ignoredNoticeText(ignored, t, source)}</p>
       <button
         type="button"
         className="icon-btn url-notice-dismiss"

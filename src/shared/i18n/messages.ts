@@ -245,6 +245,8 @@ export interface Messages {
   errorReset: string;
   /** Notice for a shared link with values that were ignored; list is already joined, count is how many. */
   urlIgnored: (list: string, count: number) => string;
+  /** The same notice for a <fourbar-lab> element, whose values come from its attributes, not a link. */
+  attributesIgnored: (list: string, count: number) => string;
   /** One ignored parameter in that list (key and value already shortened). */
   urlIgnoredParam: (key: string, value: string) => string;
   /** Separator between ignored parameters in the list. */

@@ -296,6 +296,10 @@ export const messagesEn: Messages = {
     count === 1
       ? `This link has a value the simulator cannot use, so the default is shown instead: ${list}.`
       : `This link has ${count} values the simulator cannot use, so the defaults are shown instead: ${list}.`,
+  attributesIgnored: (list, count) =>
+    count === 1
+      ? `This element has an attribute value the simulator cannot use, so the default is shown instead: ${list}.`
+      : `This element has ${count} attribute values the simulator cannot use, so the defaults are shown instead: ${list}.`,
   urlIgnoredParam: (key, value) => `${key} = “${value}”`,
   urlIgnoredSeparator: ', ',
   urlIgnoredMore: (count) => `and ${count} more`,

@@ -295,6 +295,10 @@ export const messagesZhTw: Messages = {
     count === 1
       ? `此連結有一個模擬器無法使用的值，已改用預設值：${list}。`
       : `此連結有 ${count} 個模擬器無法使用的值，已改用預設值：${list}。`,
+  attributesIgnored: (list, count) =>
+    count === 1
+      ? `此元素有一個模擬器無法使用的屬性值，已改用預設值：${list}。`
+      : `此元素有 ${count} 個模擬器無法使用的屬性值，已改用預設值：${list}。`,
   urlIgnoredParam: (key, value) => `${key} =「${value}」`,
   urlIgnoredSeparator: '、',
   urlIgnoredMore: (count) => `另有 ${count} 個`,

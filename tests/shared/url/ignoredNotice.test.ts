@@ -18,6 +18,16 @@ describe('ignoredNoticeText', () => {
     );
   });
 
+  it("says 'element' and 'attribute' for a <fourbar-lab>'s attributes, not 'link'", () => {
+    const { ignored } = parseUrl('r3=abc&r1=5', DEFAULT_STATE, quiet);
+    expect(ignoredNoticeText(ignored, messagesEn, 'attributes')).toBe(
+      'This element has an attribute value the simulator cannot use, so the default is shown instead: r3 = “abc”.',
+    );
+    expect(ignoredNoticeText(ignored, messagesZhTw, 'attributes')).toBe(
+      '此元素有一個模擬器無法使用的屬性值，已改用預設值：r3 =「abc」。',
+    );
+  });
+
   it('counts several and lists at most four, then how many more', () => {
     const { ignored } = parseUrl('r1=a&r2=b&r3=c&r4=d&t2=e&br=f', DEFAULT_STATE, quiet);
     const en = ignoredNoticeText(ignored, messagesEn);
