@@ -10,6 +10,7 @@ import {
   drawGridX,
   drawGridY,
   drawLegend,
+  legendBoxes,
   minus,
   prepareSvg,
   sameText,
@@ -348,8 +349,8 @@ function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: Frame): 
     .attr('stroke-width', 1);
 }
 
-/** Draws the x axis, its grid and the x rules (the rules follow the x scale). */
-function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => string, xMarks: readonly XMark[]): void {
+/** Draws the x axis and its grid. */
+function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => string): void {
   const { ih, x, xTicks } = frame;
   drawGridX(parts.gridX, ih, xTicks, x);
   parts.ax.attr('transform', `translate(0,${ih})`).call(
@@ -359,7 +360,6 @@ function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => strin
       .tickSizeOuter(0),
   );
   styleAxis(parts.ax);
-  drawXMarks(parts.marksG, xMarks, x, ih);
 }
 
 /** Draws the y axis and its grid. */
@@ -398,8 +398,8 @@ interface ChartState<D, M, T extends ChartTexts> {
   marker: M | null;
   xMarks: readonly XMark[];
   frame: Frame;
-  /** What the axes and legend were last drawn for: each is redrawn only when its key changes. */
-  keys: { x: string; y: string; legend: string };
+  /** What the axes, legend and x rules were last drawn for: each is redrawn only when its key changes. */
+  keys: { x: string; y: string; legend: string; marks: string };
 }
 
 /** Draws the x and y axes (and the clip to the plot), each only when its size, domain or ticks changed. */
@@ -408,7 +408,7 @@ function drawAxes<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec
   const { iw, ih, x, y, xTicks, yTicks } = frame;
   parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
   const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
-  if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame), st.xMarks);
+  if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame));
   const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
   if (yKey !== keys.y) drawYAxis(parts, frame, (spec.yTickFormat ?? plainFormat)(frame));
   Object.assign(keys, { x: xKey, y: yKey });
@@ -421,16 +421,38 @@ function drawData<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec
   if (parts.over) spec.over?.draw(parts.over, st.data, st.frame, parts.defs);
 }
 
-/** Draws the legend (the spec's items, or one per curve) when its labels, colours or faintness changed. */
+/** Where the legend starts in the SVG (CSS pixels): its first line sample's left end and the row's middle. */
+const LEGEND_AT = { x: 14, y: 33 } as const;
+
+/** The legend's entries: the spec's items, or one per curve. */
+function legendItems<D, M, T extends ChartTexts>(spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>) {
+  return spec.legend ? spec.legend(st.curves, st.text) : st.curves;
+}
+
+/**
+ * Draws the legend when its labels, colours or faintness changed, then the x rules when the x axis, the legend
+ * or the rules changed: their labels keep clear of the legend (xMarkBaselines).
+ */
 function drawLegendIfChanged<D, M, T extends ChartTexts>(
   parts: ChartParts,
   spec: ChartSpec<D, M, T>,
   st: ChartState<D, M, T>,
 ) {
-  const items = spec.legend ? spec.legend(st.curves, st.text) : st.curves;
+  const items = legendItems(spec, st);
   const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-  if (key !== st.keys.legend) drawLegend(parts.s, items, 14, 33);
+  if (key !== st.keys.legend) drawLegend(parts.s, items, LEGEND_AT.x, LEGEND_AT.y);
   st.keys.legend = key;
+  const marksKey = `${st.keys.x}\n${key}\n${st.xMarks.map((m) => `${m.xDeg}|${m.label}`).join('\n')}`;
+  if (marksKey === st.keys.marks) return;
+  st.keys.marks = marksKey;
+  const { left, top } = st.size.margins;
+  const avoid = legendBoxes(items, LEGEND_AT.x, LEGEND_AT.y).map((b) => ({
+    x0: b.x0 - left,
+    y0: b.y0 - top,
+    x1: b.x1 - left,
+    y1: b.y1 - top,
+  }));
+  drawXMarks(parts.marksG, st.xMarks, st.frame.x, st.frame.ih, avoid);
 }
 
 let clipCounter = 0;
@@ -456,7 +478,7 @@ export function createChart<D, M, T extends ChartTexts>(
     marker: null,
     xMarks: options.xMarks ?? [],
     frame: chartFrame(spec, empty, size),
-    keys: { x: '', y: '', legend: '' },
+    keys: { x: '', y: '', legend: '', marks: '' },
   };
   const laidOut = () => st.size.width > 0 && st.size.height > 0;
   // The id e2e reads on the rate chart's clipped lines.
@@ -508,7 +530,7 @@ export function createChart<D, M, T extends ChartTexts>(
     },
     setXMarks(next) {
       st.xMarks = next;
-      if (laidOut()) drawXMarks(parts.marksG, st.xMarks, st.frame.x, st.frame.ih);
+      if (laidOut()) drawLegendIfChanged(parts, spec, st);
     },
     refresh() {
       if (!laidOut()) return;

@@ -82,15 +82,44 @@ export function estimateTextWidth(text: string, fontSize: number = CHART_STYLE.f
   return w;
 }
 
-/** Draws (or updates) a one-row legend starting at (x, y) in the SVG: line sample then label, left to right. */
-export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y: number): void {
-  const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
+/** A box in CSS pixels: left, top, right, bottom. */
+export interface TextBox {
+  x0: number;
+  y0: number;
+  x1: number;
+  y1: number;
+}
+
+/** Left edge of each legend entry relative to the legend's origin: line sample, gap, label, spacing. */
+function legendOffsets(items: readonly LegendItem[]): number[] {
   const offsets: number[] = [];
   let cx = 0;
   for (const it of items) {
     offsets.push(cx);
     cx += 22 + estimateTextWidth(it.label) + 14;
   }
+  return offsets;
+}
+
+/**
+ * The boxes (CSS pixels, SVG coordinates) a one-row legend at (x, y) covers, one per entry: its line sample and
+ * label, from a font-size above the label's baseline (y + 4) to a quarter of it below (descenders).
+ */
+export function legendBoxes(items: readonly LegendItem[], x: number, y: number): TextBox[] {
+  const offsets = legendOffsets(items);
+  const f = CHART_STYLE.fontSize;
+  return items.map((it, i) => ({
+    x0: x + offsets[i],
+    y0: y + 4 - f,
+    x1: x + offsets[i] + 21 + estimateTextWidth(it.label),
+    y1: y + 4 + f / 4,
+  }));
+}
+
+/** Draws (or updates) a one-row legend starting at (x, y) in the SVG: line sample then label, left to right. */
+export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y: number): void {
+  const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
+  const offsets = legendOffsets(items);
   const item = legend
     .selectAll<SVGGElement, LegendItem>('g.item')
     .data(items)
