@@ -12,6 +12,10 @@ import type { SolverAction, SolverState } from './slices/solverSlice';
 import { DEFAULT_SOLVER, solverReducer } from './slices/solverSlice';
 import type { SynPathAction, SynPathState } from './slices/synthesisSlice';
 import { DEFAULT_SYN_PATH, synPathReducer } from './slices/synthesisSlice';
+import type { SynMotionAction, SynMotionState } from './slices/synMotionSlice';
+import { DEFAULT_SYN_MOTION, synMotionReducer } from './slices/synMotionSlice';
+import type { SynFunctionAction, SynFunctionState } from './slices/synFunctionSlice';
+import { DEFAULT_SYN_FUNCTION, synFunctionReducer } from './slices/synFunctionSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -45,6 +49,10 @@ export interface AppState {
   lab: LabState;
   /** The synthesis page's mode and its Path mode's task. */
   synPath: SynPathState;
+  /** The synthesis page's Motion mode: poses and the pivots or dyads chosen. */
+  synMotion: SynMotionState;
+  /** The synthesis page's Function mode: y = f(x), its ranges and precision points. */
+  synFunction: SynFunctionState;
 }
 
 /** The report's linkage at 45 degrees on the open branch, with every slice at its default. */
@@ -56,6 +64,8 @@ export const DEFAULT_STATE: AppState = {
   shell: DEFAULT_SHELL,
   lab: DEFAULT_LAB,
   synPath: DEFAULT_SYN_PATH,
+  synMotion: DEFAULT_SYN_MOTION,
+  synFunction: DEFAULT_SYN_FUNCTION,
 };
 
 /** Actions that more than one slice handles. */
@@ -68,7 +78,16 @@ export type SharedAction =
 
 /** Every state change the UI can make. */
 export type Action =
-  DesignAction | MotionAction | DisplayAction | SolverAction | ShellAction | LabAction | SynPathAction | SharedAction;
+  | DesignAction
+  | MotionAction
+  | DisplayAction
+  | SolverAction
+  | ShellAction
+  | LabAction
+  | SynPathAction
+  | SynMotionAction
+  | SynFunctionAction
+  | SharedAction;
 
 /**
  * The app's reducer: each slice's reducer sees every action (Redux's combineReducers); pure, and returns the
@@ -89,6 +108,8 @@ export function reducer(state: AppState, action: Action): AppState {
     shell: shellReducer(state.shell, action),
     lab: labReducer(state.lab, action),
     synPath: synPathReducer(state.synPath, action),
+    synMotion: synMotionReducer(state.synMotion, action),
+    synFunction: synFunctionReducer(state.synFunction, action),
   };
   const changed = (Object.keys(next) as (keyof AppState)[]).some((k) => next[k] !== state[k]);
   return changed ? next : state;

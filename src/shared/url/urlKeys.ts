@@ -4,6 +4,8 @@ import { LAB_URL_KEYS } from '../state/slices/labSlice';
 import { MOTION_URL_KEYS } from '../state/slices/motionSlice';
 import { SHELL_URL_KEYS } from '../state/slices/shellSlice';
 import { SOLVER_URL_KEYS } from '../state/slices/solverSlice';
+import { SYN_FUNCTION_URL_KEYS } from '../state/slices/synFunctionSlice';
+import { SYN_MOTION_URL_KEYS } from '../state/slices/synMotionSlice';
 import { SYN_PATH_URL_KEYS } from '../state/slices/synthesisSlice';
 import { DEFAULT_STATE } from '../state/appState';
 import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
@@ -34,6 +36,8 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   ...SHELL_URL_KEYS,
   ...LAB_URL_KEYS,
   ...SYN_PATH_URL_KEYS,
+  ...SYN_MOTION_URL_KEYS,
+  ...SYN_FUNCTION_URL_KEYS,
   ...EMBED_URL_KEYS,
 ];
 

@@ -1,0 +1,256 @@
+import '../motion/synthesisModes.css';
+import { Suspense, useId, useMemo, useState } from 'react';
+import type { Dispatch } from 'react';
+import { degToRad, radToDeg } from '../../../solver';
+import type { Action, AppState } from '../../../shared/state/appState';
+import type { SynFunctionState } from '../../../shared/state/slices/synFunctionSlice';
+import { useMessages } from '../../../shared/i18n/MessagesContext';
+import type { Messages } from '../../../shared/i18n/messages';
+import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
+import type { XYChartData } from '../../../shared/charts/xyChart';
+import { COLORS } from '../../../shared/theme/tokens';
+import { formatDeg, formatNumber, formatSci } from '../../../shared/format';
+import type { OpenDesign } from '../openDesign';
+import { functionMessagesFor } from './functionMessages';
+import type { FunctionMessages } from './functionMessages';
+import { useExpressionParser } from './useExpressionParser';
+import type { FunctionDesign } from './functionSolve';
+import { generatedAt, solveFunction } from './functionSolve';
+import { expressionProblemText, functionProblemText } from './expressionText';
+import { ExpressionField } from './ExpressionField';
+import { FunctionFields } from './FunctionFields';
+import { FunctionCanvas } from './FunctionCanvas';
+import { StructuralErrorChart } from './StructuralErrorChart';
+
+/** Props of FunctionMode (as the synthesis page renders every mode). */
+export interface FunctionModeProps {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+  /** "Open in simulator" with the design (no markers: a function generator has no points in the plane). */
+  onOpen: (design: OpenDesign) => void;
+}
+
+/** Seconds the animation takes from x0 to x1 (then it comes back). */
+const SWEEP_SECONDS = 3;
+
+/** Whether the person asked for less motion: then the linkage waits for Play. */
+const reducedMotion = () =>
+  typeof window !== 'undefined' && window.matchMedia?.('(prefers-reduced-motion: reduce)').matches === true;
+
+/** The design's lengths, type, largest error and defects in words. */
+function FunctionFacts({ fd, fm, t }: { fd: FunctionDesign; fm: FunctionMessages; t: Messages }) {
+  const { links, branch, maxError, defects } = fd.result;
+  const f = (v: number) => formatNumber(v, 5);
+  const percent = (100 * maxError) / Math.abs(fd.y1 - fd.y0);
+  return (
+    <div className="synmode-facts" data-testid="function-facts">
+      <p className="synmode-links">{fm.links(f(links.r1), f(links.r2), f(links.r3), f(links.r4))}</p>
+      <p>{fm.typeLine(t.types[fd.type])}</p>
+      <p>{fm.branchLine(branch === 'open' ? t.branchOpen : t.branchCrossed)}</p>
+      <p data-testid="function-max-error" data-value={maxError}>
+        {fm.maxError(formatNumber(maxError, 3), formatNumber(percent, 3))}
+      </p>
+      <h4 className="synmode-subtitle">{fm.defectsTitle}</h4>
+      {defects.length ? (
+        <ul className="synmode-defects" data-testid="function-defects">
+          {defects.map((d) => (
+            <li key={d} data-defect={d}>
+              {fm.defectWords[d]}
+            </li>
+          ))}
+        </ul>
+      ) : (
+        <p className="synmode-ok" data-testid="function-defects">
+          {fm.noDefects}
+        </p>
+      )}
+    </div>
+  );
+}
+
+/** The precision points (精確點): x, the angles they prescribe and the structural error there (≈ 0 for three). */
+function PrecisionTable({ fd, fm }: { fd: FunctionDesign; fm: FunctionMessages }) {
+  return (
+    <table className="synmode-table" data-testid="precision-table">
+      <caption className="sr-only">{fm.precisionCaption}</caption>
+      <thead>
+        <tr>
+          <th scope="col">{fm.columnX}</th>
+          <th scope="col">{fm.columnTheta2}</th>
+          <th scope="col">{fm.columnTheta4}</th>
+          <th scope="col">{fm.columnError}</th>
+        </tr>
+      </thead>
+      <tbody>
+        {fd.precision.map((p, i) => (
+          <tr key={i} data-x={p.x} data-error={p.error}>
+            <td>{formatNumber(p.x, 6)}</td>
+            <td>{formatDeg(radToDeg(p.theta2), 3)}</td>
+            <td>{formatDeg(radToDeg(p.theta4), 3)}</td>
+            <td>{formatSci(p.error, 2)}</td>
+          </tr>
+        ))}
+      </tbody>
+    </table>
+  );
+}
+
+/** The linkage moving through its range, ping-pong, with Play/Pause and an x slider (which pauses it). */
+function useSweep(s: SynFunctionState, active: boolean) {
+  const [playing, setPlaying] = useState(() => !reducedMotion());
+  const [phase, setPhase] = useState(0);
+  useAnimationFrame(active && playing, (dt) => setPhase((u) => (u + dt / SWEEP_SECONDS) % 2));
+  const [x0, x1] = s.xRange;
+  const along = phase <= 1 ? phase : 2 - phase;
+  return {
+    playing,
+    setPlaying,
+    x: x0 + (x1 - x0) * along,
+    setX: (x: number) => {
+      setPlaying(false);
+      setPhase(Math.min(1, Math.max(0, (x - x0) / (x1 - x0))));
+    },
+  };
+}
+
+/** Everything that needs the parser: it suspends until math.js has loaded. */
+function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
+  const t = useMessages();
+  const fm = functionMessagesFor(state.shell.locale);
+  const s = state.synFunction;
+  const parse = useExpressionParser();
+  const sliderId = useId();
+  const parsed = useMemo(() => (parse ? parse(s.expression) : null), [parse, s.expression]);
+  const outcome = useMemo(() => (parsed?.ok ? solveFunction(s, parsed.f) : null), [parsed, s]);
+  const fd = outcome?.ok ? outcome.value : null;
+  const sweep = useSweep(s, fd !== null);
+  const at = fd && parsed?.ok ? generatedAt(s, fd, parsed.f, sweep.x) : null;
+  const chart = useMemo((): XYChartData => {
+    if (!fd) return { series: [] };
+    return {
+      series: [
+        {
+          label: fm.errorSeries,
+          color: COLORS.residual,
+          x: fd.result.structuralError.map((e) => e.x),
+          y: fd.result.structuralError.map((e) => e.error),
+        },
+        {
+          label: fm.precisionSeries,
+          color: COLORS.marker,
+          x: fd.precision.map((p) => p.x),
+          y: fd.precision.map((p) => p.error),
+          line: false,
+          dots: true,
+        },
+      ],
+    };
+  }, [fd, fm]);
+  if (!parse) return <p className="note note-error">{fm.parserFailed}</p>;
+  const problem = !parsed
+    ? null
+    : !parsed.ok
+      ? expressionProblemText(fm, s.expression, parsed.problem)
+      : outcome && !outcome.ok
+        ? functionProblemText(fm, s.expression, outcome.problem)
+        : null;
+  const fmt = (v: number) => formatNumber(v, 5);
+
+  return (
+    <div className="synmode-mode synmode-function" data-testid="function-mode" data-ready={fd ? 'true' : 'false'}>
+      <div className="synmode-function-main">
+        <section className="card synmode-canvas-card synmode-function-canvas" aria-label={fm.canvasLabel}>
+          {fd && at ? (
+            <FunctionCanvas
+              picture={{
+                fd,
+                theta2Range: [degToRad(s.theta2RangeDeg[0]), degToRad(s.theta2RangeDeg[1])],
+                theta4Range: [degToRad(s.theta4RangeDeg[0]), degToRad(s.theta4RangeDeg[1])],
+                theta2: at.theta2,
+              }}
+              labels={{ canvas: fm.canvasLabel, zoomIn: t.zoomIn, zoomOut: t.zoomOut, resetView: t.resetView }}
+            />
+          ) : null}
+        </section>
+        {fd && at ? (
+          <div className="synmode-sweep">
+            <button type="button" className="btn btn-small" onClick={() => sweep.setPlaying(!sweep.playing)}>
+              {sweep.playing ? fm.pause : fm.play}
+            </button>
+            <label htmlFor={sliderId}>{fm.xSlider}</label>
+            <input
+              id={sliderId}
+              type="range"
+              min={Math.min(...s.xRange)}
+              max={Math.max(...s.xRange)}
+              step={Math.abs(s.xRange[1] - s.xRange[0]) / 200}
+              value={sweep.x}
+              onChange={(e) => sweep.setX(Number(e.target.value))}
+            />
+            <span className="synmode-readout">{fm.readout(fmt(sweep.x), fmt(at.want), fmt(at.got))}</span>
+          </div>
+        ) : null}
+        {fd && at ? (
+          <section className="card synmode-chart-card" aria-label={fm.errorChartTitle}>
+            <StructuralErrorChart
+              data={chart}
+              marker={{ x: sweep.x, dots: [{ y: at.got - at.want, color: COLORS.residual }] }}
+              texts={{ title: fm.errorChartTitle, xLabel: fm.errorChartX, yLabel: fm.errorChartY }}
+            />
+          </section>
+        ) : null}
+      </div>
+      <section className="card synmode-side" aria-label={fm.expressionLabel}>
+        <p className="note">{fm.intro}</p>
+        <ExpressionField
+          value={s.expression}
+          parse={parse}
+          onCommit={(expression) => dispatch({ type: 'setSynFunction', patch: { expression } })}
+          fm={fm}
+        />
+        <FunctionFields s={s} dispatch={dispatch} fm={fm} />
+        {problem ? (
+          <p className="note note-error" role="status" data-testid="function-problem">
+            {problem}
+          </p>
+        ) : null}
+        {fd ? (
+          <div className="synmode-design">
+            <h3 className="section-title">{fm.designTitle}</h3>
+            <FunctionFacts fd={fd} fm={fm} t={t} />
+            <h4 className="synmode-subtitle">{fm.precisionTitle}</h4>
+            <PrecisionTable fd={fd} fm={fm} />
+            <button
+              type="button"
+              className="btn btn-primary"
+              onClick={() => onOpen({ design: fd.design, markers: [], theta2: degToRad(s.theta2RangeDeg[0]) })}
+            >
+              {fm.openInSimulator}
+            </button>
+          </div>
+        ) : null}
+      </section>
+    </div>
+  );
+}
+
+/**
+ * Function generation (函數生成): y = f(x) typed as an expression (math.js, loaded on first use, never evaluating
+ * JavaScript), the x, θ2 and θ4 ranges and the precision points; the function generator moving through its range,
+ * its structural error (結構誤差) against x with the precision points (精確點) marked, its defects in words, and
+ * Open in simulator.
+ */
+export function FunctionMode(props: FunctionModeProps) {
+  const fm = functionMessagesFor(props.state.shell.locale);
+  return (
+    <Suspense
+      fallback={
+        <p className="note" role="status" data-testid="function-loading">
+          {fm.loadingParser}
+        </p>
+      }
+    >
+      <FunctionBody {...props} />
+    </Suspense>
+  );
+}

@@ -1,0 +1,286 @@
+/**
+ * What the Motion mode shows for its poses: the synthesis module's method for their count, run on the main thread
+ * (each is closed form: microseconds to a tenth of a millisecond, docs/synthesis.md), and every expected failure
+ * turned into a problem code the page says in words.
+ */
+import { PI, angleDiff, classify, degToRad } from '../../../solver';
+import type { LinkageType, Point } from '../../../solver';
+import {
+  burmesterCurves,
+  burmesterFourBars,
+  burmesterPoints,
+  motionDesign,
+  toFrame,
+  toPlane,
+  twoPositionRocker,
+} from '../../../synthesis';
+import type { BurmesterPair, MotionDefect, PlacedFourBar, Pose, TwoPositionRocker } from '../../../synthesis';
+import type { PivotChoice, PoseDeg, SynMotionState } from '../../../shared/state/slices/synMotionSlice';
+
+/** A design the mode offers: the placed four-bar, θ2 at each pose (radians), its defects and its type. */
+export interface MotionCandidate {
+  design: PlacedFourBar;
+  theta2: number[];
+  defects: MotionDefect[];
+  type: LinkageType;
+  /** Five poses: the Burmester points it is made of (crank's, rocker's; 0-based). */
+  pairs?: [number, number];
+}
+
+/** Why a method has no design (said in words by the page). */
+export type MotionProblem =
+  | { code: 'collinear'; pivot: 'A' | 'B' | 'O2' | 'O4' }
+  | { code: 'coincident' }
+  | { code: 'degenerate' }
+  | { code: 'noRotation' }
+  | { code: 'halfTurn' }
+  | { code: 'atPole' }
+  | { code: 'noCrankPivot'; ground: number; rocker: number }
+  | { code: 'noBurmester' }
+  | { code: 'pickTwo'; picked: number };
+
+/** One pivot's construction: its three positions, and the centre of the circle through them (the pivot found). */
+export interface PivotConstruction {
+  points: [Point, Point, Point];
+  centre: Point;
+}
+
+/** Two poses: the pole they turn about (the rocker pivot O4) and the crank-rockers that swing it between them. */
+export interface TwoPoseOutcome {
+  count: 2;
+  pole: Point | null;
+  rocker: number;
+  ground: number;
+  results: TwoPositionRocker[];
+  chosen: MotionCandidate | null;
+  problem: MotionProblem | null;
+}
+
+/** Three poses: the two constructions (in the plane at pose 1) and the design. */
+export interface ThreePoseOutcome {
+  count: 3;
+  construction: PivotConstruction[];
+  chosen: MotionCandidate | null;
+  problem: MotionProblem | null;
+}
+
+/** Four poses: the centre-point and circle-point curves (the circle points in the plane at pose 1), the dyads picked. */
+export interface FourPoseOutcome {
+  count: 4;
+  curves: BurmesterPair[][];
+  dyads: BurmesterPair[];
+  chosen: MotionCandidate | null;
+  problem: MotionProblem | null;
+}
+
+/** Five poses: the Burmester points and the four-bars they make. */
+export interface FivePoseOutcome {
+  count: 5;
+  points: BurmesterPair[];
+  fourBars: MotionCandidate[];
+  chosen: MotionCandidate | null;
+  problem: MotionProblem | null;
+}
+
+/** What the Motion mode shows for its poses. */
+export type MotionOutcome = TwoPoseOutcome | ThreePoseOutcome | FourPoseOutcome | FivePoseOutcome;
+
+/** Samples of the centre-point curve per closed branch: about a pixel apart on a phone-sized canvas. */
+export const CURVE_SAMPLES = 600;
+
+/** The synthesis module's pose (radians) of a page pose (degrees). */
+export function toPose(p: PoseDeg): Pose {
+  return { x: p.x, y: p.y, angle: degToRad(p.angleDeg) };
+}
+
+const candidate = (design: PlacedFourBar, theta2: number[], defects: MotionDefect[]): MotionCandidate => ({
+  design,
+  theta2,
+  defects,
+  type: classify(design.links).type,
+});
+
+/** Whether three points have a circle through them (not collinear, no two coinciding), to the solver's own test. */
+function circleThrough(a: Point, b: Point, c: Point): boolean {
+  const bx = b.x - a.x;
+  const by = b.y - a.y;
+  const cx = c.x - a.x;
+  const cy = c.y - a.y;
+  // As circumcentre in src/synthesis/poseFrame.ts: twice the signed area against the longest side squared.
+  const d = 2 * (bx * cy - by * cx);
+  return Math.abs(d) > 1e-12 * Math.max(bx * bx + by * by, cx * cx + cy * cy, (bx - cx) ** 2 + (by - cy) ** 2);
+}
+
+/** The circle through three points (assumed to exist), computed relative to the first. */
+function centreOf([a, b, c]: [Point, Point, Point]): Point {
+  const bx = b.x - a.x;
+  const by = b.y - a.y;
+  const cx = c.x - a.x;
+  const cy = c.y - a.y;
+  const d = 2 * (bx * cy - by * cx);
+  const b2 = bx * bx + by * by;
+  const c2 = cx * cx + cy * cy;
+  return { x: a.x + (cy * b2 - by * c2) / d, y: a.y + (bx * c2 - cx * b2) / d };
+}
+
+/**
+ * The pivots a three-pose construction draws, in the plane at pose 1. Moving pivots: each one's three positions
+ * in the plane, whose circle's centre is its fixed pivot. Fixed pivots (kinematic inversion): each one's three
+ * positions seen from the coupler, carried to the plane by pose 1, whose circle's centre is its moving pivot at pose 1.
+ */
+export function threePoseConstruction(
+  poses: readonly Pose[],
+  choice: PivotChoice,
+  pivots: readonly [Point, Point],
+): { construction: PivotConstruction[]; problem: MotionProblem | null } {
+  const names = choice === 'moving' ? (['A', 'B'] as const) : (['O2', 'O4'] as const);
+  const construction: PivotConstruction[] = [];
+  for (let k = 0; k < 2; k++) {
+    const q = pivots[k];
+    const points = poses.map((p) => (choice === 'moving' ? toPlane(p, q) : toPlane(poses[0], toFrame(p, q)))) as [
+      Point,
+      Point,
+      Point,
+    ];
+    if (!circleThrough(...points)) return { construction, problem: { code: 'collinear', pivot: names[k] } };
+    construction.push({ points, centre: centreOf(points) });
+  }
+  return { construction, problem: null };
+}
+
+/** Three poses: the construction and the four-bar (threePositionSynthesis's result, built from the construction). */
+function threePoses(poses: Pose[], s: SynMotionState): ThreePoseOutcome {
+  const { construction, problem } = threePoseConstruction(poses, s.pivotChoice, s.pivots);
+  if (problem) return { count: 3, construction, chosen: null, problem };
+  const [c0, c1] = construction;
+  // Moving: the centres are O2, O4. Fixed: the centres are A, B at pose 1, taken into the coupler frame.
+  const fixed: [Point, Point] = s.pivotChoice === 'moving' ? [c0.centre, c1.centre] : [s.pivots[0], s.pivots[1]];
+  const moving: [Point, Point] =
+    s.pivotChoice === 'moving'
+      ? [s.pivots[0], s.pivots[1]]
+      : [toFrame(poses[0], c0.centre), toFrame(poses[0], c1.centre)];
+  try {
+    const d = motionDesign(poses, fixed, moving);
+    return { count: 3, construction, chosen: candidate(d.design, d.theta2, d.defects), problem: null };
+  } catch {
+    return { count: 3, construction, chosen: null, problem: { code: 'coincident' } };
+  }
+}
+
+/** The dyad of the sampled curves nearest to a picked point (by its centre). */
+export function nearestDyad(curves: readonly BurmesterPair[][], at: Point): BurmesterPair | null {
+  let best: BurmesterPair | null = null;
+  let bestD = Infinity;
+  for (const curve of curves) {
+    for (const pair of curve) {
+      const d = Math.hypot(pair.center.x - at.x, pair.center.y - at.y);
+      if (d < bestD) {
+        bestD = d;
+        best = pair;
+      }
+    }
+  }
+  return best;
+}
+
+/** Four poses: the curves, the dyads nearest the picks, and the four-bar of two dyads. */
+function fourPoses(poses: Pose[], s: SynMotionState): FourPoseOutcome {
+  let curves: BurmesterPair[][];
+  try {
+    curves = burmesterCurves(poses, { samples: CURVE_SAMPLES });
+  } catch {
+    return { count: 4, curves: [], dyads: [], chosen: null, problem: { code: 'degenerate' } };
+  }
+  const dyads = s.dyadPicks.map((p) => nearestDyad(curves, p)).filter((d): d is BurmesterPair => d !== null);
+  if (dyads.length < 2)
+    return { count: 4, curves, dyads, chosen: null, problem: { code: 'pickTwo', picked: dyads.length } };
+  const [bar] = burmesterFourBars(poses, dyads);
+  if (!bar) return { count: 4, curves, dyads, chosen: null, problem: { code: 'coincident' } };
+  return { count: 4, curves, dyads, chosen: candidate(bar.design, bar.theta2, bar.defects), problem: null };
+}
+
+/** Five poses: the Burmester points and their four-bars, the chosen one (clamped to the list). */
+function fivePoses(poses: Pose[], s: SynMotionState): FivePoseOutcome {
+  let points: BurmesterPair[];
+  try {
+    points = burmesterPoints(poses);
+  } catch {
+    return { count: 5, points: [], fourBars: [], chosen: null, problem: { code: 'degenerate' } };
+  }
+  const fourBars = burmesterFourBars(poses, points).map((b) => ({
+    ...candidate(b.design, b.theta2, b.defects),
+    pairs: b.pairs,
+  }));
+  if (!fourBars.length) return { count: 5, points, fourBars, chosen: null, problem: { code: 'noBurmester' } };
+  return { count: 5, points, fourBars, chosen: fourBars[Math.min(s.choice, fourBars.length - 1)], problem: null };
+}
+
+/**
+ * The pole of two poses: the one point the displacement from pose 1 to pose 2 leaves in place, so the body turns
+ * about it; c = (P2 − e^{iΔ} P1) / (1 − e^{iΔ}), Δ the turn wrapped to (−π, π]. Null without a turn.
+ */
+export function rotationPole(a: Pose, b: Pose): { pole: Point; turn: number } | null {
+  const turn = angleDiff(b.angle, a.angle);
+  if (!(Math.abs(turn) > 1e-9)) return null;
+  const c = Math.cos(turn);
+  const s = Math.sin(turn);
+  // Numerator and denominator as complex numbers; 1 − e^{iΔ} = (2 sin²(Δ/2), −sin Δ) without cancellation.
+  const nx = b.x - (c * a.x - s * a.y);
+  const ny = b.y - (s * a.x + c * a.y);
+  const h = Math.sin(turn / 2);
+  const dx = 2 * h * h;
+  const dy = -s;
+  const d2 = dx * dx + dy * dy;
+  return { pole: { x: (nx * dx + ny * dy) / d2, y: (ny * dx - nx * dy) / d2 }, turn };
+}
+
+/** Two poses: the body is a rocker turning about the poses' pole, driven between them by a crank (Norton ch. 5). */
+function twoPoses(poses: Pose[], s: SynMotionState): TwoPoseOutcome {
+  const none = { results: [], chosen: null };
+  const r = rotationPole(poses[0], poses[1]);
+  if (!r) return { count: 2, pole: null, rocker: 0, ground: 0, ...none, problem: { code: 'noRotation' } };
+  const { pole, turn } = r;
+  const rocker = Math.hypot(poses[0].x - pole.x, poses[0].y - pole.y);
+  const ground = s.groundLength ?? 2 * rocker;
+  if (!(Math.abs(turn) < PI - 1e-9)) return { count: 2, pole, rocker, ground, ...none, problem: { code: 'halfTurn' } };
+  if (!(rocker > 1e-12 * Math.hypot(pole.x, pole.y, 1))) {
+    return { count: 2, pole, rocker, ground, ...none, problem: { code: 'atPole' } };
+  }
+  const results = twoPositionRocker({
+    O4: pole,
+    rocker,
+    startAngle: Math.atan2(poses[0].y - pole.y, poses[0].x - pole.x),
+    swing: turn,
+    ground,
+    timeRatio: s.timeRatio,
+  });
+  if (!results.length) {
+    return { count: 2, pole, rocker, ground, results, chosen: null, problem: { code: 'noCrankPivot', ground, rocker } };
+  }
+  const pick = results[Math.min(s.choice, results.length - 1)];
+  // The rocker's two positions are its dead centres: the crank reaches them in order by construction.
+  return {
+    count: 2,
+    pole,
+    rocker,
+    ground,
+    results,
+    chosen: candidate(pick.design, [...pick.theta2], []),
+    problem: null,
+  };
+}
+
+/** The Motion mode's outcome for the slice's poses and choices. */
+export function solveMotion(s: SynMotionState): MotionOutcome {
+  const poses = s.poses.map(toPose);
+  switch (poses.length) {
+    case 2:
+      return twoPoses(poses, s);
+    case 3:
+      return threePoses(poses, s);
+    case 4:
+      return fourPoses(poses, s);
+    default:
+      return fivePoses(poses, s);
+  }
+}
