@@ -147,7 +147,7 @@ describe('serializeState and parseUrl', () => {
     // Design, motion, display, solver, shell, lab, then the embed-only keys.
     expect(URL_KEYS.map((k) => k.name).join(' ')).toBe(
       'r1 r2 r3 r4 br pd pa ox oy og t2 play spd dir w2 a2 grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
-        'nr n m tol lang page lstep syn tg tm ts tt bl bc bp in sd panels lock',
+        'nr n m tol lang page lstep syn tg tm ts tt bl bc bp in sd ps pc pv dy mc mg mq fx xr t2r t4r np panels lock',
     );
   });
 
@@ -356,6 +356,30 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['in', 'rocker', false],
   ['sd', '7', true],
   ['sd', '0', false],
+  ['ps', '0,0,0;1,2,45', true],
+  ['ps', '0,0,0', false],
+  ['pc', 'fixed', true],
+  ['pc', 'both', false],
+  ['pv', '0,1;2,3', true],
+  ['pv', '0,1', false],
+  ['dy', '1,2', true],
+  ['dy', '1,2;3,4;5,6', false],
+  ['mc', '3', true],
+  ['mc', '9', false],
+  ['mg', 'auto', true],
+  ['mg', '0', false],
+  ['mq', '1.5', true],
+  ['mq', '0.9', false],
+  ['fx', 'sin(x) + 1', true],
+  ['fx', 'alert("x")', false],
+  ['xr', '-1,1', true],
+  ['xr', '1,1', false],
+  ['t2r', '0,180', true],
+  ['t2r', '0,720', false],
+  ['t4r', '90,-90', true],
+  ['t4r', '0', false],
+  ['np', '7', true],
+  ['np', '2', false],
 ];
 
 describe('parseUrl range checks', () => {
