@@ -77,4 +77,15 @@ test.describe('the offline single file', () => {
     await expect(frame.getByRole('img', { name: /^Linkage view\./ })).toBeVisible();
     await expect(frame.getByText(/main thread/)).toHaveCount(0);
   });
+  test('from file:// says its links work only on this computer and offers no embed code', async ({ page }) => {
+    await page.goto(`file://${SINGLE}?r3=4.5`);
+    await waitReady(page);
+    await expect(page.getByTestId('offline-share')).toContainText('This is the offline file');
+    await expect(page.getByRole('button', { name: 'Copy embed code' })).toHaveCount(0);
+    await expect(page.getByText('Embed generator: size, panels, locks, preview')).toHaveCount(0);
+    await page.getByRole('button', { name: 'Copy link (this computer only)' }).click();
+    // The clipboard may be refused in a headless file page: either way the link is shown to copy by hand.
+    const link = await page.getByRole('textbox', { name: 'Share and embed' }).inputValue();
+    expect(link).toMatch(/^file:\/\/.*fourbar-lab\.html\?r1=6&r2=2&r3=4\.5&/);
+  });
 });

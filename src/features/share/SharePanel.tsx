@@ -15,6 +15,13 @@ import { ShareText } from './ShareText';
 export interface SharePanelProps {
   /** The latest committed state; read on click, so the panel does not re-render while the state changes. */
   stateRef: RefObject<AppState>;
+  /** The page's own address; default window.location.href (a file: address is the offline copy). */
+  pageHref?: string;
+}
+
+/** Whether the app runs as a file on this computer (the offline single file): its links only work here. */
+export function isOfflineFile(href: string): boolean {
+  return href.startsWith('file:');
 }
 
 // The generator's controls, preview and code load on first open: the app's first load does not carry them.
@@ -42,7 +49,7 @@ function useCopy() {
   return { status, shown, copy };
 }
 
-function SharePanelImpl({ stateRef }: SharePanelProps) {
+function SharePanelImpl({ stateRef, pageHref = window.location.href }: SharePanelProps) {
   const t = useMessages();
   const [embed, setEmbed] = useState<EmbedOptions>(DEFAULT_EMBED);
   const [presetId, setPresetId] = useState<EmbedPresetId>(DEFAULT_EMBED_PRESET.id);
@@ -67,6 +74,25 @@ function SharePanelImpl({ stateRef }: SharePanelProps) {
     change({ ...embed, panels: toggled(EMBED_PANELS, embed.panels, p, on) });
   const toggleLock = (p: LockableParam, on: boolean) =>
     change({ ...embed, locked: toggled(LOCKABLE_PARAMS, embed.locked, p, on) });
+
+  // The offline file has no embed page beside it and no address anyone else can open: say so, offer no embed.
+  if (isOfflineFile(pageHref))
+    return (
+      <div className="share-panel">
+        <p className="note note-warning" data-testid="offline-share">
+          {t.offlineShare}
+        </p>
+        <div className="share-buttons">
+          <button type="button" className="btn btn-small" onClick={() => void copy(linkHref())}>
+            {t.copyLocalLink}
+          </button>
+        </div>
+        <p className="status-line" role="status" aria-live="polite">
+          {status}
+        </p>
+        {shown ? <ShareText value={shown} label={t.sectionShare} rows={3} /> : null}
+      </div>
+    );
 
   return (
     <div className="share-panel">

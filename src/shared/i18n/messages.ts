@@ -246,6 +246,10 @@ export interface Messages {
   /** Notice for a shared link with values that were ignored; list is already joined, count is how many. */
   urlIgnored: (list: string, count: number) => string;
   /** The same notice for a <fourbar-lab> element, whose values come from its attributes, not a link. */
+  /** The Share panel of the offline file (file:): why its links and embed code cannot work elsewhere. */
+  offlineShare: string;
+  /** Its one button: a link to this design in this file, on this computer. */
+  copyLocalLink: string;
   attributesIgnored: (list: string, count: number) => string;
   /** One ignored parameter in that list (key and value already shortened). */
   urlIgnoredParam: (key: string, value: string) => string;
