@@ -54,6 +54,7 @@ export function CandidateList({ solutions, facts, targets, chosen, dispatch, st,
                 type="button"
                 className={`syn-candidate${i === chosen ? ' is-chosen' : ''}`}
                 aria-pressed={i === chosen}
+                data-error={s.error}
                 onClick={() => dispatch({ type: 'chooseCandidate', index: i })}
               >
                 <CandidateThumb curve={f.curve} targets={targets} />
