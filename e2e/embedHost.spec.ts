@@ -60,6 +60,39 @@ test.describe('the embed generator', () => {
   });
 });
 
+test.describe('the embed generator in its column', () => {
+  test('shows every size whole, keeps the preview out of the Tab order, and logs no sandbox warning', async ({
+    page,
+  }) => {
+    const warnings: string[] = [];
+    page.on('console', (m) => {
+      if (/sandbox/i.test(m.text())) warnings.push(m.text());
+    });
+    await page.goto('./');
+    await waitReady(page);
+    await page.getByText('Embed generator: size, panels, locks, preview').click();
+    const preview = page.frameLocator('.embed-preview iframe');
+    await waitReady(preview);
+    // Each size choice lies inside the generator's column, so none is cut off or out of reach.
+    const column = await page.locator('.embed-generator').boundingBox();
+    if (!column) throw new Error('no generator box');
+    for (const name of ['Compact 600×450', 'Standard 760×520', 'Large 900×640', 'Responsive (fills the column)']) {
+      const radio = page.getByRole('radio', { name, exact: true });
+      const label = await page.locator('.segmented-item', { has: radio }).boundingBox();
+      if (!label) throw new Error(`no box for ${name}`);
+      expect(label.x, name).toBeGreaterThanOrEqual(column.x - 0.5);
+      expect(label.x + label.width, name).toBeLessThanOrEqual(column.x + column.width + 0.5);
+      await radio.check();
+      await expect(radio).toBeChecked();
+    }
+    // From the last lock, one Tab goes past the preview to the embed code.
+    await page.getByRole('checkbox', { name: 'Play', exact: true }).focus();
+    await page.keyboard.press('Tab');
+    await expect(page.getByRole('textbox', { name: 'Embed code' })).toBeFocused();
+    expect(warnings).toEqual([]);
+  });
+});
+
 test.describe('the postMessage API', () => {
   test('posts state events to the parent and takes set-state only from it, refusing locked values', async ({
     page,

@@ -87,6 +87,8 @@ export function AppLayout({ initial }: AppLayoutProps) {
           <main className="app-main" id={MAIN_ID} tabIndex={-1}>
             <div
               className={`main${onLab ? ' main-lab' : ''}${onSynthesis ? ' main-synthesis' : ''}`}
+              // One panel element per page: a page opens at its top, not at the last page's scroll.
+              key={state.shell.page}
               id={PANEL_ID}
               role="tabpanel"
               aria-labelledby={pageTabId(state.shell.page)}

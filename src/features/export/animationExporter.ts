@@ -7,7 +7,7 @@ import type { AnimationExportResult, AnimationFormat, ExportProgress, RenderFram
 import { downloadBlob } from '../../shared/canvas/download';
 import { drawLinkage } from '../../shared/linkage/drawLinkage';
 import type { LinkageScene } from '../../shared/linkage/scene';
-import { fitView } from '../../shared/canvas/view';
+import { fitScene } from '../../shared/linkage/scene';
 import type { AppState } from '../../shared/state/appState';
 import { rangeToDeg } from '../../shared/state/animation';
 import { animationFileName } from '../../shared/fileNames';
@@ -65,7 +65,11 @@ export async function exportLinkageAnimation(
     t,
   };
   const renderFrame: RenderFrame = (ctx, f, w, h) => {
-    drawLinkage(ctx, sceneAtFrame(frameSource, f.theta2Rad, f.branch), fitView(scene.bounds, w, h, s.display.view));
+    drawLinkage(
+      ctx,
+      sceneAtFrame(frameSource, f.theta2Rad, f.branch),
+      fitScene(scene, scene.bounds, w, h, s.display.view),
+    );
   };
   const { width, height } = exportSizePx(req.size, src.viewWidth, src.viewHeight, src.devicePixelRatio);
   const result = await exportAnimation({

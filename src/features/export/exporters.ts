@@ -8,7 +8,7 @@ import { drawLinkage } from '../../shared/linkage/drawLinkage';
 import { withPngDpi } from '../../shared/canvas/png';
 import type { LinkageScene } from '../../shared/linkage/scene';
 import { SvgContext } from '../../shared/canvas/svgContext';
-import { fitView } from '../../shared/canvas/view';
+import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
 import type { CycleTable } from '../../shared/csv';
 import type { PngSize } from '../../shared/fileNames';
@@ -144,13 +144,13 @@ export async function linkagePng(
   const ctx = canvas.getContext('2d');
   if (!ctx) throw new Error('no 2D canvas context');
   ctx.setTransform(canvas.width / width, 0, 0, canvas.height / height, 0, 0);
-  drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
+  drawLinkage(ctx, scene, fitScene(scene, scene.bounds, width, height, view));
   return withPngDpi(await canvasToPngBytes(canvas), PNG_DPI[size]);
 }
 
 /** The linkage scene as an SVG document of width x height CSS pixels, drawn by drawLinkage itself (text as <text>). */
 export function linkageSvg(scene: LinkageScene, view: ViewOffset, width: number, height: number): string {
   const ctx = new SvgContext(width, height);
-  drawLinkage(ctx, scene, fitView(scene.bounds, width, height, view));
+  drawLinkage(ctx, scene, fitScene(scene, scene.bounds, width, height, view));
   return ctx.toSvg();
 }

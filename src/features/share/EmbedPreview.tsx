@@ -1,6 +1,5 @@
 import { useRef } from 'react';
 import type { EmbedPreset } from './embedSnippet';
-import { EMBED_SANDBOX } from './embedSnippet';
 import { useElementSize } from '../../shared/hooks/useElementSize';
 
 /** Props of EmbedPreview: the widget's URL, the frame's size preset and the frame's accessible title. */
@@ -11,8 +10,11 @@ export interface EmbedPreviewProps {
 }
 
 /**
- * The embed as a host page would show it: an iframe of embed.html at the preset's CSS pixel size, with the
- * snippet's sandbox, scaled down (never up) to the panel's width so the layout inside is the real one.
+ * The embed as a host page would show it: an iframe of embed.html at the preset's CSS pixel size, scaled down
+ * (never up) to the panel's width so the layout inside is the real one. It is a picture of the embed, out of the
+ * Tab order (its 22 controls are the widget's, not the generator's). No sandbox attribute: the frame is this
+ * app's own page, and the snippet's allow-scripts allow-same-origin on a same-origin frame only makes Chromium
+ * warn that it "can escape its sandboxing" on every preview; on a course page, another origin, it cannot.
  */
 export function EmbedPreview({ src, preset, title }: EmbedPreviewProps) {
   const box = useRef<HTMLDivElement>(null);
@@ -24,7 +26,7 @@ export function EmbedPreview({ src, preset, title }: EmbedPreviewProps) {
         <iframe
           src={src}
           title={title}
-          sandbox={EMBED_SANDBOX}
+          tabIndex={-1}
           width={preset.width}
           height={preset.height}
           data-scale={scale.toFixed(4)}

@@ -5,7 +5,7 @@ import { flushSync } from 'react-dom';
 import { radToDeg360, wrapDeg360 } from '../../solver/angles';
 import type { LinkageScene } from '../../shared/linkage/scene';
 import type { Bounds } from '../../shared/canvas/view';
-import { fitView } from '../../shared/canvas/view';
+import { fitScene } from '../../shared/linkage/scene';
 import type { CouplerPoint, ViewOffset } from '../../shared/state/appState';
 import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
 import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle } from '../../shared/canvas/canvasGestures';
@@ -75,7 +75,7 @@ function useCanvasHandles(
   // the pointer and the joint would drift away from it.
   const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
   const bounds = heldBounds ?? scene.bounds;
-  const transform = () => fitView(bounds, width, height, view);
+  const transform = () => fitScene(scene, bounds, width, height, view);
   const movable = { A: Boolean(onTheta2), P: Boolean(onCoupler) };
   // Drags commit synchronously: the pose under the finger is drawn in the same frame as the move.
   const dragTo = (kind: 'A' | 'P', p: ScreenPoint) => {

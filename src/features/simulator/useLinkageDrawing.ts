@@ -2,9 +2,10 @@ import { useLayoutEffect, useRef } from 'react';
 import type { RefObject } from 'react';
 import { canvasToolsRect } from '../../shared/canvas/canvasTools';
 import type { Bounds, ViewTransform } from '../../shared/canvas/view';
-import { fitView, toScreenX, toScreenY } from '../../shared/canvas/view';
+import { frameToScreen } from '../../shared/canvas/view';
 import { drawLinkageBackground, drawLinkageForeground, sameBackground } from '../../shared/linkage/drawLinkage';
 import type { LinkageScene } from '../../shared/linkage/scene';
+import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
 import { benchMark } from '../../shared/benchMarks';
 
@@ -68,7 +69,7 @@ export function useLinkageDrawing(
     }
     const ctx = canvas.getContext('2d');
     if (!ctx) return;
-    const transform = fitView(bounds, width, height, view);
+    const transform = fitScene(scene, bounds, width, height, view);
     const back = backgroundFor(background.current, scene, transform, pw, ph, dpr);
     background.current = back;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -76,8 +77,10 @@ export function useLinkageDrawing(
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     drawLinkageForeground(ctx, scene, transform, [canvasToolsRect(width)]);
     // Where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas.
-    const at = (p: { x: number; y: number } | undefined) =>
-      p ? `${toScreenX(transform, p.x).toFixed(1)},${toScreenY(transform, p.y).toFixed(1)}` : '';
+    const at = (p: { x: number; y: number } | undefined) => {
+      const s = p ? frameToScreen(transform, p) : null;
+      return s ? `${s.x.toFixed(1)},${s.y.toFixed(1)}` : '';
+    };
     canvas.dataset.o2 = at({ x: 0, y: 0 });
     canvas.dataset.a = at(scene.pose?.A);
     canvas.dataset.p = at(scene.pose?.P);

@@ -1,11 +1,12 @@
 import { useMemo } from 'react';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { radToDeg, radToDeg360 } from '../../solver/angles';
+import { degToRad, radToDeg, radToDeg360 } from '../../solver/angles';
 import type { Branch } from '../../solver/types';
 import type { SceneDesign } from '../../shared/linkage/designOverlay';
 import type { SceneVectors } from '../../shared/linkage/motionVectors';
 import type { BranchExtent, LinkageScene, ScenePose, SceneText } from '../../shared/linkage/scene';
 import type { Bounds } from '../../shared/canvas/view';
+import { frameOf } from '../../shared/canvas/view';
 import { sceneBounds, sceneCurves, scenePose } from '../../shared/linkage/scene';
 import type { AppState } from '../../shared/state/appState';
 import { formatDeg, formatNumber } from '../../shared/format';
@@ -86,6 +87,10 @@ export function useLinkageScene(
   const {
     display: { showGrid, showAngles, showGhost, showTrace },
   } = state;
+  // A synthesised design sits where its task is (URL ox, oy, og), with the task's targets marked (tg).
+  const { x: ox, y: oy, angleDeg: og } = state.design.placement;
+  const placement = useMemo(() => frameOf(ox, oy, degToRad(og)), [ox, oy, og]);
+  const markers = state.synPath.targets;
   const scene: LinkageScene = useMemo(
     () => ({
       linkage,
@@ -101,6 +106,8 @@ export function useLinkageScene(
       bounds,
       ...(design ? { design } : {}),
       vectors,
+      ...(placement ? { placement } : {}),
+      ...(markers.length > 0 ? { markers } : {}),
     }),
     [
       linkage,
@@ -116,6 +123,8 @@ export function useLinkageScene(
       bounds,
       design,
       vectors,
+      placement,
+      markers,
     ],
   );
   const description = pose

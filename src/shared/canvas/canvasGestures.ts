@@ -1,7 +1,7 @@
 import { radToDeg, wrapDeg180, wrapDeg360 } from '../../solver/angles';
 import type { LinkageScene } from '../linkage/scene';
 import type { ViewTransform } from './view';
-import { toScreenX, toScreenY, toWorld, zoomAbout } from './view';
+import { frameToScreen, toWorld, unplacePoint, zoomAbout } from './view';
 import type { CouplerPoint, ViewOffset } from '../state/appState';
 
 /** A point on the canvas in CSS pixels from its top-left corner. */
@@ -32,7 +32,10 @@ export function hitHandle(
 ): CanvasHandle {
   const pose = scene.pose;
   if (!pose) return null;
-  const dist = (p: { x: number; y: number }) => Math.hypot(toScreenX(view, p.x) - at.x, toScreenY(view, p.y) - at.y);
+  const dist = (p: { x: number; y: number }) => {
+    const s = frameToScreen(view, p);
+    return Math.hypot(s.x - at.x, s.y - at.y);
+  };
   const dA = allowed.A ? dist(pose.A) : Infinity;
   const dP = allowed.P ? dist(pose.P) : Infinity;
   if (dA <= radiusPx && dA <= dP) return 'A';
@@ -52,10 +55,10 @@ function roundTo(x: number, decimals: number): number {
 
 /**
  * Crank angle theta2 (degrees in [0, 360), 0.01° steps) that puts the crank pin A in the direction of the
- * pointer as seen from O2 (the origin); null when the pointer is on O2 itself.
+ * pointer as seen from O2 (the origin of the linkage's frame, placed by view.frame); null when the pointer is on O2.
  */
 export function crankAngleAt(view: ViewTransform, at: ScreenPoint): number | null {
-  const w = toWorld(view, at.x, at.y);
+  const w = unplacePoint(view.frame, toWorld(view, at.x, at.y));
   if (w.x === 0 && w.y === 0) return null;
   return wrapDeg360(roundTo(radToDeg(Math.atan2(w.y, w.x)), DRAG_ANGLE_DECIMALS));
 }
@@ -68,7 +71,7 @@ export function crankAngleAt(view: ViewTransform, at: ScreenPoint): number | nul
 export function couplerAt(scene: LinkageScene, view: ViewTransform, at: ScreenPoint): CouplerPoint | null {
   const pose = scene.pose;
   if (!pose) return null;
-  const w = toWorld(view, at.x, at.y);
+  const w = unplacePoint(view.frame, toWorld(view, at.x, at.y));
   const dx = w.x - pose.A.x;
   const dy = w.y - pose.A.y;
   const distance = Math.hypot(dx, dy);

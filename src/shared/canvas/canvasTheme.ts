@@ -29,6 +29,8 @@ export const THEME = {
   deadCentre: COLORS.deadCentre,
   instantCentre: COLORS.instantCentre,
   warningFill: COLORS.warningFill,
+  /** Markers of a synthesis task's targets on the simulator's canvas. */
+  target: COLORS.accent2,
   linkWidth: STROKES.link,
   jointRadius: STROKES.jointRadius,
   font: `${FONT_SIZES.canvas}px ${FONTS.sans}`,

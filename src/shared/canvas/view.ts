@@ -20,6 +20,63 @@ export interface ViewTransform {
   /** Pan in CSS pixels. */
   panXPx: number;
   panYPx: number;
+  /** Where the linkage's own frame (O2 at its origin, ground along its +x) sits in the world; absent: the world's. */
+  frame?: Frame;
+}
+
+/** A rigid placement of the linkage's frame in the world: its origin and the cosine and sine of its rotation. */
+export interface Frame {
+  x: number;
+  y: number;
+  cos: number;
+  sin: number;
+}
+
+/** The frame with origin (x, y) turned by angleRad; undefined for the identity (nothing to transform). */
+export function frameOf(x: number, y: number, angleRad: number): Frame | undefined {
+  if (x === 0 && y === 0 && angleRad === 0) return undefined;
+  return { x, y, cos: Math.cos(angleRad), sin: Math.sin(angleRad) };
+}
+
+/** The view's frame rotation (radians; 0 without a frame): add it to an angle of the linkage's frame. */
+export function frameAngle(v: ViewTransform): number {
+  return v.frame ? Math.atan2(v.frame.sin, v.frame.cos) : 0;
+}
+
+/** A point of the linkage's frame in world coordinates (unchanged without a frame). */
+export function placePoint(f: Frame | undefined, p: { x: number; y: number }): { x: number; y: number } {
+  if (!f) return p;
+  return { x: f.x + f.cos * p.x - f.sin * p.y, y: f.y + f.sin * p.x + f.cos * p.y };
+}
+
+/** A world point in the linkage's frame (the inverse of placePoint). */
+export function unplacePoint(f: Frame | undefined, p: { x: number; y: number }): { x: number; y: number } {
+  if (!f) return p;
+  const dx = p.x - f.x;
+  const dy = p.y - f.y;
+  return { x: f.cos * dx + f.sin * dy, y: -f.sin * dx + f.cos * dy };
+}
+
+/** A point of the linkage's frame (length unit) to CSS pixels through the view's frame. */
+export function frameToScreen(v: ViewTransform, p: { x: number; y: number }): { x: number; y: number } {
+  const w = placePoint(v.frame, p);
+  return { x: toScreenX(v, w.x), y: toScreenY(v, w.y) };
+}
+
+/** The world box holding bounds given in a frame (its four corners placed). */
+export function placeBounds(b: Bounds, f: Frame | undefined): Bounds {
+  if (!f) return { ...b };
+  const out = emptyBounds();
+  for (const [x, y] of [
+    [b.minX, b.minY],
+    [b.maxX, b.minY],
+    [b.minX, b.maxY],
+    [b.maxX, b.maxY],
+  ]) {
+    const w = placePoint(f, { x, y });
+    extendBounds(out, w.x, w.y);
+  }
+  return out;
 }
 
 /** Empty bounds (to grow with extendBounds). */

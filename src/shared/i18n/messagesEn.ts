@@ -4,7 +4,7 @@ import type { Messages } from './messages';
 export const messagesEn: Messages = {
   htmlLang: 'en',
   appTitle: 'Four-bar linkage lab',
-  appSubtitle: 'Newton–Raphson position analysis',
+  appSubtitle: 'Analyse, design and size planar four-bars',
   language: 'Language',
   languageNames: { en: 'English', 'zh-TW': '繁體中文' },
 

@@ -4,7 +4,7 @@ import type { Messages } from './messages';
 export const messagesZhTw: Messages = {
   htmlLang: 'zh-Hant-TW',
   appTitle: '四連桿機構實驗室',
-  appSubtitle: '牛頓–拉夫森位置分析',
+  appSubtitle: '平面四連桿的分析、合成與受力',
   language: '語言',
   languageNames: { en: 'English', 'zh-TW': '繁體中文' },
 

@@ -16,7 +16,7 @@ import { candidatesAround } from '../canvas/labelPlacement';
 import type { SceneArc } from './sceneLayout';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
-import { toScreenX, toScreenY } from '../canvas/view';
+import { frameAngle, frameToScreen } from '../canvas/view';
 
 type Ctx = DrawContext;
 
@@ -72,8 +72,9 @@ export interface DesignLabel {
   candidates: (width: number, height: number) => Px[];
 }
 
+/** A point of the linkage's frame to CSS pixels (through the view's frame when the linkage is placed). */
 function px(v: ViewTransform, p: Point): Px {
-  return { x: toScreenX(v, p.x), y: toScreenY(v, p.y) };
+  return frameToScreen(v, p);
 }
 
 /**
@@ -160,11 +161,12 @@ export function layoutDesign(
       });
     }
     const [a, b] = design.deadCentres;
+    const g = frameAngle(v);
     swingArc = {
       centre: joints.O4,
       radiusPx: l.r4 * v.scale,
-      fromRad: a.theta4,
-      toRad: a.theta4 + angleDiff(b.theta4, a.theta4),
+      fromRad: g + a.theta4,
+      toRad: g + a.theta4 + angleDiff(b.theta4, a.theta4),
       color: THEME.deadCentre,
     };
   }

@@ -10,7 +10,7 @@ import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, Warning
 import { GRID_TARGET_PX, WARNING_BOX, layoutScene } from './sceneLayout';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
-import { gridLines, toScreenX, toScreenY } from '../canvas/view';
+import { frameToScreen, gridLines, toScreenX, toScreenY } from '../canvas/view';
 
 // Any DrawContext: a canvas's 2D context, or SvgContext for the vector export.
 type Ctx = DrawContext;
@@ -52,8 +52,9 @@ export function canvasMeasure(ctx: Ctx): MeasureText {
   };
 }
 
+/** A point of the linkage's frame to CSS pixels (through the view's frame when the linkage is placed). */
 function px(v: ViewTransform, p: { x: number; y: number }): Px {
-  return { x: toScreenX(v, p.x), y: toScreenY(v, p.y) };
+  return frameToScreen(v, p);
 }
 
 function drawGrid(ctx: Ctx, v: ViewTransform): void {
@@ -96,10 +97,9 @@ function drawCurves(ctx: Ctx, scene: LinkageScene, v: ViewTransform): void {
           pen = false;
           continue;
         }
-        const sx = toScreenX(v, x);
-        const sy = toScreenY(v, y);
-        if (pen) ctx.lineTo(sx, sy);
-        else ctx.moveTo(sx, sy);
+        const s = px(v, { x, y });
+        if (pen) ctx.lineTo(s.x, s.y);
+        else ctx.moveTo(s.x, s.y);
         pen = true;
       }
       ctx.stroke();
@@ -290,13 +290,36 @@ export function drawLinkageBackground(ctx: Ctx, scene: LinkageScene, view: ViewT
   ctx.setLineDash([]);
   drawGroundPivot(ctx, O2);
   drawGroundPivot(ctx, O4);
+  if (scene.markers) drawMarkers(ctx, scene.markers, v);
   ctx.restore();
+}
+
+/** Radius of a marker's ring (CSS pixels). */
+const MARKER_RADIUS_PX = 6;
+
+/** The task's markers (synthesis targets, world coordinates): a ring with a cross at each. */
+function drawMarkers(ctx: Ctx, markers: readonly { x: number; y: number }[], v: ViewTransform): void {
+  ctx.strokeStyle = THEME.target;
+  ctx.lineWidth = 1.75;
+  for (const m of markers) {
+    const x = toScreenX(v, m.x);
+    const y = toScreenY(v, m.y);
+    if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
+    ctx.beginPath();
+    ctx.arc(x, y, MARKER_RADIUS_PX, 0, TWO_PI);
+    ctx.moveTo(x - 3, y);
+    ctx.lineTo(x + 3, y);
+    ctx.moveTo(x, y - 3);
+    ctx.lineTo(x, y + 3);
+    ctx.stroke();
+  }
 }
 
 /** Whether two scenes draw the same background (drawLinkageBackground) in the same view transform. */
 export function sameBackground(a: LinkageScene, b: LinkageScene): boolean {
   if (a.showGrid !== b.showGrid || a.showTrace !== b.showTrace || a.showGhost !== b.showGhost) return false;
   if (a.linkage.r1 !== b.linkage.r1) return false;
+  if (a.placement !== b.placement || a.markers !== b.markers) return false;
   if (!a.showTrace) return true;
   if (a.curves.length !== b.curves.length) return false;
   return a.curves.every((c, i) => c.x === b.curves[i].x && c.y === b.curves[i].y && c.current === b.curves[i].current);

@@ -10,7 +10,7 @@ import type { ExtraLabel, MeasureText, SceneExtras } from './sceneLayout';
 import { LABEL_PAD_Y } from './sceneLayout';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
-import { toScreenX, toScreenY } from '../canvas/view';
+import { frameToScreen } from '../canvas/view';
 
 type Ctx = DrawContext;
 
@@ -205,11 +205,13 @@ export function vectorOverlay(
       const w = vs[at];
       const len = arrowLength(Math.hypot(w.x, w.y), scale.pxPerUnit);
       if (!len) continue;
-      const from = { x: toScreenX(view, pose[at].x), y: toScreenY(view, pose[at].y) };
+      const from = frameToScreen(view, pose[at]);
       const m = Math.hypot(w.x, w.y);
-      // Screen y runs down: the world's y component flips.
-      const ux = w.x / m;
-      const uy = -w.y / m;
+      // Turned with a placed linkage's frame; screen y runs down, so the world's y component flips.
+      const c = view.frame?.cos ?? 1;
+      const s = view.frame?.sin ?? 0;
+      const ux = (c * w.x - s * w.y) / m;
+      const uy = -(s * w.x + c * w.y) / m;
       const to = { x: from.x + ux * len.lengthPx, y: from.y + uy * len.lengthPx };
       if (len.clamp !== 'none') anyClamped = true;
       arrows.push({ kind, at, from, to, clamp: len.clamp, color });

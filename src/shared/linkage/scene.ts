@@ -5,8 +5,9 @@ import type { Linkage } from '../../solver/types';
 import type { SceneVectors } from './motionVectors';
 import type { CouplerCurve, PoseAngles } from '../solution';
 import type { SceneDesign } from './designOverlay';
-import type { Bounds } from '../canvas/view';
-import { emptyBounds, extendBounds, extendBoundsCircle } from '../canvas/view';
+import type { Bounds, Frame, ViewTransform } from '../canvas/view';
+import { emptyBounds, extendBounds, extendBoundsCircle, fitView, placeBounds } from '../canvas/view';
+import type { ViewOffset } from '../state/appState';
 
 /** Joint positions (length unit) and angles (radians) of one assembled pose. */
 export interface ScenePose {
@@ -61,6 +62,29 @@ export interface LinkageScene {
   design?: SceneDesign;
   /** Velocity and acceleration arrows with their scale legend; absent or null when both are off. */
   vectors?: SceneVectors | null;
+  /** Where the linkage's frame sits in the task's plane (a synthesised design's O2 and ground); absent: the world's. */
+  placement?: Frame;
+  /** Points of the task to mark (synthesis targets, world coordinates). */
+  markers?: readonly Point[];
+}
+
+/**
+ * The view of a scene: bounds (in the linkage's frame) placed into the world with the scene's placement, grown to
+ * hold its markers, fitted to width x height CSS pixels with the user's offset; the view carries the placement as
+ * its frame. Without a placement or markers this is fitView(bounds, width, height, offset).
+ */
+export function fitScene(
+  scene: Pick<LinkageScene, 'placement' | 'markers'>,
+  bounds: Bounds,
+  width: number,
+  height: number,
+  offset: ViewOffset,
+): ViewTransform {
+  if (!scene.placement && !scene.markers?.length) return fitView(bounds, width, height, offset);
+  const world = placeBounds(bounds, scene.placement);
+  for (const m of scene.markers ?? []) extendBounds(world, m.x, m.y);
+  const v = fitView(world, width, height, offset);
+  return scene.placement ? { ...v, frame: scene.placement } : v;
 }
 
 /** Coupler point: distance from A (length unit) and angle from AB (radians). */

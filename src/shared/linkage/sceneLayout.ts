@@ -9,7 +9,7 @@ import { halfExtentAlong, rectAround } from '../canvas/rect';
 import type { LinkageScene, ScenePose, SceneText } from './scene';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
-import { gridLines, toScreenX, toScreenY } from '../canvas/view';
+import { frameAngle, frameToScreen, gridLines } from '../canvas/view';
 
 /** Every text the canvas may draw, in placement order (most important first). */
 export type LabelId =
@@ -140,7 +140,7 @@ const FONT_PX: Record<LabelFont, number> = { regular: FONT_SIZES.canvas, bold: F
 const ROTATIONS = [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6].map((k) => (k * PI) / 6);
 
 function px(v: ViewTransform, p: { x: number; y: number }): Px {
-  return { x: toScreenX(v, p.x), y: toScreenY(v, p.y) };
+  return frameToScreen(v, p);
 }
 
 /** Unit vector from the others' directions, pointing away from them all; straight up when they cancel. */
@@ -235,31 +235,32 @@ export function groundSymbolRect(p: Px): ScreenRect {
 function poseArcs(
   pose: ScenePose,
   j: { O2: Px; A: Px; B: Px; O4: Px },
+  g = 0,
 ): Record<'theta2' | 'theta3' | 'theta4' | 'mu', SceneArc> {
   const t2 = angleDiff(pose.theta2, 0);
   const t2Pos = t2 >= 0 ? t2 : TWO_PI + t2;
-  const fromB = pose.theta3 + PI;
+  const fromB = g + pose.theta3 + PI;
   return {
-    theta2: { centre: j.O2, radiusPx: ARC_RADII.theta2, fromRad: 0, toRad: t2Pos, color: THEME.crank },
+    theta2: { centre: j.O2, radiusPx: ARC_RADII.theta2, fromRad: g, toRad: g + t2Pos, color: THEME.crank },
     theta3: {
       centre: j.A,
       radiusPx: ARC_RADII.theta3,
-      fromRad: 0,
-      toRad: angleDiff(pose.theta3, 0),
+      fromRad: g,
+      toRad: g + angleDiff(pose.theta3, 0),
       color: THEME.coupler,
     },
     theta4: {
       centre: j.O4,
       radiusPx: ARC_RADII.theta4,
-      fromRad: 0,
-      toRad: angleDiff(pose.theta4, 0),
+      fromRad: g,
+      toRad: g + angleDiff(pose.theta4, 0),
       color: THEME.rocker,
     },
     mu: {
       centre: j.B,
       radiusPx: ARC_RADII.mu,
       fromRad: fromB,
-      toRad: fromB + angleDiff(pose.theta4 + PI, fromB),
+      toRad: fromB + angleDiff(g + pose.theta4 + PI, fromB),
       color: THEME.angle,
     },
   };
@@ -324,20 +325,23 @@ function addAngleLabels(
   j: { O2: Px; A: Px; B: Px; O4: Px },
   labels: LabelCollector,
   obstacles: Obstacle[],
+  g: number,
 ): { arcs: SceneArc[]; references: [Px, Px][] } {
   const t = scene.text;
   const { A, O4 } = j;
   const deg = (r: number) => t.formatAngle(radToDeg(r));
-  const a = poseArcs(pose, j);
+  // The arcs turn with a placed linkage's frame (g); their texts are the angles from its ground line.
+  const a = poseArcs(pose, j, g);
   const arcs: SceneArc[] = [];
+  const ref = { x: REFERENCE_LENGTH_PX * Math.cos(g), y: -REFERENCE_LENGTH_PX * Math.sin(g) };
   const references: [Px, Px][] = [
-    [A, { x: A.x + REFERENCE_LENGTH_PX, y: A.y }],
-    [O4, { x: O4.x + REFERENCE_LENGTH_PX, y: O4.y }],
+    [A, { x: A.x + ref.x, y: A.y + ref.y }],
+    [O4, { x: O4.x + ref.x, y: O4.y + ref.y }],
   ];
   const texts = {
-    theta2: `θ2 ${deg(a.theta2.toRad)}`,
-    theta3: `θ3 ${deg(a.theta3.toRad)}`,
-    theta4: `θ4 ${deg(a.theta4.toRad)}`,
+    theta2: `θ2 ${deg(a.theta2.toRad - g)}`,
+    theta3: `θ3 ${deg(a.theta3.toRad - g)}`,
+    theta4: `θ4 ${deg(a.theta4.toRad - g)}`,
     mu: `μ ${deg(pose.mu)}`,
   };
   for (const id of ['theta2', 'theta3', 'theta4', 'mu'] as const) {
@@ -376,13 +380,18 @@ function addPoseLabels(
 }
 
 /** The link labels r2, r3 and r4 beside their links (the angle labels are placed before them). */
-function addLinkLabels(pose: ScenePose, j: { O2: Px; A: Px; B: Px; P: Px; O4: Px }, labels: LabelCollector): void {
+function addLinkLabels(
+  pose: ScenePose,
+  j: { O2: Px; A: Px; B: Px; P: Px; O4: Px },
+  labels: LabelCollector,
+  g: number,
+): void {
   const { O2, A, B, P, O4 } = j;
   // The coupler label goes away from P when P is off the line AB, else away from O2.
   const pOffLine =
     Math.abs((B.x - A.x) * (P.y - A.y) - (B.y - A.y) * (P.x - A.x)) > 4 * Math.hypot(B.x - A.x, B.y - A.y);
   const t2 = angleDiff(pose.theta2, 0);
-  const t2Half = (t2 >= 0 ? t2 : TWO_PI + t2) / 2;
+  const t2Half = g + (t2 >= 0 ? t2 : TWO_PI + t2) / 2;
   const arcMid = { x: O2.x + 30 * Math.cos(t2Half), y: O2.y - 30 * Math.sin(t2Half) };
   const linkClear = STROKES.link / 2;
   labels.add('r2', 'r2', 'regular', THEME.crank, (w, h) => besideSegment(O2, A, arcMid, linkClear, w, h));
@@ -500,8 +509,8 @@ export function layoutScene(
   if (pose && B && P) {
     const posed = { O2, A, B, P, O4 };
     addPoseLabels(posed, t, labels, obstacles);
-    if (scene.showAngles) drawnAngles = addAngleLabels(scene, pose, posed, labels, obstacles);
-    addLinkLabels(pose, posed, labels);
+    if (scene.showAngles) drawnAngles = addAngleLabels(scene, pose, posed, labels, obstacles, frameAngle(v));
+    addLinkLabels(pose, posed, labels, frameAngle(v));
   }
   labels.add('r1', 'r1', 'regular', THEME.ground, (w, h) =>
     besideSegment(O2, O4, { x: (O2.x + O4.x) / 2, y: (O2.y + O4.y) / 2 - 1 }, STROKES.ground, w, h),
