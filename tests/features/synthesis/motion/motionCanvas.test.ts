@@ -28,7 +28,7 @@ function picture(): MotionPicture {
     outcome: solveMotion(DEFAULT_SYN_MOTION),
     pivotChoice: 'fixed',
     pivots: [
-      { x: 0.02, y: 0.01 },
+      { x: 0, y: 0 },
       { x: -1.5, y: -1 },
     ],
     shownPose: 0,
