@@ -2,7 +2,8 @@
  * Path-synthesis benchmark: the literature's standard problems and exact problems (tests/synthesis/benchmarkCases.ts),
  * each run with 5 seeds and a 10 s budget on one core. Prints, per case, Σd² (median and spread over the seeds),
  * the best published Σd², the time and the evaluations (median and spread), then the closed-form synthesis rows of
- * bench/synthesisClosedForms.ts when that file exists; writes bench/results/synthesis.json and synthesis-table.md.
+ * bench/synthesisClosedForms.ts when that file exists, then the pool's speed-up (bench/synthesisPool.ts: a fixed number of
+ * rounds on 1 and on 2 … cores − 1 processes); writes bench/results/synthesis.json and synthesis-table.md.
  * Run: npm run bench:synthesis   (BENCH_QUICK=1: 2 seeds, 3 s budget)
  */
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
@@ -10,6 +11,7 @@ import { dirname, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { mergePathCandidates, pathSynthesisPart } from '../src/synthesis';
 import { BENCHMARK_CASES, targetSize } from '../tests/synthesis/benchmarkCases';
+import { poolRows } from './synthesisPool';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const QUICK = process.env.BENCH_QUICK === '1';
@@ -122,12 +124,33 @@ if (cf) {
   console.log('\nClosed-form synthesis:\n');
   console.log(cfTable);
 } else console.log('\n(bench/synthesisClosedForms.ts not found: no closed-form table)');
+/** Rounds of the pool rows: a fixed count, so every pool size does the same work and must give the same answers. */
+const POOL_ROUNDS = QUICK ? 24 : 96;
+const pool = await poolRows(['kunjur-18-step', 'ellipse-10'], POOL_ROUNDS);
+const poolTable = [
+  '| case | rounds | processes | wall ms | speed-up | best f | same best f as 1 |',
+  '|---|---|---|---|---|---|---|',
+  ...pool.map(
+    (r) =>
+      `| ${r.case} | ${r.rounds} | ${r.parts} | ${ms(r.ms)} | ${r.speedup.toFixed(2)} | ${sci(r.bestF)} | ${r.sameBestAsOne ? 'yes' : 'no'} |`,
+  ),
+].join('\n');
+console.log('\nThe pool (pathSynthesisPart in parallel processes, then mergePathCandidates):\n');
+console.log(poolTable);
 const out = resolve(here, 'results');
 mkdirSync(out, { recursive: true });
 writeFileSync(
   resolve(out, 'synthesis.json'),
   JSON.stringify(
-    { date: new Date().toISOString(), quick: QUICK, seeds: SEEDS, budgetMs: BUDGET_MS, path: rows, closedForms: cf },
+    {
+      date: new Date().toISOString(),
+      quick: QUICK,
+      seeds: SEEDS,
+      budgetMs: BUDGET_MS,
+      path: rows,
+      closedForms: cf,
+      pool,
+    },
     null,
     2,
   ) + '\n',
@@ -135,5 +158,6 @@ writeFileSync(
 writeFileSync(
   resolve(out, 'synthesis-table.md'),
   `# bench:synthesis\n\nPath synthesis, ${SEEDS.length} seeds, budget ${BUDGET_MS} ms per run (one core).\n\n${pathTable}\n` +
-    (cfTable ? `\nClosed-form synthesis:\n\n${cfTable}\n` : ''),
+    (cfTable ? `\nClosed-form synthesis:\n\n${cfTable}\n` : '') +
+    `\nThe pool (${POOL_ROUNDS} rounds dealt to parts in parallel processes, then merged):\n\n${poolTable}\n`,
 );
