@@ -2,7 +2,7 @@ import reactHooks from 'eslint-plugin-react-hooks';
 import tseslint from 'typescript-eslint';
 
 /** Every feature folder under src/features: each may import only itself, src/shared and the numerics. */
-const FEATURES = ['simulator', 'lab', 'export', 'share', 'synthesis', 'forces'];
+const FEATURES = ['simulator', 'lab', 'export', 'share', 'synthesis', 'forces', 'designs'];
 /** A relative import that reaches the app's layers (from a numerics folder). */
 const APP_LAYERS = '^(\\.\\./)+(app|features|shared|workers)(/|$)';
 /** A relative import from src/shared that reaches above it. */

@@ -75,6 +75,11 @@ test.describe('velocity and acceleration', () => {
       .poll(async () => Math.abs(leadingNumber(await cell.innerText()) - omega4) / Math.abs(omega4))
       .toBeLessThan(2e-6); // the panel shows 6 significant digits
     await expect(page).toHaveURL(/[?&]w2=12\.566370614359/);
+    // The unit is kept with the link (issue 19): reloading shows rpm again.
+    await expect(page).toHaveURL(/[?&]w2u=rpm(&|$)/);
+    await page.reload();
+    await expect(page.getByRole('combobox', { name: 'ω2 unit' })).toHaveValue('rpm');
+    await expect(page.getByRole('textbox', { name: /^ω2/ })).toHaveValue('120');
   });
 
   test('the vector toggles draw arrows with a scale legend', async ({ page }) => {

@@ -3,6 +3,7 @@ import { Suspense, lazy } from 'react';
 import type { ParsedUrl } from '../shared/url/url';
 import { Brand } from './Brand';
 import { ControlsPanel } from '../features/simulator/ControlsPanel';
+import { DesignBar } from '../features/designs/DesignBar';
 import { LanguageSelect } from './LanguageSelect';
 import { MessagesContext } from '../shared/i18n/MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
@@ -75,6 +76,14 @@ export function AppLayout({ initial }: AppLayoutProps) {
               dispatch={dispatch}
               panelId={PANEL_ID}
               synthesisLabel={shell.viewSynthesis}
+            />
+            <DesignBar
+              state={state}
+              dispatch={dispatch}
+              undo={session.undo}
+              redo={session.redo}
+              canUndo={session.canUndo}
+              canRedo={session.canRedo}
             />
             <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
           </header>

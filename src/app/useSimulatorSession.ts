@@ -19,6 +19,7 @@ import { useExports } from '../features/export/useExports';
 
 /** Everything useSimulatorSession gives a layout. */
 export type SimulatorSession = ReturnType<typeof useSimulatorSession>;
+import { useAppHistory } from './useAppHistory';
 
 /** Which views a layout shows for a state, given the plots card's device-pixel width (0 while it is hidden). */
 export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
@@ -28,13 +29,16 @@ export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
  * solver answers, the cycle's facts and table, the design metrics, Play's playhead and step, the canvas edits and
  * the export handlers. `shownFor` says which views show (only those are solved); `tableShown` whether the numbers
  * panel (and so the n-point table) is on screen. Marks 'fourbar:cycle-drawn' and 'fourbar:plot-drawn' for bench:ui.
+ * The state keeps its history (useAppHistory): undo, redo, canUndo and canRedo come with it.
  */
 export function useSimulatorSession(initial: AppState, shownFor: ShownFor, tableShown: boolean) {
   const { plotsRef, plotPixels } = usePlotPixels();
   const views = useCallback((s: AppState) => shownFor(s, plotPixels), [shownFor, plotPixels]);
   // The one solver client (every feature's solver jobs) is made here, where the features' job tables meet.
   const { client, mode: solverMode, reason: solverReason } = useJobClient(createSolverClient, 'Solver');
-  const sim = useSimulator(initial, views, client);
+  // The state with undo and redo (shared/state/history.ts): the URL and every view follow its present.
+  const history = useAppHistory(initial);
+  const sim = useSimulator(history.state, history.dispatch, views, client);
   const { state, dispatch, cycle, point, plot } = sim;
   const solverChoice = useMemo(
     () => ({ method: state.solver.method, tol: state.solver.tol }),
@@ -80,5 +84,9 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
     onStep,
     onViewChange,
     plotsRef,
+    undo: history.undo,
+    redo: history.redo,
+    canUndo: history.canUndo,
+    canRedo: history.canRedo,
   };
 }

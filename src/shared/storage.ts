@@ -19,3 +19,9 @@ export function writeStorage(key: string, value: string): boolean {
 
 /** Storage key of the chosen UI language. */
 export const LOCALE_STORAGE_KEY = 'fourbar-lab.locale';
+
+/** Storage key of the autosaved work: the design file text of the last state (features/designs). */
+export const AUTOSAVE_STORAGE_KEY = 'fourbar-lab.autosave';
+
+/** Storage key of the recently opened or saved designs: a JSON list, newest first (features/designs). */
+export const RECENT_DESIGNS_STORAGE_KEY = 'fourbar-lab.recent-designs';

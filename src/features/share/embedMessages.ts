@@ -1,15 +1,18 @@
 import type { AppState } from '../../shared/state/appState';
 import type { LockableParam } from '../../shared/url/embedOptions';
 import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
-import { serializeState } from '../../shared/url/url';
 import type { UrlTarget } from '../../shared/url/urlKeys';
 import { URL_CONSTRAINTS, URL_KEYS } from '../../shared/url/urlKeys';
+import type { UrlValue } from '../../shared/url/urlValues';
+import { valueText } from '../../shared/url/urlValues';
+
+export { stateValues } from '../../shared/url/urlValues';
 
 /** The tag on every message the widget posts (`source`) and on every command it accepts (`target`). */
 export const EMBED_MESSAGE_TAG = 'fourbar-lab';
 
 /** A value in a state event or a set-state command: what JSON carries for a URL key. */
-export type EmbedValue = number | string | boolean;
+export type EmbedValue = UrlValue;
 
 /** What the widget posts to its host when its state changes: URL keys and their values. */
 export interface StateEvent {
@@ -41,25 +44,8 @@ export const LOCK_OF_KEY: Readonly<Partial<Record<string, LockableParam>>> = {
   play: 'play',
 };
 
-const NUMERIC = /^-?(\d+\.?\d*|\.\d+)(e-?\d+)?$/;
-
 function isRecord(x: unknown): x is Record<string, unknown> {
   return typeof x === 'object' && x !== null && !Array.isArray(x);
-}
-
-/**
- * The state as URL keys and JSON values, the keys serializeState writes for a share link: numbers where the
- * URL text is a number (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
- * (br 'open', dir 'ccw'). Every value is accepted back by applyPatch.
- */
-export function stateValues(state: AppState): Record<string, EmbedValue> {
-  const out: Record<string, EmbedValue> = {};
-  for (const [name, text] of new URLSearchParams(serializeState(state))) {
-    const k = URL_KEYS.find((x) => x.name === name);
-    const raw = k?.get({ state, embed: DEFAULT_EMBED });
-    out[name] = typeof raw === 'boolean' ? raw : NUMERIC.test(text) ? Number(text) : text;
-  }
-  return out;
 }
 
 /** The message the widget posts to its host for a state's URL values (stateValues). */
@@ -84,13 +70,6 @@ export interface PatchResult {
   state: AppState;
   applied: string[];
   refused: RefusedKey[];
-}
-
-function valueText(value: unknown): string | null {
-  if (typeof value === 'number') return Number.isFinite(value) ? String(value) : null;
-  if (typeof value === 'boolean') return value ? '1' : '0';
-  if (typeof value === 'string') return value.length <= MAX_VALUE_CHARS ? value : null;
-  return null;
 }
 
 /**
@@ -119,7 +98,7 @@ export function applyPatch(
       refused.push({ key: name, why: `locked (${lock})` });
       continue;
     }
-    const text = valueText(patch[name]);
+    const text = valueText(patch[name], MAX_VALUE_CHARS);
     const r = text === null ? null : k.parse(text);
     if (!r || !r.ok) {
       refused.push({ key: name, why: r ? r.why : 'expected a finite number, a boolean or a short string' });

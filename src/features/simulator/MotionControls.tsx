@@ -1,4 +1,3 @@
-import { useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
 import type { OmegaUnit } from '../../shared/state/inputMotion';
@@ -19,12 +18,13 @@ export interface MotionControlsProps {
 const MOTION_DECIMALS = 6;
 
 /**
- * The input motion: ω2 (slider and field in the unit chosen beside it: rad/s, rpm or °/s; the state keeps
- * rad/s), α2 in rad/s², and the toggles of the canvas's velocity and acceleration vectors.
+ * The input motion: ω2 (slider and field in the unit chosen beside it: rad/s, rpm or °/s, kept in the motion
+ * slice as omegaUnit; ω2 itself is kept in rad/s), α2 in rad/s², and the toggles of the canvas's velocity and
+ * acceleration vectors.
  */
 export function MotionControls({ state, dispatch }: MotionControlsProps) {
   const t = useMessages();
-  const [unit, setUnit] = useState<OmegaUnit>('rad/s');
+  const unit = state.motion.omegaUnit;
   const slider = OMEGA_SLIDER[unit];
   return (
     <PanelSection id="sec-motion" title={t.sectionMotion}>
@@ -43,7 +43,7 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
           label={t.omegaUnit}
           value={unit}
           options={OMEGA_UNITS.map((u) => ({ value: u, label: t.omegaUnits[u] }))}
-          onChange={setUnit}
+          onChange={(u) => dispatch({ type: 'setOmegaUnit', unit: u })}
         />
       </label>
       <NumberControl

@@ -1,7 +1,6 @@
-import { useMemo, useReducer } from 'react';
+import { useMemo } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
-import { reducer } from '../../shared/state/appState';
 import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { CycleResponse, PointResponse } from '../../shared/solution';
 import type { SolvedPlot } from './usePlotSeries';
@@ -35,17 +34,17 @@ export interface Simulator {
 }
 
 /**
- * The simulator's state (the app reducer, starting from initial) and the answers of the solver client (the
- * simulator's jobs; null until it starts) for it: the cycle
+ * The answers of the solver client (the simulator's jobs; null until it starts) for the app state (kept by the
+ * app, with undo: app/useAppHistory.ts), handed back with the state and its dispatcher: the cycle
  * and the point at theta2, requested for what shownFor(state) says is on screen (latest wins), and the plotted
  * cycle, solved on the main thread in the same render as the state.
  */
 export function useSimulator(
-  initial: AppState,
+  state: AppState,
+  dispatch: Dispatch<Action>,
   shownFor: (state: AppState) => ShownViews,
   client: JobRunner<SimulatorJobs> | null,
 ): Simulator {
-  const [state, dispatch] = useReducer(reducer, initial);
   const { stage, plotPixels, newton } = shownFor(state);
   const solver = useMemo(
     () => ({ method: state.solver.method, tol: state.solver.tol }),

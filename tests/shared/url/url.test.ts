@@ -146,7 +146,7 @@ describe('serializeState and parseUrl', () => {
   it('keeps every documented key, grouped by the slice that owns it', () => {
     // Design, motion, display, solver, shell, lab, then the embed-only keys.
     expect(URL_KEYS.map((k) => k.name).join(' ')).toBe(
-      'r1 r2 r3 r4 br pd pa ox oy og t2 play spd dir w2 a2 grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
+      'r1 r2 r3 r4 br pd pa ox oy og t2 play spd dir w2 a2 w2u grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
         'nr n m tol lang page lstep syn tg tm ts tt bl bc bp in sd ps pc pv dy mc mg mq fx xr t2r t4r np panels lock',
     );
   });
@@ -297,6 +297,8 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['w2', '-1e7', false],
   ['a2', '1e9', true],
   ['a2', '-1.1e9', false],
+  ['w2u', 'rpm', true],
+  ['w2u', 'RPM', false],
   ['mulo', '0', true],
   ['mulo', '-1', false],
   ['mulo', '181', false],

@@ -4,6 +4,7 @@ import { optionalKey, sliceLens, urlKey } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 import { wrapDeg360 } from '../../../solver/angles';
 import type { Action } from '../appState';
+import type { OmegaUnit } from '../inputMotion';
 
 /** Direction of the animated input: +1 counter-clockwise (theta2 increasing), -1 clockwise. */
 export type Direction = 1 | -1;
@@ -20,6 +21,8 @@ export interface MotionState {
   omega2RadPerS: number;
   /** Input crank angular acceleration for the rate analysis, rad/s², counter-clockwise positive (default 0). */
   alpha2RadPerS2: number;
+  /** The unit the ω2 control shows (the state keeps rad/s in omega2RadPerS); default 'rad/s'. */
+  omegaUnit: OmegaUnit;
 }
 
 /** Actions only the motion slice handles. */
@@ -28,7 +31,8 @@ export type MotionAction =
   | { type: 'setPlaying'; playing: boolean }
   | { type: 'setSpeed'; degPerFrame: number }
   | { type: 'setDirection'; direction: Direction }
-  | { type: 'setInputMotion'; omega2RadPerS?: number; alpha2RadPerS2?: number };
+  | { type: 'setInputMotion'; omega2RadPerS?: number; alpha2RadPerS2?: number }
+  | { type: 'setOmegaUnit'; unit: OmegaUnit };
 
 /** Nominal frame rate (frames per second) that converts degrees per frame into degrees per second. */
 export const NOMINAL_FPS = 60;
@@ -39,7 +43,7 @@ export const SPEED_MAX = 10;
 /** Step of the speed slider, degrees per frame: fine enough that typed speeds such as 0.75 sit on it. */
 export const SPEED_STEP = 0.05;
 
-/** theta2 = 45 deg, paused, 1 deg per frame counter-clockwise; input motion 10 rad/s without acceleration. */
+/** theta2 = 45 deg, paused, 1 deg per frame counter-clockwise; input motion 10 rad/s without acceleration, shown in rad/s. */
 export const DEFAULT_MOTION: MotionState = {
   theta2Deg: 45,
   playing: false,
@@ -47,6 +51,7 @@ export const DEFAULT_MOTION: MotionState = {
   direction: 1,
   omega2RadPerS: 10,
   alpha2RadPerS2: 0,
+  omegaUnit: 'rad/s',
 };
 
 /** Wraps degrees into [0, 360); non-finite input gives 0. Kept as the state's name for the units module's wrap. */
@@ -84,6 +89,8 @@ export function motionReducer(s: MotionState, action: Action): MotionState {
       if (omega2RadPerS === s.omega2RadPerS && alpha2RadPerS2 === s.alpha2RadPerS2) return s;
       return { ...s, omega2RadPerS, alpha2RadPerS2 };
     }
+    case 'setOmegaUnit':
+      return action.unit === s.omegaUnit ? s : { ...s, omegaUnit: action.unit };
     default:
       return s;
   }
@@ -92,7 +99,7 @@ export function motionReducer(s: MotionState, action: Action): MotionState {
 const field = sliceLens('motion');
 const angle360 = numberCodec('theta2', { decimals: URL_ANGLE_DECIMALS, normalize: normalizeTheta2Deg });
 
-/** The motion's URL keys: t2, play, spd, dir, and w2 and a2 when they differ from the defaults. */
+/** The motion's URL keys: t2, play, spd, dir, and w2, a2 and the ω2 unit w2u (rad, rpm, deg) when not the defaults. */
 export const MOTION_URL_KEYS: readonly UrlKey<unknown>[] = [
   urlKey('t2', angle360, field('theta2Deg')),
   urlKey('play', boolCodec, field('playing')),
@@ -107,4 +114,14 @@ export const MOTION_URL_KEYS: readonly UrlKey<unknown>[] = [
   ),
   optionalKey('w2', numberCodec('omega2'), field('omega2RadPerS'), DEFAULT_MOTION.omega2RadPerS),
   optionalKey('a2', numberCodec('alpha2'), field('alpha2RadPerS2'), DEFAULT_MOTION.alpha2RadPerS2),
+  optionalKey(
+    'w2u',
+    enumCodec([
+      ['rad', 'rad/s'],
+      ['rpm', 'rpm'],
+      ['deg', 'deg/s'],
+    ] as const),
+    field('omegaUnit'),
+    DEFAULT_MOTION.omegaUnit,
+  ),
 ];

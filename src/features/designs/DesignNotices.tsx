@@ -1,0 +1,58 @@
+import type { Locale } from '../../shared/state/appState';
+import type { RestoreOffer } from './autosave';
+import type { DesignsMessages } from './designsMessages';
+import { shownTime } from './designsMessages';
+import type { DesignNotice } from './useDesignFiles';
+
+/** Props of DesignNotices: the bar's notice, the restore offer, their handlers and strings. */
+export interface DesignNoticesProps {
+  notice: DesignNotice | null;
+  onClose: () => void;
+  offer: RestoreOffer | null;
+  onRestore: () => void;
+  onDismissOffer: () => void;
+  t: DesignsMessages;
+  locale: Locale;
+}
+
+/**
+ * The design bar's notices, in a corner over the page: the offer to restore the last session (a region with
+ * Restore and Dismiss), then what was saved or opened (a status) or why a file was refused (an alert, kept
+ * until closed). The live regions are always in the page, so screen readers announce what appears in them.
+ */
+export function DesignNotices({ notice, onClose, offer, onRestore, onDismissOffer, t, locale }: DesignNoticesProps) {
+  return (
+    <div className="design-notices">
+      {offer ? (
+        <section className="design-notice design-offer" aria-label={t.restore} data-testid="restore-offer">
+          <p>{t.restoreText(offer.name, offer.savedAt ? shownTime(offer.savedAt, locale) : '')}</p>
+          <div className="design-notice-actions">
+            <button type="button" className="design-notice-primary" onClick={onRestore}>
+              {t.restore}
+            </button>
+            <button type="button" onClick={onDismissOffer}>
+              {t.dismiss}
+            </button>
+          </div>
+        </section>
+      ) : null}
+      <div role="status" className="design-live">
+        {notice?.kind === 'status' ? <NoticeBox text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
+      </div>
+      <div role="alert" className="design-live" data-testid="design-alert">
+        {notice?.kind === 'alert' ? <NoticeBox text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
+      </div>
+    </div>
+  );
+}
+
+function NoticeBox({ text, onClose, close }: { text: string; onClose: () => void; close: string }) {
+  return (
+    <div className="design-notice">
+      <p>{text}</p>
+      <button type="button" className="design-notice-close" aria-label={close} title={close} onClick={onClose}>
+        <span aria-hidden="true">×</span>
+      </button>
+    </div>
+  );
+}

@@ -1,0 +1,158 @@
+import type { AppState } from '../../shared/state/appState';
+import { DEFAULT_STATE } from '../../shared/state/appState';
+import { SHELL_URL_KEYS } from '../../shared/state/slices/shellSlice';
+import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
+import type { UrlTarget } from '../../shared/url/urlKeys';
+import { URL_CONSTRAINTS, URL_KEYS } from '../../shared/url/urlKeys';
+import type { UrlValue } from '../../shared/url/urlValues';
+import { stateValues, valueText } from '../../shared/url/urlValues';
+
+/** The `format` of every design file (docs/design-file.md). */
+export const DESIGN_FILE_FORMAT = 'fourbar-lab.design';
+
+/** The newest file version this app writes and reads; a file with a higher one is refused, never guessed at. */
+export const DESIGN_FILE_VERSION = 1;
+
+/** The end of a design file's name: `<name>.fourbar.json`. */
+export const DESIGN_FILE_EXTENSION = '.fourbar.json';
+
+/**
+ * URL keys a file does not hold: the language and the page (the reader's own choice) and Play (a design opens
+ * paused). A file that has them anyway is read without them.
+ */
+export const NOT_IN_FILE: ReadonlySet<string> = new Set(['play', ...SHELL_URL_KEYS.map((k) => k.name)]);
+
+/** A design file as JSON: docs/design-file.md describes each field. */
+export interface DesignFile {
+  format: typeof DESIGN_FILE_FORMAT;
+  version: number;
+  /** The design's name (the file name without `.fourbar.json`). */
+  name: string;
+  /** When it was saved, ISO 8601 in UTC. */
+  savedAt: string;
+  /** The work: the share link's keys (every slice's URL keys but NOT_IN_FILE) with JSON values. */
+  state: Record<string, UrlValue>;
+}
+
+/** A field of a file that could not be read: its path in the file, its value as written, and why (English). */
+export interface BadField {
+  field: string;
+  value: string;
+  why: string;
+}
+
+/** Why a file was refused; nothing of it is applied. */
+export type DesignFileError =
+  | { kind: 'notJson' }
+  | { kind: 'notObject' }
+  | { kind: 'newer'; version: number }
+  | { kind: 'fields'; fields: BadField[] };
+
+/** What reading a file gave: the state, the design's name and when it was saved, or why it was refused. */
+export type DesignFileRead =
+  { ok: true; state: AppState; name: string; savedAt: string | null } | { ok: false; error: DesignFileError };
+
+/** The work of a state as a file holds it: stateValues without NOT_IN_FILE. */
+export function designValues(state: AppState): Record<string, UrlValue> {
+  const out: Record<string, UrlValue> = {};
+  for (const [k, v] of Object.entries(stateValues(state))) if (!NOT_IN_FILE.has(k)) out[k] = v;
+  return out;
+}
+
+/** The design file of a state, as the JSON text Save writes (two-space indent, a final newline). */
+export function writeDesignFile(state: AppState, name: string, savedAt: Date): string {
+  const file: DesignFile = {
+    format: DESIGN_FILE_FORMAT,
+    version: DESIGN_FILE_VERSION,
+    name,
+    savedAt: savedAt.toISOString(),
+    state: designValues(state),
+  };
+  return `${JSON.stringify(file, null, 2)}\n`;
+}
+
+/** A design name as a file name: `<name>.fourbar.json`, without the characters file systems refuse. */
+export function designFileName(name: string): string {
+  // Control characters, and the characters Windows, macOS or Linux refuse in a file name.
+  const safe = name.replace(/[\u0000-\u001f<>:"/\\|?*]+/g, '_').trim();
+  return `${safe || 'design'}${DESIGN_FILE_EXTENSION}`;
+}
+
+/** The design name of a file name: the name without `.fourbar.json` (or `.json`). */
+export function designNameOf(fileName: string): string {
+  return fileName.replace(/\.fourbar\.json$/i, '').replace(/\.json$/i, '');
+}
+
+function isRecord(x: unknown): x is Record<string, unknown> {
+  return typeof x === 'object' && x !== null && !Array.isArray(x);
+}
+
+/** A value as the message echoes it: JSON text, or "missing". */
+function shown(value: unknown): string {
+  return value === undefined ? 'missing' : (JSON.stringify(value) ?? String(value));
+}
+
+/** The file's header fields (format, version, name, savedAt, state) that are wrong, or a newer version. */
+function checkHeader(file: Record<string, unknown>): DesignFileError | null {
+  const bad: BadField[] = [];
+  if (file.format !== DESIGN_FILE_FORMAT)
+    bad.push({ field: 'format', value: shown(file.format), why: `expected "${DESIGN_FILE_FORMAT}"` });
+  const v = file.version;
+  if (typeof v !== 'number' || !Number.isInteger(v) || v < 1)
+    bad.push({ field: 'version', value: shown(v), why: 'expected a whole number from 1' });
+  else if (v > DESIGN_FILE_VERSION && bad.length === 0) return { kind: 'newer', version: v };
+  if (file.name !== undefined && typeof file.name !== 'string')
+    bad.push({ field: 'name', value: shown(file.name), why: 'expected text' });
+  if (file.savedAt !== undefined && (typeof file.savedAt !== 'string' || Number.isNaN(Date.parse(file.savedAt))))
+    bad.push({ field: 'savedAt', value: shown(file.savedAt), why: 'expected an ISO 8601 time' });
+  if (!isRecord(file.state))
+    bad.push({ field: 'state', value: shown(file.state), why: 'expected an object of design fields' });
+  return bad.length ? { kind: 'fields', fields: bad } : null;
+}
+
+/**
+ * Reads a design file's text. The state starts from the defaults with base's language and page (so a field a
+ * file leaves out, as an older file may, is its default) and takes every field of `state` through the URL key
+ * table's codecs, the same checks as a share link; the rules between keys (URL_CONSTRAINTS) hold after. Any
+ * wrong field refuses the whole file and every wrong field is named: a file is never half applied. Never throws.
+ */
+export function readDesignFile(text: string, base: AppState): DesignFileRead {
+  let json: unknown;
+  try {
+    json = JSON.parse(text);
+  } catch {
+    return { ok: false, error: { kind: 'notJson' } };
+  }
+  if (!isRecord(json)) return { ok: false, error: { kind: 'notObject' } };
+  const header = checkHeader(json);
+  if (header) return { ok: false, error: header };
+  const values = json.state as Record<string, unknown>;
+  const start: UrlTarget = { state: { ...DEFAULT_STATE, shell: base.shell }, embed: DEFAULT_EMBED };
+  let target = start;
+  const bad: BadField[] = [];
+  for (const [name, value] of Object.entries(values)) {
+    if (NOT_IN_FILE.has(name)) continue;
+    const field = `state.${name}`;
+    const k = URL_KEYS.find((x) => x.name === name);
+    if (!k || k.scope !== 'state') {
+      bad.push({ field, value: shown(value), why: 'unknown field' });
+      continue;
+    }
+    const t = valueText(value);
+    const r = t === null ? null : k.parse(t);
+    if (!r || !r.ok) {
+      bad.push({ field, value: shown(value), why: r ? r.why : 'expected a number, true or false, or text' });
+      continue;
+    }
+    target = k.set(target, r.value);
+  }
+  for (const c of URL_CONSTRAINTS) {
+    if (c.holds(target.state)) continue;
+    for (const name of c.keys)
+      if (name in values) bad.push({ field: `state.${name}`, value: shown(values[name]), why: c.why });
+  }
+  if (bad.length) return { ok: false, error: { kind: 'fields', fields: bad } };
+  const name = typeof json.name === 'string' ? json.name : '';
+  const savedAt = typeof json.savedAt === 'string' ? json.savedAt : null;
+  return { ok: true, state: target.state, name, savedAt };
+}

@@ -1,0 +1,35 @@
+import type { AppState } from '../state/appState';
+import { DEFAULT_EMBED } from './embedOptions';
+import { serializeState } from './url';
+import { URL_KEYS } from './urlKeys';
+
+/** A URL key's value as JSON carries it: a number where the URL text is a number, a boolean, or the text. */
+export type UrlValue = number | string | boolean;
+
+const NUMERIC = /^-?(\d+\.?\d*|\.\d+)(e-?\d+)?$/;
+
+/**
+ * The state as URL keys and JSON values, the keys serializeState writes for a share link: numbers where the
+ * URL text is a number (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
+ * (br 'open', dir 'ccw'). valueText gives each value's URL text back.
+ */
+export function stateValues(state: AppState): Record<string, UrlValue> {
+  const out: Record<string, UrlValue> = {};
+  for (const [name, text] of new URLSearchParams(serializeState(state))) {
+    const k = URL_KEYS.find((x) => x.name === name);
+    const raw = k?.get({ state, embed: DEFAULT_EMBED });
+    out[name] = typeof raw === 'boolean' ? raw : NUMERIC.test(text) ? Number(text) : text;
+  }
+  return out;
+}
+
+/**
+ * The URL text a JSON value stands for: a finite number's shortest text, '1' or '0' for a boolean, a string up
+ * to maxChars characters as it is; null for anything else (objects, arrays, null, NaN, longer strings).
+ */
+export function valueText(value: unknown, maxChars = Infinity): string | null {
+  if (typeof value === 'number') return Number.isFinite(value) ? String(value) : null;
+  if (typeof value === 'boolean') return value ? '1' : '0';
+  if (typeof value === 'string') return value.length <= maxChars ? value : null;
+  return null;
+}
