@@ -49,6 +49,7 @@ test.describe('accessibility', () => {
     await waitReady(page);
     const sim = page.getByRole('tab', { name: 'Simulator' });
     const lab = page.getByRole('tab', { name: 'Solver lab' });
+    const syn = page.getByRole('tab', { name: 'Synthesis' });
     // One Tab stop: the selected tab only.
     await expect(sim).toHaveAttribute('tabindex', '0');
     await expect(lab).toHaveAttribute('tabindex', '-1');
@@ -63,10 +64,13 @@ test.describe('accessibility', () => {
     await expect(lab).toHaveAttribute('aria-selected', 'true');
     await expect(page.getByRole('tabpanel', { name: 'Solver lab' })).toBeVisible();
     await page.keyboard.press('ArrowRight');
+    await expect(syn).toBeFocused();
+    await expect(syn).toHaveAttribute('aria-selected', 'true');
+    await page.keyboard.press('ArrowRight');
     await expect(sim).toBeFocused();
     await expect(sim).toHaveAttribute('aria-selected', 'true');
     await page.keyboard.press('End');
-    await expect(lab).toBeFocused();
+    await expect(syn).toBeFocused();
     await page.keyboard.press('Home');
     await expect(sim).toBeFocused();
     await expect(sim).toHaveAttribute('aria-selected', 'true');
