@@ -215,7 +215,11 @@ export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
           mt={mt}
         />
         {outcome.problem && !chosen ? (
-          <p className="note note-error" role="status" data-testid="motion-problem">
+          <p
+            className={outcome.problem.code === 'pickTwo' ? 'note' : 'note note-error'}
+            role="status"
+            data-testid="motion-problem"
+          >
             {problemText(mt, outcome.problem)}
           </p>
         ) : null}
