@@ -118,10 +118,30 @@ describe('robertsCognates', () => {
   });
 
   it('drives a cognate from the pivot that makes its input a crank when one does', () => {
-    // A crank-rocker's cognates: one is a crank-rocker too (driven by its crank), the other a double rocker.
-    const [c1, c2] = robertsCognates(CRANK_ROCKER);
-    const cranks = [c1, c2].filter((c) => classify(c.design.links).inputIsCrank).length;
-    expect(cranks).toBeGreaterThanOrEqual(1);
+    // Grashof's rule written here: the input turns fully when S + L < P + Q and the input or the ground is shortest.
+    const crankInput = (r1: number, r2: number, r3: number, r4: number) => {
+      const s = [r1, r2, r3, r4].sort((a, b) => a - b);
+      return s[0] + s[3] < s[1] + s[2] && (r2 === s[0] || r1 === s[0]);
+    };
+    const rand = createRandom(7);
+    let either = 0;
+    for (let k = 0; k < 80; k++) {
+      const d = k === 0 ? CRANK_ROCKER : randomDesign(rand);
+      let cognates;
+      try {
+        cognates = robertsCognates(d);
+      } catch {
+        continue;
+      }
+      for (const c of cognates) {
+        const { r1, r2, r3, r4 } = c.design.links;
+        // The other driver swaps the links at the two pivots.
+        const can = crankInput(r1, r2, r3, r4) || crankInput(r1, r4, r3, r2);
+        if (can) either++;
+        expect(classify(c.design.links).inputIsCrank).toBe(can);
+      }
+    }
+    expect(either).toBeGreaterThan(5);
   });
 
   it('throws for a design that is not a placed four-bar', () => {

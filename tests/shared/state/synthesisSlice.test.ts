@@ -112,10 +112,12 @@ describe('synthesis URL keys', () => {
 });
 
 describe('targetsCodec', () => {
-  it('refuses more than MAX_TARGETS points, hex and Infinity', () => {
+  it('refuses more than MAX_TARGETS points, points without two coordinates, hex and Infinity', () => {
     const many = Array.from({ length: MAX_TARGETS + 1 }, () => '1,1').join(';');
     expect(targetsCodec.parse(many).ok).toBe(false);
     expect(targetsCodec.parse('0x10,1').ok).toBe(false);
+    expect(targetsCodec.parse('1,2;3')).toEqual({ ok: false, why: 'point 2 ("3") is not x,y' });
+    expect(targetsCodec.parse('1,2,3').ok).toBe(false);
     expect(targetsCodec.parse('Infinity,1').ok).toBe(false);
     expect(targetsCodec.parse('')).toEqual({ ok: true, value: [] });
   });
