@@ -29,7 +29,11 @@ export function SynthesisPage({ state, dispatch, createPool }: SynthesisPageProp
   const st = synthesisMessagesFor(state.shell.locale);
   const mode = state.synPath.mode;
   const onOpen = useCallback(
-    (open: OpenDesign) => dispatch({ type: 'replace', state: openDesignState(state, open) }),
+    (open: OpenDesign) => {
+      dispatch({ type: 'replace', state: openDesignState(state, open) });
+      // The simulator opens at its top, where the canvas is, not at the synthesis page's scroll.
+      window.scrollTo(0, 0);
+    },
     [dispatch, state],
   );
   const modes: { value: SynthesisMode; label: string }[] = [
