@@ -119,7 +119,7 @@ const OPERATORS = new Set(['add', 'subtract', 'multiply', 'divide', 'pow', 'unar
 
 /** Why a text is not a formula of x: the page says it in words, naming the expression. */
 export type ExpressionProblem =
-  | { kind: 'syntax'; detail: string }
+  | { kind: 'syntax'; detail: string; char: number | null }
   | { kind: 'unknownName'; name: string }
   | { kind: 'unknownFunction'; name: string }
   | { kind: 'arguments'; name: string; count: number }
@@ -209,7 +209,10 @@ export function parseExpression(text: string): ParsedExpression {
   try {
     node = math.parse(text);
   } catch (e) {
-    return { ok: false, problem: { kind: 'syntax', detail: e instanceof Error ? e.message : String(e) } };
+    const detail = e instanceof Error ? e.message : String(e);
+    // math.js ends its syntax errors with "(char N)", 1-based: kept apart so every language can say where.
+    const at = /\(char (\d+)\)\s*$/.exec(detail);
+    return { ok: false, problem: { kind: 'syntax', detail, char: at ? Number(at[1]) : null } };
   }
   const problem = firstProblem(node);
   if (problem) return { ok: false, problem };

@@ -23,7 +23,7 @@ export function expressionProblemText(
     }
     switch (p.kind) {
       case 'syntax':
-        return fm.why.syntax(p.detail);
+        return fm.why.syntax(p.detail, p.char);
       case 'unknownName':
         return fm.why.unknownName(p.name);
       case 'unknownFunction':

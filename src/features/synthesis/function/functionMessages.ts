@@ -29,7 +29,8 @@ export interface FunctionMessages {
     empty: string;
     long: (max: number) => string;
     character: (c: string) => string;
-    syntax: (detail: string) => string;
+    /** math.js's own (English) message, and where it stopped (1-based character, null if it did not say). */
+    syntax: (detail: string, char: number | null) => string;
     unknownName: (name: string) => string;
     unknownFunction: (name: string, allowed: string) => string;
     arguments: (name: string, count: number) => string;

@@ -20,7 +20,8 @@ export const functionMessagesZhTw: FunctionMessages = {
     empty: '算式是空的。',
     long: (max) => `超過 ${max} 個字元。`,
     character: (c) => `算式中不能出現「${c}」（請使用字母、數字、空格與 . + - * / ^ ( ) ,）。`,
-    syntax: (detail) => `${detail}。`,
+    syntax: (detail, char) =>
+      char === null ? `語法錯誤（${detail}）。` : `第 ${char} 個字元附近有語法錯誤（${detail}）。`,
     unknownName: (name) => `「${name}」不是 x、pi 或 e。`,
     unknownFunction: (name, allowed) => `「${name}」不是可用的函數（${allowed}）。`,
     arguments: (name, count) => `${name} 不接受 ${count} 個引數。`,

@@ -76,7 +76,9 @@ describe('expressionProblemText', () => {
     expect(expressionProblemText(functionMessagesEn, 'log10(', bad.problem)).toMatch(
       /^“log10\(” is not a formula of x: .*expected/i,
     );
-    expect(expressionProblemText(functionMessagesZhTw, 'log10(', bad.problem)).toMatch(/^「log10\(」不是 x 的算式/);
+    expect(expressionProblemText(functionMessagesZhTw, 'log10(', bad.problem)).toMatch(
+      /^「log10\(」不是 x 的算式：第 7 個字元附近有語法錯誤/,
+    );
     const unknown = parseExpression('foo(x)');
     if (unknown.ok) throw new Error('parsed');
     expect(expressionProblemText(functionMessagesEn, 'foo(x)', unknown.problem)).toMatch(
