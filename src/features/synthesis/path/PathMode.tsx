@@ -152,6 +152,8 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           dispatch={(a) => {
             setShown(0);
             dispatch(a);
+            // On a phone the canvas is above the list: bring the chosen design into view (a no-op when it shows).
+            canvasRef.current?.scrollIntoView({ block: 'nearest', behavior: 'smooth' });
           }}
           st={st}
           t={t}
