@@ -199,7 +199,7 @@ function fourPoses(poses: Pose[], s: SynMotionState): FourPoseOutcome {
   return { count: 4, curves, dyads, chosen: candidate(bar.design, bar.theta2, bar.defects), problem: null };
 }
 
-/** Five poses: the Burmester points and their four-bars, the chosen one (clamped to the list). */
+/** Five poses: the Burmester points and their four-bars (fewest defects, then smallest, first), the chosen one. */
 function fivePoses(poses: Pose[], s: SynMotionState): FivePoseOutcome {
   let points: BurmesterPair[];
   try {
@@ -207,10 +207,11 @@ function fivePoses(poses: Pose[], s: SynMotionState): FivePoseOutcome {
   } catch {
     return { count: 5, points: [], fourBars: [], chosen: null, problem: { code: 'degenerate' } };
   }
-  const fourBars = burmesterFourBars(poses, points).map((b) => ({
-    ...candidate(b.design, b.theta2, b.defects),
-    pairs: b.pairs,
-  }));
+  const size = (c: MotionCandidate) => c.design.links.r1 + c.design.links.r2 + c.design.links.r3 + c.design.links.r4;
+  // Fewest defects first, then the most compact: a far Burmester point makes a linkage few would build.
+  const fourBars = burmesterFourBars(poses, points)
+    .map((b) => ({ ...candidate(b.design, b.theta2, b.defects), pairs: b.pairs }))
+    .sort((a, b) => a.defects.length - b.defects.length || size(a) - size(b));
   if (!fourBars.length) return { count: 5, points, fourBars, chosen: null, problem: { code: 'noBurmester' } };
   return { count: 5, points, fourBars, chosen: fourBars[Math.min(s.choice, fourBars.length - 1)], problem: null };
 }

@@ -198,6 +198,17 @@ describe('solveMotion with five poses', () => {
     expect(known).toBeDefined();
     expect(o.fourBars).toHaveLength((o.points.length * (o.points.length - 1)) / 2);
     expect(o.chosen).toBe(o.fourBars[0]);
+    // Fewest defects first, then the smallest: the known crank-rocker (no defect, pivots near the poses) leads.
+    const key = (b: (typeof o.fourBars)[number]) => [
+      b.defects.length,
+      b.design.links.r1 + b.design.links.r2 + b.design.links.r3 + b.design.links.r4,
+    ];
+    for (let i = 1; i < o.fourBars.length; i++) {
+      const [d0, s0] = key(o.fourBars[i - 1]);
+      const [d1, s1] = key(o.fourBars[i]);
+      expect(d0 < d1 || (d0 === d1 && s0 <= s1)).toBe(true);
+    }
+    expect(dist(o.fourBars[0].design.O2, KNOWN.O2) < 1e-7 || dist(o.fourBars[0].design.O2, KNOWN.O4) < 1e-7).toBe(true);
   });
 
   it('says the poses are degenerate when they do not turn', () => {
