@@ -25,7 +25,7 @@ const EMBED_URL_KEYS: readonly UrlKey<unknown>[] = [
 ];
 
 /**
- * The one URL table: every slice's keys, in the order serializeState writes them. README "Share and embed"
+ * The one URL table: every slice's keys, in the order serializeState writes them. docs/instructors.md "URL keys"
  * lists them; panels and lock go only into embed URLs.
  */
 export const URL_KEYS: readonly UrlKey<unknown>[] = [
