@@ -11,6 +11,7 @@ import { EmbedPanels } from './EmbedPanels';
 import { LanguageSelect } from './LanguageSelect';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { LinkageStage } from '../features/simulator/LinkageStage';
+import { createForceLayer } from '../features/forces/forceLayer';
 import { MessagesContext, useMessages } from '../shared/i18n/MessagesContext';
 import { shellMessages } from './shellMessages';
 import { useDocumentMeta } from './useDocumentMeta';
@@ -68,6 +69,7 @@ function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Di
 export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, ownsPage = true }: EmbedLayoutProps) {
   const embed = givenEmbed ?? initial.embed;
   const [ownBridge] = useState(() => (givenBridge ? null : frameBridge()));
+  const [forceLayer] = useState(createForceLayer);
   const bridge = givenBridge ?? ownBridge;
   const show = (p: EmbedPanel) => embed.panels.includes(p);
   const plotsShown = embed.panels.includes('plots');
@@ -106,6 +108,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
                   onSize={onCanvasSize}
                   hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
                   onShown={onShown}
+                  forceLayer={forceLayer}
                 />
               </div>
               {show('controls') ? (

@@ -4,6 +4,7 @@ import { ExportPanel } from '../features/export/ExportPanel';
 import type { EmbedPanel } from '../shared/url/url';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { SimulatorPlots } from './SimulatorPlots';
+import { ForcesSection } from '../features/forces/ForcesSection';
 import type { SimulatorSession } from './useSimulatorSession';
 import { exportBlocked } from './exportBlocked';
 
@@ -14,7 +15,7 @@ export interface EmbedPanelsProps {
   theta2Locked: boolean;
 }
 
-/** The widget's panels under the linkage, as its URL asks: numbers and design, plots, export; then the solver's status. */
+/** The widget's panels under the linkage, as its URL asks: numbers and design, plots, forces, export; then the solver's status. */
 export function EmbedPanels({ session, show, theta2Locked }: EmbedPanelsProps) {
   const { state, dispatch, t, cycle, cycleError, point, table, design, plotsRef } = session;
   const { onPng, onSvg, onCsv, onAnimation, solverMode, solverReason } = session;
@@ -47,6 +48,9 @@ export function EmbedPanels({ session, show, theta2Locked }: EmbedPanelsProps) {
         <section className="card embed-card embed-plots" ref={plotsRef}>
           <SimulatorPlots session={session} />
         </section>
+      ) : null}
+      {show('forces') ? (
+        <ForcesSection state={state} dispatch={dispatch} className="card embed-card" withSettings={false} />
       ) : null}
       {show('export') ? (
         <section className="card embed-card">

@@ -6,6 +6,7 @@ import { useFrameMotion } from '../features/simulator/useFrameMotion';
 import { useLinkagePose } from '../features/simulator/useLinkagePose';
 import { ExportPanel } from '../features/export/ExportPanel';
 import { SharePanel } from '../features/share/SharePanel';
+import { ForcesSection } from '../features/forces/ForcesSection';
 import { useLatest } from '../shared/hooks/useLatest';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { PanelSection } from '../shared/ui/PanelSection';
@@ -51,8 +52,9 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
         />
       </PanelSection>
       <PanelSection className="card" id="sec-motion-results" title={t.motionPanelTitle}>
-        <MotionPanel motion={motion} theta2Rad={local.theta2Rad} />
+        <MotionPanel motion={motion} theta2Rad={local.theta2Rad} lengthUnit={state.forces.lengthUnit} />
       </PanelSection>
+      <ForcesSection state={state} dispatch={dispatch} />
       <section className="card convergence-card">
         <ConvergencePanel point={point} nrStart={state.solver.nrStart} dispatch={dispatch} />
       </section>

@@ -1,9 +1,12 @@
 import { AnglePlotsPanel } from '../features/simulator/PlotsPanel';
+import { useForcePlotChoices } from '../features/forces/useForcePlotChoices';
 import type { SimulatorSession } from './useSimulatorSession';
 
-/** The session's angle (or rate) plots, as both layouts show them. */
+/** The session's angle, rate or (while Forces is on) force plots, as both layouts show them. */
 export function SimulatorPlots({ session }: { session: SimulatorSession }) {
   const { state, dispatch, deg, rates, xMarks } = session;
+  // The forces add their plots to the chooser while they are on.
+  const forcePlots = useForcePlotChoices(state.forces.enabled, state.shell.locale);
   return (
     <AnglePlotsPanel
       deg={deg}
@@ -13,6 +16,7 @@ export function SimulatorPlots({ session }: { session: SimulatorSession }) {
       xMarks={xMarks}
       kind={state.display.plotKind}
       rates={rates}
+      extra={forcePlots}
     />
   );
 }

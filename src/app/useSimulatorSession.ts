@@ -14,6 +14,7 @@ import { useDesignMetrics } from '../features/simulator/useDesignMetrics';
 import { useDrawnMark } from '../features/simulator/useDrawnMark';
 import { usePlotPixels } from '../features/simulator/usePlotPixels';
 import { useSimulator } from '../features/simulator/useSimulator';
+import { forceColumnsFor } from '../features/forces/tableForces';
 import type { ShownViews } from '../features/simulator/useSimulator';
 import { useExports } from '../features/export/useExports';
 
@@ -57,7 +58,7 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   const design = useDesignMetrics(state.design.linkage, state.design.branch);
   const xMarks = useMemo(() => deadCentreXMarks(design?.metrics ?? null, t), [design, t]);
   const { shown, onShown } = useShownFrame();
-  const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t });
+  const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t, forces: forceColumnsFor(state) });
   const [playhead] = useState(() => new Playhead());
   const onStep = useAnimation(state, dispatch, facts.rangeDeg, playhead);
   const onViewChange = useCallback(

@@ -27,6 +27,21 @@ export interface CycleTable {
   residual: ArrayLike<number>;
   /** The motion columns, written after theta4_deg when present. */
   motion?: CycleMotion | null;
+  /** The force columns (CSV_FORCE_HEADER), written after every other column when present (Forces on). */
+  forces?: CycleForces | null;
+}
+
+/** Per-row input torque T12 (N·m) and pin forces Fij (N, force of link i on link j); NaN where undetermined. */
+export interface CycleForces {
+  torque: ArrayLike<number>;
+  f12x: ArrayLike<number>;
+  f12y: ArrayLike<number>;
+  f32x: ArrayLike<number>;
+  f32y: ArrayLike<number>;
+  f43x: ArrayLike<number>;
+  f43y: ArrayLike<number>;
+  f14x: ArrayLike<number>;
+  f14y: ArrayLike<number>;
 }
 
 /** Column names of the cycle CSV (angles in degrees, residual in the linkage's length unit). */
@@ -50,6 +65,32 @@ export const CSV_MOTION_HEADER = [
   'apy',
 ] as const;
 
+/** The force columns, written after all the others when Forces is on: T12 in N·m, then F12, F32, F43, F14 in N (SI). */
+export const CSV_FORCE_HEADER = [
+  'torque_Nm',
+  'f12x_N',
+  'f12y_N',
+  'f32x_N',
+  'f32y_N',
+  'f43x_N',
+  'f43y_N',
+  'f14x_N',
+  'f14y_N',
+] as const;
+
+/** The CycleForces array behind each force column, in CSV_FORCE_HEADER's order. */
+const FORCE_COLUMNS: readonly (keyof CycleForces)[] = [
+  'torque',
+  'f12x',
+  'f12y',
+  'f32x',
+  'f32y',
+  'f43x',
+  'f43y',
+  'f14x',
+  'f14y',
+];
+
 /** A number for the CSV at full double precision; empty (never "NaN" or "Infinity") when not finite. */
 export function csvNumber(x: number): string {
   return Number.isFinite(x) ? String(x) : '';
@@ -60,12 +101,15 @@ export function csvNumber(x: number): string {
  * degrees as swept, theta3 and theta4 in degrees wrapped to (-180, 180], status, NR iterations and residual.
  * Angles and residual are empty where the point is not assembled. With table.motion the CSV_MOTION_HEADER
  * columns follow theta4_deg, each cell empty where its value is not finite (not assembled, a limit position).
+ * With table.forces the CSV_FORCE_HEADER columns come last, empty likewise.
  */
 export function cycleToCsv(table: CycleTable): string {
   const m = table.motion ?? null;
+  const f = table.forces ?? null;
   const header: string[] = m
     ? [...CSV_HEADER.slice(0, 3), ...CSV_MOTION_HEADER, ...CSV_HEADER.slice(3)]
     : [...CSV_HEADER];
+  if (f) header.push(...CSV_FORCE_HEADER);
   const rows: string[][] = [header];
   const n = table.theta2Deg.length;
   for (let i = 0; i < n; i++) {
@@ -95,6 +139,7 @@ export function cycleToCsv(table: CycleTable): string {
       table.status[i] ?? 'failed',
       csvNumber(table.iterations[i]),
       ok ? csvNumber(table.residual[i]) : '',
+      ...(f ? FORCE_COLUMNS.map((k) => (ok ? csvNumber(f[k][i]) : '')) : []),
     ]);
   }
   return `${csvFormatRows(rows)}\n`;

@@ -10,7 +10,7 @@ import type { LinkageScene } from '../../shared/linkage/scene';
 import { SvgContext } from '../../shared/canvas/svgContext';
 import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
-import type { CycleTable } from '../../shared/csv';
+import type { CycleForces, CycleTable } from '../../shared/csv';
 import type { PngSize } from '../../shared/fileNames';
 import { PNG_DPI, PNG_SCALE } from '../../shared/fileNames';
 import { radToDeg360 } from '../../solver/angles';
@@ -124,9 +124,9 @@ export function cycleTableOf(tbl: TableResponse): CycleTable {
   };
 }
 
-/** Downloads the full n-point table as the cycle CSV. */
-export function exportCsv(tbl: TableResponse): void {
-  downloadCsv(cycleTableOf(tbl), csvFileName(tbl.linkage, tbl.branch, tbl.samples));
+/** Downloads the full n-point table as the cycle CSV, the force columns last when given. */
+export function exportCsv(tbl: TableResponse, forces: CycleForces | null = null): void {
+  downloadCsv({ ...cycleTableOf(tbl), forces }, csvFileName(tbl.linkage, tbl.branch, tbl.samples));
 }
 
 /** Draws the linkage scene at width x height CSS pixels into a new canvas at the export size; returns PNG bytes with DPI. */

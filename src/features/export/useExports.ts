@@ -7,7 +7,8 @@ import { degToRad } from '../../solver/angles';
 import { effectiveInputMotion } from '../../shared/state/inputMotion';
 import type { Messages } from '../../shared/i18n/messages';
 import type { JobRunner } from '../../shared/jobs/jobClient';
-import type { CycleResponse, PointResponse, TableJobs } from '../../shared/solution';
+import type { CycleResponse, PointResponse, TableJobs, TableResponse } from '../../shared/solution';
+import type { CycleForces } from '../../shared/csv';
 import type { AnimationRequest } from './animationExporter';
 import type { ExportContext } from './exporters';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
@@ -25,6 +26,8 @@ export interface ExportSources {
   client: JobRunner<TableJobs> | null;
   deg: CycleDegrees | null;
   t: Messages;
+  /** The force columns of the table (Forces on), added after the others; absent or null: none. */
+  forces?: ((tbl: TableResponse) => CycleForces) | null;
 }
 
 /**
@@ -74,8 +77,11 @@ async function exportAnimation(
   );
 }
 
-/** Solves the n-point table (with the motion columns) on the export channel and downloads it as CSV. */
-async function exportTableCsv({ state: s, client }: ExportSources): Promise<void> {
+/**
+ * Solves the n-point table (with the motion columns) on the export channel and downloads it as CSV, with the force
+ * columns when given.
+ */
+async function exportTableCsv({ state: s, client, forces }: ExportSources): Promise<void> {
   if (!client) throw new Error('the solver is still starting');
   // The export always carries the motion columns, for the input motion as the panel shows it.
   const motion = {
@@ -97,7 +103,7 @@ async function exportTableCsv({ state: s, client }: ExportSources): Promise<void
     ).result,
   ]);
   // A newer export request superseded this one: it downloads instead.
-  if (tbl) exportCsv(tbl);
+  if (tbl) exportCsv(tbl, forces?.(tbl) ?? null);
 }
 
 /** The export callbacks: stable identities (the export panel does not re-render), always reading the latest sources. */

@@ -11,11 +11,13 @@ import { motionFacts } from './motionFacts';
 export interface MotionPanelProps {
   motion: FrameMotion | null;
   theta2Rad: number;
+  /** The app's length unit, shown in the speeds (mm/s); default the generic length/s. */
+  lengthUnit?: string;
 }
 
-function MotionPanelImpl({ motion, theta2Rad }: MotionPanelProps) {
+function MotionPanelImpl({ motion, theta2Rad, lengthUnit }: MotionPanelProps) {
   const t = useMessages();
-  const facts = motion ? motionFacts(motion, t) : [];
+  const facts = motion ? motionFacts(motion, t, lengthUnit) : [];
   return (
     <div className="motion" data-limit={motion?.limit ? 'true' : 'false'}>
       <h3 className="subhead">{t.motionAt(formatDeg(radToDeg360(theta2Rad), 2))}</h3>

@@ -31,10 +31,15 @@ export function vectorText(
   return m > 0 ? `${magnitude}, ${t.directionDeg(formatDeg(radToDeg360(Math.atan2(y, x)), 1))}` : magnitude;
 }
 
-/** The motion panel's lines at this frame: ω3, ω4, α3, α4, the speeds of A, B and P, and P's acceleration. */
-export function motionFacts(m: FrameMotion, t: Messages): MotionFact[] {
+/**
+ * The motion panel's lines at this frame: ω3, ω4, α3, α4, the speeds of A, B and P, and P's acceleration; speeds
+ * in lengthUnit/s and lengthUnit/s² when the unit is given, else in the generic length/s.
+ */
+export function motionFacts(m: FrameMotion, t: Messages, lengthUnit?: string): MotionFact[] {
   const r = m.rates;
-  const speed = (p: PointRates) => vectorText(p.vx, p.vy, t.unitSpeed, t);
+  const unitSpeed = lengthUnit ? `${lengthUnit}/s` : t.unitSpeed;
+  const unitAcceleration = lengthUnit ? `${lengthUnit}/s²` : t.unitAcceleration;
+  const speed = (p: PointRates) => vectorText(p.vx, p.vy, unitSpeed, t);
   return [
     { key: 'omega3', label: `${t.angularVelocity}3`, value: rateText(r.omega3, 'rad/s', t) },
     { key: 'omega4', label: `${t.angularVelocity}4`, value: rateText(r.omega4, 'rad/s', t) },
@@ -43,6 +48,6 @@ export function motionFacts(m: FrameMotion, t: Messages): MotionFact[] {
     { key: 'vA', label: t.pointSpeed('A'), value: speed(m.A) },
     { key: 'vB', label: t.pointSpeed('B'), value: speed(m.B) },
     { key: 'vP', label: t.pointSpeed('P'), value: speed(m.P) },
-    { key: 'aP', label: t.pointAcceleration('P'), value: vectorText(m.P.ax, m.P.ay, t.unitAcceleration, t) },
+    { key: 'aP', label: t.pointAcceleration('P'), value: vectorText(m.P.ax, m.P.ay, unitAcceleration, t) },
   ];
 }

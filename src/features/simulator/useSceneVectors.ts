@@ -26,19 +26,21 @@ export function useSceneVectors(state: AppState, motion: FrameMotion | null, t: 
     motion: { omega2RadPerS: w, alpha2RadPerS2: a },
   } = state;
   const r2 = state.design.linkage.r2;
+  const unit = state.forces.lengthUnit;
   const velocityScale = useMemo(() => arrowScale(r2 * Math.abs(w)), [r2, w]);
   const accelerationScale = useMemo(() => arrowScale(r2 * Math.hypot(w * w, a)), [r2, w, a]);
   const text: VectorText = useMemo(
     () => ({
       symbol: { v: 'v', a: 'a' },
-      velocityBar: t.vectorVelocityBar,
-      accelerationBar: t.vectorAccelerationBar,
+      // The bar's value in the app's length unit (= 5 mm/s).
+      velocityBar: (v: string) => `= ${v} ${unit}/s`,
+      accelerationBar: (v: string) => `= ${v} ${unit}/s²`,
       zero: t.vectorZero,
       clamped: t.vectorClamped,
       limit: t.limitPosition,
       formatValue: (x: number) => formatNumber(x, 3),
     }),
-    [t],
+    [t, unit],
   );
   return useMemo(() => {
     if (!showVelocity && !showAcceleration) return null;

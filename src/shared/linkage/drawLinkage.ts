@@ -4,6 +4,7 @@ import { drawDesignOver, drawDesignUnder } from './designOverlay';
 import type { DrawContext } from '../canvas/drawContext';
 import { drawPanelBox } from '../canvas/drawContext';
 import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
+import { drawForceArrows, forceOverlay } from './forceVectors';
 import type { Px, ScreenRect } from '../canvas/rect';
 import type { LinkageScene, ScenePose } from './scene';
 import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, WarningBox } from './sceneLayout';
@@ -327,8 +328,8 @@ export function sameBackground(a: LinkageScene, b: LinkageScene): boolean {
 
 /**
  * Draws what moves over the background (drawLinkageBackground must be under it): the ghost of the other
- * branch, the pose with its angle arcs, the pivots, the design overlay, the motion vectors, then the labels
- * where layoutScene placed them (never overlapping each other or the exclusion rectangles, e.g. the zoom
+ * branch, the pose with its angle arcs, the pivots, the design overlay, the motion vectors and pin forces, then
+ * the labels where layoutScene placed them (never overlapping each other or the exclusion rectangles, e.g. the zoom
  * buttons from canvasToolsRect). With no pose it draws the crank at theta2 and the two circles that fail to
  * meet, with a message: never a torn linkage. Returns the layout it drew.
  */
@@ -341,10 +342,18 @@ export function drawLinkageForeground(
   const v = view;
   ctx.save();
   const measure = canvasMeasure(ctx);
-  // The motion vectors' labels and shafts join the layout; their legend's corner is kept free of labels.
+  // The motion vectors' and pin forces' labels and shafts join the layout; their legends' corner is kept clear.
   const vectors = scene.vectors ? vectorOverlay(scene.vectors, scene.pose, v, measure) : null;
-  const excluded = vectors ? [...exclusions, ...vectors.exclusions] : exclusions;
-  const layout = layoutScene(scene, v, measure, excluded, vectors?.extras ?? null);
+  const forces = scene.forces ? forceOverlay(scene.forces, scene.pose, v, measure, vectors?.legend?.box ?? null) : null;
+  const excluded = [...exclusions, ...(vectors?.exclusions ?? []), ...(forces?.exclusions ?? [])];
+  const extras =
+    vectors && forces
+      ? {
+          labels: [...vectors.extras.labels, ...forces.extras.labels],
+          obstacles: [...vectors.extras.obstacles, ...forces.extras.obstacles],
+        }
+      : (vectors?.extras ?? forces?.extras ?? null);
+  const layout = layoutScene(scene, v, measure, excluded, extras);
   const { O2, O4 } = layout.joints;
   if (scene.ghost && scene.showGhost) drawGhost(ctx, v, scene.ghost);
   if (layout.design) drawDesignUnder(ctx, layout.design);
@@ -354,8 +363,10 @@ export function drawLinkageForeground(
   drawJoint(ctx, O4, STROKES.pivotRadius);
   if (layout.design) drawDesignOver(ctx, layout.design);
   if (vectors) drawVectorArrows(ctx, vectors);
+  if (forces) drawForceArrows(ctx, forces);
   for (const l of layout.labels) drawLabel(ctx, l);
   if (vectors) drawVectorLegend(ctx, vectors);
+  if (forces) drawVectorLegend(ctx, forces);
   if (layout.warning) drawWarning(ctx, layout.warning);
   ctx.restore();
   return layout;
@@ -364,7 +375,7 @@ export function drawLinkageForeground(
 /**
  * Draws the linkage scene into ctx in CSS pixels (the caller scales for devicePixelRatio): the background
  * (grid, coupler curves, ground with hatched pivots), then the foreground (ghost, pose, arcs, design overlay,
- * motion vectors and their legend, labels, warning). Returns the layout it drew.
+ * motion vectors, pin forces and their legends, labels, warning). Returns the layout it drew.
  */
 export function drawLinkage(
   ctx: Ctx,

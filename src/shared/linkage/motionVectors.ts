@@ -234,7 +234,8 @@ export function drawVectorArrows(ctx: Ctx, overlay: VectorOverlay): void {
   for (const a of overlay.arrows) drawArrow(ctx, a.from, a.to, a.color, a.clamp !== 'none');
 }
 
-function drawArrow(ctx: Ctx, from: Px, to: Px, color: string, dashed: boolean): void {
+/** Draws one arrow from → to (CSS pixels) in a colour, its shaft dashed when it is clamped (not to scale). */
+export function drawArrow(ctx: Ctx, from: Px, to: Px, color: string, dashed: boolean): void {
   const dx = to.x - from.x;
   const dy = to.y - from.y;
   const len = Math.hypot(dx, dy);
@@ -262,8 +263,8 @@ function drawArrow(ctx: Ctx, from: Px, to: Px, color: string, dashed: boolean): 
   ctx.fill();
 }
 
-/** Draws the scale legend: a translucent box with one bar and text per row. */
-export function drawVectorLegend(ctx: Ctx, overlay: VectorOverlay): void {
+/** Draws the scale legend (the motion vectors' or the pin forces'): a translucent box with one bar and text per row. */
+export function drawVectorLegend(ctx: Ctx, overlay: Pick<VectorOverlay, 'legend'>): void {
   const lg = overlay.legend;
   if (!lg) return;
   const { box } = lg;

@@ -3,6 +3,7 @@ import { couplerPoint, jointPositions } from '../../solver/kinematics';
 import type { Point } from '../../solver/kinematics';
 import type { Linkage } from '../../solver/types';
 import type { SceneVectors } from './motionVectors';
+import type { SceneForces } from './forceVectors';
 import type { CouplerCurve, PoseAngles } from '../solution';
 import type { SceneDesign } from './designOverlay';
 import type { Bounds, Frame, ViewTransform } from '../canvas/view';
@@ -62,6 +63,8 @@ export interface LinkageScene {
   design?: SceneDesign;
   /** Velocity and acceleration arrows with their scale legend; absent or null when both are off. */
   vectors?: SceneVectors | null;
+  /** Pin-force arrows with their scale legend (fed by the app when Forces and its arrows are on); absent or null: none. */
+  forces?: SceneForces | null;
   /** Where the linkage's frame sits in the task's plane (a synthesised design's O2 and ground); absent: the world's. */
   placement?: Frame;
   /** Points of the task to mark (synthesis targets, world coordinates). */

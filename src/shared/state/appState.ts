@@ -16,11 +16,21 @@ import type { SynMotionAction, SynMotionState } from './slices/synMotionSlice';
 import { DEFAULT_SYN_MOTION, synMotionReducer } from './slices/synMotionSlice';
 import type { SynFunctionAction, SynFunctionState } from './slices/synFunctionSlice';
 import { DEFAULT_SYN_FUNCTION, synFunctionReducer } from './slices/synFunctionSlice';
+import type { ForcesAction, ForcesState } from './slices/forcesSlice';
+import { DEFAULT_FORCES, forcesReducer } from './slices/forcesSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
 export type { CouplerPoint, DesignState } from './slices/designSlice';
-export type { DisplayState, PlotKind, PlotLayout, ViewFlag, ViewOffset } from './slices/displaySlice';
+export type {
+  DisplayState,
+  ForcePlotKind,
+  MotionPlotKind,
+  PlotKind,
+  PlotLayout,
+  ViewFlag,
+  ViewOffset,
+} from './slices/displaySlice';
 export { DEFAULT_DISPLAY, FITTED_VIEW } from './slices/displaySlice';
 export type { LabState } from './slices/labSlice';
 export type { Direction, MotionState } from './slices/motionSlice';
@@ -49,6 +59,8 @@ export interface AppState {
   lab: LabState;
   /** The synthesis page's mode and its Path mode's task. */
   synPath: SynPathState;
+  /** The length unit, and the forces: on or off, mass model, loads, force arrows. */
+  forces: ForcesState;
   /** The synthesis page's Motion mode: poses and the pivots or dyads chosen. */
   synMotion: SynMotionState;
   /** The synthesis page's Function mode: y = f(x), its ranges and precision points. */
@@ -64,6 +76,7 @@ export const DEFAULT_STATE: AppState = {
   shell: DEFAULT_SHELL,
   lab: DEFAULT_LAB,
   synPath: DEFAULT_SYN_PATH,
+  forces: DEFAULT_FORCES,
   synMotion: DEFAULT_SYN_MOTION,
   synFunction: DEFAULT_SYN_FUNCTION,
 };
@@ -85,6 +98,7 @@ export type Action =
   | ShellAction
   | LabAction
   | SynPathAction
+  | ForcesAction
   | SynMotionAction
   | SynFunctionAction
   | SharedAction;
@@ -108,6 +122,7 @@ export function reducer(state: AppState, action: Action): AppState {
     shell: shellReducer(state.shell, action),
     lab: labReducer(state.lab, action),
     synPath: synPathReducer(state.synPath, action),
+    forces: forcesReducer(state.forces, action),
     synMotion: synMotionReducer(state.synMotion, action),
     synFunction: synFunctionReducer(state.synFunction, action),
   };

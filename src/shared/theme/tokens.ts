@@ -73,6 +73,8 @@ export const COLORS = {
   /** Velocity and acceleration arrows on the canvas and their series in the rate plots. */
   velocity: '#0e7490',
   acceleration: '#be185d',
+  /** Pin-force arrows on the canvas and the input torque in the force plots. */
+  force: '#dc2626',
   /** White halo behind canvas labels, so they read over lines. */
   labelHalo: 'rgba(255, 255, 255, 0.9)',
   grid: '#e8ecf1',

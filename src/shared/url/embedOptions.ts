@@ -1,5 +1,5 @@
-/** Panels an embed can show besides the canvas. */
-export type EmbedPanel = 'controls' | 'info' | 'plots' | 'export';
+/** Panels an embed can show besides the canvas ('forces': the Forces toggle, force arrows and the numbers). */
+export type EmbedPanel = 'controls' | 'info' | 'plots' | 'export' | 'forces';
 
 /** Parameters an embed can lock (shown, not editable). */
 export type LockableParam = 'r1' | 'r2' | 'r3' | 'r4' | 'theta2' | 'branch' | 'coupler' | 'play';
@@ -11,7 +11,7 @@ export interface EmbedOptions {
 }
 
 /** All embed panels in display order. */
-export const EMBED_PANELS: readonly EmbedPanel[] = ['controls', 'info', 'plots', 'export'];
+export const EMBED_PANELS: readonly EmbedPanel[] = ['controls', 'info', 'plots', 'export', 'forces'];
 
 /** All lockable parameters. */
 export const LOCKABLE_PARAMS: readonly LockableParam[] = [

@@ -1,5 +1,6 @@
 import { DESIGN_URL_KEYS } from '../state/slices/designSlice';
 import { DISPLAY_URL_KEYS } from '../state/slices/displaySlice';
+import { FORCES_URL_KEYS } from '../state/slices/forcesSlice';
 import { LAB_URL_KEYS } from '../state/slices/labSlice';
 import { MOTION_URL_KEYS } from '../state/slices/motionSlice';
 import { SHELL_URL_KEYS } from '../state/slices/shellSlice';
@@ -36,6 +37,7 @@ export const URL_KEYS: readonly UrlKey<unknown>[] = [
   ...SHELL_URL_KEYS,
   ...LAB_URL_KEYS,
   ...SYN_PATH_URL_KEYS,
+  ...FORCES_URL_KEYS,
   ...SYN_MOTION_URL_KEYS,
   ...SYN_FUNCTION_URL_KEYS,
   ...EMBED_URL_KEYS,

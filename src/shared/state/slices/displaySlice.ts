@@ -7,8 +7,14 @@ import type { Action } from '../appState';
 /** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
 export type PlotLayout = 'separate' | 'together';
 
-/** Which plots the plot area shows: output angles, angular velocities or angular accelerations against theta2. */
-export type PlotKind = 'angles' | 'velocities' | 'accelerations';
+/** The simulator's own plots: output angles, angular velocities or angular accelerations against theta2. */
+export type MotionPlotKind = 'angles' | 'velocities' | 'accelerations';
+
+/** The forces' plots (offered while Forces is on): input torque and pin-force magnitudes against theta2, the crank bearing's load. */
+export type ForcePlotKind = 'torque' | 'pinForces' | 'bearing';
+
+/** Which plots the plot area shows. */
+export type PlotKind = MotionPlotKind | ForcePlotKind;
 
 /** User pan and zoom on top of the automatic fit: zoom factor (1 = fitted), pan as fractions of the view's width and height. */
 export interface ViewOffset {
@@ -134,6 +140,9 @@ export const DISPLAY_URL_KEYS: readonly UrlKey<unknown>[] = [
       ['ang', 'angles'],
       ['vel', 'velocities'],
       ['acc', 'accelerations'],
+      ['trq', 'torque'],
+      ['pin', 'pinForces'],
+      ['brg', 'bearing'],
     ] as const),
     field('plotKind'),
     DEFAULT_DISPLAY.plotKind,
