@@ -64,9 +64,43 @@ afterEach(() => {
 });
 
 describe('solver jobs', () => {
-  it('are the simulator’s and the lab’s tables, each name once', () => {
-    expect(Object.keys(solverJobs).sort()).toEqual(['cycle', 'lab', 'point', 'table']);
+  it('are the simulator’s, the lab’s and synthesis’s tables, each name once', () => {
+    expect(Object.keys(solverJobs).sort()).toEqual(['cycle', 'lab', 'pathMerge', 'pathPart', 'point', 'table']);
     expect(Object.keys(solverHandlers).sort()).toEqual(Object.keys(solverJobs).sort());
+  });
+
+  it('run a path synthesis in parts and merge them, with progress carrying the best Σd²', async () => {
+    // Six points of a known coupler curve (the report's linkage, θ2 every 60°): an exact fit exists.
+    const targets = [0, 1, 2, 3, 4, 5].map((k) => {
+      const t2 = (k * Math.PI) / 3;
+      const ax = 2 * Math.cos(t2);
+      const ay = 2 * Math.sin(t2);
+      const dx = 6 - ax;
+      const dy = -ay;
+      const s = Math.hypot(dx, dy);
+      const a = s / 2;
+      const h = Math.sqrt(25 - a * a);
+      const bx = ax + (a * dx - h * dy) / s;
+      const by = ay + (a * dy + h * dx) / s;
+      const t3 = Math.atan2(by - ay, bx - ax);
+      return { x: ax + 2.5 * Math.cos(t3 + Math.PI / 6), y: ay + 2.5 * Math.sin(t3 + Math.PI / 6) };
+    });
+    const task = { targets, timing: { kind: 'free' as const } };
+    const stages: string[] = [];
+    const context = {
+      signal: new AbortController().signal,
+      progress: (_f: number, stage: string) => stages.push(stage),
+    };
+    const parts = await Promise.all(
+      [0, 1].map((part) =>
+        solverHandlers.pathPart({ task, seed: 1, part, parts: 2, rounds: 8, budgetMs: 30_000 }, context),
+      ),
+    );
+    const merged = await solverHandlers.pathMerge({ task, parts: parts.map((p) => p.candidates) }, context);
+    expect(merged.length).toBeGreaterThan(0);
+    expect(merged[0].error).toBeLessThan(1e-20);
+    expect(stages.length).toBeGreaterThan(0);
+    expect(stages.every((x) => Number(x) >= 0)).toBe(true);
   });
 
   it('give each call a watchdog budget that grows with its work', () => {
