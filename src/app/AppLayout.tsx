@@ -2,7 +2,9 @@ import './AppLayout.css';
 import { Suspense, lazy } from 'react';
 import type { ParsedUrl } from '../shared/url/url';
 import { Brand } from './Brand';
-import { ControlsPanel } from '../features/simulator/ControlsPanel';
+import { ControlsColumn } from './ControlsColumn';
+import { useMediaQuery } from '../shared/hooks/useMediaQuery';
+import { PHONE_MEDIA } from '../shared/theme/tokens';
 import { DesignBar } from '../features/designs/DesignBar';
 import { LanguageSelect } from './LanguageSelect';
 import { MessagesContext } from '../shared/i18n/MessagesContext';
@@ -51,9 +53,11 @@ const PANEL_ID = 'page-panel';
  */
 export function AppLayout({ initial }: AppLayoutProps) {
   const session = useSimulatorSession(initial.state, appViews, true);
-  const { state, dispatch, client, cycle, point, t, rocking, playhead, onStep } = session;
+  const { state, dispatch, client, cycle, point, t, playhead } = session;
   const onLab = state.shell.page === 'lab';
   const onSynthesis = state.shell.page === 'synthesis';
+  // A phone's simulator page: the phone bar at the bottom and the other controls in a sheet (ControlsColumn).
+  const phone = useMediaQuery(PHONE_MEDIA) && state.shell.page === 'simulator';
   const shell = shellMessages(state.shell.locale);
   // The results column comes after the first frame: the first render posts the solver's jobs sooner, and the
   // worker solves while the column renders (the first load on a phone, docs/ARCHITECTURE.md).
@@ -88,11 +92,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
           </header>
           <UrlNotice ignored={initial.ignored} />
-          {onSynthesis ? null : (
-            <aside className="sidebar" aria-label={shell.controlsLabel}>
-              <ControlsPanel state={state} dispatch={dispatch} rocking={rocking} onStep={onStep} />
-            </aside>
-          )}
+          {onSynthesis ? null : <ControlsColumn session={session} label={shell.controlsLabel} phone={phone} />}
           <main className="app-main" id={MAIN_ID} tabIndex={-1}>
             <div
               className={`main${onLab ? ' main-lab' : ''}${onSynthesis ? ' main-synthesis' : ''}`}

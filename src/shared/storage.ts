@@ -20,6 +20,9 @@ export function writeStorage(key: string, value: string): boolean {
 /** Storage key of the chosen UI language. */
 export const LOCALE_STORAGE_KEY = 'fourbar-lab.locale';
 
+/** Storage key set once the phone layout's first-use hint (joints can be dragged) was dismissed: '1'. */
+export const DRAG_HINT_STORAGE_KEY = 'fourbar-lab.drag-hint-dismissed';
+
 /** Storage key of the autosaved work: the design file text of the last state (features/designs). */
 export const AUTOSAVE_STORAGE_KEY = 'fourbar-lab.autosave';
 

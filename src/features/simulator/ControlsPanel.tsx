@@ -27,6 +27,8 @@ export interface ControlsPanelProps {
   /** The input cannot turn fully: explain that the animation rocks. */
   rocking: boolean;
   onStep: (sign: 1 | -1) => void;
+  /** Phone layout: θ2, the branch, Play and step are in the phone bar, so the panel leaves them out. */
+  phone?: boolean;
 }
 
 /** The range the length sliders share, re-chosen only when a value leaves it. */
@@ -39,7 +41,15 @@ function useLengthRange(values: readonly number[]): SliderRange {
   return range;
 }
 
-function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rocking, onStep }: ControlsPanelProps) {
+function ControlsPanelImpl({
+  state,
+  dispatch,
+  locked = [],
+  compact = false,
+  rocking,
+  onStep,
+  phone = false,
+}: ControlsPanelProps) {
   const l = state.design.linkage;
   const range = useLengthRange([l.r1, l.r2, l.r3, l.r4]);
   const isLocked = (p: LockableParam) => locked.includes(p);
@@ -54,8 +64,8 @@ function ControlsPanelImpl({ state, dispatch, locked = [], compact = false, rock
         />
       ) : null}
       <LinksSection {...section} range={range} />
-      <InputSection {...section} />
-      <AnimationSection {...section} onStep={onStep} compact={compact} rocking={rocking} />
+      {phone ? null : <InputSection {...section} />}
+      <AnimationSection {...section} onStep={onStep} compact={compact} rocking={rocking} withoutPlay={phone} />
       {!compact ? <MotionControls state={state} dispatch={dispatch} /> : null}
       {!compact ? <CouplerSection {...section} range={range} /> : null}
       {!compact ? <DisplaySection state={state} dispatch={dispatch} /> : null}

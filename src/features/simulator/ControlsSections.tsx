@@ -80,7 +80,6 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
           min={range.min}
           max={range.max}
           step={range.step}
-          unit={state.forces.lengthUnit}
           locked={isLocked(f)}
           onCommit={(v) => dispatch({ type: 'setLength', field: f, value: v })}
         />
@@ -94,33 +93,54 @@ const THETA2_KEYS = { step: 1 } as const;
 /** The coupler angle's slider keys: the same steps on (−180°, 180°]. */
 const COUPLER_ANGLE_KEYS = { step: 1 } as const;
 
+/** The input angle θ2: slider and field over [0, 360]. */
+export function Theta2Control({ state, dispatch, isLocked }: ControlsSectionProps) {
+  return (
+    <NumberControl
+      field="theta2"
+      value={state.motion.theta2Deg}
+      decimals={THETA2_DECIMALS}
+      min={0}
+      max={360}
+      step={0.5}
+      turn={THETA2_KEYS}
+      unit="°"
+      locked={isLocked('theta2')}
+      onCommit={(v) => dispatch({ type: 'setTheta2', deg: v })}
+    />
+  );
+}
+
+/** The assembly branch, open or crossed; hideLegend keeps "Branch" as the group's name only (the phone bar). */
+export function BranchControl({
+  state,
+  dispatch,
+  isLocked,
+  hideLegend,
+}: ControlsSectionProps & { hideLegend?: boolean }) {
+  const t = useMessages();
+  return (
+    <Segmented
+      legend={t.branch}
+      value={state.design.branch}
+      locked={isLocked('branch')}
+      hideLegend={hideLegend}
+      options={[
+        { value: 'open', label: t.branchOpen },
+        { value: 'crossed', label: t.branchCrossed },
+      ]}
+      onChange={(b) => dispatch({ type: 'setBranch', branch: b })}
+    />
+  );
+}
+
 /** The input angle θ2 and the assembly branch. */
-export function InputSection({ state, dispatch, isLocked }: ControlsSectionProps) {
+export function InputSection(props: ControlsSectionProps) {
   const t = useMessages();
   return (
     <PanelSection id="sec-input" title={t.sectionInput}>
-      <NumberControl
-        field="theta2"
-        value={state.motion.theta2Deg}
-        decimals={THETA2_DECIMALS}
-        min={0}
-        max={360}
-        step={0.5}
-        turn={THETA2_KEYS}
-        unit="°"
-        locked={isLocked('theta2')}
-        onCommit={(v) => dispatch({ type: 'setTheta2', deg: v })}
-      />
-      <Segmented
-        legend={t.branch}
-        value={state.design.branch}
-        locked={isLocked('branch')}
-        options={[
-          { value: 'open', label: t.branchOpen },
-          { value: 'crossed', label: t.branchCrossed },
-        ]}
-        onChange={(b) => dispatch({ type: 'setBranch', branch: b })}
-      />
+      <Theta2Control {...props} />
+      <BranchControl {...props} />
     </PanelSection>
   );
 }
@@ -145,7 +165,12 @@ function StepButton({
 }
 
 /** Step back, Play/Pause and step forward. */
-function PlayRow({ state, dispatch, isLocked, onStep }: ControlsSectionProps & { onStep: (sign: 1 | -1) => void }) {
+export function PlayRow({
+  state,
+  dispatch,
+  isLocked,
+  onStep,
+}: ControlsSectionProps & { onStep: (sign: 1 | -1) => void }) {
   const t = useMessages();
   const playLocked = isLocked('play');
   // A linkage that assembles nowhere has nothing to play (the canvas says why).
@@ -173,15 +198,17 @@ export interface AnimationSectionProps extends ControlsSectionProps {
   onStep: (sign: 1 | -1) => void;
   compact: boolean;
   rocking: boolean;
+  /** Leave out Play and step (the phone bar holds them); default false. */
+  withoutPlay?: boolean;
 }
 
 /** Play and step; in the full layout also the speed and direction; a note when the input only rocks. */
-export function AnimationSection({ compact, rocking, ...props }: AnimationSectionProps) {
+export function AnimationSection({ compact, rocking, withoutPlay = false, ...props }: AnimationSectionProps) {
   const t = useMessages();
   const { state, dispatch } = props;
   return (
     <PanelSection id="sec-anim" title={t.sectionAnimation}>
-      <PlayRow {...props} />
+      {withoutPlay ? null : <PlayRow {...props} />}
       {!compact ? (
         <>
           <NumberControl
@@ -219,7 +246,6 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
         min={0}
         max={range.max}
         step={range.step}
-        unit={state.forces.lengthUnit}
         locked={isLocked('coupler')}
         onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { distance: v } })}
       />

@@ -1,5 +1,5 @@
 import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../../solver/types';
-import type { MotionPlotKind } from '../state/appState';
+import type { PlotKind } from '../state/appState';
 import type { OmegaUnit } from '../state/inputMotion';
 import type { FieldError, FieldName } from '../ui/validateNumber';
 import type { PresetId } from '../state/presets';
@@ -154,7 +154,8 @@ export interface Messages {
 
   plotSeparate: string;
   plotTogether: string;
-  plotLayout: string;
+  /** Name of the separate/together toggle, for the plots it lays out (issue 19: it said 'Angle plots' over velocities). */
+  plotLayout: Record<'angles' | 'velocities' | 'accelerations', string>;
   nrStartLabel: string;
   nrContinuation: string;
   nrCold: string;
@@ -200,7 +201,7 @@ export interface Messages {
   motionNoPose: string;
   motionNote: string;
   plotKind: string;
-  plotKinds: Record<MotionPlotKind, string>;
+  plotKinds: Record<PlotKind, string>;
   chartRates: Record<'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth', string>;
   axisOmega: string;
   axisAlpha: string;
@@ -236,7 +237,7 @@ export interface Messages {
   copyFailed: string;
   embedPanels: string;
   embedLock: string;
-  panelNames: { controls: string; info: string; plots: string; export: string; forces: string };
+  panelNames: { controls: string; info: string; plots: string; export: string };
   openFull: string;
   embedTitle: string;
 

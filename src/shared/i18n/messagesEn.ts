@@ -199,7 +199,7 @@ export const messagesEn: Messages = {
 
   plotSeparate: 'Separate',
   plotTogether: 'Together',
-  plotLayout: 'Angle plots',
+  plotLayout: { angles: 'Angle plots', velocities: 'Velocity plots', accelerations: 'Acceleration plots' },
   nrStartLabel: 'NR start',
   nrContinuation: 'Continuation',
   nrCold: 'Cold start',
@@ -285,7 +285,7 @@ export const messagesEn: Messages = {
   copyFailed: 'The clipboard is not available here: select the text below and copy it.',
   embedPanels: 'Show in the embed',
   embedLock: 'Lock in the embed',
-  panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export', forces: 'Forces' },
+  panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export' },
   openFull: 'Open the full simulator',
   embedTitle: 'Four-bar linkage simulator',
 

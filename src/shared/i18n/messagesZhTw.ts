@@ -199,7 +199,7 @@ export const messagesZhTw: Messages = {
 
   plotSeparate: '分開',
   plotTogether: '合併',
-  plotLayout: '角度圖',
+  plotLayout: { angles: '角度圖', velocities: '角速度圖', accelerations: '角加速度圖' },
   nrStartLabel: 'NR 起始值',
   nrContinuation: '延續前一點',
   nrCold: '冷啟動',
@@ -284,7 +284,7 @@ export const messagesZhTw: Messages = {
   copyFailed: '此處無法使用剪貼簿：請選取下方文字後自行複製。',
   embedPanels: '嵌入時顯示',
   embedLock: '嵌入時鎖定',
-  panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出', forces: '力分析' },
+  panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出' },
   openFull: '開啟完整模擬器',
   embedTitle: '四連桿機構模擬器',
 

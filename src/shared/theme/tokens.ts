@@ -143,6 +143,18 @@ export const CANVAS_TOOLS = {
   count: 3,
 } as const;
 
+/**
+ * The layout's breakpoints (CSS pixels, widest viewport of each): the phone layout (one column, the phone bar at
+ * the bottom) and the tablet layout (numbers below). src/app/layout.css's media queries use the same numbers.
+ */
+export const BREAKPOINTS = {
+  phoneMaxPx: 720,
+  tabletMaxPx: 1100,
+} as const;
+
+/** The media query of the phone layout. */
+export const PHONE_MEDIA = `(max-width: ${BREAKPOINTS.phoneMaxPx}px)`;
+
 /** Font sizes (CSS pixels): canvas labels, chart ticks and chart titles. */
 export const FONT_SIZES = {
   canvas: 12,
