@@ -1,6 +1,7 @@
-import { Suspense, lazy } from 'react';
+import { Suspense, lazy, useState } from 'react';
 import { LinkageStage } from '../features/simulator/LinkageStage';
 import { DragHint } from '../features/simulator/phone/DragHint';
+import { createForceLayer } from '../features/forces/forceLayer';
 import { shellMessages } from './shellMessages';
 import { SimulatorPlots } from './SimulatorPlots';
 import type { SimulatorSession } from './useSimulatorSession';
@@ -14,6 +15,8 @@ const TransmissionPanel = lazy(() =>
 export function SimulatorPage({ session }: { session: SimulatorSession }) {
   const { state, t, cycle, design, deg, xMarks, plotsRef } = session;
   const shell = shellMessages(state.shell.locale);
+  // The pin-force arrows the canvas draws while Forces and its arrows are on (the forces feature computes them).
+  const [forceLayer] = useState(createForceLayer);
   return (
     <>
       <section className="card stage">
@@ -26,6 +29,7 @@ export function SimulatorPage({ session }: { session: SimulatorSession }) {
           onSize={session.onCanvasSize}
           hint={shell.canvasHint({ crank: true, coupler: true })}
           onShown={session.onShown}
+          forceLayer={forceLayer}
         />
         <DragHint locale={state.shell.locale} />
       </section>

@@ -80,6 +80,7 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
           min={range.min}
           max={range.max}
           step={range.step}
+          unit={state.forces.lengthUnit}
           locked={isLocked(f)}
           onCommit={(v) => dispatch({ type: 'setLength', field: f, value: v })}
         />
@@ -246,6 +247,7 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
         min={0}
         max={range.max}
         step={range.step}
+        unit={state.forces.lengthUnit}
         locked={isLocked('coupler')}
         onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { distance: v } })}
       />

@@ -1,8 +1,8 @@
 import './PlotsPanel.css';
-import type { Dispatch } from 'react';
+import type { Dispatch, ReactNode } from 'react';
 import { Suspense, lazy, memo, useMemo } from 'react';
 import type { XMark } from '../../shared/charts/xMarks';
-import type { Action, PlotKind, PlotLayout } from '../../shared/state/appState';
+import type { Action, MotionPlotKind, PlotKind, PlotLayout } from '../../shared/state/appState';
 import { AngleChartView } from '../../shared/charts/Theta2ChartView';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
 import { angleChartInputs, angleMarker } from '../../shared/charts/chartInputs';
@@ -10,12 +10,22 @@ import { useFramePose } from '../../shared/linkage/FramePoseContext';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { CycleRates } from '../../shared/charts/rateInputs';
 import { Segmented } from '../../shared/ui/Segmented';
+import type { SegmentedOption } from '../../shared/ui/Segmented';
 
 // The rate charts load only when a rate plot is chosen: they are not part of the first load.
 const RatePlots = lazy(() => import('./RatePlots').then((m) => ({ default: m.RatePlots })));
 
-/** The plot chooser's choices, in order; a new kind of plot is one more entry (and its view below). */
-export const PLOT_KINDS: readonly PlotKind[] = ['angles', 'velocities', 'accelerations'];
+/** The plot chooser's own choices, in order; a new kind of plot is one more entry (and its view below). */
+export const PLOT_KINDS: readonly MotionPlotKind[] = ['angles', 'velocities', 'accelerations'];
+
+/**
+ * Plots another feature adds to the chooser (the forces' torque, pin forces and bearing load), composed in the app:
+ * their choices after the panel's own, and the view of a chosen one.
+ */
+export interface ExtraPlots {
+  options: readonly SegmentedOption<PlotKind>[];
+  render: (kind: PlotKind) => ReactNode;
+}
 
 /** Props of AnglePlotsPanel: the cycle in degrees and the display choices (the marker is the frame on screen). */
 export interface AnglePlotsPanelProps {
@@ -29,17 +39,29 @@ export interface AnglePlotsPanelProps {
   kind?: PlotKind;
   /** The cycle's rates on the plot samples (null until a rate plot's cycle arrives). */
   rates?: CycleRates | null;
+  /** Plots another feature adds (shown when chosen); default none: an extra kind in the state shows the angles. */
+  extra?: ExtraPlots | null;
 }
 
-/** The plots' choosers: which plots (angles, velocities, accelerations) and whether θ3 and θ4 share a chart. */
-function PlotsHead({ kind, layout, dispatch }: { kind: PlotKind; layout: PlotLayout; dispatch: Dispatch<Action> }) {
+/** The plots' choosers: which plots (angles, velocities, accelerations, extras) and whether θ3 and θ4 share a chart. */
+function PlotsHead({
+  kind,
+  layout,
+  dispatch,
+  extra,
+}: {
+  kind: PlotKind;
+  layout: PlotLayout;
+  dispatch: Dispatch<Action>;
+  extra: readonly SegmentedOption<PlotKind>[];
+}) {
   const t = useMessages();
   return (
     <div className="plots-head">
       <Segmented<PlotKind>
         legend={t.plotKind}
         value={kind}
-        options={PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] }))}
+        options={[...PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] })), ...extra]}
         onChange={(v) => dispatch({ type: 'setPlotKind', kind: v })}
       />
       <Segmented<PlotLayout>
@@ -55,6 +77,8 @@ function PlotsHead({ kind, layout, dispatch }: { kind: PlotKind; layout: PlotLay
   );
 }
 
+const NO_EXTRA: readonly SegmentedOption<PlotKind>[] = [];
+
 function AnglePlotsPanelImpl({
   deg,
   showOther,
@@ -63,6 +87,7 @@ function AnglePlotsPanelImpl({
   xMarks,
   kind = 'angles',
   rates = null,
+  extra = null,
 }: AnglePlotsPanelProps) {
   const t = useMessages();
   // The frame on screen: the markers (and the branch, which a rocking input switches) follow every frame of Play.
@@ -77,13 +102,18 @@ function AnglePlotsPanelImpl({
   const m3 = useMemo(() => angleMarker('theta3', point), [point]);
   const m4 = useMemo(() => angleMarker('theta4', point), [point]);
   const mBoth = useMemo(() => angleMarker('both', point), [point]);
+  // A kind whose feature is off (plot=trq without the forces) shows the angles.
+  const extraView = extra?.options.some((o) => o.value === kind) ? extra.render(kind) : null;
+  const shown: PlotKind = extraView !== null || (PLOT_KINDS as readonly PlotKind[]).includes(kind) ? kind : 'angles';
   return (
     <div className="plots-panel">
-      <PlotsHead kind={kind} layout={layout} dispatch={dispatch} />
-      {kind === 'velocities' || kind === 'accelerations' ? (
+      <PlotsHead kind={shown} layout={layout} dispatch={dispatch} extra={extra?.options ?? NO_EXTRA} />
+      {extraView !== null ? (
+        extraView
+      ) : shown === 'velocities' || shown === 'accelerations' ? (
         <Suspense fallback={<p className="note">…</p>}>
           <RatePlots
-            kind={kind}
+            kind={shown}
             rates={rates}
             current={currentRates}
             theta2Deg={mBoth.theta2Deg}
@@ -112,5 +142,5 @@ function AnglePlotsPanelImpl({
   );
 }
 
-/** The plots under the canvas: the chooser (angles, velocities, accelerations), then the chosen charts in two or one. */
+/** The plots under the canvas: the chooser (angles, velocities, accelerations, extras), then the chosen charts. */
 export const AnglePlotsPanel = memo(AnglePlotsPanelImpl);

@@ -1,5 +1,5 @@
 import type { LinkageType, NewtonStatus, PointStatus, SweepMethod } from '../../solver/types';
-import type { PlotKind } from '../state/appState';
+import type { MotionPlotKind } from '../state/appState';
 import type { OmegaUnit } from '../state/inputMotion';
 import type { FieldError, FieldName } from '../ui/validateNumber';
 import type { PresetId } from '../state/presets';
@@ -201,7 +201,7 @@ export interface Messages {
   motionNoPose: string;
   motionNote: string;
   plotKind: string;
-  plotKinds: Record<PlotKind, string>;
+  plotKinds: Record<MotionPlotKind, string>;
   chartRates: Record<'omega3' | 'omega4' | 'omegaBoth' | 'alpha3' | 'alpha4' | 'alphaBoth', string>;
   axisOmega: string;
   axisAlpha: string;
@@ -237,7 +237,7 @@ export interface Messages {
   copyFailed: string;
   embedPanels: string;
   embedLock: string;
-  panelNames: { controls: string; info: string; plots: string; export: string };
+  panelNames: { controls: string; info: string; plots: string; export: string; forces: string };
   openFull: string;
   embedTitle: string;
 

@@ -285,7 +285,7 @@ export const messagesEn: Messages = {
   copyFailed: 'The clipboard is not available here: select the text below and copy it.',
   embedPanels: 'Show in the embed',
   embedLock: 'Lock in the embed',
-  panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export' },
+  panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export', forces: 'Forces' },
   openFull: 'Open the full simulator',
   embedTitle: 'Four-bar linkage simulator',
 

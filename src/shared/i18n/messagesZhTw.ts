@@ -284,7 +284,7 @@ export const messagesZhTw: Messages = {
   copyFailed: '此處無法使用剪貼簿：請選取下方文字後自行複製。',
   embedPanels: '嵌入時顯示',
   embedLock: '嵌入時鎖定',
-  panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出' },
+  panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出', forces: '力分析' },
   openFull: '開啟完整模擬器',
   embedTitle: '四連桿機構模擬器',
 
