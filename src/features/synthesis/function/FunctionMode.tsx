@@ -1,20 +1,18 @@
 import '../motion/synthesisModes.css';
-import { Suspense, useId, useMemo, useState } from 'react';
+import { Suspense, useId, useMemo } from 'react';
 import type { Dispatch } from 'react';
-import { degToRad, radToDeg } from '../../../solver';
+import { degToRad } from '../../../solver';
 import type { Action, AppState } from '../../../shared/state/appState';
-import type { SynFunctionState } from '../../../shared/state/slices/synFunctionSlice';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
-import type { Messages } from '../../../shared/i18n/messages';
-import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
 import type { XYChartData } from '../../../shared/charts/xyChart';
 import { COLORS } from '../../../shared/theme/tokens';
-import { formatDeg, formatNumber, formatSci } from '../../../shared/format';
+import { formatNumber } from '../../../shared/format';
 import type { OpenDesign } from '../openDesign';
 import { functionMessagesFor } from './functionMessages';
-import type { FunctionMessages } from './functionMessages';
 import { useExpressionParser } from './useExpressionParser';
-import type { FunctionDesign } from './functionSolve';
+import { useSweep } from './useSweep';
+import { FunctionFacts } from './FunctionFacts';
+import { PrecisionTable } from './PrecisionTable';
 import { generatedAt, solveFunction } from './functionSolve';
 import { expressionProblemText, functionProblemText } from './expressionText';
 import { ExpressionField } from './ExpressionField';
@@ -28,89 +26,6 @@ export interface FunctionModeProps {
   dispatch: Dispatch<Action>;
   /** "Open in simulator" with the design (no markers: a function generator has no points in the plane). */
   onOpen: (design: OpenDesign) => void;
-}
-
-/** Seconds the animation takes from x0 to x1 (then it comes back). */
-const SWEEP_SECONDS = 3;
-
-/** Whether the person asked for less motion: then the linkage waits for Play. */
-const reducedMotion = () =>
-  typeof window !== 'undefined' && window.matchMedia?.('(prefers-reduced-motion: reduce)').matches === true;
-
-/** The design's lengths, type, largest error and defects in words. */
-function FunctionFacts({ fd, fm, t }: { fd: FunctionDesign; fm: FunctionMessages; t: Messages }) {
-  const { links, branch, maxError, defects } = fd.result;
-  const f = (v: number) => formatNumber(v, 5);
-  const percent = (100 * maxError) / Math.abs(fd.y1 - fd.y0);
-  return (
-    <div className="synmode-facts" data-testid="function-facts">
-      <p className="synmode-links">{fm.links(f(links.r1), f(links.r2), f(links.r3), f(links.r4))}</p>
-      <p>{fm.typeLine(t.types[fd.type])}</p>
-      <p>{fm.branchLine(branch === 'open' ? t.branchOpen : t.branchCrossed)}</p>
-      <p data-testid="function-max-error" data-value={maxError}>
-        {fm.maxError(formatNumber(maxError, 3), formatNumber(percent, 3))}
-      </p>
-      <h4 className="synmode-subtitle">{fm.defectsTitle}</h4>
-      {defects.length ? (
-        <ul className="synmode-defects" data-testid="function-defects">
-          {defects.map((d) => (
-            <li key={d} data-defect={d}>
-              {fm.defectWords[d]}
-            </li>
-          ))}
-        </ul>
-      ) : (
-        <p className="synmode-ok" data-testid="function-defects">
-          {fm.noDefects}
-        </p>
-      )}
-    </div>
-  );
-}
-
-/** The precision points (精確點): x, the angles they prescribe and the structural error there (≈ 0 for three). */
-function PrecisionTable({ fd, fm }: { fd: FunctionDesign; fm: FunctionMessages }) {
-  return (
-    <table className="synmode-table" data-testid="precision-table">
-      <caption className="sr-only">{fm.precisionCaption}</caption>
-      <thead>
-        <tr>
-          <th scope="col">{fm.columnX}</th>
-          <th scope="col">{fm.columnTheta2}</th>
-          <th scope="col">{fm.columnTheta4}</th>
-          <th scope="col">{fm.columnError}</th>
-        </tr>
-      </thead>
-      <tbody>
-        {fd.precision.map((p, i) => (
-          <tr key={i} data-x={p.x} data-error={p.error}>
-            <td>{formatNumber(p.x, 6)}</td>
-            <td>{formatDeg(radToDeg(p.theta2), 3)}</td>
-            <td>{formatDeg(radToDeg(p.theta4), 3)}</td>
-            <td>{formatSci(p.error, 2)}</td>
-          </tr>
-        ))}
-      </tbody>
-    </table>
-  );
-}
-
-/** The linkage moving through its range, ping-pong, with Play/Pause and an x slider (which pauses it). */
-function useSweep(s: SynFunctionState, active: boolean) {
-  const [playing, setPlaying] = useState(() => !reducedMotion());
-  const [phase, setPhase] = useState(0);
-  useAnimationFrame(active && playing, (dt) => setPhase((u) => (u + dt / SWEEP_SECONDS) % 2));
-  const [x0, x1] = s.xRange;
-  const along = phase <= 1 ? phase : 2 - phase;
-  return {
-    playing,
-    setPlaying,
-    x: x0 + (x1 - x0) * along,
-    setX: (x: number) => {
-      setPlaying(false);
-      setPhase(Math.min(1, Math.max(0, (x - x0) / (x1 - x0))));
-    },
-  };
 }
 
 /** Everything that needs the parser: it suspends until math.js has loaded. */

@@ -10,19 +10,14 @@ import { Segmented } from '../../../shared/ui/Segmented';
 import { formatNumber } from '../../../shared/format';
 import type { OpenDesign } from '../openDesign';
 import { motionMessagesFor } from './motionMessages';
-import type { MotionMessages } from './motionMessages';
-import type { MotionOutcome } from './motionSolve';
 import { solveMotion, toPose } from './motionSolve';
 import type { MotionPicture } from './motionPicture';
 import { centroid, nearestSample } from './motionPicture';
-import { nextPose, pivotsFor } from './motionEdits';
+import { nextPose } from './motionEdits';
 import { problemText } from './motionText';
 import { MotionCanvas } from './MotionCanvas';
 import { PoseTable } from './PoseTable';
-import { PivotPanel } from './PivotPanel';
-import { DyadPanel } from './DyadPanel';
-import { RockerPanel } from './RockerPanel';
-import { ChoiceList } from './ChoiceList';
+import { MethodPanel } from './MethodPanel';
 import { MotionFacts } from './MotionFacts';
 
 /** Props of MotionMode (as the synthesis page renders every mode). */
@@ -31,90 +26,6 @@ export interface MotionModeProps {
   dispatch: Dispatch<Action>;
   /** "Open in simulator" with the chosen design and the poses' points as markers. */
   onOpen: (design: OpenDesign) => void;
-}
-
-/** The method's own controls for the number of poses. */
-function MethodPanel({
-  outcome,
-  state,
-  dispatch,
-  cursor,
-  setCursor,
-  mt,
-}: {
-  outcome: MotionOutcome;
-  state: AppState;
-  dispatch: Dispatch<Action>;
-  cursor: number;
-  setCursor: (index: number) => void;
-  mt: MotionMessages;
-}) {
-  const s = state.synMotion;
-  const t = useMessages();
-  switch (outcome.count) {
-    case 2:
-      return (
-        <RockerPanel
-          outcome={outcome}
-          swingDeg={s.poses[1].angleDeg - s.poses[0].angleDeg}
-          auto={s.groundLength === null}
-          timeRatio={s.timeRatio}
-          choice={s.choice}
-          onGround={(length) => dispatch({ type: 'setSynGround', length })}
-          onTimeRatio={(ratio) => dispatch({ type: 'setSynTimeRatio', ratio })}
-          onChoose={(choice) => dispatch({ type: 'setSynChoice', choice })}
-          mt={mt}
-        />
-      );
-    case 3:
-      return (
-        <PivotPanel
-          choice={s.pivotChoice}
-          pivots={s.pivots}
-          onChoice={(choice) =>
-            dispatch({
-              type: 'setSynPivotChoice',
-              choice,
-              pivots: pivotsFor(choice, outcome.chosen, s.poses, s.pivots),
-            })
-          }
-          onPivot={(index, point) => dispatch({ type: 'setSynPivot', index, point })}
-          mt={mt}
-        />
-      );
-    case 4:
-      return (
-        <DyadPanel
-          samples={outcome.curves.flat()}
-          cursor={cursor}
-          onCursor={setCursor}
-          onPick={(pair) => dispatch({ type: 'pickSynDyad', center: pair.center })}
-          onClear={() => dispatch({ type: 'clearSynDyads' })}
-          picked={s.dyadPicks.length}
-          mt={mt}
-        />
-      );
-    default:
-      return (
-        <>
-          <p className="note" data-testid="burmester-count">
-            {mt.burmesterPoints(outcome.points.length)}
-          </p>
-          {outcome.fourBars.length ? (
-            <ChoiceList
-              legend={mt.fourBarsTitle}
-              testId="burmester-fourbars"
-              items={outcome.fourBars.map((b, i) => ({
-                label: mt.fourBarItem(i + 1, b.pairs ? `${b.pairs[0] + 1} + ${b.pairs[1] + 1}` : ''),
-                detail: `${t.types[b.type]} · ${b.defects.length ? b.defects.map((d) => mt.defectShort[d]).join(', ') : mt.noDefectsShort}`,
-              }))}
-              chosen={Math.min(s.choice, outcome.fourBars.length - 1)}
-              onChoose={(choice) => dispatch({ type: 'setSynChoice', choice })}
-            />
-          ) : null}
-        </>
-      );
-  }
 }
 
 /**
