@@ -65,11 +65,9 @@ export function ForceField({ label, unit, value, min, max, onCommit, t, testId }
             }
           }}
         />
-        {unit ? (
-          <span className="frc-unit" aria-hidden="true">
-            {unit}
-          </span>
-        ) : null}
+        <span className="frc-unit" aria-hidden="true">
+          {unit}
+        </span>
       </span>
       {error ? (
         <p id={`${id}-error`} className="frc-field-error" role="alert">

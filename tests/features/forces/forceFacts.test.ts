@@ -1,0 +1,90 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import type { AppState } from '../../../src/shared/state/appState';
+import { localPose } from '../../../src/shared/linkage/localPose';
+import { forcesMessagesEn as t } from '../../../src/features/forces/forcesMessagesEn';
+import {
+  MISSING,
+  cycleFacts,
+  poseFacts,
+  poseReason,
+  shownMean,
+  toggleNote,
+} from '../../../src/features/forces/forceFacts';
+import { forceSetup, poseForces } from '../../../src/features/forces/forceModel';
+import { cycleForces } from '../../../src/features/forces/forceCycleData';
+import { createForceLayer } from '../../../src/features/forces/forceLayer';
+
+const ON: AppState = { ...DEFAULT_STATE, forces: { ...DEFAULT_STATE.forces, enabled: true } };
+
+describe('poseFacts', () => {
+  it('reads "Input torque T12" then its value in N·m, and each pin force as magnitude and direction', () => {
+    const setup = forceSetup(ON);
+    const local = localPose(ON.design.linkage, 45, 'open', ON.design.coupler, false);
+    const p = poseForces(setup, local.theta2Rad, local.pose);
+    const facts = poseFacts(p, t);
+    expect(facts[0].label).toBe('Input torque T12');
+    expect(facts[0].value).toMatch(/^−?\d[\d.]* N·m$/);
+    expect(Number(facts[0].value.replace('−', '-').split(' ')[0])).toBeCloseTo(p.forces!.torque, 3);
+    expect(facts.find((f) => f.key === 'F12')?.value).toMatch(/^\d[\d.]* N, at \d+(\.\d)?°$/);
+    expect(poseReason(p, t)).toBeNull();
+  });
+
+  it('shows "—" with the reason at a limit position, never NaN', () => {
+    const p = poseForces(forceSetup(ON), 0.3, { theta3: 1, theta4: 1 });
+    const facts = poseFacts(p, t);
+    for (const f of facts) expect(f.value).toBe(MISSING);
+    expect(poseReason(p, t)).toBe(t.limitReason);
+    expect(JSON.stringify(facts)).not.toMatch(/NaN|Infinity/);
+  });
+
+  it('says the pin forces grow like 1/sin μ near a toggle, and nothing away from one', () => {
+    const setup = forceSetup(ON);
+    const near = poseForces(setup, 0.3, { theta3: 1, theta4: 1.1 });
+    expect(toggleNote(near, 0.1, t)).toMatch(/1\/sin μ, here 10 times/);
+    const far = poseForces(setup, 0.3, { theta3: 0, theta4: 1.5 });
+    expect(toggleNote(far, 1.5, t)).toBeNull();
+  });
+});
+
+describe('cycleFacts', () => {
+  it('gives ΔE and the flywheel for k, and shows a zero mean as 0', () => {
+    const c = cycleForces(forceSetup(ON), 'open', 360);
+    const f = cycleFacts(c, 10, t);
+    expect(f.reason).toBeNull();
+    expect(f.energy).toMatch(/ J$/);
+    expect(f.flywheel).toMatch(/ kg·m²$/);
+    // Bars under gravity at a steady speed: the motor only lends energy and takes it back.
+    expect(f.mean).toBe('0 N·m');
+    expect(shownMean({ mean: 1e-3, peak: 10 })).toBe(1e-3);
+  });
+
+  it('says why there is no cycle for a crank that cannot turn, and for a crank at rest', () => {
+    const rocker: AppState = { ...ON, design: { ...ON.design, linkage: { r1: 4, r2: 3, r3: 3.5, r4: 3 } } };
+    const f = cycleFacts(cycleForces(forceSetup(rocker), 'open', 90), 10, t);
+    expect(f.reason).toBe(t.cycleGaps['crank-does-not-turn']);
+    expect([f.mean, f.energy, f.flywheel]).toEqual([MISSING, MISSING, MISSING]);
+    const still = cycleFacts(cycleForces(forceSetup(ON), 'open', 90), 0, t);
+    expect(still.reason).toBe(t.cycleGaps['omega-zero']);
+  });
+});
+
+describe('createForceLayer', () => {
+  const local = localPose(ON.design.linkage, 45, 'open', ON.design.coupler, false);
+
+  it('solves nothing and draws nothing while Forces or its arrows are off', () => {
+    const layer = createForceLayer();
+    expect(layer(DEFAULT_STATE, local)).toBeNull();
+    expect(layer(ON, local)).toBeNull();
+  });
+
+  it('puts F12 at O2, F32 at A, F43 at B and F14 at O4, as the solver gives them', () => {
+    const layer = createForceLayer();
+    const state = { ...ON, forces: { ...ON.forces, showVectors: true } };
+    const f = layer(state, local);
+    const p = poseForces(forceSetup(state), local.theta2Rad, local.pose).forces!;
+    expect(f?.pins).toEqual({ O2: p.F12, A: p.F32, B: p.F43, O4: p.F14 });
+    expect(f?.scale?.value).toBeGreaterThan(0);
+    expect(f?.text.label.O2).toBe('F12');
+  });
+});
