@@ -85,7 +85,9 @@ function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
               }}
               labels={{ canvas: fm.canvasLabel, zoomIn: t.zoomIn, zoomOut: t.zoomOut, resetView: t.resetView }}
             />
-          ) : null}
+          ) : (
+            <p className="note synmode-empty">{fm.noDesign}</p>
+          )}
         </section>
         {fd && at ? (
           <div className="synmode-sweep">

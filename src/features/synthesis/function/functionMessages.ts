@@ -45,6 +45,8 @@ export interface FunctionMessages {
   rangeWhy: { ends: string; within: (max: string) => string; span: (max: string) => string };
   pointsWhy: (max: number) => string;
   canvasLabel: string;
+  /** Shown on the canvas when there is no design (the reason is with the fields). */
+  noDesign: string;
   play: string;
   pause: string;
   xSlider: string;

@@ -57,6 +57,7 @@ export const functionMessagesEn: FunctionMessages = {
   },
   pointsWhy: (max) => `it must be a whole number from 3 to ${max}`,
   canvasLabel: 'Function generator moving through its range',
+  noDesign: 'No linkage to show: the message with the fields says why.',
   play: 'Play',
   pause: 'Pause',
   xSlider: 'x',

@@ -55,6 +55,7 @@ export const functionMessagesZhTw: FunctionMessages = {
   },
   pointsWhy: (max) => `必須是 3 到 ${max} 的整數`,
   canvasLabel: '函數產生器在其範圍內運動',
+  noDesign: '沒有可顯示的連桿機構：原因請見欄位旁的訊息。',
   play: '播放',
   pause: '暫停',
   xSlider: 'x',
