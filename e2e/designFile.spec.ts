@@ -112,9 +112,15 @@ test.describe('design files', () => {
       .poll(() => page.evaluate(() => localStorage.getItem('fourbar-lab.autosave') ?? ''))
       .toMatch(/"w2u": "deg"/);
 
+    // A share link shows no offer, and opening the app writes no autosave before a change: the clock is moved on
+    // past the autosave's debounce (fake timers), and the last session is still the one kept.
+    await page.clock.install();
     await page.goto('./?r1=3');
     await waitReady(page);
     await expect(page.getByTestId('restore-offer')).toHaveCount(0);
+    await page.clock.fastForward(5000);
+    await expect(page.getByRole('textbox', { name: /^r1/ })).toHaveValue('3');
+    expect(await page.evaluate(() => localStorage.getItem('fourbar-lab.autosave') ?? '')).toMatch(/"w2u": "deg"/);
 
     await page.goto('./');
     await waitReady(page);
@@ -141,4 +147,41 @@ test.describe('design files', () => {
     await expect(offer).toHaveCount(0);
     await expect(page.getByRole('textbox', { name: /^r1/ })).toHaveValue('6');
   });
+});
+
+test.describe('the design bar on a phone', () => {
+  test.use({ viewport: { width: 390, height: 844 }, hasTouch: true });
+
+  for (const lang of ['en', 'zh-TW'] as const) {
+    test(`is in reach at 390×844 and saves and opens (${lang})`, async ({ page }) => {
+      const names =
+        lang === 'en'
+          ? { save: 'Save design', open: 'Open design', undo: 'Undo', theta2: /^θ2/ }
+          : { save: '儲存設計', open: '開啟設計', undo: '復原', theta2: /^θ2/ };
+      await page.goto(`./?lang=${lang}`);
+      await waitReady(page);
+      for (const name of [names.save, names.open, names.undo]) {
+        const box = await page.getByRole('button', { name, exact: true }).boundingBox();
+        expect(box, name).not.toBeNull();
+        // On screen without scrolling, and big enough for a finger (40 CSS px).
+        expect(box!.y + box!.height).toBeLessThanOrEqual(844);
+        expect(box!.x + box!.width).toBeLessThanOrEqual(390);
+        expect(Math.min(box!.width, box!.height)).toBeGreaterThanOrEqual(40);
+      }
+      const theta2 = page.getByRole('textbox', { name: names.theta2 }).first();
+      await theta2.fill('100');
+      await expect.poll(() => urlParam(page, 't2')).toBe('100');
+      const download = page.waitForEvent('download');
+      await page.getByRole('button', { name: names.save, exact: true }).tap();
+      const path = artifact(`phone-${lang}.fourbar.json`);
+      await (await download).saveAs(path);
+      await theta2.fill('200');
+      await expect.poll(() => urlParam(page, 't2')).toBe('200');
+      const chooser = page.waitForEvent('filechooser');
+      await page.getByRole('button', { name: names.open, exact: true }).tap();
+      await (await chooser).setFiles(path);
+      await expect(theta2).toHaveValue('100');
+      await page.screenshot({ path: artifact(`design-bar-390-${lang}.png`) });
+    });
+  }
 });

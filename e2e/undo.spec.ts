@@ -41,11 +41,13 @@ test.describe('undo and redo', () => {
     const r = Math.hypot(a.x - o2.x, a.y - o2.y);
     await page.mouse.move(a.x, a.y);
     await page.mouse.down();
-    // Forty moves along an arc to 150°: forty state changes in one gesture.
+    // Forty moves along an arc to 150°: forty state changes in one gesture. Half way the hand holds A still for
+    // longer than a burst (BURST_MS, 1 s): the pause is part of the gesture under test, not a wait for the app.
     for (let i = 1; i <= 40; i++) {
       const deg = 45 + (105 * i) / 40;
       const rad = (deg * Math.PI) / 180;
       await page.mouse.move(o2.x + r * Math.cos(rad), o2.y - r * Math.sin(rad));
+      if (i === 20) await page.waitForTimeout(1300);
     }
     await page.mouse.up();
     await expect.poll(() => Number(urlParam(page, 't2'))).toBeGreaterThan(140);
@@ -135,5 +137,6 @@ test.describe('undo and redo', () => {
     await page.getByRole('combobox', { name: 'Language' }).selectOption('zh-TW');
     await expect(page.getByRole('button', { name: '復原', exact: true })).toBeDisabled();
     await expect(page.getByRole('button', { name: '重做', exact: true })).toBeDisabled();
+    await page.screenshot({ path: artifact('undo-bar-1280-zh-TW.png') });
   });
 });

@@ -27,12 +27,20 @@ interface BarButtonProps {
   title: string;
   onClick: () => void;
   disabled?: boolean;
+  /** Show only the icon at every width (the label stays the accessible name). */
+  iconOnly?: boolean;
 }
 
-/** A button of the bar: an icon and its label (the label hides on phones; it stays the accessible name). */
-function BarButton({ icon, label, title, onClick, disabled = false }: BarButtonProps) {
+/** A button of the bar: an icon and its label (hidden on narrow screens, or always when iconOnly; it stays the name). */
+function BarButton({ icon, label, title, onClick, disabled = false, iconOnly = false }: BarButtonProps) {
   return (
-    <button type="button" className="design-btn" title={title} onClick={onClick} disabled={disabled}>
+    <button
+      type="button"
+      className={`design-btn${iconOnly ? ' icon-only' : ''}`}
+      title={title}
+      onClick={onClick}
+      disabled={disabled}
+    >
       <Icon name={icon} />
       <span className="design-btn-label">{label}</span>
     </button>
@@ -43,12 +51,14 @@ interface RecentMenuProps {
   recent: readonly RecentDesign[];
   label: string;
   listLabel: string;
+  /** An entry's accessible name, and its time as shown. */
   item: (d: RecentDesign) => string;
+  time: (d: RecentDesign) => string;
   onOpen: (d: RecentDesign) => void;
 }
 
 /** The recent designs as a disclosure menu; Escape or a click outside closes it. */
-function RecentMenu({ recent, label, listLabel, item, onOpen }: RecentMenuProps) {
+function RecentMenu({ recent, label, listLabel, item, time, onOpen }: RecentMenuProps) {
   const [open, setOpen] = useState(false);
   const root = useRef<HTMLDivElement>(null);
   useEffect(() => {
@@ -71,7 +81,7 @@ function RecentMenu({ recent, label, listLabel, item, onOpen }: RecentMenuProps)
     <div className="recent-menu" ref={root}>
       <button
         type="button"
-        className="design-btn"
+        className="design-btn icon-only"
         aria-expanded={open}
         aria-controls="recent-designs"
         title={listLabel}
@@ -86,12 +96,14 @@ function RecentMenu({ recent, label, listLabel, item, onOpen }: RecentMenuProps)
             <li key={d.name}>
               <button
                 type="button"
+                aria-label={item(d)}
                 onClick={() => {
                   setOpen(false);
                   onOpen(d);
                 }}
               >
-                {item(d)}
+                <span className="recent-name">{d.name}</span>
+                <span className="recent-time">{time(d)}</span>
               </button>
             </li>
           ))}
@@ -115,8 +127,8 @@ export function DesignBar({ state, dispatch, undo, redo, canUndo, canRedo }: Des
   return (
     <>
       <div className="design-bar" role="group" aria-label={t.barLabel}>
-        <BarButton icon="undo" label={t.undo} title={t.undoKeys} onClick={undo} disabled={!canUndo} />
-        <BarButton icon="redo" label={t.redo} title={t.redoKeys} onClick={redo} disabled={!canRedo} />
+        <BarButton icon="undo" label={t.undo} title={t.undoKeys} onClick={undo} disabled={!canUndo} iconOnly />
+        <BarButton icon="redo" label={t.redo} title={t.redoKeys} onClick={redo} disabled={!canRedo} iconOnly />
         <BarButton icon="save" label={t.save} title={t.saveTitle} onClick={files.save} />
         <BarButton icon="open" label={t.open} title={t.openTitle} onClick={() => input.current?.click()} />
         <input
@@ -136,6 +148,7 @@ export function DesignBar({ state, dispatch, undo, redo, canUndo, canRedo }: Des
           label={t.recent}
           listLabel={t.recentLabel}
           item={(d) => t.recentItem(d.name, shownTime(d.at, locale))}
+          time={(d) => shownTime(d.at, locale)}
           onOpen={files.openRecent}
         />
       </div>

@@ -58,18 +58,18 @@ describe('historyReducer', () => {
   });
 
   it('makes one step of every change in one gesture, however long it lasts', () => {
-    // A drag: 300 moves over 30 s, each 100 ms apart (well past any burst).
-    const moves = Array.from({ length: 300 }, (_, i) => [{ type: 'setA', value: i + 1 }, i * 100, 7] as const);
+    // A slow drag: 300 moves over 7.5 minutes, each 1.5 s after the last (each pause longer than a burst).
+    const moves = Array.from({ length: 300 }, (_, i) => [{ type: 'setA', value: i + 1 }, i * 1500, 7] as const);
     const h = run(initHistory(START), moves);
     expect(h.past).toHaveLength(1);
     expect(h.present.a).toBe(300);
     expect(reduce(h, undo).present.a).toBe(0);
   });
 
-  it('joins changes of one gesture even across keys (a pinch, a drag that moves two things)', () => {
+  it('joins changes of one gesture even across keys and pauses (a pinch, a drag that moves two things)', () => {
     const h = run(initHistory(START), [
       [{ type: 'setA', value: 1 }, 0, 3],
-      [{ type: 'setB', value: 1 }, 10, 3],
+      [{ type: 'setB', value: 1 }, 5000, 3],
     ]);
     expect(h.past).toHaveLength(1);
   });
@@ -143,6 +143,16 @@ describe('historyReducer', () => {
     expect(again.past.map((s) => s.a)).toEqual([0, 1]);
     const r = run(reduce(u, redo), [[{ type: 'setA', value: 8 }, 2002]]);
     expect(r.past.map((s) => s.a)).toEqual([0, 1, 2]);
+  });
+
+  it('never joins a change of the same gesture to the step before an undo', () => {
+    const h = run(initHistory(START), [
+      [{ type: 'setA', value: 1 }, 0],
+      [{ type: 'setA', value: 2 }, 5000, 9],
+    ]);
+    const again = run(reduce(h, undo), [[{ type: 'setA', value: 7 }, 5001, 9]]);
+    expect(again.past.map((s) => s.a)).toEqual([0, 1]);
+    expect(reduce(again, undo).present.a).toBe(1);
   });
 
   it(`keeps at most HISTORY_CAP (${HISTORY_CAP}) steps, dropping the oldest`, () => {
