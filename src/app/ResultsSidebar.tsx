@@ -6,6 +6,7 @@ import { useFrameMotion } from '../features/simulator/useFrameMotion';
 import { useLinkagePose } from '../features/simulator/useLinkagePose';
 import { ExportPanel } from '../features/export/ExportPanel';
 import { SharePanel } from '../features/share/SharePanel';
+import { PrintReportSection } from './PrintReportSection';
 import { ForcesSection } from '../features/forces/ForcesSection';
 import { useLatest } from '../shared/hooks/useLatest';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
@@ -67,6 +68,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
           blocked={exportBlocked(session.design, session.t)}
         />
       </PanelSection>
+      <PrintReportSection session={session} />
       <PanelSection className="card" id="sec-share" title={t.sectionShare}>
         <SharePanel stateRef={stateRef} />
       </PanelSection>

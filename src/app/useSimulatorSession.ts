@@ -81,6 +81,8 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
     design,
     xMarks,
     onShown,
+    /** The frame the linkage view drew last (the printed report draws it). */
+    shown,
     playhead,
     onStep,
     onViewChange,

@@ -1,0 +1,55 @@
+import { useCallback, useEffect, useState } from 'react';
+import { flushSync, createPortal } from 'react-dom';
+import { PrintReport } from '../features/report/PrintReport';
+import { PrintReportButton } from '../features/report/PrintReportButton';
+import type { ReportContent } from '../features/report/reportContent';
+import { reportMessages } from '../features/report/reportMessages';
+import { useLatest } from '../shared/hooks/useLatest';
+import { PanelSection } from '../shared/ui/PanelSection';
+import { reportContentOf } from './reportContentOf';
+import type { SimulatorSession } from './useSimulatorSession';
+
+/**
+ * The report's section of the results column (the "Print report" button and its PDF note) and the report itself,
+ * made when printing starts (Ctrl+P or the button: beforeprint; print media emulated: the print media query) from
+ * the frame on screen, and set straight into the page's body (PrintReport.css shows only it in print).
+ */
+export function PrintReportSection({ session }: { session: SimulatorSession }) {
+  const m = reportMessages(session.state.shell.locale);
+  const [content, setContent] = useState<ReportContent | null>(null);
+  const latest = useLatest(session);
+  // Built in event handlers from the latest committed session, never during render.
+  const build = useCallback((): ReportContent | null => {
+    const s = latest.current;
+    const frame = s.shown();
+    if (!frame) return null;
+    const m2 = reportMessages(s.state.shell.locale);
+    return reportContentOf({ frame, cycle: s.cycle, design: s.design, deg: s.deg, point: s.point, t: s.t, m: m2 });
+  }, [latest]);
+  useEffect(() => {
+    const before = () => flushSync(() => setContent(build()));
+    const after = () => setContent(null);
+    const print = window.matchMedia?.('print');
+    const onMedia = () => (print?.matches ? before() : after());
+    window.addEventListener('beforeprint', before);
+    window.addEventListener('afterprint', after);
+    print?.addEventListener('change', onMedia);
+    return () => {
+      window.removeEventListener('beforeprint', before);
+      window.removeEventListener('afterprint', after);
+      print?.removeEventListener('change', onMedia);
+    };
+  }, [build]);
+  return (
+    <PanelSection className="card" id="sec-report" title={m.section}>
+      <PrintReportButton
+        m={m}
+        onPrint={() => {
+          flushSync(() => setContent(build()));
+          window.print();
+        }}
+      />
+      {content ? createPortal(<PrintReport content={content} m={m} />, document.body) : null}
+    </PanelSection>
+  );
+}
