@@ -197,7 +197,13 @@ test.describe('the simulator', () => {
   test('never draws NaN into the page', async ({ page }) => {
     await page.goto('./?r1=10&r2=1&r3=2&r4=3');
     await waitReady(page);
-    await expect(page.getByRole('status').filter({ hasText: 'cannot be assembled at any input angle' })).toHaveCount(1);
+    // Said on the canvas, and on the export panel's status line (its buttons wait for a linkage that assembles).
+    await expect(
+      page.locator('.stage').getByRole('status').filter({ hasText: 'cannot be assembled at any input angle' }),
+    ).toHaveCount(1);
+    await expect(page.locator('.export-panel').getByRole('status').first()).toHaveText(
+      'This linkage cannot be assembled at any input angle',
+    );
     const html = await page.locator('main').innerHTML();
     expect(html).not.toContain('NaN');
     const right = await page.locator('.rightbar').innerText();

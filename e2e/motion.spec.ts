@@ -164,6 +164,8 @@ test.describe('velocity and acceleration', () => {
       'status',
       'iterations',
       'residual',
+      'omega2_rad_s',
+      'alpha2_rad_s2',
     ]);
     const col = (name: string) => header.indexOf(name);
     const data = rows.slice(1);

@@ -2,8 +2,13 @@ import { csvFormatRows } from 'd3-dsv';
 import type { PointStatus } from '../solver/types';
 import { radToDeg, radToDeg180 } from '../solver/angles';
 
-/** Per-row motion of the cycle: rates (rad/s, rad/s²), transmission angle (radians) and P (length unit, per s, per s²). */
+/**
+ * Per-row motion of the cycle: rates (rad/s, rad/s²), transmission angle (radians) and P (length unit, per s, per
+ * s²), and the input motion it was solved for.
+ */
 export interface CycleMotion {
+  /** ω2 (rad/s) and α2 (rad/s²) of the input, signed by the direction it turns (clockwise: ω2 < 0). */
+  input: { omega2: number; alpha2: number };
   omega3: ArrayLike<number>;
   omega4: ArrayLike<number>;
   alpha3: ArrayLike<number>;
@@ -65,6 +70,13 @@ export const CSV_MOTION_HEADER = [
   'apy',
 ] as const;
 
+/**
+ * The input motion's columns, written after residual with the motion columns: ω2 in rad/s and α2 in rad/s², the
+ * same on every row, signed by the direction the input turns (a clockwise input has ω2 < 0), so the file says what
+ * its rates were solved for.
+ */
+export const CSV_INPUT_HEADER = ['omega2_rad_s', 'alpha2_rad_s2'] as const;
+
 /** The force columns, written after all the others when Forces is on: T12 in N·m, then F12, F32, F43, F14 in N (SI). */
 export const CSV_FORCE_HEADER = [
   'torque_Nm',
@@ -101,13 +113,14 @@ export function csvNumber(x: number): string {
  * degrees as swept, theta3 and theta4 in degrees wrapped to (-180, 180], status, NR iterations and residual.
  * Angles and residual are empty where the point is not assembled. With table.motion the CSV_MOTION_HEADER
  * columns follow theta4_deg, each cell empty where its value is not finite (not assembled, a limit position).
- * With table.forces the CSV_FORCE_HEADER columns come last, empty likewise.
+ * With table.motion the CSV_INPUT_HEADER columns follow residual, on every row. With table.forces the
+ * CSV_FORCE_HEADER columns come last, empty where the point is not assembled.
  */
 export function cycleToCsv(table: CycleTable): string {
   const m = table.motion ?? null;
   const f = table.forces ?? null;
   const header: string[] = m
-    ? [...CSV_HEADER.slice(0, 3), ...CSV_MOTION_HEADER, ...CSV_HEADER.slice(3)]
+    ? [...CSV_HEADER.slice(0, 3), ...CSV_MOTION_HEADER, ...CSV_HEADER.slice(3), ...CSV_INPUT_HEADER]
     : [...CSV_HEADER];
   if (f) header.push(...CSV_FORCE_HEADER);
   const rows: string[][] = [header];
@@ -139,6 +152,8 @@ export function cycleToCsv(table: CycleTable): string {
       table.status[i] ?? 'failed',
       csvNumber(table.iterations[i]),
       ok ? csvNumber(table.residual[i]) : '',
+      // The input is driven whether or not the loop closes: its columns are on every row.
+      ...(m ? [csvNumber(m.input.omega2), csvNumber(m.input.alpha2)] : []),
       ...(f ? FORCE_COLUMNS.map((k) => (ok ? csvNumber(f[k][i]) : '')) : []),
     ]);
   }

@@ -196,6 +196,8 @@ export interface TableResponse {
 
 /** Per-row motion of a table: rates, transmission angle (radians in [0, pi]) and the coupler point (length unit). */
 export interface TableMotion extends RateSeries {
+  /** The input motion the rows were solved for: ω2 (rad/s) and α2 (rad/s²), signed by the direction it turns. */
+  input: InputMotion;
   mu: Float64Array;
   px: Float64Array;
   py: Float64Array;

@@ -169,7 +169,8 @@ function tableMotion(
   const rates = sweepRates(l, theta2, r.theta3, r.theta4, ok, input);
   const n = theta2.length;
   const col = () => new Float64Array(n).fill(Number.NaN);
-  const m: TableMotion = { ...rates, mu: col(), px: col(), py: col(), vpx: col(), vpy: col(), apx: col(), apy: col() };
+  const cols = { mu: col(), px: col(), py: col(), vpx: col(), vpy: col(), apx: col(), apy: col() };
+  const m: TableMotion = { ...rates, input: { omega2: input.omega2, alpha2: input.alpha2 }, ...cols };
   for (let i = 0; i < n; i++) {
     if (!ok(i)) continue;
     const pose = { theta3: r.theta3[i], theta4: r.theta4[i] };

@@ -1,6 +1,6 @@
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
-import { CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../../src/shared/csv';
+import { CSV_HEADER, CSV_INPUT_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../../src/shared/csv';
 import { computeTable } from '../../../src/workers/compute';
 import { cycleTableOf } from '../../../src/features/export/exporters';
 import { referenceMotion } from '../../oracle/rates';
@@ -41,8 +41,15 @@ describe('cycleToCsv with motion', () => {
       'status',
       'iterations',
       'residual',
+      'omega2_rad_s',
+      'alpha2_rad_s2',
     ]);
-    expect(header).toEqual([...CSV_HEADER.slice(0, 3), ...CSV_MOTION_HEADER, ...CSV_HEADER.slice(3)]);
+    expect(header).toEqual([
+      ...CSV_HEADER.slice(0, 3),
+      ...CSV_MOTION_HEADER,
+      ...CSV_HEADER.slice(3),
+      ...CSV_INPUT_HEADER,
+    ]);
   });
 
   it('agrees with the 80-digit differentiated positions on every row', () => {
@@ -74,6 +81,17 @@ describe('cycleToCsv with motion', () => {
     }
   });
 
+  it('records the input motion it was solved for on every row, ω2 negative for a clockwise input', () => {
+    const l = { r1: 4, r2: 3, r3: 3.5, r4: 3 };
+    // The export asks with the effective input: a clockwise 7.5 rad/s crank is ω2 = −7.5 (inputMotion.ts).
+    const { header, data } = exportCsv(l, { omega2: -7.5, alpha2: 40 });
+    expect(data.some((r) => r[header.indexOf('status')] !== 'ok')).toBe(true);
+    for (const r of data) {
+      expect(r[header.indexOf('omega2_rad_s')]).toBe('-7.5');
+      expect(r[header.indexOf('alpha2_rad_s2')]).toBe('40');
+    }
+  });
+
   it('leaves every motion cell empty where the linkage cannot assemble', () => {
     const { header, data } = exportCsv({ r1: 4, r2: 3, r3: 3.5, r4: 3 });
     const unreachable = data.filter((r) => r[col(header, 'status')] === 'unreachable');
@@ -93,6 +111,7 @@ describe('cycleToCsv with motion', () => {
       iterations: [1],
       residual: [0],
       motion: {
+        input: { omega2: 10, alpha2: 0 },
         omega3: [Number.NaN],
         omega4: [Number.POSITIVE_INFINITY],
         alpha3: [Number.NaN],
@@ -124,6 +143,8 @@ describe('cycleToCsv with motion', () => {
       '',
       'ok',
       '1',
+      '0',
+      '10',
       '0',
     ]);
   });
