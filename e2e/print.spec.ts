@@ -81,6 +81,8 @@ for (const lang of ['en', 'zh-TW'] as const) {
         .map((el) => el.outerHTML.slice(0, 80)),
     );
     expect(shownControls).toEqual([]);
+    // Nothing of the report is cut off by its one-page box (PrintReport.css clips what would not fit).
+    expect(await sheet.evaluate((el) => el.scrollHeight - el.clientHeight)).toBeLessThanOrEqual(1);
     await page.screenshot({ path: artifact(`print-${lang}.png`), fullPage: true });
     for (const format of ['A4', 'Letter'] as const) {
       const pdf = await page.pdf({ format });
@@ -100,6 +102,7 @@ test('the report prints the chosen plots: the velocity plot when velocities are 
   await expect(sheet).toBeVisible();
   await expect(sheet.locator('.report-plot svg')).toHaveCount(1);
   await expect(sheet.locator('.report-plot svg text', { hasText: /^ω3/ }).first()).toBeAttached();
+  expect(await sheet.evaluate((el) => el.scrollHeight - el.clientHeight)).toBeLessThanOrEqual(1);
   const pdf = await page.pdf({ format: 'A4' });
   expect(pdfPages(pdf)).toBe(1);
 });
