@@ -66,11 +66,12 @@ test.describe('exports', () => {
     expect(text).not.toMatch(/NaN|Infinity/);
     const rows = csvParseRows(text);
     if (rows[rows.length - 1].length === 1 && rows[rows.length - 1][0] === '') rows.pop();
-    // The position columns; the motion columns between theta4_deg and status are motion.spec.ts's.
+    // The position columns; the motion columns between theta4_deg and status, and the input's after residual,
+    // are motion.spec.ts's.
     const header = rows[0];
     expect(header.slice(0, 3)).toEqual(['theta2_deg', 'theta3_deg', 'theta4_deg']);
-    expect(header.slice(-3)).toEqual(['status', 'iterations', 'residual']);
-    const [cStatus, cIter, cRes] = [header.length - 3, header.length - 2, header.length - 1];
+    expect(header.slice(-5)).toEqual(['status', 'iterations', 'residual', 'omega2_rad_s', 'alpha2_rad_s2']);
+    const [cStatus, cIter, cRes] = ['status', 'iterations', 'residual'].map((c) => header.indexOf(c));
     const data = rows.slice(1);
     expect(data).toHaveLength(361);
     const l = { r1: 6, r2: 2, r3: 5, r4: 5 };
@@ -95,13 +96,14 @@ test.describe('exports', () => {
     await page.goto('./?r1=4&r2=3&r3=3.5&r4=3&t2=0');
     await waitReady(page);
     const d = await download(page, 'Export cycle CSV');
-    const rows = csvParseRows(readFileSync(await d.path(), 'utf8'))
-      .slice(1)
-      .filter((r) => r.length > 1);
+    const all = csvParseRows(readFileSync(await d.path(), 'utf8')).filter((r) => r.length > 1);
+    const status = all[0].indexOf('status');
+    const rows = all.slice(1);
     expect(rows).toHaveLength(361);
-    const status = rows[180].length - 3;
     // Every column from theta3_deg up to status is empty where the linkage cannot assemble.
     expect(rows[180].slice(1, status + 1)).toEqual([...Array<string>(status - 1).fill(''), 'unreachable']);
     expect(rows[0][status]).toBe('ok');
+    // The input it is driven with is known on every row, assembled or not (10 rad/s counter-clockwise).
+    expect(rows[180].slice(-2)).toEqual(['10', '0']);
   });
 });
