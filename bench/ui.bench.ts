@@ -7,6 +7,8 @@
  *     theta2 slider at 1x and 4x (the canvas shows that theta2 or a newer one), r3 slider with the plots at
  *     3601 points at 1x (the plots show that r3 or a newer one; the canvas draws the linkage in the same commit),
  *     and, not a target, how long the worker's cycle (coupler trace, cycle numbers) takes to follow;
+ *   - issue 20: with every overlay on (velocity and acceleration arrows, dead and instant centres, the forces with
+ *     their arrows, the velocity plot), Play's redraws per second and the θ2 drag p95 at 6x CPU slowdown;
  *   - inputs left without a redraw (0 expected);
  *   - the phone-profile cold load to ready (bench/phoneLoad.ts), median of 3, and the first-load JavaScript
  *     (entry, chunks and worker), raw and gzip -9, for reference.
@@ -39,13 +41,25 @@ const PLAY_SECONDS = 6;
 const MOTION_URL = `${BASE}?vel=1&acc=1&plot=vel`;
 /** The same app with them off: no arrows, the angle plots (no rates solved over the cycle). */
 const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
-/** BENCH_ONLY: a comma-separated subset of play1, play4, theta2x1, theta2x4, r3, motion (default all), for quick checks. */
+/** Issue 20: every overlay on: both arrow sets, dead and instant centres, the forces and their arrows, the velocity plot. */
+const ALL_OVERLAYS_URL = `${BASE}?vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel`;
+/** BENCH_ONLY: a comma-separated subset of play1, play4, theta2x1, theta2x4, r3, motion, forces6 (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
 
 /** Issue 11's targets. */
-const TARGETS = { playFps1x: 58, playFps4x: 50, theta2P95Ms1x: 22, theta2P95Ms4x: 66, r3P95Ms1x: 33, phoneReadyS: 2.5 };
+const TARGETS = {
+  playFps1x: 58,
+  playFps4x: 50,
+  theta2P95Ms1x: 22,
+  theta2P95Ms4x: 66,
+  r3P95Ms1x: 33,
+  phoneReadyS: 2.5,
+  /** Issue 20: every overlay on, 6x CPU. */
+  overlaysPlayFps6x: 50,
+  overlaysTheta2P95Ms6x: 50,
+};
 /** Cold loads on the phone profile (bench/phoneLoad.ts); the target is their median. */
 const PHONE_RUNS = 3;
 const GZIP_PORT = PORT + 1;
@@ -197,8 +211,13 @@ interface DragRun {
  * Drag latency: one input event per animation frame on a slider, each a new value; an input is shown by the
  * first redraw (canvas for θ2, plots for r3) of its value or a newer one. Latency runs to the end of that frame.
  */
-async function measureDrag(browser: Browser, rate: number, kind: 'theta2' | 'r3'): Promise<DragRun> {
-  const url = kind === 'theta2' ? `${BASE}?t2=40` : `${BASE}?n=3600`;
+async function measureDrag(
+  browser: Browser,
+  rate: number,
+  kind: 'theta2' | 'r3',
+  query = kind === 'theta2' ? 't2=40' : 'n=3600',
+): Promise<DragRun> {
+  const url = `${BASE}?${query}`;
   const { context, page } = await openPage(browser, rate, url);
   try {
     return await page.evaluate(
@@ -346,6 +365,9 @@ async function main(): Promise<void> {
     // Issue 9: Play at 4x with the velocity/acceleration views off (MOTION_OFF_URL) and on (MOTION_URL).
     const motionOff: typeof play1 = [];
     const motionOn: typeof play1 = [];
+    // Issue 20: every overlay on (ALL_OVERLAYS_URL) at 6x.
+    const overlaysPlay6: typeof play1 = [];
+    const overlaysT6: typeof t1 = [];
     // Interleaved runs, so a slow spell of the machine spreads over every figure rather than hitting one.
     for (let run = 0; run < RUNS; run++) {
       if (wanted('play1')) play1.push(await measurePlay(browser, 1));
@@ -356,6 +378,11 @@ async function main(): Promise<void> {
       if (wanted('motion')) {
         motionOff.push(await measurePlay(browser, 4, MOTION_OFF_URL));
         motionOn.push(await measurePlay(browser, 4, MOTION_URL));
+      }
+      if (wanted('forces6')) {
+        overlaysPlay6.push(await measurePlay(browser, 6, ALL_OVERLAYS_URL));
+        const query = `${new URL(ALL_OVERLAYS_URL).search.slice(1)}&t2=40`;
+        overlaysT6.push(dragSummary(await measureDrag(browser, 6, 'theta2', query)));
       }
       console.log(`run ${run + 1}/${RUNS} done`);
     }
@@ -389,6 +416,8 @@ async function main(): Promise<void> {
         ),
       },
       drag: { inputs: DRAG_STEPS, theta2x1: drag(t1), theta2x4: drag(t4), r3n3600x1: drag(r3) },
+      // Issue 20: Play and the θ2 drag at 6x with every overlay on (ALL_OVERLAYS_URL).
+      overlays6x: { url: ALL_OVERLAYS_URL, play: play(overlaysPlay6), theta2: drag(overlaysT6) },
       firstLoad,
       phone: {
         profile: PHONE_PROFILE,
@@ -403,7 +432,8 @@ async function main(): Promise<void> {
     const f = (x: number, d = 1) => (Number.isFinite(x) ? x.toFixed(d) : '—');
     const s = (x: Spread, d = 1) => `${f(x.median, d)} (${f(x.min, d)} to ${f(x.max, d)})`;
     const ok = (b: boolean) => (b ? 'yes' : 'NO');
-    const missed = [t1, t4, r3].flat().reduce((m, d) => m + d.withoutRedraw, 0);
+    const missed = [t1, t4, r3, overlaysT6].flat().reduce((m, d) => m + d.withoutRedraw, 0);
+    const o6 = result.overlays6x;
     const { x1, x4 } = result.play;
     const { theta2x1, theta2x4, r3n3600x1 } = result.drag;
     const row = (measure: string, value: string, target = '', met = '') => ({
@@ -469,6 +499,20 @@ async function main(): Promise<void> {
         'Play frame time at 4x (ms), velocity+acceleration views off / on',
         `${s(result.motion.offFrameMs)} / ${s(result.motion.onFrameMs)}`,
       ),
+      row(
+        'every overlay on (arrows, centres, forces, rate plot): Play redraws/s, 6x CPU',
+        s(o6.play.redrawFps),
+        `>= ${TARGETS.overlaysPlayFps6x}`,
+        ok(o6.play.redrawFps.median >= TARGETS.overlaysPlayFps6x),
+      ),
+      row('every overlay on: Play, longest redraw gap (ms), 6x', s(o6.play.longestGapMs)),
+      row(
+        'every overlay on: θ2 drag latency p95 (ms), 6x CPU',
+        s(o6.theta2.p95Ms),
+        `<= ${TARGETS.overlaysTheta2P95Ms6x}`,
+        ok(o6.theta2.p95Ms.median <= TARGETS.overlaysTheta2P95Ms6x),
+      ),
+      row('every overlay on: θ2 drag latency p50 (ms), 6x', s(o6.theta2.p50Ms)),
       row(
         'frame time with those views on / off, 4x',
         s(result.motion.ratio, 2),

@@ -77,10 +77,9 @@ function csvOf(state: AppState, samples = 72) {
 describe('the cycle CSV with Forces on', () => {
   it('adds torque_Nm, f12x_N … f14y_N after every existing column, at the n samples', () => {
     const { header, data } = csvOf(STATE, 36);
+    const without = csvOf({ ...STATE, forces: { ...STATE.forces, enabled: false } }, 36).header;
     expect(header).toEqual([
-      ...CSV_HEADER.slice(0, 3),
-      ...CSV_MOTION_HEADER,
-      ...CSV_HEADER.slice(3),
+      ...without,
       'torque_Nm',
       'f12x_N',
       'f12y_N',
@@ -91,6 +90,7 @@ describe('the cycle CSV with Forces on', () => {
       'f14x_N',
       'f14y_N',
     ]);
+    expect(without).toEqual(expect.arrayContaining([...CSV_HEADER, ...CSV_MOTION_HEADER]));
     expect(CSV_FORCE_HEADER).toEqual(header.slice(-9));
     expect(data).toHaveLength(37);
   });
