@@ -8,6 +8,7 @@ import type { LinkageScene } from '../../shared/linkage/scene';
 import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
 import { benchMark } from '../../shared/benchMarks';
+import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
 
 /** The cached background bitmap (device pixels) and what it was drawn for. */
 interface Background {
@@ -59,16 +60,9 @@ export function useLinkageDrawing(
   const background = useRef<Background | null>(null);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
-    if (!canvas || width <= 0 || height <= 0) return;
-    const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
-    const pw = Math.round(width * dpr);
-    const ph = Math.round(height * dpr);
-    if (canvas.width !== pw || canvas.height !== ph) {
-      canvas.width = pw;
-      canvas.height = ph;
-    }
-    const ctx = canvas.getContext('2d');
-    if (!ctx) return;
+    const sized = canvas && sizeCanvas(canvas, width, height);
+    if (!sized) return;
+    const { ctx, dpr, pixelWidth: pw, pixelHeight: ph } = sized;
     const transform = fitScene(scene, bounds, width, height, view);
     const back = backgroundFor(background.current, scene, transform, pw, ph, dpr);
     background.current = back;

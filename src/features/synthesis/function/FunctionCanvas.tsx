@@ -4,7 +4,7 @@ import { fitView } from '../../../shared/canvas/view';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
 import { CanvasZoomTools } from '../motion/CanvasZoomTools';
-import { sizeCanvas } from '../motion/sizeCanvas';
+import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import type { FunctionPicture } from './functionPicture';
 import { drawFunction, functionBounds } from './functionPicture';
 
@@ -30,8 +30,8 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
   });
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
-    const ctx = canvas && sizeCanvas(canvas, width, height);
-    if (ctx) drawFunction(ctx, picture, fitView(bounds, width, height, view));
+    const sized = canvas && sizeCanvas(canvas, width, height);
+    if (sized) drawFunction(sized.ctx, picture, fitView(bounds, width, height, view));
   }, [picture, bounds, view, width, height]);
   return (
     <div className="synmode-canvas-wrap" ref={wrapRef}>

@@ -13,7 +13,7 @@ import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionHandle, MotionPicture } from './motionPicture';
 import { drawMotion, handleAt, motionBounds, turnHandlePx } from './motionPicture';
 import { CanvasZoomTools } from './CanvasZoomTools';
-import { sizeCanvas } from './sizeCanvas';
+import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 
 /** Props of MotionCanvas: the picture, what dragging, typing and tapping change, and the texts. */
 export interface MotionCanvasProps {
@@ -152,10 +152,10 @@ export function MotionCanvas(props: MotionCanvasProps) {
   );
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
-    const ctx = canvas && sizeCanvas(canvas, width, height);
-    if (!canvas || !ctx) return;
+    const sized = canvas && sizeCanvas(canvas, width, height);
+    if (!canvas || !sized) return;
     const v = fitView(bounds, width, height, view);
-    drawMotion(ctx, picture, v);
+    drawMotion(sized.ctx, picture, v);
     const at = (x: number, y: number) => `${x.toFixed(1)},${y.toFixed(1)}`;
     canvas.dataset.poses = picture.poses
       .map((p) => {

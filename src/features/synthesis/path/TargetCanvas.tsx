@@ -17,6 +17,7 @@ import type { MotionRange } from './candidateFacts';
 import { theta2AtPhase } from './candidateFacts';
 import type { PathCurve, PathScene } from './drawPathScene';
 import { drawPathScene } from './drawPathScene';
+import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 
 /** Props of TargetCanvas: the targets and the selection, what else to draw, the view, and the edits. */
 export interface TargetCanvasProps {
@@ -108,17 +109,9 @@ export function TargetCanvas(props: TargetCanvasProps) {
   const names = targets.map((_, i) => st.targetName(i + 1));
   const draw = () => {
     const canvas = canvasRef.current;
-    if (!canvas || width <= 0 || height <= 0) return;
-    const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
-    const pw = Math.round(width * dpr);
-    const ph = Math.round(height * dpr);
-    if (canvas.width !== pw || canvas.height !== ph) {
-      canvas.width = pw;
-      canvas.height = ph;
-    }
-    const ctx = canvas.getContext('2d');
-    if (!ctx) return;
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const sized = canvas && sizeCanvas(canvas, width, height);
+    if (!sized) return;
+    const ctx = sized.ctx;
     const v = transform();
     const pose = moving ? placedJoints(moving.design, theta2AtPhase(moving.motion, phase.current)) : null;
     const scene: PathScene = { targets, selected, names, curves, pose };
