@@ -1,3 +1,4 @@
+import { drawGrid } from '../canvas/drawGrid';
 import { TWO_PI } from '../../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
@@ -11,7 +12,7 @@ import type { LabelFont, MeasureText, SceneArc, SceneLabel, SceneLayout, Warning
 import { GRID_TARGET_PX, WARNING_BOX, layoutScene } from './sceneLayout';
 import { THEME } from '../canvas/canvasTheme';
 import type { ViewTransform } from '../canvas/view';
-import { frameToScreen, gridLines, toScreenX, toScreenY } from '../canvas/view';
+import { frameToScreen, toScreenX, toScreenY } from '../canvas/view';
 
 // Any DrawContext: a canvas's 2D context, or SvgContext for the vector export.
 type Ctx = DrawContext;
@@ -56,28 +57,6 @@ export function canvasMeasure(ctx: Ctx): MeasureText {
 /** A point of the linkage's frame to CSS pixels (through the view's frame when the linkage is placed). */
 function px(v: ViewTransform, p: { x: number; y: number }): Px {
   return frameToScreen(v, p);
-}
-
-function drawGrid(ctx: Ctx, v: ViewTransform): void {
-  const g = gridLines(v, GRID_TARGET_PX);
-  if (!g) return;
-  ctx.lineWidth = STROKES.grid;
-  for (let i = g.i0; i <= g.i1; i++) {
-    const x = Math.round(toScreenX(v, i * g.step)) + 0.5;
-    ctx.strokeStyle = i === 0 ? THEME.gridAxis : THEME.grid;
-    ctx.beginPath();
-    ctx.moveTo(x, 0);
-    ctx.lineTo(x, v.height);
-    ctx.stroke();
-  }
-  for (let j = g.j0; j <= g.j1; j++) {
-    const y = Math.round(toScreenY(v, j * g.step)) + 0.5;
-    ctx.strokeStyle = j === 0 ? THEME.gridAxis : THEME.grid;
-    ctx.beginPath();
-    ctx.moveTo(0, y);
-    ctx.lineTo(v.width, y);
-    ctx.stroke();
-  }
 }
 
 function drawCurves(ctx: Ctx, scene: LinkageScene, v: ViewTransform): void {
@@ -277,7 +256,7 @@ export function drawLinkageBackground(ctx: Ctx, scene: LinkageScene, view: ViewT
   ctx.save();
   ctx.fillStyle = THEME.background;
   ctx.fillRect(0, 0, v.width, v.height);
-  if (scene.showGrid) drawGrid(ctx, v);
+  if (scene.showGrid) drawGrid(ctx, v, GRID_TARGET_PX);
   if (scene.showTrace) drawCurves(ctx, scene, v);
   const O2 = px(v, { x: 0, y: 0 });
   const O4 = px(v, { x: scene.linkage.r1, y: 0 });

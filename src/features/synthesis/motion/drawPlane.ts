@@ -2,6 +2,7 @@
  * Drawing primitives of the synthesis page's canvases (Motion and Function modes): the grid, a placed four-bar,
  * markers and polylines, each a pure function of (context, data, view) in CSS pixels.
  */
+import { drawGrid } from '../../../shared/canvas/drawGrid';
 import { TWO_PI } from '../../../solver';
 import type { Point } from '../../../solver';
 import { placedJoints } from '../../../synthesis';
@@ -9,7 +10,7 @@ import type { PlacedFourBar } from '../../../synthesis';
 import type { DrawContext } from '../../../shared/canvas/drawContext';
 import { THEME } from '../../../shared/canvas/canvasTheme';
 import type { ViewTransform } from '../../../shared/canvas/view';
-import { gridLines, toScreenX, toScreenY } from '../../../shared/canvas/view';
+import { toScreenX, toScreenY } from '../../../shared/canvas/view';
 
 /** A point in CSS pixels. */
 export interface Px {
@@ -26,25 +27,7 @@ export function px(v: ViewTransform, p: Point): Px {
 export function drawBackground(ctx: DrawContext, v: ViewTransform): void {
   ctx.fillStyle = THEME.background;
   ctx.fillRect(0, 0, v.width, v.height);
-  const g = gridLines(v, 64);
-  if (!g) return;
-  ctx.lineWidth = 1;
-  for (let i = g.i0; i <= g.i1; i++) {
-    const x = Math.round(toScreenX(v, i * g.step)) + 0.5;
-    ctx.strokeStyle = i === 0 ? THEME.gridAxis : THEME.grid;
-    ctx.beginPath();
-    ctx.moveTo(x, 0);
-    ctx.lineTo(x, v.height);
-    ctx.stroke();
-  }
-  for (let j = g.j0; j <= g.j1; j++) {
-    const y = Math.round(toScreenY(v, j * g.step)) + 0.5;
-    ctx.strokeStyle = j === 0 ? THEME.gridAxis : THEME.grid;
-    ctx.beginPath();
-    ctx.moveTo(0, y);
-    ctx.lineTo(v.width, y);
-    ctx.stroke();
-  }
+  drawGrid(ctx, v);
 }
 
 /** A polyline through world points (null: a gap), in one colour, width and dash. */

@@ -1,16 +1,10 @@
+import { drawGrid } from '../../../shared/canvas/drawGrid';
 import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import type { PlacedFourBar, PlacedJoints } from '../../../synthesis/types';
 import type { DrawContext } from '../../../shared/canvas/drawContext';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
-import {
-  emptyBounds,
-  extendBounds,
-  extendBoundsCircle,
-  gridLines,
-  toScreenX,
-  toScreenY,
-} from '../../../shared/canvas/view';
+import { emptyBounds, extendBounds, extendBoundsCircle, toScreenX, toScreenY } from '../../../shared/canvas/view';
 import { COLORS, FONTS, FONT_SIZES, STROKES } from '../../../shared/theme/tokens';
 
 /** A coupler curve to draw (length unit); NaN breaks it. Faint curves are the other choices (cognates). */
@@ -55,28 +49,6 @@ export function pathSceneBounds(
 
 function px(v: ViewTransform, p: Point): Point {
   return { x: toScreenX(v, p.x), y: toScreenY(v, p.y) };
-}
-
-function drawGrid(ctx: DrawContext, v: ViewTransform): void {
-  const g = gridLines(v);
-  if (!g) return;
-  ctx.lineWidth = 1;
-  for (let i = g.i0; i <= g.i1; i++) {
-    const x = Math.round(toScreenX(v, i * g.step)) + 0.5;
-    ctx.strokeStyle = i === 0 ? COLORS.gridAxis : COLORS.grid;
-    ctx.beginPath();
-    ctx.moveTo(x, 0);
-    ctx.lineTo(x, v.height);
-    ctx.stroke();
-  }
-  for (let j = g.j0; j <= g.j1; j++) {
-    const y = Math.round(toScreenY(v, j * g.step)) + 0.5;
-    ctx.strokeStyle = j === 0 ? COLORS.gridAxis : COLORS.grid;
-    ctx.beginPath();
-    ctx.moveTo(0, y);
-    ctx.lineTo(v.width, y);
-    ctx.stroke();
-  }
 }
 
 function drawCurve(ctx: DrawContext, v: ViewTransform, c: PathCurve): void {
