@@ -1,3 +1,4 @@
+import { fileStem } from '../../shared/fileNames';
 import type { Locale } from '../../shared/state/appState';
 import type { RestoreOffer } from './autosave';
 import type { DesignsMessages } from './designsMessages';
@@ -25,7 +26,12 @@ export function DesignNotices({ notice, onClose, offer, onRestore, onDismissOffe
     <div className="design-notices">
       {offer ? (
         <section className="design-notice design-offer" aria-label={t.restore} data-testid="restore-offer">
-          <p>{t.restoreText(offer.name, offer.savedAt ? shownTime(offer.savedAt, locale) : '')}</p>
+          <p>
+            {t.restoreText(
+              offer.name || fileStem(offer.state.design.linkage, offer.state.design.branch),
+              offer.savedAt ? shownTime(offer.savedAt, locale) : '',
+            )}
+          </p>
           <div className="design-notice-actions">
             <button type="button" className="design-notice-primary" onClick={onRestore}>
               {t.restore}

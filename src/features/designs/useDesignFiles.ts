@@ -51,7 +51,8 @@ export function useDesignFiles(state: AppState, dispatch: Dispatch<Action>, t: D
   );
   const latest = useLatest(state);
   const shownName = name ?? fileStem(state.design.linkage, state.design.branch);
-  useAutosave(state, shownName);
+  // An unnamed design is autosaved without a name, so a restored one keeps following its lengths.
+  useAutosave(state, name ?? '');
 
   useEffect(() => {
     if (notice?.kind !== 'status') return;
@@ -63,7 +64,7 @@ export function useDesignFiles(state: AppState, dispatch: Dispatch<Action>, t: D
     (next: AppState, designName: string) => {
       // The reader's language and page stay; everything a file holds comes from it.
       dispatch({ type: 'replace', state: { ...next, shell: latest.current.shell } });
-      setName(designName);
+      setName(designName || null);
       setOffer(null);
     },
     [dispatch, latest],
