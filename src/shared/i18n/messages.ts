@@ -246,7 +246,9 @@ export interface Messages {
   errorReset: string;
   /** Notice for a shared link with values that were ignored; list is already joined, count is how many. */
   urlIgnored: (list: string, count: number) => string;
-  /** The same notice for a <fourbar-lab> element, whose values come from its attributes, not a link. */
+  /** A synthesis canvas's exports: the picture as SVG and as PNG. */
+  exportPictureSvg: string;
+  exportPicturePng: string;
   /** The Share panel of the offline file (file:): why its links and embed code cannot work elsewhere. */
   offlineShare: string;
   /** Its one button: a link to this design in this file, on this computer. */

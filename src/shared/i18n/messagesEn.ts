@@ -296,6 +296,8 @@ export const messagesEn: Messages = {
     count === 1
       ? `This link has a value the simulator cannot use, so the default is shown instead: ${list}.`
       : `This link has ${count} values the simulator cannot use, so the defaults are shown instead: ${list}.`,
+  exportPictureSvg: 'Export picture SVG',
+  exportPicturePng: 'Export picture PNG',
   offlineShare:
     'This is the offline file: its address is a file on this computer, so a link to it works only here, and it has no embed page. To share or embed, use the app on a web server.',
   copyLocalLink: 'Copy link (this computer only)',

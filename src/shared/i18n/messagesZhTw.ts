@@ -295,6 +295,8 @@ export const messagesZhTw: Messages = {
     count === 1
       ? `此連結有一個模擬器無法使用的值，已改用預設值：${list}。`
       : `此連結有 ${count} 個模擬器無法使用的值，已改用預設值：${list}。`,
+  exportPictureSvg: '匯出圖 SVG',
+  exportPicturePng: '匯出圖 PNG',
   offlineShare:
     '這是離線檔案：它的位址是這台電腦上的檔案，連結只能在這台電腦上開啟，也沒有嵌入頁面。要分享或嵌入，請使用架在網站上的版本。',
   copyLocalLink: '複製連結（僅限這台電腦）',

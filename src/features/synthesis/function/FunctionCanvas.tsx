@@ -5,6 +5,7 @@ import { usePanZoom } from '../../../shared/canvas/usePanZoom';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
 import { CanvasZoomTools } from '../motion/CanvasZoomTools';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
+import { CanvasExports } from '../CanvasExports';
 import type { FunctionPicture } from './functionPicture';
 import { drawFunction, functionBounds } from './functionPicture';
 
@@ -49,6 +50,12 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
         }}
       />
       <CanvasZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
+      <CanvasExports
+        draw={(ctx) => drawFunction(ctx, picture, fitView(bounds, width, height, view))}
+        width={width}
+        height={height}
+        fileBase="synthesis-function"
+      />
     </div>
   );
 }

@@ -14,6 +14,7 @@ import type { MotionHandle, MotionPicture } from './motionPicture';
 import { drawMotion, handleAt, motionBounds, turnHandlePx } from './motionPicture';
 import { CanvasZoomTools } from './CanvasZoomTools';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
+import { CanvasExports } from '../CanvasExports';
 
 /** Props of MotionCanvas: the picture, what dragging, typing and tapping change, and the texts. */
 export interface MotionCanvasProps {
@@ -188,6 +189,12 @@ export function MotionCanvas(props: MotionCanvasProps) {
       <p id={hintId} className="synmode-canvas-hint">
         {labels.hint}
       </p>
+      <CanvasExports
+        draw={(ctx) => drawMotion(ctx, picture, fitView(bounds, width, height, view))}
+        width={width}
+        height={height}
+        fileBase="synthesis-motion"
+      />
     </div>
   );
 }
