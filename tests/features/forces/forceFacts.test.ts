@@ -64,8 +64,13 @@ describe('cycleFacts', () => {
     const f = cycleFacts(cycleForces(forceSetup(rocker), 'open', 90), 10, t);
     expect(f.reason).toBe(t.cycleGaps['crank-does-not-turn']);
     expect([f.mean, f.energy, f.flywheel]).toEqual([MISSING, MISSING, MISSING]);
-    const still = cycleFacts(cycleForces(forceSetup(ON), 'open', 90), 0, t);
+    const atRest = { ...ON, motion: { ...ON.motion, omega2RadPerS: 0 } };
+    const still = cycleFacts(cycleForces(forceSetup(atRest), 'open', 90), 0, t);
     expect(still.reason).toBe(t.cycleGaps['omega-zero']);
+    // A crank at rest has a torque over the turn (gravity) but no speed to steady: the flywheel is "—", not NaN.
+    expect(still.energy).toMatch(/ J$/);
+    expect(still.flywheel).toBe(MISSING);
+    expect(JSON.stringify(still)).not.toMatch(/NaN|Infinity/);
   });
 });
 
