@@ -253,6 +253,7 @@ export interface Messages {
   offlineShare: string;
   /** Its one button: a link to this design in this file, on this computer. */
   copyLocalLink: string;
+  /** The same notice for a <fourbar-lab> element, whose values come from its attributes, not a link. */
   attributesIgnored: (list: string, count: number) => string;
   /** One ignored parameter in that list (key and value already shortened). */
   urlIgnoredParam: (key: string, value: string) => string;
