@@ -66,7 +66,10 @@ async function clippedLabels(target: Page | Frame): Promise<string[]> {
         'label, legend, .section-title, .segmented-item span, .btn, .page-tab, .fact dt, .fact dd',
       ),
     ]
-      .filter((el) => el.offsetParent !== null && el.scrollWidth > el.clientWidth + 1)
+      // A visually hidden legend (sr-only: the phone bar's "Branch") is a name for assistive technology, not cut-off text.
+      .filter(
+        (el) => el.offsetParent !== null && !el.classList.contains('sr-only') && el.scrollWidth > el.clientWidth + 1,
+      )
       .map((el) => el.textContent ?? ''),
   );
 }
