@@ -41,8 +41,11 @@ const PLAY_SECONDS = 6;
 const MOTION_URL = `${BASE}?vel=1&acc=1&plot=vel`;
 /** The same app with them off: no arrows, the angle plots (no rates solved over the cycle). */
 const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
-/** Issue 20: every overlay on: both arrow sets, dead and instant centres, the forces and their arrows, the velocity plot. */
-const ALL_OVERLAYS_URL = `${BASE}?vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel`;
+/**
+ * Issue 20: every overlay on: both arrow sets, dead and instant centres, the forces and their arrows, the velocity plot.
+ * BENCH_OVERLAYS_QUERY replaces the query (say, without frc=1&fv=1) for a comparison on the same machine.
+ */
+const ALL_OVERLAYS_URL = `${BASE}?${process.env.BENCH_OVERLAYS_QUERY ?? 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel'}`;
 /** BENCH_ONLY: a comma-separated subset of play1, play4, theta2x1, theta2x4, r3, motion, forces6 (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);

@@ -25,7 +25,9 @@ export function ForcesDetails({ state, dispatch, t, withSettings }: ForcesDetail
         />
       </div>
       <ForcesPanel state={state} t={t} />
-      {withSettings ? <ForcesSettings state={state} dispatch={dispatch} t={t} /> : null}
+      {withSettings ? (
+        <ForcesSettings forces={state.forces} linkage={state.design.linkage} dispatch={dispatch} t={t} />
+      ) : null}
     </>
   );
 }

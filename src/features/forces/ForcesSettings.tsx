@@ -1,25 +1,33 @@
 import type { Dispatch } from 'react';
-import type { Action, AppState } from '../../shared/state/appState';
-import type { ForcesSettings as Settings, MassModel, MovingLink } from '../../shared/state/slices/forcesSlice';
+import { memo } from 'react';
+import type { Linkage } from '../../solver/types';
+import type { Action } from '../../shared/state/appState';
+import type {
+  ForcesSettings as Settings,
+  ForcesState,
+  MassModel,
+  MovingLink,
+} from '../../shared/state/slices/forcesSlice';
 import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
 import { Segmented } from '../../shared/ui/Segmented';
 import { ForceField } from './ForceField';
 import { barSeeds } from './forceModel';
 import type { ForcesMessages } from './forcesMessages';
 
-/** Props of ForcesSettings: the state, its dispatcher and the forces' strings. */
+/** Props of ForcesSettings: the forces slice, the lengths (for the bars' seeds), the dispatcher and the strings. */
 export interface ForcesSettingsProps {
-  state: AppState;
+  forces: ForcesState;
+  linkage: Linkage;
   dispatch: Dispatch<Action>;
   t: ForcesMessages;
 }
 
 /** One link's mass, inertia and CG (distance in the length unit, angle in degrees from the link's line). */
-function LinkFields({ link, state, dispatch, t }: ForcesSettingsProps & { link: MovingLink }) {
-  const p = state.forces[link];
+function LinkFields({ link, forces, dispatch, t }: Omit<ForcesSettingsProps, 'linkage'> & { link: MovingLink }) {
+  const p = forces[link];
   const set = (props: Partial<typeof p>) => dispatch({ type: 'setLinkMass', link, props });
   const name = t.linkNames[link];
-  const unit = state.forces.lengthUnit;
+  const unit = forces.lengthUnit;
   return (
     <fieldset className="forces-link">
       <legend>{name}</legend>
@@ -63,18 +71,12 @@ function LinkFields({ link, state, dispatch, t }: ForcesSettingsProps & { link: 
   );
 }
 
-/**
- * The forces' settings: the force arrows, the mass model (uniform bars of a mass per length, or each link's mass,
- * inertia and CG), gravity and its direction, the force at P, the load torque on the rocker, and the coefficient of
- * speed fluctuation the flywheel is sized for.
- */
-export function ForcesSettings({ state, dispatch, t }: ForcesSettingsProps) {
-  const f = state.forces;
+function ForcesSettingsImpl({ forces: f, linkage, dispatch, t }: ForcesSettingsProps) {
   const set = (patch: Partial<Settings>) => dispatch({ type: 'setForces', patch });
   const chooseModel = (model: MassModel) => {
     // Per-link values never given start as the bars shown now, so the numbers do not jump.
     const untouched = MOVING_LINKS.every((l) => f[l] === DEFAULT_LINK_MASS);
-    const seed = model === 'links' && untouched ? barSeeds(state.design.linkage, f) : undefined;
+    const seed = model === 'links' && untouched ? barSeeds(linkage, f) : undefined;
     dispatch({ type: 'setMassModel', model, ...(seed ? { seed } : {}) });
   };
   return (
@@ -101,7 +103,7 @@ export function ForcesSettings({ state, dispatch, t }: ForcesSettingsProps) {
           testId="forces-rho"
         />
       ) : (
-        MOVING_LINKS.map((link) => <LinkFields key={link} link={link} state={state} dispatch={dispatch} t={t} />)
+        MOVING_LINKS.map((link) => <LinkFields key={link} link={link} forces={f} dispatch={dispatch} t={t} />)
       )}
       <ForceField
         label={t.gravity}
@@ -162,3 +164,10 @@ export function ForcesSettings({ state, dispatch, t }: ForcesSettingsProps) {
     </div>
   );
 }
+
+/**
+ * The forces' settings: the mass model (uniform bars of a mass per length, or each link's mass, inertia and CG),
+ * gravity and its direction, the force at P, the load torque on the rocker and the coefficient of speed fluctuation
+ * the flywheel is sized for; memoised, so a θ2 drag does not re-render its fields.
+ */
+export const ForcesSettings = memo(ForcesSettingsImpl);

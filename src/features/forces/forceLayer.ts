@@ -50,7 +50,9 @@ function forceText(locale: Locale): ForceText {
 
 /** What the setup and the scale were made from: they are rebuilt only when one of these changes (not every frame). */
 interface LayerInputs {
-  design: AppState['design'];
+  linkage: AppState['design']['linkage'];
+  coupler: AppState['design']['coupler'];
+  branch: AppState['design']['branch'];
   forces: AppState['forces'];
   omega: number;
   alpha: number;
@@ -59,7 +61,9 @@ interface LayerInputs {
 
 function sameInputs(a: LayerInputs, b: LayerInputs): boolean {
   return (
-    a.design === b.design &&
+    a.linkage === b.linkage &&
+    a.coupler === b.coupler &&
+    a.branch === b.branch &&
     a.forces === b.forces &&
     a.omega === b.omega &&
     a.alpha === b.alpha &&
@@ -81,8 +85,11 @@ export function createForceLayer(): ForceLayer {
   return (state: AppState, local: LocalPose): SceneForces | null => {
     const f = state.forces;
     if (!f.enabled || !f.showVectors) return null;
+    // Not the design object itself: each frame of Play carries a new one (the branch it is on).
     const next: LayerInputs = {
-      design: state.design,
+      linkage: state.design.linkage,
+      coupler: state.design.coupler,
+      branch: state.design.branch,
       forces: f,
       omega: state.motion.omega2RadPerS,
       alpha: state.motion.alpha2RadPerS2,

@@ -69,9 +69,9 @@ export function barSeeds(linkage: Linkage, f: ForcesState): Record<MovingLink, L
   return out;
 }
 
-/** What a forces setup is made from: the design, the forces slice and the input motion (an AppState is one). */
+/** What a forces setup is made from: the lengths and coupler point, the forces slice and the input motion (an AppState is one). */
 export interface ForceInputs {
-  design: AppState['design'];
+  design: Pick<AppState['design'], 'linkage' | 'coupler'>;
   forces: AppState['forces'];
   motion: Pick<AppState['motion'], 'omega2RadPerS' | 'alpha2RadPerS2' | 'direction'>;
 }

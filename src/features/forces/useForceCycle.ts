@@ -2,7 +2,6 @@ import { useMemo } from 'react';
 import type { AppState } from '../../shared/state/appState';
 import type { CycleForcesView } from './forceCycleData';
 import { cycleForces } from './forceCycleData';
-import type { ForceInputs } from './forceModel';
 import { useForceSetup } from './useForceSetup';
 
 /**
@@ -10,7 +9,9 @@ import { useForceSetup } from './useForceSetup';
  * nanoseconds a sample) and remade only when the design, the forces, the input motion, the branch or n change:
  * not while θ2 moves.
  */
-export function useForceCycle(state: ForceInputs & Pick<AppState, 'solver'>): CycleForcesView | null {
+export function useForceCycle(
+  state: Pick<AppState, 'design' | 'motion' | 'forces' | 'solver'>,
+): CycleForcesView | null {
   const setup = useForceSetup(state);
   const branch = state.design.branch;
   const samples = state.solver.samples;

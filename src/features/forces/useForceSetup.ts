@@ -2,12 +2,16 @@ import { useMemo } from 'react';
 import type { ForceInputs, ForceSetup } from './forceModel';
 import { forceSetup } from './forceModel';
 
-/** The state's forces setup in SI (forceSetup), remade only when the design, the forces or the input motion change. */
+/**
+ * The state's forces setup in SI (forceSetup), remade only when the lengths, the coupler point, the forces or the
+ * input motion change: not with each frame of Play, whose state carries a new design object (the branch it is on).
+ */
 export function useForceSetup(state: ForceInputs): ForceSetup {
-  const { design, forces } = state;
+  const { forces } = state;
+  const { linkage, coupler } = state.design;
   const { omega2RadPerS, alpha2RadPerS2, direction } = state.motion;
   return useMemo(
-    () => forceSetup({ design, forces, motion: { omega2RadPerS, alpha2RadPerS2, direction } }),
-    [design, forces, omega2RadPerS, alpha2RadPerS2, direction],
+    () => forceSetup({ design: { linkage, coupler }, forces, motion: { omega2RadPerS, alpha2RadPerS2, direction } }),
+    [linkage, coupler, forces, omega2RadPerS, alpha2RadPerS2, direction],
   );
 }

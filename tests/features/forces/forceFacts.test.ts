@@ -83,6 +83,18 @@ describe('createForceLayer', () => {
     expect(layer(ON, local)).toBeNull();
   });
 
+  it('keeps its setup and scale through the frames of Play (each carries a new design object)', () => {
+    const layer = createForceLayer();
+    const state = { ...ON, forces: { ...ON.forces, showVectors: true } };
+    const first = layer(state, local);
+    const frame = { ...state, design: { ...state.design }, motion: { ...state.motion, theta2Deg: 46 } };
+    const next = layer(frame, localPose(ON.design.linkage, 46, 'open', ON.design.coupler, false));
+    // The same scale object: nothing but the pose was solved again.
+    expect(next?.scale).toBe(first?.scale);
+    const longer = { ...state, design: { ...state.design, linkage: { ...state.design.linkage, r2: 2.5 } } };
+    expect(layer(longer, local)?.scale).not.toBe(first?.scale);
+  });
+
   it('puts F12 at O2, F32 at A, F43 at B and F14 at O4, as the solver gives them', () => {
     const layer = createForceLayer();
     const state = { ...ON, forces: { ...ON.forces, showVectors: true } };
