@@ -64,15 +64,18 @@ function PlotsHead({
         options={[...PLOT_KINDS.map((k) => ({ value: k, label: t.plotKinds[k] })), ...extra]}
         onChange={(v) => dispatch({ type: 'setPlotKind', kind: v })}
       />
-      <Segmented<PlotLayout>
-        legend={kind === 'velocities' || kind === 'accelerations' ? t.plotLayout[kind] : t.plotLayout.angles}
-        value={layout}
-        options={[
-          { value: 'separate', label: t.plotSeparate },
-          { value: 'together', label: t.plotTogether },
-        ]}
-        onChange={(v) => dispatch({ type: 'setPlotLayout', layout: v })}
-      />
+      {/* Separate or together lays out θ3 and θ4 (or their rates); another feature's plot lays out its own. */}
+      {(PLOT_KINDS as readonly PlotKind[]).includes(kind) ? (
+        <Segmented<PlotLayout>
+          legend={kind === 'velocities' || kind === 'accelerations' ? t.plotLayout[kind] : t.plotLayout.angles}
+          value={layout}
+          options={[
+            { value: 'separate', label: t.plotSeparate },
+            { value: 'together', label: t.plotTogether },
+          ]}
+          onChange={(v) => dispatch({ type: 'setPlotLayout', layout: v })}
+        />
+      ) : null}
     </div>
   );
 }
