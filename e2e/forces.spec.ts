@@ -194,6 +194,15 @@ test.describe('forces', () => {
     await expect(page.getByRole('checkbox', { name: '力向量' })).toBeVisible();
   });
 
+  test('on a phone (390×844) the six plot choices wrap instead of widening the page', async ({ page }) => {
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.goto(`${URL_MM}&fv=1&plot=trq`);
+    await waitReady(page);
+    await expect(page.getByRole('img', { name: 'Input torque T12 against θ2' })).toBeVisible();
+    expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(390);
+    await page.screenshot({ path: artifact('forces-phone-390.png') });
+  });
+
   test('an embed can show the forces panel', async ({ page }) => {
     await page.goto(`./embed.html?${DESIGN_MM}&lu=mm&frc=1&${LOADS_URL}&t2=60&panels=forces`);
     await waitReady(page);
