@@ -17,10 +17,10 @@ import { useSimulator } from '../features/simulator/useSimulator';
 import { forceColumnsFor } from '../features/forces/tableForces';
 import type { ShownViews } from '../features/simulator/useSimulator';
 import { useExports } from '../features/export/useExports';
+import { useAppHistory } from './useAppHistory';
 
 /** Everything useSimulatorSession gives a layout. */
 export type SimulatorSession = ReturnType<typeof useSimulatorSession>;
-import { useAppHistory } from './useAppHistory';
 
 /** Which views a layout shows for a state, given the plots card's device-pixel width (0 while it is hidden). */
 export type ShownFor = (state: AppState, plotPixels: number) => ShownViews;
