@@ -1,4 +1,5 @@
 import { drawGrid } from '../canvas/drawGrid';
+import { drawGroundTriangle, drawJoint, drawLink } from './linkPrimitives';
 import { TWO_PI } from '../../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
@@ -91,16 +92,7 @@ function drawCurves(ctx: Ctx, scene: LinkageScene, v: ViewTransform): void {
 function drawGroundPivot(ctx: Ctx, p: Px): void {
   // Triangle, base and hatching: the conventional sign for the fixed frame (groundSymbolRect bounds it).
   const s = 11;
-  ctx.fillStyle = THEME.groundFill;
-  ctx.strokeStyle = THEME.ground;
-  ctx.lineWidth = STROKES.ground;
-  ctx.beginPath();
-  ctx.moveTo(p.x, p.y);
-  ctx.lineTo(p.x - s, p.y + s * 1.5);
-  ctx.lineTo(p.x + s, p.y + s * 1.5);
-  ctx.closePath();
-  ctx.fill();
-  ctx.stroke();
+  drawGroundTriangle(ctx, p, s);
   const baseY = p.y + s * 1.5;
   ctx.beginPath();
   ctx.moveTo(p.x - s * 1.7, baseY);
@@ -113,26 +105,6 @@ function drawGroundPivot(ctx: Ctx, p: Px): void {
     ctx.moveTo(x0 + 6, baseY);
     ctx.lineTo(x0, baseY + 7);
   }
-  ctx.stroke();
-}
-
-function drawLink(ctx: Ctx, a: Px, b: Px, color: string, width: number): void {
-  ctx.strokeStyle = color;
-  ctx.lineWidth = width;
-  ctx.lineCap = 'round';
-  ctx.beginPath();
-  ctx.moveTo(a.x, a.y);
-  ctx.lineTo(b.x, b.y);
-  ctx.stroke();
-}
-
-function drawJoint(ctx: Ctx, p: Px, r: number): void {
-  ctx.fillStyle = THEME.joint;
-  ctx.strokeStyle = THEME.jointStroke;
-  ctx.lineWidth = STROKES.jointOutline;
-  ctx.beginPath();
-  ctx.arc(p.x, p.y, r, 0, TWO_PI);
-  ctx.fill();
   ctx.stroke();
 }
 

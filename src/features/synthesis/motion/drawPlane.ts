@@ -3,6 +3,7 @@
  * markers and polylines, each a pure function of (context, data, view) in CSS pixels.
  */
 import { drawGrid } from '../../../shared/canvas/drawGrid';
+import { drawGroundTriangle, drawJoint, drawLink } from '../../../shared/linkage/linkPrimitives';
 import { TWO_PI } from '../../../solver';
 import type { Point } from '../../../solver';
 import { placedJoints } from '../../../synthesis';
@@ -138,41 +139,6 @@ export function drawLabel(ctx: DrawContext, v: ViewTransform, p: Point, text: st
   ctx.fillText(text, s.x + dx, s.y + dy);
 }
 
-/** The fixed-pivot sign (triangle and hatched base) under a pivot. */
-function drawGroundSign(ctx: DrawContext, p: Px): void {
-  const s = 9;
-  ctx.fillStyle = THEME.groundFill;
-  ctx.strokeStyle = THEME.ground;
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  ctx.moveTo(p.x, p.y);
-  ctx.lineTo(p.x - s, p.y + s * 1.5);
-  ctx.lineTo(p.x + s, p.y + s * 1.5);
-  ctx.closePath();
-  ctx.fill();
-  ctx.stroke();
-}
-
-function joint(ctx: DrawContext, p: Px): void {
-  ctx.fillStyle = THEME.joint;
-  ctx.strokeStyle = THEME.jointStroke;
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  ctx.arc(p.x, p.y, THEME.jointRadius, 0, TWO_PI);
-  ctx.fill();
-  ctx.stroke();
-}
-
-function bar(ctx: DrawContext, a: Px, b: Px, color: string, width: number): void {
-  ctx.strokeStyle = color;
-  ctx.lineWidth = width;
-  ctx.lineCap = 'round';
-  ctx.beginPath();
-  ctx.moveTo(a.x, a.y);
-  ctx.lineTo(b.x, b.y);
-  ctx.stroke();
-}
-
 /**
  * A placed four-bar at θ2 (radians, from its ground line): ground, crank, the coupler triangle A B P, rocker and
  * joints, solid; or, with ghost, thin in the ghost colour (its other poses). Nothing where the loop cannot close.
@@ -201,12 +167,12 @@ export function drawFourBar(
       [A, P],
       [B, P],
     ] as const) {
-      bar(ctx, a, b, THEME.ghost, 1.5);
+      drawLink(ctx, a, b, THEME.ghost, 1.5);
     }
     ctx.globalAlpha = 1;
     return j;
   }
-  bar(ctx, O2, O4, THEME.ground, 2);
+  drawLink(ctx, O2, O4, THEME.ground, 2);
   ctx.fillStyle = THEME.couplerFill;
   ctx.beginPath();
   ctx.moveTo(A.x, A.y);
@@ -214,14 +180,14 @@ export function drawFourBar(
   ctx.lineTo(P.x, P.y);
   ctx.closePath();
   ctx.fill();
-  bar(ctx, A, P, THEME.coupler, 2);
-  bar(ctx, B, P, THEME.coupler, 2);
-  bar(ctx, O2, A, THEME.crank, THEME.linkWidth);
-  bar(ctx, A, B, THEME.coupler, THEME.linkWidth);
-  bar(ctx, O4, B, THEME.rocker, THEME.linkWidth);
-  drawGroundSign(ctx, O2);
-  drawGroundSign(ctx, O4);
-  for (const p of [O2, O4, A, B]) joint(ctx, p);
+  drawLink(ctx, A, P, THEME.coupler, 2);
+  drawLink(ctx, B, P, THEME.coupler, 2);
+  drawLink(ctx, O2, A, THEME.crank, THEME.linkWidth);
+  drawLink(ctx, A, B, THEME.coupler, THEME.linkWidth);
+  drawLink(ctx, O4, B, THEME.rocker, THEME.linkWidth);
+  drawGroundTriangle(ctx, O2, 9);
+  drawGroundTriangle(ctx, O4, 9);
+  for (const p of [O2, O4, A, B]) drawJoint(ctx, p, THEME.jointRadius);
   drawMarker(ctx, v, j.P, 'dot', THEME.couplerPoint, 3.5);
   return j;
 }

@@ -1,4 +1,5 @@
 import { drawGrid } from '../../../shared/canvas/drawGrid';
+import { drawGroundTriangle, drawJoint, drawLink } from '../../../shared/linkage/linkPrimitives';
 import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import type { PlacedFourBar, PlacedJoints } from '../../../synthesis/types';
@@ -72,46 +73,12 @@ function drawCurve(ctx: DrawContext, v: ViewTransform, c: PathCurve): void {
   ctx.setLineDash([]);
 }
 
-function segment(ctx: DrawContext, a: Point, b: Point, color: string, width: number): void {
-  ctx.strokeStyle = color;
-  ctx.lineWidth = width;
-  ctx.lineCap = 'round';
-  ctx.beginPath();
-  ctx.moveTo(a.x, a.y);
-  ctx.lineTo(b.x, b.y);
-  ctx.stroke();
-}
-
-function joint(ctx: DrawContext, p: Point, r: number, fill: string, stroke: string): void {
-  ctx.fillStyle = fill;
-  ctx.strokeStyle = stroke;
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  ctx.arc(p.x, p.y, r, 0, TWO_PI);
-  ctx.fill();
-  ctx.stroke();
-}
-
-function groundPivot(ctx: DrawContext, p: Point): void {
-  const s = 10;
-  ctx.fillStyle = COLORS.groundFill;
-  ctx.strokeStyle = COLORS.ground;
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  ctx.moveTo(p.x, p.y);
-  ctx.lineTo(p.x - s, p.y + s * 1.5);
-  ctx.lineTo(p.x + s, p.y + s * 1.5);
-  ctx.closePath();
-  ctx.fill();
-  ctx.stroke();
-}
-
 function drawLinkagePose(ctx: DrawContext, v: ViewTransform, pose: PlacedJoints): void {
   const [O2, A, B, O4, P] = [pose.O2, pose.A, pose.B, pose.O4, pose.P].map((p) => px(v, p));
-  groundPivot(ctx, O2);
-  groundPivot(ctx, O4);
+  drawGroundTriangle(ctx, O2, 10);
+  drawGroundTriangle(ctx, O4, 10);
   ctx.setLineDash([6, 4]);
-  segment(ctx, O2, O4, COLORS.ground, 1.5);
+  drawLink(ctx, O2, O4, COLORS.ground, 1.5);
   ctx.setLineDash([]);
   ctx.fillStyle = COLORS.couplerFill;
   ctx.beginPath();
@@ -120,13 +87,13 @@ function drawLinkagePose(ctx: DrawContext, v: ViewTransform, pose: PlacedJoints)
   ctx.lineTo(P.x, P.y);
   ctx.closePath();
   ctx.fill();
-  segment(ctx, A, P, COLORS.coupler, 2);
-  segment(ctx, B, P, COLORS.coupler, 2);
-  segment(ctx, O2, A, COLORS.crank, STROKES.link);
-  segment(ctx, A, B, COLORS.coupler, STROKES.link);
-  segment(ctx, O4, B, COLORS.rocker, STROKES.link);
-  for (const p of [O2, A, B, O4]) joint(ctx, p, STROKES.jointRadius, COLORS.joint, COLORS.jointStroke);
-  joint(ctx, P, STROKES.jointRadius, COLORS.couplerPoint, COLORS.couplerPoint);
+  drawLink(ctx, A, P, COLORS.coupler, 2);
+  drawLink(ctx, B, P, COLORS.coupler, 2);
+  drawLink(ctx, O2, A, COLORS.crank, STROKES.link);
+  drawLink(ctx, A, B, COLORS.coupler, STROKES.link);
+  drawLink(ctx, O4, B, COLORS.rocker, STROKES.link);
+  for (const p of [O2, A, B, O4]) drawJoint(ctx, p, STROKES.jointRadius, COLORS.joint, COLORS.jointStroke);
+  drawJoint(ctx, P, STROKES.jointRadius, COLORS.couplerPoint, COLORS.couplerPoint);
 }
 
 function drawTargets(ctx: DrawContext, v: ViewTransform, scene: PathScene): void {
@@ -144,8 +111,8 @@ function drawTargets(ctx: DrawContext, v: ViewTransform, scene: PathScene): void
     ctx.fill();
     ctx.stroke();
     // A cross in the ring marks the exact point.
-    segment(ctx, { x: p.x - 3, y: p.y }, { x: p.x + 3, y: p.y }, on ? COLORS.surface : COLORS.accent2, 1.5);
-    segment(ctx, { x: p.x, y: p.y - 3 }, { x: p.x, y: p.y + 3 }, on ? COLORS.surface : COLORS.accent2, 1.5);
+    drawLink(ctx, { x: p.x - 3, y: p.y }, { x: p.x + 3, y: p.y }, on ? COLORS.surface : COLORS.accent2, 1.5);
+    drawLink(ctx, { x: p.x, y: p.y - 3 }, { x: p.x, y: p.y + 3 }, on ? COLORS.surface : COLORS.accent2, 1.5);
     const name = scene.names[i] ?? '';
     ctx.lineWidth = 3;
     ctx.strokeStyle = COLORS.labelHalo;
