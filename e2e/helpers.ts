@@ -21,6 +21,15 @@ export async function waitReady(page: Page | FrameLocator): Promise<void> {
   await expect(page.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
 }
 
+/**
+ * Waits until the address bar shows the simulator page (no page key): the URL is rewritten 250 ms after the last
+ * change, so a key the previous page also wrote (tg on the synthesis page) says nothing about the opened design.
+ */
+export async function waitSimulatorUrl(page: Page): Promise<URLSearchParams> {
+  await expect.poll(() => new URL(page.url()).searchParams.get('page')).toBeNull();
+  return new URL(page.url()).searchParams;
+}
+
 /** PNG facts from a file's bytes: the signature and the IHDR width and height. */
 export interface PngFacts {
   signatureOk: boolean;

@@ -2,7 +2,7 @@ import type { BrowserContext, Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
 import { KNOWN, knownPose } from '../tests/features/synthesis/motion/knownLinkage';
 import type { P2 } from '../tests/features/synthesis/motion/knownLinkage';
-import { artifact } from './helpers';
+import { artifact, waitSimulatorUrl } from './helpers';
 
 // The Motion mode against the synthesis module's own oracle: poses computed here from a known linkage (circle
 // intersection, tests/features/synthesis/motion/knownLinkage.ts) lead back to its pivots.
@@ -199,8 +199,7 @@ test.describe('synthesis: motion generation', () => {
     await page.goto(motionUrl(THREE, `&pv=${encodeURIComponent(pointText([KNOWN.a, KNOWN.b]))}`));
     await page.getByRole('button', { name: 'Open in simulator' }).click();
     await expect(page.getByRole('tab', { name: 'Simulator' })).toHaveAttribute('aria-selected', 'true');
-    await expect.poll(() => new URL(page.url()).searchParams.get('tg')).not.toBeNull();
-    const params = new URL(page.url()).searchParams;
+    const params = await waitSimulatorUrl(page);
     // The poses came through the URL rounded to 1e-9°: r2 is the known 0.55 to far better than 1e-6.
     expect(Math.abs(Number(params.get('r2')) - KNOWN.r2)).toBeLessThan(NEAR);
     expect(Math.abs(Number(params.get('r4')) - KNOWN.r4)).toBeLessThan(NEAR);
