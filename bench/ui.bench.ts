@@ -46,7 +46,7 @@ const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
  * BENCH_OVERLAYS_QUERY replaces the query (say, without frc=1&fv=1) for a comparison on the same machine.
  */
 const ALL_OVERLAYS_URL = `${BASE}?${process.env.BENCH_OVERLAYS_QUERY ?? 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel'}`;
-/** BENCH_ONLY: a comma-separated subset of play1, play4, theta2x1, theta2x4, r3, motion, forces6 (default all), for quick checks. */
+/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
@@ -62,6 +62,8 @@ const TARGETS = {
   /** Issue 20: every overlay on, 6x CPU. */
   overlaysPlayFps6x: 50,
   overlaysTheta2P95Ms6x: 50,
+  /** Issue 21: Cancel stops the run (the workers too) within 200 ms. */
+  synCancelMs: 200,
 };
 /** Cold loads on the phone profile (bench/phoneLoad.ts); the target is their median. */
 const PHONE_RUNS = 3;
@@ -331,6 +333,50 @@ async function measureFirstLoad(browser: Browser) {
   };
 }
 
+/** Issue 21: twelve points on a figure eight, which no four-bar passes exactly, so a run goes on until cancelled. */
+const EIGHT = Array.from({ length: 12 }, (_, k) => {
+  const t = (2 * Math.PI * k) / 12;
+  return `${(3 * Math.sin(t)).toFixed(3)},${(1.5 * Math.sin(2 * t)).toFixed(3)}`;
+}).join(';');
+
+/**
+ * Cancel of a path synthesis at `rate`x CPU, 1 s into the run: ms from the click to the page saying "Cancelled."
+ * (measured in the page) and to the last of the run's workers closing (terminated; measured here, through CDP).
+ */
+async function measureSynCancel(browser: Browser, rate: number): Promise<{ pageMs: number; workersMs: number }> {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
+  const page = await context.newPage();
+  try {
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate });
+    await page.goto(`${BASE}?page=syn&tg=${encodeURIComponent(EIGHT)}`);
+    // The app's own solver worker starts just after the load: wait for it, so the run's pool is the workers after it.
+    while (page.workers().length === 0) await page.waitForEvent('worker');
+    const before = new Set(page.workers());
+    await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
+    await page.getByRole('progressbar').waitFor();
+    await page.waitForTimeout(1000);
+    const pool = page.workers().filter((w) => !before.has(w));
+    const closed = Promise.all(pool.map((w) => new Promise<number>((r) => w.once('close', () => r(Date.now())))));
+    const clickedAt = Date.now();
+    const pageMs = await page.evaluate(
+      () =>
+        new Promise<number>((resolve) => {
+          const status = document.querySelector('[data-testid="synthesis-status"]')!;
+          const t0 = performance.now();
+          new MutationObserver(() => {
+            if (status.textContent === 'Cancelled.') resolve(performance.now() - t0);
+          }).observe(status, { childList: true, subtree: true, characterData: true });
+          [...document.querySelectorAll('button')].find((b) => b.textContent === 'Cancel')!.click();
+        }),
+    );
+    const workersMs = Math.max(...(await closed)) - clickedAt;
+    return { pageMs, workersMs };
+  } finally {
+    await context.close();
+  }
+}
+
 async function main(): Promise<void> {
   const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
   const server = await preview({
@@ -368,6 +414,9 @@ async function main(): Promise<void> {
     // Issue 9: Play at 4x with the velocity/acceleration views off (MOTION_OFF_URL) and on (MOTION_URL).
     const motionOff: typeof play1 = [];
     const motionOn: typeof play1 = [];
+    // Issue 21: Cancel of a path synthesis at 4x and 6x.
+    const cancel4: Awaited<ReturnType<typeof measureSynCancel>>[] = [];
+    const cancel6: typeof cancel4 = [];
     // Issue 20: every overlay on (ALL_OVERLAYS_URL) at 6x.
     const overlaysPlay6: typeof play1 = [];
     const overlaysT6: typeof t1 = [];
@@ -386,6 +435,10 @@ async function main(): Promise<void> {
         overlaysPlay6.push(await measurePlay(browser, 6, ALL_OVERLAYS_URL));
         const query = `${new URL(ALL_OVERLAYS_URL).search.slice(1)}&t2=40`;
         overlaysT6.push(dragSummary(await measureDrag(browser, 6, 'theta2', query)));
+      }
+      if (wanted('synCancel')) {
+        cancel4.push(await measureSynCancel(browser, 4));
+        cancel6.push(await measureSynCancel(browser, 6));
       }
       console.log(`run ${run + 1}/${RUNS} done`);
     }
@@ -421,6 +474,11 @@ async function main(): Promise<void> {
       drag: { inputs: DRAG_STEPS, theta2x1: drag(t1), theta2x4: drag(t4), r3n3600x1: drag(r3) },
       // Issue 20: Play and the θ2 drag at 6x with every overlay on (ALL_OVERLAYS_URL).
       overlays6x: { url: ALL_OVERLAYS_URL, play: play(overlaysPlay6), theta2: drag(overlaysT6) },
+      // Issue 21: Cancel of a path synthesis: ms to "Cancelled." and to the run's workers closing.
+      synCancel: {
+        x4: { pageMs: pick(cancel4, (c) => c.pageMs), workersMs: pick(cancel4, (c) => c.workersMs) },
+        x6: { pageMs: pick(cancel6, (c) => c.pageMs), workersMs: pick(cancel6, (c) => c.workersMs) },
+      },
       firstLoad,
       phone: {
         profile: PHONE_PROFILE,
@@ -516,6 +574,18 @@ async function main(): Promise<void> {
         ok(o6.theta2.p95Ms.median <= TARGETS.overlaysTheta2P95Ms6x),
       ),
       row('every overlay on: θ2 drag latency p50 (ms), 6x', s(o6.theta2.p50Ms)),
+      row(
+        'synthesis Cancel to "Cancelled." / to the workers closed (ms), 4x',
+        `${s(result.synCancel.x4.pageMs)} / ${s(result.synCancel.x4.workersMs)}`,
+        `<= ${TARGETS.synCancelMs}`,
+        ok(result.synCancel.x4.workersMs.median <= TARGETS.synCancelMs),
+      ),
+      row(
+        'synthesis Cancel to "Cancelled." / to the workers closed (ms), 6x',
+        `${s(result.synCancel.x6.pageMs)} / ${s(result.synCancel.x6.workersMs)}`,
+        `<= ${TARGETS.synCancelMs}`,
+        ok(result.synCancel.x6.workersMs.median <= TARGETS.synCancelMs),
+      ),
       row(
         'frame time with those views on / off, 4x',
         s(result.motion.ratio, 2),

@@ -163,28 +163,25 @@ test.describe('the synthesis page, Path mode', () => {
     }).join('\n');
     await page.goto('./?page=syn');
     await paste(page, eight);
+    // The app's own solver worker starts just after the load: wait for it, so the run's pool is the workers after it.
+    await expect.poll(() => page.workers().length).toBeGreaterThan(0);
+    const before = new Set(page.workers());
     await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
     const bar = page.getByRole('progressbar', { name: 'Synthesis progress' });
     await expect(bar).toBeVisible();
     await expect(bar).toHaveAttribute('aria-valuetext', /best Σd²/);
-    const cancelled = await page.evaluate(
-      () =>
-        new Promise<number>((resolve) => {
-          const status = document.querySelector('[data-testid="synthesis-status"]')!;
-          const t0 = performance.now();
-          new MutationObserver(() => {
-            if (status.textContent === 'Cancelled.') resolve(performance.now() - t0);
-          }).observe(status, { childList: true, subtree: true, characterData: true });
-          (
-            [...document.querySelectorAll('button')].find((b) => b.textContent === 'Cancel') as HTMLButtonElement
-          ).click();
-        }),
-    );
-    // The page marks the run cancelled at once; 200 ms is the issue's bound.
-    expect(cancelled).toBeLessThan(200);
+    // The run's pool: the workers made by Synthesize. Cancel terminates them (a worker sees an abort only between
+    // rounds of the search, which can take hundreds of ms on a phone); the time it takes is in bench:ui (synCancel).
+    const pool = page.workers().filter((w) => !before.has(w));
+    expect(pool.length).toBeGreaterThan(0);
+    const closed = new Set<unknown>();
+    for (const w of pool) w.once('close', () => closed.add(w));
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await expect(page.getByTestId('synthesis-status')).toHaveText('Cancelled.');
+    await expect.poll(() => closed.size, { message: "Cancel terminates the pool's workers" }).toBe(pool.length);
     await expect(bar).toBeHidden();
     await expect(page.getByRole('button', { name: 'Synthesize', exact: true })).toBeEnabled();
-    // The worker was told to stop: a new, easy run is answered.
+    // A new run makes a new pool, and an easy task is answered.
     await paste(page, TARGETS.map((p) => `${p.x}, ${p.y}`).join('\n'));
     await synthesize(page);
   });

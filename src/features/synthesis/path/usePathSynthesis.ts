@@ -45,8 +45,8 @@ let lastRun: PathRunState = IDLE;
 /**
  * Runs a path synthesis on a pool of workers: the global stage's rounds dealt to pool.size parts (pathPart, seed and
  * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() aborts every
- * part at once: the run is marked cancelled at once and the workers stop at their next check. The pool is made on
- * the first run and disposed with the page.
+ * part and terminates the pool's workers: the run is marked cancelled at once and no worker computes on. The pool is
+ * made on the first run (again after a cancel) and disposed with the page.
  */
 export function usePathSynthesis(createPool: () => SynthesisPool) {
   const [state, setState] = useState<PathRunState>(lastRun);
@@ -65,6 +65,10 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
   const cancel = useCallback(() => {
     abort.current?.abort();
     abort.current = null;
+    // A worker sees the abort only between two rounds of the search, and one round can take hundreds of ms on a
+    // slow phone: stop the workers outright. The next run makes a new pool.
+    pool.current?.dispose();
+    pool.current = null;
     setState((s) => (s.status === 'running' ? { ...s, status: 'cancelled', progress: null } : s));
   }, []);
 
