@@ -71,6 +71,20 @@ test.describe('SVG export', () => {
     await lookAt(page, file.text, 'svg-linkage.png');
   });
 
+  test('the grid label and an off-screen instant centre carry the length unit', async ({ page }) => {
+    // Zoomed in 4x on the default linkage: the instant centres fall outside the view and are marked at its edge.
+    await page.goto('./?lu=mm&ic=1&z=4');
+    await waitReady(page);
+    const svg = await svgFacts(page, (await downloadSvg(page, 'Export linkage SVG')).text);
+    expect(svg.parseError).toBeNull();
+    expect(svg.texts.filter((s) => /^grid [\d.]+ mm$/.test(s)).length).toBeGreaterThan(0);
+    expect(svg.texts.filter((s) => /^I(13|24) \(−?[\d.]+, −?[\d.]+\) mm$/.test(s)).length).toBeGreaterThan(0);
+    await page.goto('./?lu=in&ic=1&z=4');
+    await waitReady(page);
+    const inches = await svgFacts(page, (await downloadSvg(page, 'Export linkage SVG')).text);
+    expect(inches.texts.filter((s) => /^grid [\d.]+ in$/.test(s)).length).toBeGreaterThan(0);
+  });
+
   test('each plot SVG parses and carries its title and axis label as text', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

@@ -12,7 +12,7 @@ import type { DesignInfo } from './useDesignMetrics';
 /**
  * The canvas's design overlay for this frame: the mu band (always, for the mu label's colour), the dead
  * centres and swing when that toggle is on and the input is a crank driving a rocker, and this pose's
- * instant centres when that toggle is on.
+ * instant centres when that toggle is on (an off-screen one labelled with its coordinates in the length unit).
  */
 export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {
   const {
@@ -33,6 +33,7 @@ export function useDesignScene(state: AppState, local: LocalPose, design: Design
     }
   }, [showInstantCentres, linkage, theta2Rad, pose]);
   const swingText = output ? t.swingLabel(`${formatDeg(radToDeg(output.swing), 2)}°`) : '';
+  const unit = state.forces.lengthUnit;
   return useMemo(
     () => ({
       muBandRad: { lo: degToRad(muBandLoDeg), hi: degToRad(muBandHiDeg) },
@@ -40,8 +41,8 @@ export function useDesignScene(state: AppState, local: LocalPose, design: Design
       swingText,
       instantCentres: centres,
       offscreenText: (name, at) =>
-        at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3)) : t.centreAtInfinity(name),
+        at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3), unit) : t.centreAtInfinity(name),
     }),
-    [muBandLoDeg, muBandHiDeg, dead, swingText, centres, t],
+    [muBandLoDeg, muBandHiDeg, dead, swingText, centres, t, unit],
   );
 }

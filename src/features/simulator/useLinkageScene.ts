@@ -46,8 +46,11 @@ function useSceneBounds(
   return cycleBounds ?? poseBounds;
 }
 
-/** The scene's texts in the page's language: joint names, the warning, the grid's spacing and number formats. */
-function useSceneText(t: Messages, warning: string | null, warningDetail: string | null): SceneText {
+/**
+ * The scene's texts in the page's language: joint names, the warning, the grid's spacing and number formats (a
+ * length with the app's length unit: "grid 2 mm").
+ */
+function useSceneText(t: Messages, warning: string | null, warningDetail: string | null, unit: string): SceneText {
   return useMemo(
     () => ({
       ...t.jointLabels,
@@ -55,9 +58,9 @@ function useSceneText(t: Messages, warning: string | null, warningDetail: string
       warningDetail,
       gridSpacing: t.gridSpacing,
       formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
-      formatLength: (x: number) => formatNumber(x, 4),
+      formatLength: (x: number) => `${formatNumber(x, 4)} ${unit}`,
     }),
-    [t, warning, warningDetail],
+    [t, warning, warningDetail, unit],
   );
 }
 
@@ -83,7 +86,7 @@ export function useLinkageScene(
   const classification = cycle?.classification ?? null;
   const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
   const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
-  const text = useSceneText(t, warning, warningDetail);
+  const text = useSceneText(t, warning, warningDetail, state.forces.lengthUnit);
   const {
     display: { showGrid, showAngles, showGhost, showTrace },
   } = state;

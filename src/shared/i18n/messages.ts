@@ -92,8 +92,8 @@ export interface Messages {
   markFolded: string;
   /** Canvas label of the swing arc: "swing 48.54°". */
   swingLabel: (deg: string) => string;
-  /** Canvas edge marker of an off-screen instant centre: "I13 (12.3, −4.5)". */
-  offscreenCentre: (name: string, x: string, y: string) => string;
+  /** Canvas edge marker of an off-screen instant centre, with the length unit: "I13 (12.3, −4.5) m". */
+  offscreenCentre: (name: string, x: string, y: string, unit: string) => string;
   /** Canvas label of an instant centre at infinity (its two lines are parallel), beside the arrow along them. */
   centreAtInfinity: (name: string) => string;
   sectionPlots: string;

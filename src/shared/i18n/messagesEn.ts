@@ -83,7 +83,7 @@ export const messagesEn: Messages = {
   markExtended: 'ext.',
   markFolded: 'fold.',
   swingLabel: (deg) => `swing ${deg}`,
-  offscreenCentre: (name, x, y) => `${name} (${x}, ${y})`,
+  offscreenCentre: (name, x, y, unit) => `${name} (${x}, ${y}) ${unit}`,
   centreAtInfinity: (name) => `${name} at ∞`,
   sectionPlots: 'Plots',
 

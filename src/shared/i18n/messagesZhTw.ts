@@ -83,7 +83,7 @@ export const messagesZhTw: Messages = {
   markExtended: '伸直',
   markFolded: '摺疊',
   swingLabel: (deg) => `擺角 ${deg}`,
-  offscreenCentre: (name, x, y) => `${name}（${x}, ${y}）`,
+  offscreenCentre: (name, x, y, unit) => `${name}（${x}, ${y}）${unit}`,
   centreAtInfinity: (name) => `${name} 在無窮遠`,
   sectionPlots: '圖表',
 
