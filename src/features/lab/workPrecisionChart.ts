@@ -19,6 +19,7 @@ import {
   drawChartText,
 } from '../../shared/charts/chartFrame';
 import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from '../../shared/charts/ticks';
+import { placeLabels as placeBoxes } from '../../shared/canvas/labelPlacement';
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
@@ -183,15 +184,14 @@ export interface PlacedLabel {
   anchor: 'start' | 'middle' | 'end';
 }
 
-function overlaps(a: LabelBox, b: LabelBox): boolean {
-  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-}
+/** Air around each label box (px), so neighbours never read as one word. */
+const LABEL_AIR = 3;
 
 /**
- * Greedy label placement: for each point (x, y) with a label of width w and font size h, tries right,
- * left, above, below, then the four diagonals, gap pixels away (per item, else defaultGap), and keeps
- * the first spot inside [0, width] x [0, height] that overlaps neither an obstacle nor an earlier
- * label; null when every spot is taken.
+ * Greedy label placement on the app's one placer (shared/canvas/labelPlacement): for each point (x, y) with a
+ * label of width w and font size h, tries right, left, above, below, then the four diagonals, gap pixels away
+ * (per item, else defaultGap), and keeps the first spot inside [0, width] x [0, height] whose box (with
+ * LABEL_AIR around it) overlaps neither an obstacle nor an earlier label; null when every spot is taken.
  */
 export function placeLabels(
   items: ReadonlyArray<{ x: number; y: number; w: number; h: number; gap?: number }>,
@@ -200,8 +200,11 @@ export function placeLabels(
   height: number,
   defaultGap = 7,
 ): Array<PlacedLabel | null> {
-  const taken: LabelBox[] = [...obstacles];
-  return items.map(({ x, y, w, h, gap = defaultGap }) => {
+  // A label's padded box is centred on its request's candidate; the text must lie inside the plot, so the
+  // bounds grow by the padding (LABEL_AIR across, 1 px down and up).
+  const bounds = { x: -LABEL_AIR, y: -1, width: width + 2 * LABEL_AIR, height: height + 2 };
+  const exclusions = obstacles.map((o) => ({ x: o.x0, y: o.y0, width: o.x1 - o.x0, height: o.y1 - o.y0 }));
+  const spotsOf = items.map(({ x, y, w, h, gap = defaultGap }) => {
     const asc = 0.75 * h;
     const desc = 0.25 * h;
     const spots: PlacedLabel[] = [
@@ -214,17 +217,16 @@ export function placeLabels(
       { x: x - gap * 0.7, y: y - gap * 0.7, anchor: 'end' },
       { x: x - gap * 0.7, y: y + gap * 0.7 + asc, anchor: 'end' },
     ];
-    for (const s of spots) {
+    const centres = spots.map((s) => {
       const left = s.anchor === 'start' ? s.x : s.anchor === 'end' ? s.x - w : s.x - w / 2;
-      // 3 px of air around each label so neighbours never read as one word.
-      const box = { x0: left - 3, y0: s.y - asc - 1, x1: left + w + 3, y1: s.y + desc + 1 };
-      if (left < 0 || left + w > width || s.y - asc < 0 || s.y + desc > height) continue;
-      if (taken.some((t) => overlaps(t, box))) continue;
-      taken.push(box);
-      return s;
-    }
-    return null;
+      return { x: left + w / 2, y: s.y + (desc - asc) / 2 };
+    });
+    return { spots, centres, width: w + 2 * LABEL_AIR, height: asc + desc + 2 };
   });
+  const requests = spotsOf.map((r, i) => ({ id: String(i), width: r.width, height: r.height, candidates: r.centres }));
+  const { placed } = placeBoxes(requests, bounds, exclusions, []);
+  const spot = new Map(placed.map((p) => [Number(p.id), spotsOf[Number(p.id)].spots[p.candidateIndex]]));
+  return items.map((_, i) => spot.get(i) ?? null);
 }
 
 /** One entry of a method legend. */

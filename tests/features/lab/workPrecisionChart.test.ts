@@ -174,6 +174,76 @@ describe('placeLabels', () => {
   });
 });
 
+/**
+ * The placement rule written out on its own, as the oracle: the eight spots in order, the first whose text lies
+ * inside the plot and whose box (3 px of air across, 1 px up and down) overlaps no obstacle and no earlier box.
+ */
+function referencePlace(
+  items: { x: number; y: number; w: number; h: number }[],
+  obstacles: { x0: number; y0: number; x1: number; y1: number }[],
+  width: number,
+  height: number,
+  gap = 7,
+) {
+  const taken = [...obstacles];
+  return items.map(({ x, y, w, h }) => {
+    const asc = 0.75 * h;
+    const desc = 0.25 * h;
+    const d = gap * 0.7;
+    const spots = [
+      [x + gap, y + asc / 2, 'start'],
+      [x - gap, y + asc / 2, 'end'],
+      [x, y - gap - desc, 'middle'],
+      [x, y + gap + asc, 'middle'],
+      [x + d, y - d, 'start'],
+      [x + d, y + d + asc, 'start'],
+      [x - d, y - d, 'end'],
+      [x - d, y + d + asc, 'end'],
+    ] as const;
+    for (const [sx, sy, anchor] of spots) {
+      const left = anchor === 'start' ? sx : anchor === 'end' ? sx - w : sx - w / 2;
+      if (left < 0 || left + w > width || sy - asc < 0 || sy + desc > height) continue;
+      const box = { x0: left - 3, y0: sy - asc - 1, x1: left + w + 3, y1: sy + desc + 1 };
+      if (taken.some((t) => box.x0 < t.x1 && t.x0 < box.x1 && box.y0 < t.y1 && t.y0 < box.y1)) continue;
+      taken.push(box);
+      return { x: sx, y: sy, anchor };
+    }
+    return null;
+  });
+}
+
+describe('placeLabels against the rule written out (random crowds of labels and obstacles)', () => {
+  it('places every label where the rule does, or drops it where the rule does', () => {
+    let seed = 12345;
+    const rand = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
+    for (let trial = 0; trial < 300; trial++) {
+      const W = 150 + 200 * rand();
+      const H = 80 + 120 * rand();
+      const items = Array.from({ length: 1 + Math.floor(12 * rand()) }, () => ({
+        x: W * rand(),
+        y: H * rand(),
+        w: 10 + 40 * rand(),
+        h: 8 + 6 * rand(),
+      }));
+      const obstacles = Array.from({ length: Math.floor(5 * rand()) }, () => {
+        const x0 = W * rand();
+        const y0 = H * rand();
+        return { x0, y0, x1: x0 + 30 * rand(), y1: y0 + 20 * rand() };
+      });
+      const got = placeLabels(items, obstacles, W, H);
+      const want = referencePlace(items, obstacles, W, H);
+      for (let i = 0; i < items.length; i++) {
+        if (want[i] === null) expect(got[i]).toBeNull();
+        else {
+          expect(got[i]?.anchor).toBe(want[i]!.anchor);
+          expect(got[i]!.x).toBeCloseTo(want[i]!.x, 9);
+          expect(got[i]!.y).toBeCloseTo(want[i]!.y, 9);
+        }
+      }
+    }
+  });
+});
+
 describe('legendLayout', () => {
   it('wraps entries into rows no wider than the space', () => {
     const rows = legendLayout([100, 100, 100], 300).map((p) => p[1]);
