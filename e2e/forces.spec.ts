@@ -161,6 +161,36 @@ test.describe('forces', () => {
     await expect(row(page, 'Input torque T12').locator('dd')).not.toHaveText(inMm);
   });
 
+  test('a bad mass per length is refused with a message naming the field; Enter or leaving commits a good one', async ({
+    page,
+  }) => {
+    await page.goto(URL_MM);
+    await waitReady(page);
+    const rho = page.getByRole('textbox', { name: 'Mass per length (kg/m)', exact: true });
+    const torque = row(page, 'Input torque T12').locator('dd');
+    await expect(rho).toHaveValue('2.5');
+    const before = await torque.innerText();
+    // Nothing is read while typing: the text is judged on Enter.
+    await rho.fill('2..5');
+    await expect(page.getByRole('alert')).toHaveCount(0);
+    await rho.press('Enter');
+    await expect(page.getByRole('alert')).toHaveText('Mass per length: “2..5” is not a number.');
+    await expect(rho).toHaveAttribute('aria-invalid', 'true');
+    await rho.fill('2e6');
+    await rho.press('Enter');
+    await expect(page.getByRole('alert')).toHaveText('Mass per length must be from 0 to 1e6.');
+    await expect(torque).toHaveText(before);
+    // Escape restores the value kept; a good text commits when the field loses focus.
+    await rho.press('Escape');
+    await expect(rho).toHaveValue('2.5');
+    await expect(page.getByRole('alert')).toHaveCount(0);
+    await rho.fill('5');
+    await rho.press('Tab');
+    await expect(rho).not.toHaveAttribute('aria-invalid');
+    await expect(torque).not.toHaveText(before);
+    await expect(page).toHaveURL(/rho=5(&|$)/);
+  });
+
   test('the Force vectors toggle draws the pin forces with a scale legend, and fv=1 in the URL', async ({ page }) => {
     await page.goto(URL_MM);
     await waitReady(page);

@@ -198,6 +198,29 @@ test.describe('the synthesis page, Path mode', () => {
     await expect(page.getByRole('textbox', { name: 'T3 x' })).toHaveValue('2');
   });
 
+  test('a refused step is named and kept; an emptied bound goes back to auto', async ({ page }) => {
+    await page.goto('./?page=syn&tg=0,0;1,1;2,0&tm=step&ts=40');
+    const step = page.getByRole('textbox', { name: 'Step of θ2 (°)' });
+    await step.fill('0');
+    await step.press('Enter');
+    await expect(page.getByRole('alert')).toHaveText('“0” is not a number.');
+    await expect(step).toHaveAttribute('aria-invalid', 'true');
+    // The step kept is 40 until a good one leaves the field (30 is the default, which the URL leaves out).
+    await expect(page).toHaveURL(/ts=40(&|$)/);
+    await step.fill('25');
+    await step.press('Tab');
+    await expect(page).toHaveURL(/ts=25(&|$)/);
+    const bound = page.getByRole('textbox', { name: 'Longest link' });
+    await expect(bound).toHaveValue('');
+    await bound.fill('5');
+    await bound.press('Enter');
+    await expect(page).toHaveURL(/bl=5(&|$)/);
+    await bound.fill('');
+    await bound.press('Tab');
+    await expect(bound).toHaveValue('');
+    await expect(page).not.toHaveURL(/bl=/);
+  });
+
   test('adds, moves and removes targets on the canvas with the mouse and the keyboard', async ({ page }) => {
     await page.goto('./?page=syn');
     const canvas = page.getByTestId('synthesis-canvas');

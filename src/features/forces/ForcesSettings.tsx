@@ -9,8 +9,10 @@ import type {
   MovingLink,
 } from '../../shared/state/slices/forcesSlice';
 import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
+import { formatNumber } from '../../shared/format';
+import type { NumberFieldProps } from '../../shared/ui/NumberField';
+import { NumberField } from '../../shared/ui/NumberField';
 import { Segmented } from '../../shared/ui/Segmented';
-import { ForceField } from './ForceField';
 import { barSeeds } from './forceModel';
 import type { ForcesMessages } from './forcesMessages';
 
@@ -22,6 +24,24 @@ export interface ForcesSettingsProps {
   t: ForcesMessages;
 }
 
+/**
+ * A forces field's name, range check and messages: a number from min to max (field units), the label naming it in
+ * both messages (not a number; out of range).
+ */
+function forceField(
+  t: Pick<ForcesMessages, 'badNumber' | 'outOfRange'>,
+  label: string,
+  min: number,
+  max: number,
+): Pick<NumberFieldProps, 'label' | 'check' | 'errorText' | 'className'> {
+  return {
+    label,
+    check: (v) => (v < min || v > max ? t.outOfRange(label, formatNumber(min), formatNumber(max)) : null),
+    errorText: (text, _kept, why) => why ?? t.badNumber(label, text),
+    className: 'frc-field',
+  };
+}
+
 /** One link's mass, inertia and CG (distance in the length unit, angle in degrees from the link's line). */
 function LinkFields({ link, forces, dispatch, t }: Omit<ForcesSettingsProps, 'linkage'> & { link: MovingLink }) {
   const p = forces[link];
@@ -31,41 +51,29 @@ function LinkFields({ link, forces, dispatch, t }: Omit<ForcesSettingsProps, 'li
   return (
     <fieldset className="forces-link">
       <legend>{name}</legend>
-      <ForceField
-        label={`${name}: ${t.mass}`}
+      <NumberField
+        {...forceField(t, `${name}: ${t.mass}`, 0, FORCES_LIMITS.mass)}
         unit="kg"
         value={p.massKg}
-        min={0}
-        max={FORCES_LIMITS.mass}
         onCommit={(massKg) => set({ massKg })}
-        t={t}
       />
-      <ForceField
-        label={`${name}: ${t.inertia}`}
+      <NumberField
+        {...forceField(t, `${name}: ${t.inertia}`, 0, FORCES_LIMITS.inertia)}
         unit="kg·m²"
         value={p.inertiaKgM2}
-        min={0}
-        max={FORCES_LIMITS.inertia}
         onCommit={(inertiaKgM2) => set({ inertiaKgM2 })}
-        t={t}
       />
-      <ForceField
-        label={`${name}: ${t.cgDistance}`}
+      <NumberField
+        {...forceField(t, `${name}: ${t.cgDistance}`, -FORCES_LIMITS.offset, FORCES_LIMITS.offset)}
         unit={unit}
         value={p.cgDistance}
-        min={-FORCES_LIMITS.offset}
-        max={FORCES_LIMITS.offset}
         onCommit={(cgDistance) => set({ cgDistance })}
-        t={t}
       />
-      <ForceField
-        label={`${name}: ${t.cgAngle}`}
+      <NumberField
+        {...forceField(t, `${name}: ${t.cgAngle}`, -360, 360)}
         unit="°"
         value={p.cgAngleDeg}
-        min={-360}
-        max={360}
         onCommit={(cgAngleDeg) => set({ cgAngleDeg })}
-        t={t}
       />
     </fieldset>
   );
@@ -92,74 +100,52 @@ function ForcesSettingsImpl({ forces: f, linkage, dispatch, t }: ForcesSettingsP
         onChange={chooseModel}
       />
       {f.massModel === 'bars' ? (
-        <ForceField
-          label={t.massPerLength}
+        <NumberField
+          {...forceField(t, t.massPerLength, 0, FORCES_LIMITS.mass)}
           unit="kg/m"
           value={f.rhoKgPerM}
-          min={0}
-          max={FORCES_LIMITS.mass}
           onCommit={(rhoKgPerM) => set({ rhoKgPerM })}
-          t={t}
-          testId="forces-rho"
         />
       ) : (
         MOVING_LINKS.map((link) => <LinkFields key={link} link={link} forces={f} dispatch={dispatch} t={t} />)
       )}
-      <ForceField
-        label={t.gravity}
+      <NumberField
+        {...forceField(t, t.gravity, 0, FORCES_LIMITS.gravity)}
         unit="m/s²"
         value={f.gravityMPerS2}
-        min={0}
-        max={FORCES_LIMITS.gravity}
         onCommit={(gravityMPerS2) => set({ gravityMPerS2 })}
-        t={t}
       />
-      <ForceField
-        label={t.gravityAngle}
+      <NumberField
+        {...forceField(t, t.gravityAngle, -360, 360)}
         unit="°"
         value={f.gravityAngleDeg}
-        min={-360}
-        max={360}
         onCommit={(gravityAngleDeg) => set({ gravityAngleDeg })}
-        t={t}
       />
       <p className="footnote">{t.gravityNote}</p>
       <h3 className="subhead">{t.loadsTitle}</h3>
-      <ForceField
-        label={t.pointForceX}
+      <NumberField
+        {...forceField(t, t.pointForceX, -FORCES_LIMITS.force, FORCES_LIMITS.force)}
         unit="N"
         value={f.pointForceXN}
-        min={-FORCES_LIMITS.force}
-        max={FORCES_LIMITS.force}
         onCommit={(pointForceXN) => set({ pointForceXN })}
-        t={t}
       />
-      <ForceField
-        label={t.pointForceY}
+      <NumberField
+        {...forceField(t, t.pointForceY, -FORCES_LIMITS.force, FORCES_LIMITS.force)}
         unit="N"
         value={f.pointForceYN}
-        min={-FORCES_LIMITS.force}
-        max={FORCES_LIMITS.force}
         onCommit={(pointForceYN) => set({ pointForceYN })}
-        t={t}
       />
-      <ForceField
-        label={t.loadTorque}
+      <NumberField
+        {...forceField(t, t.loadTorque, -FORCES_LIMITS.torque, FORCES_LIMITS.torque)}
         unit="N·m"
         value={f.loadTorqueNm}
-        min={-FORCES_LIMITS.torque}
-        max={FORCES_LIMITS.torque}
         onCommit={(loadTorqueNm) => set({ loadTorqueNm })}
-        t={t}
       />
-      <ForceField
-        label={t.speedFluctuation}
+      <NumberField
+        {...forceField(t, t.speedFluctuation, 1e-6, 1)}
         unit=""
         value={f.speedFluctuation}
-        min={1e-6}
-        max={1}
         onCommit={(speedFluctuation) => set({ speedFluctuation })}
-        t={t}
       />
     </div>
   );

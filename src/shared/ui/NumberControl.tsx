@@ -1,7 +1,7 @@
 import './NumberControl.css';
 import { useId, useState } from 'react';
 import type { FieldName } from './validateNumber';
-import { parseField } from './validateNumber';
+import { ECHO_MAX_CHARS, parseField } from './validateNumber';
 import { fieldText, formatNumber, truncateText } from '../format';
 import { useMessages } from '../i18n/MessagesContext';
 import type { TurnKeys } from './sliderKeys';
@@ -25,9 +25,6 @@ export interface NumberControlProps {
   /** An angle on the circle [min, max): the slider's keys step by turn.step and wrap around (turnKeyValue). */
   turn?: TurnKeys;
 }
-
-/** Most characters of a rejected text that the inline message echoes. */
-export const ECHO_MAX_CHARS = 24;
 
 function LockMark() {
   return (

@@ -1,3 +1,5 @@
+import { truncateText } from '../format';
+
 /** Which numeric field a value belongs to; names the field in messages. */
 export type FieldName =
   | 'r1'
@@ -112,4 +114,35 @@ export function checkValue(field: FieldName, value: number, raw: string = String
   if (value > spec.max || !Number.isFinite(value)) return fail('outOfRange');
   if (value < spec.min) return fail(spec.signed ? 'outOfRange' : 'tooSmall');
   return { ok: true, value: value === 0 ? 0 : value };
+}
+
+/** Most characters of a refused text that a field's message echoes (longer texts are cut with an ellipsis). */
+export const ECHO_MAX_CHARS = 24;
+
+/**
+ * What a number field's text says: a number to commit, an emptied field (only where empty is allowed), or a
+ * refusal with the text to echo (trimmed, cut to ECHO_MAX_CHARS) and the check's reason (null: not a number).
+ */
+export type NumberReading =
+  { kind: 'number'; value: number } | { kind: 'empty' } | { kind: 'refused'; text: string; why: string | null };
+
+/** How readNumberText judges a text: the field's own check and whether an empty field means "none". */
+export interface NumberReadingOptions {
+  /** Why a finite number is refused (out of range, say), or null to accept it; default accepts every number. */
+  check?: (value: number) => string | null;
+  /** An empty (or blank) text reads as 'empty' instead of being refused; default false. */
+  allowEmpty?: boolean;
+}
+
+/**
+ * Reads the text typed into a number field: a finite decimal (parseDecimal; 1e999 is not one) that check accepts
+ * is a number (-0 read as 0); anything else is refused with the text as echoed and check's reason. Never throws.
+ */
+export function readNumberText(raw: string, { check, allowEmpty = false }: NumberReadingOptions = {}): NumberReading {
+  const text = raw.trim();
+  if (allowEmpty && text === '') return { kind: 'empty' };
+  const value = parseDecimal(raw);
+  const why = Number.isFinite(value) ? (check?.(value) ?? null) : null;
+  if (Number.isFinite(value) && why === null) return { kind: 'number', value: value === 0 ? 0 : value };
+  return { kind: 'refused', text: truncateText(text, ECHO_MAX_CHARS), why };
 }

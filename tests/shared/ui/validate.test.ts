@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
-import { checkValue, normalizeNumberText, parseDecimal, parseField } from '../../../src/shared/ui/validateNumber';
+import {
+  ECHO_MAX_CHARS,
+  checkValue,
+  normalizeNumberText,
+  parseDecimal,
+  parseField,
+  readNumberText,
+} from '../../../src/shared/ui/validateNumber';
 
 function message(field: Parameters<typeof parseField>[0], raw: string): string {
   const r = parseField(field, raw);
@@ -86,5 +93,45 @@ describe('the rate and band fields', () => {
     expect(parseField('muBandHi', '180').ok).toBe(true);
     expect(parseField('muBandLo', '-1').ok).toBe(false);
     expect(parseField('muBandHi', '180.1').ok).toBe(false);
+  });
+});
+
+describe('readNumberText', () => {
+  const atMost = (max: number) => (v: number) => (v <= max ? null : `at most ${max}`);
+
+  it('reads a decimal as parseDecimal does (comma, full-width digits), -0 as 0', () => {
+    expect(readNumberText(' 2,5 ')).toEqual({ kind: 'number', value: 2.5 });
+    expect(readNumberText('－３')).toEqual({ kind: 'number', value: -3 });
+    const zero = readNumberText('-0');
+    expect(zero).toEqual({ kind: 'number', value: 0 });
+    expect(zero.kind === 'number' && Object.is(zero.value, -0)).toBe(false);
+  });
+
+  it('refuses a text that is not a number with no reason, echoing it trimmed', () => {
+    expect(readNumberText(' 1..3 ')).toEqual({ kind: 'refused', text: '1..3', why: null });
+    // 1e999 matches the decimal pattern but is Infinity: not a number a field can keep.
+    expect(readNumberText('1e999')).toEqual({ kind: 'refused', text: '1e999', why: null });
+  });
+
+  it("refuses a number the check refuses, with the check's reason", () => {
+    expect(readNumberText('7', { check: atMost(5) })).toEqual({ kind: 'refused', text: '7', why: 'at most 5' });
+    expect(readNumberText('5', { check: atMost(5) })).toEqual({ kind: 'number', value: 5 });
+  });
+
+  it('never asks the check about a text that is not a number', () => {
+    const asked: number[] = [];
+    readNumberText('abc', { check: (v) => (asked.push(v), null) });
+    expect(asked).toEqual([]);
+  });
+
+  it('reads a blank text as empty only where empty is allowed', () => {
+    expect(readNumberText('  ', { allowEmpty: true })).toEqual({ kind: 'empty' });
+    expect(readNumberText('  ')).toEqual({ kind: 'refused', text: '', why: null });
+  });
+
+  it('cuts a long refused text to ECHO_MAX_CHARS characters with an ellipsis', () => {
+    const r = readNumberText('x'.repeat(100));
+    expect(r.kind === 'refused' && Array.from(r.text)).toHaveLength(ECHO_MAX_CHARS);
+    expect(r.kind === 'refused' && r.text.endsWith('…')).toBe(true);
   });
 });

@@ -3,7 +3,7 @@ import type { Action } from '../../../shared/state/appState';
 import type { RangeProblem, SynFunctionState } from '../../../shared/state/slices/synFunctionSlice';
 import { MAX_FN_POINTS, RANGE_DEG_MAX, rangeLimit, rangeProblem } from '../../../shared/state/slices/synFunctionSlice';
 import { formatNumber } from '../../../shared/format';
-import { DecimalField } from '../motion/DecimalField';
+import { NumberField } from '../../../shared/ui/NumberField';
 import type { FunctionMessages } from './functionMessages';
 
 /** Props of FunctionFields: the mode's slice, dispatch and the texts. */
@@ -36,12 +36,12 @@ export function FunctionFields({ s, dispatch, fm }: FunctionFieldsProps) {
             const label = end === 0 ? fromLabel : toLabel;
             const range = s[key];
             return (
-              <DecimalField
+              <NumberField
+                live
                 key={end}
                 label={label}
                 value={range[end]}
                 unit={unit}
-                className={`fn-${key}-${end}`}
                 check={(v) => {
                   const next: [number, number] = end === 0 ? [v, range[1]] : [range[0], v];
                   const p = rangeProblem(next, kind);
@@ -60,10 +60,10 @@ export function FunctionFields({ s, dispatch, fm }: FunctionFieldsProps) {
         </div>
       ))}
       <div className="synmode-field-row">
-        <DecimalField
+        <NumberField
+          live
           label={fm.precisionPoints}
           value={s.precisionPoints}
-          className="fn-points"
           check={(v) => (Number.isInteger(v) && v >= 3 && v <= MAX_FN_POINTS ? null : fm.pointsWhy(MAX_FN_POINTS))}
           errorText={(text, kept, w) => fm.fieldError(fm.precisionPoints, text, kept, w)}
           onCommit={(v) => dispatch({ type: 'setSynFunction', patch: { precisionPoints: v } })}

@@ -3,8 +3,8 @@ import type { PivotChoice } from '../../../shared/state/slices/synMotionSlice';
 import { COORD_MAX } from '../../../shared/state/slices/synMotionSlice';
 import { Segmented } from '../../../shared/ui/Segmented';
 import { formatNumber } from '../../../shared/format';
+import { NumberField } from '../../../shared/ui/NumberField';
 import type { MotionMessages } from './motionMessages';
-import { DecimalField } from './DecimalField';
 
 /** Props of PivotPanel: the choice, the placed pivots, and what changing them does. */
 export interface PivotPanelProps {
@@ -35,12 +35,12 @@ export function PivotPanel({ choice, pivots, onChoice, onPivot, mt }: PivotPanel
       <div className="synmode-pivot-grid">
         {([0, 1] as const).map((k) =>
           (['x', 'y'] as const).map((axis) => (
-            <DecimalField
+            <NumberField
+              live
               key={`${k}${axis}`}
               label={`${names[k]} ${axis}`}
               value={pivots[k][axis]}
               decimals={6}
-              className={`pivot-${k}-${axis}`}
               check={check}
               errorText={(text, kept, why) => mt.cellError(`${mt.pivotName[names[k]]} ${axis}`, text, kept, why)}
               onCommit={(value) => onPivot(k, { ...pivots[k], [axis]: value })}

@@ -1,8 +1,8 @@
 import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import { COORD_MAX, MAX_POSES, MIN_POSES } from '../../../shared/state/slices/synMotionSlice';
 import { formatNumber } from '../../../shared/format';
+import { NumberField } from '../../../shared/ui/NumberField';
 import type { MotionMessages } from './motionMessages';
-import { DecimalField } from './DecimalField';
 
 /** Props of PoseTable: the poses, the selected one, and what editing, adding and removing do. */
 export interface PoseTableProps {
@@ -47,12 +47,12 @@ export function PoseTable({ poses, selected, onSelect, onPose, onAdd, onRemove, 
               <th scope="row">{i + 1}</th>
               {cells.map(([key, title]) => (
                 <td key={key}>
-                  <DecimalField
+                  <NumberField
+                    live
                     label={`${mt.poseName(i + 1)} ${title}`}
                     hideLabel
                     value={pose[key]}
                     decimals={key === 'angleDeg' ? 2 : 6}
-                    className={`pose-${key}`}
                     check={key === 'angleDeg' ? undefined : coordCheck}
                     errorText={(text, kept, why) => mt.cellError(`${mt.poseName(i + 1)} ${title}`, text, kept, why)}
                     onCommit={(value) => onPose(i, { ...pose, [key]: value })}

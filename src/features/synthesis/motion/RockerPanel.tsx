@@ -1,9 +1,9 @@
 import { radToDeg } from '../../../solver';
 import { COORD_MAX, MAX_TIME_RATIO } from '../../../shared/state/slices/synMotionSlice';
 import { formatDeg, formatNumber } from '../../../shared/format';
+import { NumberField } from '../../../shared/ui/NumberField';
 import type { MotionMessages } from './motionMessages';
 import type { TwoPoseOutcome } from './motionSolve';
-import { DecimalField } from './DecimalField';
 import { ChoiceList } from './ChoiceList';
 
 /** Props of RockerPanel: the two-pose outcome, the settings, and what changing them does. */
@@ -40,11 +40,11 @@ export function RockerPanel({
         </p>
       ) : null}
       <div className="synmode-field-row">
-        <DecimalField
+        <NumberField
+          live
           label={mt.groundLength}
           value={outcome.ground}
           decimals={6}
-          className="ground-length"
           check={(v) => (v > 0 && v <= COORD_MAX ? null : mt.mustBePositive)}
           errorText={(text, kept, why) => mt.cellError(mt.groundLength, text, kept, why)}
           onCommit={onGround}
@@ -53,11 +53,11 @@ export function RockerPanel({
           {mt.groundAuto(f(2 * outcome.rocker))}
         </button>
       </div>
-      <DecimalField
+      <NumberField
+        live
         label={mt.timeRatio}
         value={timeRatio}
         decimals={6}
-        className="time-ratio"
         check={(v) => (v >= 1 && v <= MAX_TIME_RATIO ? null : mt.mustBeBetween('1', String(MAX_TIME_RATIO)))}
         errorText={(text, kept, why) => mt.cellError(mt.timeRatio, text, kept, why)}
         onCommit={onTimeRatio}

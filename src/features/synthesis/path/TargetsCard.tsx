@@ -3,8 +3,8 @@ import type { Dispatch } from 'react';
 import type { Point } from '../../../solver/kinematics';
 import { downloadText } from '../../../shared/canvas/download';
 import type { Action, SynPathState } from '../../../shared/state/appState';
+import { NumberField } from '../../../shared/ui/NumberField';
 import type { SynthesisMessages } from '../synthesisMessages';
-import { NumberField } from './NumberField';
 import type { TargetsTextError } from './targetsText';
 import { formatTargetsText, parseTargetsText, targetsToCsv } from './targetsText';
 
@@ -116,8 +116,9 @@ function TargetTable({ s, selected, onSelect, dispatch, st }: Omit<TargetsCardPr
                 label={`${st.targetName(i + 1)} ${st.tableX}`}
                 hideLabel
                 value={t.x}
-                badNumber={st.badNumber}
-                onCommit={(x) => setAt(i, { x: x ?? t.x })}
+                className="syn-field"
+                errorText={st.badNumber}
+                onCommit={(x) => setAt(i, { x })}
               />
             </td>
             <td>
@@ -125,8 +126,9 @@ function TargetTable({ s, selected, onSelect, dispatch, st }: Omit<TargetsCardPr
                 label={`${st.targetName(i + 1)} ${st.tableY}`}
                 hideLabel
                 value={t.y}
-                badNumber={st.badNumber}
-                onCommit={(y) => setAt(i, { y: y ?? t.y })}
+                className="syn-field"
+                errorText={st.badNumber}
+                onCommit={(y) => setAt(i, { y })}
               />
             </td>
             {given ? (
@@ -135,10 +137,11 @@ function TargetTable({ s, selected, onSelect, dispatch, st }: Omit<TargetsCardPr
                   label={`${st.targetName(i + 1)} ${st.tableTheta2}`}
                   hideLabel
                   value={s.givenTheta2Deg[i] ?? 0}
-                  badNumber={st.badNumber}
+                  className="syn-field"
+                  errorText={st.badNumber}
                   onCommit={(a) => {
                     const next = s.targets.map((_, k) => s.givenTheta2Deg[k] ?? 0);
-                    next[i] = a ?? 0;
+                    next[i] = a;
                     dispatch({ type: 'setGivenTheta2', theta2Deg: next });
                   }}
                 />

@@ -1,9 +1,9 @@
 import type { Dispatch } from 'react';
 import type { Action, PathInput, PathTiming, SynPathState } from '../../../shared/state/appState';
 import { formatNumber } from '../../../shared/format';
+import { NumberField } from '../../../shared/ui/NumberField';
 import { Segmented } from '../../../shared/ui/Segmented';
 import type { SynthesisMessages } from '../synthesisMessages';
-import { NumberField } from './NumberField';
 import { defaultPathBounds } from './pathTaskOf';
 
 /** Props of TaskSettings: the task and its dispatch. */
@@ -24,12 +24,9 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
   const d = defaultPathBounds(s.targets);
   const auto = (x: number) => st.autoValue(formatNumber(x, SHOWN_DIGITS));
   const positive = (x: number) => (x > 0 ? null : st.badNumber(String(x)));
+  const errorText = (text: string, _kept: string, why: string | null) => why ?? st.badNumber(text);
   const box = s.pivotBox ?? d.pivot;
-  const setBox = (k: 'min' | 'max', axis: 'x' | 'y', v: number | null) => {
-    if (v === null) {
-      dispatch({ type: 'setPathBounds', bounds: { pivotBox: null } });
-      return;
-    }
+  const setBox = (k: 'min' | 'max', axis: 'x' | 'y', v: number) => {
     const next = { min: { ...box.min }, max: { ...box.max } };
     next[k][axis] = v;
     if (next.min.x < next.max.x && next.min.y < next.max.y)
@@ -40,13 +37,14 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
       label={`${axis} ${k === 'min' ? st.pivotMin : st.pivotMax}`}
       value={s.pivotBox ? s.pivotBox[k][axis] : null}
       placeholder={formatNumber(d.pivot[k][axis], SHOWN_DIGITS)}
-      allowEmpty
-      badNumber={st.badNumber}
+      className="syn-field"
+      errorText={errorText}
       check={(v) => {
         const other = k === 'min' ? box.max[axis] : box.min[axis];
         return (k === 'min' ? v < other : v > other) ? null : st.badNumber(String(v));
       }}
       onCommit={(v) => setBox(k, axis, v)}
+      onClear={() => dispatch({ type: 'setPathBounds', bounds: { pivotBox: null } })}
     />
   );
   return (
@@ -68,9 +66,10 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
         <NumberField
           label={st.stepLabel}
           value={s.timingStepDeg}
-          badNumber={st.badNumber}
+          className="syn-field"
+          errorText={errorText}
           check={(v) => (v !== 0 && Math.abs(v) <= 180 ? null : st.badNumber(String(v)))}
-          onCommit={(v) => v !== null && dispatch({ type: 'setTimingStep', stepDeg: v })}
+          onCommit={(v) => dispatch({ type: 'setTimingStep', stepDeg: v })}
         />
       ) : null}
       <fieldset className="syn-bounds">
@@ -79,19 +78,21 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
           label={st.boundLength}
           value={s.boundLength}
           placeholder={auto(d.length)}
-          allowEmpty
-          badNumber={st.badNumber}
+          className="syn-field"
+          errorText={errorText}
           check={positive}
           onCommit={(v) => dispatch({ type: 'setPathBounds', bounds: { boundLength: v } })}
+          onClear={() => dispatch({ type: 'setPathBounds', bounds: { boundLength: null } })}
         />
         <NumberField
           label={st.boundCoupler}
           value={s.boundCoupler}
           placeholder={auto(d.coupler)}
-          allowEmpty
-          badNumber={st.badNumber}
+          className="syn-field"
+          errorText={errorText}
           check={positive}
           onCommit={(v) => dispatch({ type: 'setPathBounds', bounds: { boundCoupler: v } })}
+          onClear={() => dispatch({ type: 'setPathBounds', bounds: { boundCoupler: null } })}
         />
         <div className="syn-box" role="group" aria-label={st.pivotBox}>
           <span className="syn-field-label">{st.pivotBox}</span>
