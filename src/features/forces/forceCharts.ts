@@ -95,7 +95,7 @@ export function torqueInputs(c: CycleForcesView | null, t: ForcesMessages): Thet
   };
 }
 
-/** The pin-force chart: |F12|, |F32|, |F43| and |F14| against θ2. */
+/** The pin-force chart: |F12|, |F32|, |F43| and |F14| against θ2, on a y axis from exactly 0 (magnitudes). */
 export function pinForceInputs(c: CycleForcesView | null, t: ForcesMessages): Theta2Inputs {
   const m = c?.magnitudes ?? null;
   const unit = m ? plotUnit(m.f12, m.f32, m.f43, m.f14) : plotUnit();
@@ -107,7 +107,7 @@ export function pinForceInputs(c: CycleForcesView | null, t: ForcesMessages): Th
     { label: '|F14|', values: v(m?.f14), color: PIN_COLORS.F14 },
   ];
   return {
-    data: { theta2Deg: c ? c.theta2Deg : EMPTY, series },
+    data: { theta2Deg: c ? c.theta2Deg : EMPTY, series, yFloor: 0 },
     title: t.chartPinForces,
     xLabel: t.axisTheta2,
     yLabel: t.axisForce(`${unit.prefix}N`),

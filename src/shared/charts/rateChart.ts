@@ -15,8 +15,11 @@ export interface RateSeries {
   faint?: boolean;
 }
 
-/** Data of a rate chart: theta2 samples in degrees (0 to 360) and the curves. */
-export type RateChartData = Theta2ChartData<RateSeries>;
+/** Data of a rate chart: theta2 samples in degrees (0 to 360), the curves and where the y axis may start. */
+export interface RateChartData extends Theta2ChartData<RateSeries> {
+  /** The y domain's fixed lower end, for values that cannot fall below it (magnitudes: 0); default from the data. */
+  yFloor?: number;
+}
 
 /** Options of createRateChart: the angle chart's (sizes in CSS pixels, its defaults). */
 export type RateChartOptions = AngleChartOptions;
@@ -38,8 +41,9 @@ export const ROBUST_REACH = 1;
  * The y domain: the data's range when it is compact; where a few samples run away (near a limit position)
  * the range is cut at the 5 % and 95 % quantiles widened by ROBUST_REACH times their spread, then padded by
  * 6 % and made nice for about count ticks. [-1, 1] with no finite data; a constant curve gets +-10 % (or +-1).
+ * With a floor the domain starts at exactly floor (no padding below it) and only its top is padded and made nice.
  */
-export function rateDomain(series: readonly RateSeries[], count = 6): [number, number] {
+export function rateDomain(series: readonly RateSeries[], count = 6, floor?: number): [number, number] {
   const vals: number[] = [];
   for (const s of series) {
     for (let i = 0; i < s.values.length; i++) {
@@ -47,7 +51,7 @@ export function rateDomain(series: readonly RateSeries[], count = 6): [number, n
       if (Number.isFinite(v)) vals.push(v);
     }
   }
-  if (vals.length === 0) return [-1, 1];
+  if (vals.length === 0) return floor === undefined ? [-1, 1] : [floor, floor + 1];
   vals.sort((a, b) => a - b);
   const min = vals[0];
   const max = vals[vals.length - 1];
@@ -56,16 +60,22 @@ export function rateDomain(series: readonly RateSeries[], count = 6): [number, n
   const spread = qhi - qlo;
   let lo = Math.max(min, qlo - ROBUST_REACH * spread);
   let hi = Math.min(max, qhi + ROBUST_REACH * spread);
+  if (floor !== undefined) {
+    lo = floor;
+    hi = Math.max(hi, floor);
+  }
   if (!(hi > lo)) {
     const d = Math.abs(lo) > 0 ? Math.abs(lo) * 0.1 : 1;
-    lo -= d;
+    if (floor === undefined) lo -= d;
     hi += d;
   }
   const pad = (hi - lo) * 0.06;
-  return scaleLinear()
-    .domain([lo - pad, hi + pad])
+  const [niceLo, niceHi] = scaleLinear()
+    .domain([floor ?? lo - pad, hi + pad])
     .nice(count)
-    .domain() as [number, number];
+    .domain();
+  // nice may step a floor that is not on the tick lattice down past it; the floor holds.
+  return [floor ?? niceLo, niceHi];
 }
 
 /** Where a curve leaves the y domain: theta2 (degrees) of the crossing or of the first sample outside, and the side. */
@@ -128,12 +138,13 @@ function drawClipMarks(g: GSel, data: RateChartData, frame: Frame): void {
 }
 
 /**
- * The rate chart as a spec of the θ2 chart: y from rateDomain with d3's ticks and tick format, curves clipped
- * to the plot, a triangle where a solid curve leaves it (clipMarks), a dot on each solid curve.
+ * The rate chart as a spec of the θ2 chart: y from rateDomain (starting at data.yFloor when set) with d3's ticks and
+ * tick format, curves clipped to the plot, a triangle where a solid curve leaves it (clipMarks), a dot on each solid
+ * curve.
  */
 export const rateSpec: ChartSpec<RateChartData, RateMarker> = {
   frame(data, plot) {
-    const domain = rateDomain(data.series, plot.yCount);
+    const domain = rateDomain(data.series, plot.yCount, data.yFloor);
     return theta2Frame(plot, { domain, ticks: scaleLinear().domain(domain).ticks(plot.yCount) });
   },
   yTickFormat(frame) {

@@ -28,6 +28,39 @@ describe('rateDomain', () => {
   });
 });
 
+describe('rateDomain with a floor', () => {
+  const near0 = Array.from({ length: 361 }, (_, i) => 1 + 100 * Math.abs(Math.sin((i * Math.PI) / 360)));
+
+  it('starts at exactly the floor where the padding would reach below it, the top still padded and nice', () => {
+    // Without a floor the 6 % padding takes the axis below 0 (the pin-force chart's complaint).
+    expect(rateDomain(series(near0), 6)[0]).toBeLessThan(0);
+    const [lo, hi] = rateDomain(series(near0), 6, 0);
+    expect(lo).toBe(0);
+    expect(hi).toBeGreaterThanOrEqual(101);
+    expect(Number.isInteger(hi / 20)).toBe(true); // nice for about 6 ticks over [0, 107]: steps of 20
+  });
+
+  it('starts at the floor also when the data stay far above it', () => {
+    const high = near0.map((v) => v + 1000);
+    expect(rateDomain(series(high), 6)[0]).toBeGreaterThan(900);
+    const [lo, hi] = rateDomain(series(high), 6, 0);
+    expect(lo).toBe(0);
+    expect(hi).toBeGreaterThanOrEqual(1101);
+    expect(Number.isInteger(hi / 200)).toBe(true); // nice for about 6 ticks over [0, 1100]: steps of 200
+  });
+
+  it('holds a floor off the tick lattice, which nice alone would step down past', () => {
+    expect(rateDomain(series([0.37, 5]), 6, 0.3)[0]).toBe(0.3);
+  });
+
+  it('gives [floor, floor + 1] without finite data and a top above a curve at the floor', () => {
+    expect(rateDomain(series([Number.NaN]), 6, 0)).toEqual([0, 1]);
+    const [lo, hi] = rateDomain(series([0, 0, 0]), 6, 0);
+    expect(lo).toBe(0);
+    expect(hi).toBeGreaterThan(0);
+  });
+});
+
 describe('clipMarks', () => {
   it('marks a crossing at the interpolated θ2 and an outside run once, on its side', () => {
     const theta2 = [0, 10, 20, 30, 40, 50];
