@@ -1,5 +1,5 @@
 import type { Dispatch } from 'react';
-import { startTransition, useCallback, useEffect, useRef } from 'react';
+import { startTransition, useCallback, useEffect, useLayoutEffect, useRef } from 'react';
 import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../../shared/state/animation';
 import type { InputRangeDeg } from '../../shared/state/animation';
 import type { Action, AppState } from '../../shared/state/appState';
@@ -9,11 +9,25 @@ import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
 
 /**
- * How often Play commits its frame to the app state, ms. Every frame moves the playhead (canvas and plot
+ * How often Play commits its frame to the app state at most, ms. Every frame moves the playhead (canvas and plot
  * markers follow it); the panels, the θ2 field, the worker's numbers and the address bar follow the state,
  * five times a second, in a transition that frames may interrupt.
  */
 export const PLAY_COMMIT_MS = 200;
+/** A slow device commits less often: the gap is at least this many times the last commit's render (ms). */
+const COMMIT_SHARE = 8;
+/** ...and at most this (ms): the panels still follow Play. */
+const PLAY_COMMIT_MAX_MS = 1000;
+
+/**
+ * The gap before Play's next commit, ms: PLAY_COMMIT_MS, or longer on a device where rendering the committed state
+ * took lastRenderMs, so the commits take at most about 1/COMMIT_SHARE of the time the animation has (at most
+ * PLAY_COMMIT_MAX_MS).
+ */
+export function playCommitGapMs(lastRenderMs: number): number {
+  const ms = Number.isFinite(lastRenderMs) && lastRenderMs > 0 ? lastRenderMs : 0;
+  return Math.min(PLAY_COMMIT_MAX_MS, Math.max(PLAY_COMMIT_MS, COMMIT_SHARE * ms));
+}
 
 /**
  * Plays the input while state.playing (time based: speed in degrees per nominal 60 FPS frame, rocking
@@ -33,6 +47,14 @@ export function useAnimation(
   const seen = useRef<PlayFrame | null>(null);
   const committed = useRef<PlayFrame[]>([]);
   const lastCommitMs = useRef(0);
+  // When the last commit was dispatched and how long it took to render (measured at its layout effect).
+  const dispatchedAt = useRef<number | null>(null);
+  const renderMs = useRef(0);
+  useLayoutEffect(() => {
+    if (dispatchedAt.current === null) return;
+    renderMs.current = performance.now() - dispatchedAt.current;
+    dispatchedAt.current = null;
+  }, [state.motion]);
   useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
     if (!rangeDeg || !state.motion.playing) return;
@@ -49,9 +71,10 @@ export function useAnimation(
       rangeDeg,
     );
     playhead.set(next);
-    if (now - lastCommitMs.current >= PLAY_COMMIT_MS) {
+    if (now - lastCommitMs.current >= playCommitGapMs(renderMs.current)) {
       lastCommitMs.current = now;
       committed.current = [...committed.current, next];
+      dispatchedAt.current = performance.now();
       startTransition(() => dispatch({ type: 'animate', ...next }));
     }
   });
