@@ -35,7 +35,7 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
     if (sized) drawFunction(sized.ctx, picture, fitView(bounds, width, height, view));
   }, [picture, bounds, view, width, height]);
   return (
-    <div className="synmode-canvas-wrap" ref={wrapRef}>
+    <div className="syn-canvas-wrap" ref={wrapRef}>
       <canvas
         ref={canvasRef}
         className="synmode-canvas"

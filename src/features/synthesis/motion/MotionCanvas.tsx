@@ -171,7 +171,7 @@ export function MotionCanvas(props: MotionCanvasProps) {
   }, [picture, bounds, view, width, height]);
 
   return (
-    <div className="synmode-canvas-wrap" ref={wrapRef}>
+    <div className="syn-canvas-wrap" ref={wrapRef}>
       <canvas
         ref={canvasRef}
         className="synmode-canvas"
@@ -186,7 +186,7 @@ export function MotionCanvas(props: MotionCanvasProps) {
         onKeyDown={onKeyDown}
       />
       <CanvasZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
-      <p id={hintId} className="synmode-canvas-hint">
+      <p id={hintId} className="syn-canvas-hint">
         {labels.hint}
       </p>
       <CanvasExports
