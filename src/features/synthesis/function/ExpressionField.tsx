@@ -1,3 +1,4 @@
+import '../../../shared/ui/NumberField.css';
 import { useId, useState } from 'react';
 import { expressionTextProblem } from '../../../shared/state/slices/synFunctionSlice';
 import type { ExpressionParser } from './useExpressionParser';
@@ -42,13 +43,13 @@ export function ExpressionField({ value, parse, onCommit, fm }: ExpressionFieldP
     if (text.trim() !== value) onCommit(text.trim());
   };
   return (
-    <div className={`synmode-expression${error ? ' synmode-field-invalid' : ''}`}>
-      <label htmlFor={id} className="synmode-field-label">
+    <div className={`num-field synmode-expression${error ? ' is-invalid' : ''}`}>
+      <label htmlFor={id} className="num-field-label">
         {fm.expressionLabel}
       </label>
       <input
         id={id}
-        className="synmode-input synmode-input-wide"
+        className="num-field-input"
         type="text"
         autoComplete="off"
         autoCapitalize="off"
@@ -69,7 +70,7 @@ export function ExpressionField({ value, parse, onCommit, fm }: ExpressionFieldP
         {fm.expressionHelp}
       </p>
       {error ? (
-        <p id={`${id}-error`} className="synmode-field-error" role="alert" data-testid="fx-error">
+        <p id={`${id}-error`} className="num-field-error" role="alert" data-testid="fx-error">
           {error}
         </p>
       ) : null}
