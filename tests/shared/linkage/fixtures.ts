@@ -183,3 +183,33 @@ export class RecordingContext {
   roundRect(): void {}
   setLineDash(): void {}
 }
+
+/**
+ * The report's linkage (6-2-5-5, P at 2.5 and 0.5 rad) at theta2 on the open branch, grid and angles on, in a fixed
+ * frame, with extras (motion vectors, pin forces) merged in: the scene the vector and force overlay tests draw.
+ */
+export function reportScene(theta2Deg: number, extras: Partial<LinkageScene> = {}): LinkageScene {
+  const l = { r1: 6, r2: 2, r3: 5, r4: 5 };
+  const t2 = rad(theta2Deg);
+  const a = solveClosedForm(l, t2, 'open');
+  if (!a) throw new Error('no pose');
+  const pose = scenePose(
+    l,
+    { theta2: t2, theta3: a.theta3, theta4: a.theta4, mu: 1 },
+    { distance: 2.5, angleRad: 0.5 },
+  );
+  return {
+    linkage: l,
+    theta2: t2,
+    pose,
+    ghost: null,
+    curves: [],
+    showGrid: true,
+    showAngles: true,
+    showGhost: false,
+    showTrace: false,
+    text: sceneText('en', false, theta2Deg),
+    bounds: { minX: -2.5, maxX: 11, minY: -5, maxY: 7 },
+    ...extras,
+  };
+}

@@ -3,13 +3,11 @@ import { forceOverlay } from '../../../src/shared/linkage/forceVectors';
 import type { ForceText, SceneForces } from '../../../src/shared/linkage/forceVectors';
 import { ARROW_MAX_PX, ARROW_MIN_PX, arrowScale, vectorOverlay } from '../../../src/shared/linkage/motionVectors';
 import type { SceneVectors } from '../../../src/shared/linkage/motionVectors';
-import { scenePose } from '../../../src/shared/linkage/scene';
 import type { LinkageScene } from '../../../src/shared/linkage/scene';
 import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
 import { fitView } from '../../../src/shared/canvas/view';
 import type { ScreenRect } from '../../../src/shared/canvas/rect';
-import { solveClosedForm } from '../../../src/solver/closedForm';
-import { RecordingContext, measureModel, sceneText } from './fixtures';
+import { RecordingContext, measureModel, reportScene } from './fixtures';
 
 const TEXT: ForceText = {
   label: { O2: 'F12', A: 'F32', B: 'F43', O4: 'F14' },
@@ -29,30 +27,7 @@ function forcesWith(pins: SceneForces['pins'], limit = false): SceneForces {
 
 /** The report's linkage at theta2 with the given forces (and motion vectors). */
 function sceneWith(theta2Deg: number, forces: SceneForces, vectors: SceneVectors | null = null): LinkageScene {
-  const l = { r1: 6, r2: 2, r3: 5, r4: 5 };
-  const t2 = (theta2Deg * Math.PI) / 180;
-  const a = solveClosedForm(l, t2, 'open');
-  if (!a) throw new Error('no pose');
-  const pose = scenePose(
-    l,
-    { theta2: t2, theta3: a.theta3, theta4: a.theta4, mu: 1 },
-    { distance: 2.5, angleRad: 0.5 },
-  );
-  return {
-    linkage: l,
-    theta2: t2,
-    pose,
-    ghost: null,
-    curves: [],
-    showGrid: true,
-    showAngles: true,
-    showGhost: false,
-    showTrace: false,
-    text: sceneText('en', false, theta2Deg),
-    bounds: { minX: -2.5, maxX: 11, minY: -5, maxY: 7 },
-    vectors,
-    forces,
-  };
+  return reportScene(theta2Deg, { vectors, forces });
 }
 
 const overlap = (a: ScreenRect, b: ScreenRect) =>

@@ -8,13 +8,11 @@ import {
   vectorOverlay,
 } from '../../../src/shared/linkage/motionVectors';
 import type { SceneVectors, VectorText } from '../../../src/shared/linkage/motionVectors';
-import { scenePose } from '../../../src/shared/linkage/scene';
 import type { LinkageScene } from '../../../src/shared/linkage/scene';
 import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
 import { drawLinkage } from '../../../src/shared/linkage/drawLinkage';
 import { fitView } from '../../../src/shared/canvas/view';
-import { solveClosedForm } from '../../../src/solver/closedForm';
-import { RecordingContext, measureModel, sceneText } from './fixtures';
+import { RecordingContext, measureModel, reportScene } from './fixtures';
 
 const TEXT: VectorText = {
   symbol: { v: 'v', a: 'a' },
@@ -71,29 +69,7 @@ describe('arrowLength', () => {
 
 /** A scene of the report's linkage at theta2 with the given vectors. */
 function sceneWith(theta2Deg: number, vectors: SceneVectors): LinkageScene {
-  const l = { r1: 6, r2: 2, r3: 5, r4: 5 };
-  const t2 = (theta2Deg * Math.PI) / 180;
-  const a = solveClosedForm(l, t2, 'open');
-  if (!a) throw new Error('no pose');
-  const pose = scenePose(
-    l,
-    { theta2: t2, theta3: a.theta3, theta4: a.theta4, mu: 1 },
-    { distance: 2.5, angleRad: 0.5 },
-  );
-  return {
-    linkage: l,
-    theta2: t2,
-    pose,
-    ghost: null,
-    curves: [],
-    showGrid: true,
-    showAngles: true,
-    showGhost: false,
-    showTrace: false,
-    text: sceneText('en', false, theta2Deg),
-    bounds: { minX: -2.5, maxX: 11, minY: -5, maxY: 7 },
-    vectors,
-  };
+  return reportScene(theta2Deg, { vectors });
 }
 
 const V = { A: { x: -14, y: 14 }, B: { x: 0.3, y: -0.05 }, P: { x: 5, y: 11 } };
