@@ -124,6 +124,50 @@ test.describe('undo and redo', () => {
     await expect(undoButton(page)).toBeDisabled();
   });
 
+  test('a θ2 slider drag shows each value at once, commits the last on release as one undo step, and hands the canvas back', async ({
+    page,
+  }) => {
+    await page.goto('./?t2=45');
+    await waitReady(page);
+    const canvas = page.locator('canvas.linkage-canvas');
+    // The crank's angle as drawn: from O2 to A on the canvas (y grows downwards), degrees in [0, 360).
+    const drawnTheta2 = async () => {
+      const o2 = await joint(canvas, 'o2');
+      const a = await joint(canvas, 'a');
+      const deg = (Math.atan2(o2.y - a.y, a.x - o2.x) * 180) / Math.PI;
+      return (deg + 360) % 360;
+    };
+    const field = page.getByRole('textbox', { name: /^θ2/ });
+    const box = await page.getByRole('slider', { name: /^θ2/ }).boundingBox();
+    if (!box) throw new Error('θ2 slider has no box');
+    // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
+    const x = (deg: number) => box.x + 8 + ((box.width - 16) * deg) / 360;
+    const y = box.y + box.height / 2;
+    await page.mouse.move(x(45), y);
+    await page.mouse.down();
+    // The field and the canvas show each value as the input event that brought it is handled: read at once, not
+    // polled (the app state, which commits a few times a second, would lag by moves of 5°).
+    for (let deg = 50; deg <= 130; deg += 5) {
+      await page.mouse.move(x(deg), y);
+      const shown = Number(await field.inputValue());
+      expect(Math.abs(shown - deg)).toBeLessThan(2);
+      expect(Math.abs((await drawnTheta2()) - shown)).toBeLessThan(0.5);
+    }
+    await page.mouse.up();
+    const dragged = Number(await field.inputValue());
+    // The state (address bar, results) ends at the value on screen.
+    await expect.poll(() => Number(urlParam(page, 't2'))).toBeCloseTo(dragged, 1);
+    // One undo step back to where the drag started, drawn there.
+    await undoButton(page).click();
+    await expect(field).toHaveValue('45');
+    await expect.poll(drawnTheta2).toBeCloseTo(45, 0);
+    await expect(undoButton(page)).toBeDisabled();
+    // The canvas follows the state again: a typed θ2 is drawn.
+    await field.fill('200');
+    await field.press('Enter');
+    await expect.poll(drawnTheta2).toBeCloseTo(200, 0);
+  });
+
   test('Play frames, the language and the view are not undo steps', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

@@ -67,7 +67,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
 
   return (
     <MessagesContext.Provider value={t}>
-      <FramePoseProvider state={state} playhead={playhead} ghostShown={!onLab}>
+      <FramePoseProvider state={state} playhead={playhead} scrub={session.scrub} ghostShown={!onLab}>
         <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
         <div
           className={`app${onSynthesis ? ' app-synthesis' : ''}`}

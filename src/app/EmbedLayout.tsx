@@ -92,7 +92,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
   const fullHref = ownsPage ? fullAppHref(state) : '';
   return (
     <MessagesContext.Provider value={t}>
-      <FramePoseProvider state={state} playhead={playhead} ghostShown>
+      <FramePoseProvider state={state} playhead={playhead} scrub={session.scrub} ghostShown>
         <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
           <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
           <UrlNotice ignored={initial.ignored} source={ownsPage ? 'link' : 'attributes'} />

@@ -60,7 +60,7 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   const { shown, onShown } = useShownFrame();
   const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t, forces: forceColumnsFor(state) });
   const [playhead] = useState(() => new Playhead());
-  const onStep = useAnimation(state, dispatch, facts.rangeDeg, playhead);
+  const { step: onStep, scrub } = useAnimation(state, dispatch, facts.rangeDeg, playhead);
   const onViewChange = useCallback(
     (view: AppState['display']['view']) => dispatch({ type: 'setView', view }),
     [dispatch],
@@ -85,6 +85,8 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
     shown,
     playhead,
     onStep,
+    /** The θ2 drag (slider, crank pin): moves the playhead, the state follows (FramePoseProvider provides it). */
+    scrub,
     onViewChange,
     plotsRef,
     undo: history.undo,

@@ -1,4 +1,4 @@
-import { useMemo } from 'react';
+import { useMemo, useSyncExternalStore } from 'react';
 import type { Dispatch } from 'react';
 // The solver's module itself, not its barrel (the barrel pulls the sweep and NR into the main bundle).
 import { inputRange } from '../../solver/classify';
@@ -18,6 +18,7 @@ import { Segmented } from '../../shared/ui/Segmented';
 import { SelectMenu } from '../../shared/ui/SelectMenu';
 import { FlagToggles } from '../../shared/ui/Toggle';
 import type { SliderRange } from './sliderRange';
+import { useTheta2Scrub } from './theta2Scrub';
 
 /** The four link lengths, in the order the controls show them. */
 export const LENGTH_FIELDS: readonly (keyof Linkage)[] = ['r1', 'r2', 'r3', 'r4'];
@@ -94,12 +95,21 @@ const THETA2_KEYS = { step: 1 } as const;
 /** The coupler angle's slider keys: the same steps on (−180°, 180°]. */
 const COUPLER_ANGLE_KEYS = { step: 1 } as const;
 
-/** The input angle θ2: slider and field over [0, 360]. */
+const noSubscription = () => () => {};
+const nothingDragged = () => null;
+
+/**
+ * The input angle θ2: slider and field over [0, 360]. A drag of the slider moves the playhead (Theta2Scrub), so the
+ * canvas follows every value and the state a few times a second; slider and field show the dragged value meanwhile.
+ */
 export function Theta2Control({ state, dispatch, isLocked }: ControlsSectionProps) {
+  const scrub = useTheta2Scrub();
+  const dragged = useSyncExternalStore(scrub?.subscribe ?? noSubscription, scrub?.dragged ?? nothingDragged);
   return (
     <NumberControl
       field="theta2"
-      value={state.motion.theta2Deg}
+      value={dragged ?? state.motion.theta2Deg}
+      drag={scrub}
       decimals={THETA2_DECIMALS}
       min={0}
       max={360}

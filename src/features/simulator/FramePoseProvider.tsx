@@ -6,11 +6,15 @@ import { withFrame } from '../../shared/state/playhead';
 import { FramePoseContext } from '../../shared/linkage/FramePoseContext';
 import { useFrameMotion } from './useFrameMotion';
 import { useLinkagePose } from './useLinkagePose';
+import { Theta2ScrubContext } from './theta2Scrub';
+import type { Theta2Scrub } from './useAnimation';
 
 /** Props of FramePoseProvider: the committed state, Play's playhead, whether the ghost is on screen, the layout. */
 export interface FramePoseProviderProps {
   state: AppState;
   playhead: Playhead;
+  /** The θ2 drag that moves the playhead (the θ2 slider and the canvas's crank pin take it from here). */
+  scrub: Theta2Scrub;
   /** The other branch's pose is drawn (the canvas is on screen and the ghost is on). */
   ghostShown: boolean;
   children: ReactNode;
@@ -19,13 +23,17 @@ export interface FramePoseProviderProps {
 /**
  * Solves the frame on screen once (the state, or Play's playhead ahead of it) and provides it. It alone
  * subscribes to the playhead: per frame of Play only it and the views that read useFramePose re-render,
- * the children it was given stay as they are.
+ * the children it was given stay as they are. It also provides the θ2 drag (Theta2ScrubContext).
  */
-export function FramePoseProvider({ state, playhead, ghostShown, children }: FramePoseProviderProps) {
+export function FramePoseProvider({ state, playhead, scrub, ghostShown, children }: FramePoseProviderProps) {
   const frame = useSyncExternalStore(playhead.subscribe, playhead.get);
   const shown = useMemo(() => withFrame(state, frame), [state, frame]);
   const { local, marker } = useLinkagePose(shown, ghostShown);
   const motion = useFrameMotion(shown, local);
   const value = useMemo(() => ({ state: shown, local, marker, motion }), [shown, local, marker, motion]);
-  return <FramePoseContext.Provider value={value}>{children}</FramePoseContext.Provider>;
+  return (
+    <Theta2ScrubContext.Provider value={scrub}>
+      <FramePoseContext.Provider value={value}>{children}</FramePoseContext.Provider>
+    </Theta2ScrubContext.Provider>
+  );
 }

@@ -2,6 +2,7 @@ import './LinkageCanvas.css';
 import { memo, useEffect, useId, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import { flushSync } from 'react-dom';
+import { useTheta2Scrub } from './theta2Scrub';
 import { radToDeg360, wrapDeg360 } from '../../solver/angles';
 import type { LinkageScene } from '../../shared/linkage/scene';
 import type { Bounds } from '../../shared/canvas/view';
@@ -77,11 +78,15 @@ function useCanvasHandles(
   const bounds = heldBounds ?? scene.bounds;
   const transform = () => fitScene(scene, bounds, width, height, view);
   const movable = { A: Boolean(onTheta2), P: Boolean(onCoupler) };
-  // Drags commit synchronously: the pose under the finger is drawn in the same frame as the move.
+  // The crank moves the playhead (the θ2 drag, which stops Play) where a simulator provides one, else it commits.
+  // Either way the pose under the finger is drawn in the same frame as the move.
+  const scrub = useTheta2Scrub();
   const dragTo = (kind: 'A' | 'P', p: ScreenPoint) => {
     if (kind === 'A') {
       const deg = crankAngleAt(transform(), p);
-      if (deg !== null && onTheta2) flushSync(() => onTheta2(deg));
+      if (deg === null || !onTheta2) return;
+      if (scrub) scrub.move(deg, true);
+      else flushSync(() => onTheta2(deg));
     } else {
       const c = couplerAt(scene, transform(), p);
       if (c && onCoupler) flushSync(() => onCoupler(c));
@@ -96,7 +101,10 @@ function useCanvasHandles(
     grab: (p, pointerType) => hitHandle(scene, transform(), p, grabRadiusPx(pointerType), movable),
     onDrag: dragTo,
     // While A or P is dragged the fit holds (see heldBounds).
-    onGrab: (handle) => setHeldBounds(handle ? scene.bounds : null),
+    onGrab: (handle) => {
+      setHeldBounds(handle ? scene.bounds : null);
+      if (!handle) scrub?.end();
+    },
   });
   return { bounds, ...panZoom };
 }

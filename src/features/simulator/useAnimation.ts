@@ -1,5 +1,6 @@
-import type { Dispatch } from 'react';
-import { startTransition, useCallback, useEffect, useLayoutEffect, useRef } from 'react';
+import type { Dispatch, RefObject } from 'react';
+import { startTransition, useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { flushSync } from 'react-dom';
 import { advanceTheta2, degreesForElapsed, stepTheta2 } from '../../shared/state/animation';
 import type { InputRangeDeg } from '../../shared/state/animation';
 import type { Action, AppState } from '../../shared/state/appState';
@@ -7,6 +8,7 @@ import { normalizeTheta2Deg } from '../../shared/state/appState';
 import type { PlayFrame, Playhead } from '../../shared/state/playhead';
 import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
+import { ExternalValue } from '../../shared/state/externalValue';
 
 /**
  * How often Play commits its frame to the app state at most, ms. Every frame moves the playhead (canvas and plot
@@ -30,18 +32,46 @@ export function playCommitGapMs(lastRenderMs: number): number {
 }
 
 /**
+ * A drag of θ2 with nothing moving it for this long (ms) has ended: its value is committed. A pointer's release
+ * ends a drag at once; this covers input that never releases (a script setting the slider's value).
+ */
+export const SCRUB_REST_MS = 300;
+
+/**
+ * A drag of θ2 (the slider, the crank pin on the canvas) moves the playhead, as Play does: the canvas and the plot
+ * markers follow every value, the app state (panels, worker numbers, address bar) follows in transitions at most
+ * every playCommitGapMs, and the drag's last value is committed when it ends.
+ */
+export interface Theta2Scrub {
+  /** Shows θ2 = deg (degrees) at once. stopPlay: taking hold of the crank stops Play; otherwise Play goes on from deg. */
+  move(deg: number, stopPlay?: boolean): void;
+  /** The drag ended (released): commits the value on screen and hands the pose back to the state. */
+  end(): void;
+  /** The value being dragged (degrees), null between drags: the θ2 slider and field show it (useSyncExternalStore). */
+  dragged(): number | null;
+  /** Adds a listener to changes of dragged(); returns its removal. */
+  subscribe(listener: () => void): () => void;
+}
+
+/** What useAnimation gives: one sample forward or back, and the θ2 drag. */
+export interface AnimationHandlers {
+  step: (sign: 1 | -1) => void;
+  scrub: Theta2Scrub;
+}
+
+/**
  * Plays the input while state.playing (time based: speed in degrees per nominal 60 FPS frame, rocking
  * between limits when the input cannot turn fully) and returns the step handler: +1 one cycle sample
  * forward in the play direction (so clockwise when Clockwise is chosen), -1 one back. Play waits for the
  * first cycle's input range. Each frame moves the playhead (see PLAY_COMMIT_MS); when Play stops, the frame
- * on screen is committed and the playhead handed back to the state.
+ * on screen is committed and the playhead handed back to the state. A θ2 drag (Theta2Scrub) moves the same playhead.
  */
 export function useAnimation(
   state: AppState,
   dispatch: Dispatch<Action>,
   rangeDeg: InputRangeDeg | null,
   playhead: Playhead,
-): (sign: 1 | -1) => void {
+): AnimationHandlers {
   // Touched only in the frame callback and effects: the state's frame at the previous tick, the frames
   // committed and not yet seen in the state (oldest first), and when the last commit was.
   const seen = useRef<PlayFrame | null>(null);
@@ -55,6 +85,16 @@ export function useAnimation(
     renderMs.current = performance.now() - dispatchedAt.current;
     dispatchedAt.current = null;
   }, [state.motion]);
+  // Commits a frame in a transition when the last commit is at least playCommitGapMs ago (Play and drags).
+  const commitThrottled = (now: number, action: Action): boolean => {
+    if (now - lastCommitMs.current < playCommitGapMs(renderMs.current)) return false;
+    lastCommitMs.current = now;
+    dispatchedAt.current = performance.now();
+    startTransition(() => dispatch(action));
+    return true;
+  };
+  const dragging = useRef(false);
+  const scrub = useTheta2Scrub(state, dispatch, playhead, commitThrottled, dragging);
   useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
     if (!rangeDeg || !state.motion.playing) return;
@@ -71,17 +111,12 @@ export function useAnimation(
       rangeDeg,
     );
     playhead.set(next);
-    if (now - lastCommitMs.current >= playCommitGapMs(renderMs.current)) {
-      lastCommitMs.current = now;
-      committed.current = [...committed.current, next];
-      dispatchedAt.current = performance.now();
-      startTransition(() => dispatch({ type: 'animate', ...next }));
-    }
+    if (commitThrottled(now, { type: 'animate', ...next })) committed.current = [...committed.current, next];
   });
   // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead. An edit that came with
   // the stop (a "Go to" sets θ2 as it stops Play) wins over the frame on screen: the state already holds the pose.
   useEffect(() => {
-    if (state.motion.playing) return;
+    if (state.motion.playing || dragging.current) return;
     const own = frameOf(state);
     const edited =
       seen.current !== null && !sameFrame(own, seen.current) && !committed.current.some((c) => sameFrame(c, own));
@@ -97,7 +132,7 @@ export function useAnimation(
     if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
   }, [state, playhead, dispatch]);
-  return useCallback(
+  const step = useCallback(
     (sign: 1 | -1) =>
       dispatch({
         type: 'animate',
@@ -105,4 +140,61 @@ export function useAnimation(
       }),
     [state, rangeDeg, dispatch],
   );
+  return useMemo(() => ({ step, scrub }), [step, scrub]);
+}
+
+/**
+ * The θ2 drag of useAnimation: moves the playhead, commits through commit (throttled, returns whether it
+ * dispatched) and, once the drag rests for SCRUB_REST_MS or end() is called, commits the last value at once.
+ * draggingRef is true from the first move to the end: Play's stop effect leaves the playhead alone meanwhile.
+ */
+function useTheta2Scrub(
+  state: AppState,
+  dispatch: Dispatch<Action>,
+  playhead: Playhead,
+  commit: (now: number, action: Action) => boolean,
+  draggingRef: RefObject<boolean>,
+): Theta2Scrub {
+  const latest = useRef({ state, commit });
+  useLayoutEffect(() => {
+    latest.current = { state, commit };
+  });
+  const restTimer = useRef<ReturnType<typeof setTimeout> | undefined>(undefined);
+  useEffect(() => () => clearTimeout(restTimer.current), []);
+  const [dragged] = useState(() => new ExternalValue<number | null>(null));
+  const handlers = useMemo<Theta2Scrub>(() => {
+    const end = () => {
+      clearTimeout(restTimer.current);
+      const committing = draggingRef.current;
+      draggingRef.current = false;
+      const frame = playhead.get();
+      if (!committing || !frame || latest.current.state.motion.playing) {
+        dragged.set(null);
+        return;
+      }
+      // One synchronous commit of the last value (the slider goes back to the state, which now holds it); the
+      // stop effect then hands the pose back to the state.
+      flushSync(() => {
+        dispatch({ type: 'setTheta2', deg: frame.theta2Deg });
+        dragged.set(null);
+      });
+      const shown = { ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) };
+      if (playhead.get() === frame && sameFrame(shown, frameOf(latest.current.state))) playhead.set(null);
+    };
+    const move = (deg: number, stopPlay = false) => {
+      const { state: s, commit: commitNow } = latest.current;
+      const next = { ...(playhead.get() ?? frameOf(s)), theta2Deg: normalizeTheta2Deg(deg) };
+      if (stopPlay && s.motion.playing) dispatch({ type: 'setPlaying', playing: false });
+      playhead.set(next);
+      dragged.set(next.theta2Deg);
+      clearTimeout(restTimer.current);
+      restTimer.current = setTimeout(end, SCRUB_REST_MS);
+      // While Play runs it goes on from here and commits itself.
+      if (s.motion.playing && !stopPlay) return;
+      draggingRef.current = true;
+      commitNow(performance.now(), { type: 'setTheta2', deg: next.theta2Deg });
+    };
+    return { move, end, dragged: dragged.get, subscribe: dragged.subscribe };
+  }, [playhead, dispatch, draggingRef, dragged]);
+  return handlers;
 }

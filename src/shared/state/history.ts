@@ -11,6 +11,8 @@ export interface History<S> {
   future: readonly S[];
   /** Coalescing group of the newest step (null: the next change starts a new step). */
   group: string | null;
+  /** The step key of the newest step's last change (null after an undo or redo). */
+  key: string | null;
   /** When the newest step last changed, ms on the clock the `at` of apply actions uses. */
   at: number;
 }
@@ -51,7 +53,7 @@ export const BURST_MS = 1000;
 
 /** A history whose present is state, with nothing to undo or redo. */
 export function initHistory<S>(state: S): History<S> {
-  return { past: [], present: state, future: [], group: null, at: -Infinity };
+  return { past: [], present: state, future: [], group: null, key: null, at: -Infinity };
 }
 
 /** Whether there is a step to undo. */
@@ -67,7 +69,8 @@ export function canRedo<S>(h: History<S>): boolean {
 /**
  * The reducer of a history of reducer's states under a policy. An apply that changes nothing returns the same
  * history. A change that is no step replaces the present only (past and future stay). A step joins the newest
- * step when it comes in the same gesture, or with the same key less than burstMs after it; otherwise the present
+ * step when it comes in the same gesture, or outside any gesture with the same key less than burstMs after it
+ * (so the value a drag commits on its release, after the pointer's gesture ended, is the drag's); otherwise the present
  * goes to the past (at most cap kept) and the future is dropped. Undo and redo move one snapshot and seal the
  * newest step, so the next change never joins a step that was undone. Pure.
  */
@@ -84,6 +87,7 @@ export function historyReducer<S, A>(reducer: (state: S, action: A) => S, policy
           present: policy.carry(restored, h.present),
           future: [h.present, ...h.future],
           group: null,
+          key: null,
           at: -Infinity,
         };
       }
@@ -94,6 +98,7 @@ export function historyReducer<S, A>(reducer: (state: S, action: A) => S, policy
           present: policy.carry(h.future[0], h.present),
           future: h.future.slice(1),
           group: null,
+          key: null,
           at: -Infinity,
         };
       }
@@ -104,14 +109,16 @@ export function historyReducer<S, A>(reducer: (state: S, action: A) => S, policy
         if (key === null) return { ...h, present: next };
         const group = action.gesture !== null ? `gesture:${action.gesture}` : `key:${key}`;
         const joins =
-          group === h.group && (action.gesture !== null || action.at - h.at <= burstMs) && h.past.length > 0;
-        if (joins) return { ...h, present: next, future: [], at: action.at };
+          h.past.length > 0 &&
+          (action.gesture !== null ? group === h.group : key === h.key && action.at - h.at <= burstMs);
+        if (joins) return { ...h, present: next, future: [], key, at: action.at };
         const past = [...h.past, h.present];
         return {
           past: past.length > cap ? past.slice(past.length - cap) : past,
           present: next,
           future: [],
           group,
+          key,
           at: action.at,
         };
       }

@@ -1,5 +1,5 @@
 import './NumberControl.css';
-import { useId, useState } from 'react';
+import { useEffect, useId, useRef, useState } from 'react';
 import type { FieldName } from './validateNumber';
 import { ECHO_MAX_CHARS, parseField } from './validateNumber';
 import { fieldText, formatNumber, truncateText } from '../format';
@@ -24,6 +24,17 @@ export interface NumberControlProps {
   unit?: string;
   /** An angle on the circle [min, max): the slider's keys step by turn.step and wrap around (turnKeyValue). */
   turn?: TurnKeys;
+  /**
+   * A drag of the slider shown ahead of the state: each value goes to drag.move instead of onCommit, and the
+   * slider's release (its change event) to drag.end. The keys still commit through onCommit.
+   */
+  drag?: SliderDrag | null;
+}
+
+/** Where a slider drag goes (see NumberControlProps.drag). */
+export interface SliderDrag {
+  move(value: number): void;
+  end(): void;
 }
 
 function LockMark() {
@@ -109,6 +120,19 @@ function useFieldDraft(
   };
 }
 
+/** The slider's ref: its release (the native change event, which React folds into onChange) ends drag. */
+function useSliderRelease(drag: SliderDrag | null) {
+  const ref = useRef<HTMLInputElement>(null);
+  useEffect(() => {
+    const slider = ref.current;
+    if (!drag || !slider) return;
+    const onRelease = () => drag.end();
+    slider.addEventListener('change', onRelease);
+    return () => slider.removeEventListener('change', onRelease);
+  }, [drag]);
+  return ref;
+}
+
 /** The field's label, with a lock mark (and its text for screen readers) when an embed locked the value. */
 function NumberLabel({ htmlFor, label, locked }: { htmlFor: string; label: string; locked: boolean }) {
   const t = useMessages();
@@ -142,9 +166,11 @@ export function NumberControl({
   decimals,
   unit,
   turn,
+  drag = null,
 }: NumberControlProps) {
   const t = useMessages();
   const id = useId();
+  const sliderRef = useSliderRelease(drag);
   const { draft, error, onText, onFocus, onBlur, onEscape, clearError } = useFieldDraft(
     field,
     value,
@@ -190,6 +216,7 @@ export function NumberControl({
         </span>
       </div>
       <input
+        ref={sliderRef}
         className="numctl-slider"
         type="range"
         aria-label={label}
@@ -207,10 +234,10 @@ export function NumberControl({
         }}
         onChange={(e) => {
           const v = Number(e.target.value);
-          if (Number.isFinite(v)) {
-            clearError();
-            onCommit(field === 'theta2' || field === 'couplerAngle' || field === 'speed' ? v : Math.max(min, v));
-          }
+          if (!Number.isFinite(v)) return;
+          clearError();
+          if (drag) drag.move(v);
+          else onCommit(field === 'theta2' || field === 'couplerAngle' || field === 'speed' ? v : Math.max(min, v));
         }}
       />
       {error ? (

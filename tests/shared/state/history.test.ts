@@ -83,6 +83,27 @@ describe('historyReducer', () => {
     expect(reduce(h, undo).present.a).toBe(1);
   });
 
+  it("joins a drag's release value (same key, no gesture, within BURST_MS) to the drag, not another key's", () => {
+    const h = run(initHistory(START), [
+      [{ type: 'setA', value: 1 }, 0, 4],
+      [{ type: 'setA', value: 2 }, 100, 4],
+      // Committed on the release, after the pointer's gesture ended.
+      [{ type: 'setA', value: 3 }, 150],
+    ]);
+    expect(h.past.map((s) => s.a)).toEqual([0]);
+    expect(reduce(h, undo).present.a).toBe(0);
+    const other = run(initHistory(START), [
+      [{ type: 'setA', value: 1 }, 0, 4],
+      [{ type: 'setB', value: 1 }, 50],
+      [{ type: 'setA', value: 2 }, 60 + BURST_MS + 1],
+    ]);
+    expect(other.past.map((s) => [s.a, s.b])).toEqual([
+      [0, 0],
+      [1, 0],
+      [1, 1],
+    ]);
+  });
+
   it('joins a burst of the same key with pauses up to BURST_MS, and splits at a longer pause', () => {
     const h = run(initHistory(START), [
       [{ type: 'setA', value: 1 }, 0],
