@@ -59,9 +59,14 @@ export function AppLayout({ initial }: AppLayoutProps) {
   // A phone's simulator page: the phone bar at the bottom and the other controls in a sheet (ControlsColumn).
   const phone = useMediaQuery(PHONE_MEDIA) && state.shell.page === 'simulator';
   const shell = shellMessages(state.shell.locale);
-  // The results column comes after the first frame: the first render posts the solver's jobs sooner, and the
-  // worker solves while the column renders (the first load on a phone, docs/ARCHITECTURE.md).
-  const resultsShown = useAfterFirstFrame();
+  // Ready: what the first screen shows is drawn with the solver's answers. On a phone the results column is
+  // below the fold (under the linkage and the plots): the page is ready without it, and it mounts once the first
+  // answers are drawn, so it does not hold them up. Elsewhere it is on screen and comes just after the first
+  // frame: the first render posts the solver's jobs sooner, and the worker solves while the column renders (the
+  // first load, docs/ARCHITECTURE.md).
+  const answered = Boolean(cycle && point);
+  const resultsShown = useAfterFirstFrame(!phone || answered);
+  const ready = answered && (resultsShown || phone);
   useDocumentMeta(t.htmlLang, t.appTitle);
   useUrlSync(state);
 
@@ -69,10 +74,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
     <MessagesContext.Provider value={t}>
       <FramePoseProvider state={state} playhead={playhead} scrub={session.scrub} ghostShown={!onLab}>
         <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
-        <div
-          className={`app${onSynthesis ? ' app-synthesis' : ''}`}
-          data-ready={cycle && point && resultsShown ? 'true' : 'false'}
-        >
+        <div className={`app${onSynthesis ? ' app-synthesis' : ''}`} data-ready={ready ? 'true' : 'false'}>
           <header className="topbar">
             <Brand />
             <PageTabs
