@@ -1,7 +1,6 @@
 import { resolve } from 'node:path';
 import react from '@vitejs/plugin-react';
 import { defineConfig } from 'vitest/config';
-import { earlySolverWorker } from './scripts/viteEarlyWorker';
 
 /**
  * Each page's own modules: its entry and layout and their CSS (the rest of a page's first load is shared by both
@@ -22,7 +21,7 @@ function sharedInitial(id: string): boolean {
 /** Vite config: two entries (the app and the embeddable widget) on the same components. */
 export default defineConfig({
   base: './',
-  plugins: [react(), earlySolverWorker()],
+  plugins: [react()],
   worker: { format: 'es' },
   build: {
     target: 'es2022',

@@ -20,18 +20,6 @@ test.describe('the simulator', () => {
     await page.screenshot({ path: artifact('default.png') });
   });
 
-  test("serves the first answers from the one solver worker the page's head started", async ({ page }) => {
-    const workers: string[] = [];
-    page.on('worker', (w) => workers.push(w.url()));
-    await page.goto('./');
-    await waitReady(page);
-    // The head's inline script starts the worker before the app's script loads; the app takes it, not a second one.
-    const head = await page.evaluate(() => document.head.querySelector('script:not([src])')?.textContent ?? '');
-    expect(head).toMatch(/new Worker\("\.\/assets\/solver\.worker-[\w-]+\.js"/);
-    expect(workers.filter((u) => /solver\.worker/.test(u))).toHaveLength(1);
-    expect(await page.evaluate(() => '__fourbarSolverWorker' in window)).toBe(false);
-  });
-
   test('redraws the plots while a slider is dragged and ends on the last value', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

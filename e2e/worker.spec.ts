@@ -70,6 +70,36 @@ test.describe('a dying solver worker', () => {
   });
 });
 
+test.describe('the first load', () => {
+  test('is ready with the first cycle and pose solved on the main thread, before the worker has loaded', async ({
+    page,
+  }) => {
+    // Hold the worker's script: the first answers (the pose's NR runs, the cycle's classification and numbers) and
+    // data-ready must come without it; later requests go to the worker once it is there.
+    let release = () => {};
+    const held = new Promise<void>((resolve) => (release = resolve));
+    await page.route(/solver\.worker[^/]*\.js$/, async (route) => {
+      await held;
+      await route.continue().catch(() => undefined);
+    });
+    try {
+      await page.goto('./?t2=45');
+      await waitReady(page);
+      await expect(page.getByTestId('nr-iterations')).toHaveText(/^\d+$/);
+      await expect(page.getByTestId('linkage-type')).toHaveText('Crank-rocker');
+      await expect(page.getByRole('img', { name: /Linkage view\. θ2 45\.00°, θ3 44\.18°/ })).toBeVisible();
+      expect(page.workers()).toHaveLength(0);
+      // Not the client's fallback (it starts only after the worker fails to answer, and says so).
+      await expect(page.getByText('Web Worker unavailable here: solving on the main thread.')).toHaveCount(0);
+    } finally {
+      release();
+    }
+    // The page goes on once the worker has loaded.
+    await page.getByRole('textbox', { name: /^r3/ }).fill('5.5');
+    await expect(page.getByTestId('grashof-sums')).toContainText('P + Q = 10.5');
+  });
+});
+
 test.describe('the plots', () => {
   test('are solved on the main thread: they draw and follow r3 while the worker has not even loaded', async ({
     page,

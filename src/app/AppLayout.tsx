@@ -63,7 +63,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
   // below the fold (under the linkage and the plots): the page is ready without it, and it mounts once the first
   // answers are drawn, so it does not hold them up. Elsewhere it is on screen and comes just after the first
   // frame: the first render posts the solver's jobs sooner, and the worker solves while the column renders (the
-  // first load, docs/ARCHITECTURE.md).
+  // first load, docs/ARCHITECTURE.md). The transmission plot, below the fold too, comes with the column.
   const answered = Boolean(cycle && point);
   const resultsShown = useAfterFirstFrame(!phone || answered);
   const ready = answered && (resultsShown || phone);
@@ -113,7 +113,7 @@ export function AppLayout({ initial }: AppLayoutProps) {
                   <LabPanel client={client} state={state} dispatch={dispatch} />
                 </Suspense>
               ) : (
-                <SimulatorPage session={session} />
+                <SimulatorPage session={session} lateShown={resultsShown} />
               )}
             </div>
           </main>

@@ -6,13 +6,23 @@ import { shellMessages } from './shellMessages';
 import { SimulatorPlots } from './SimulatorPlots';
 import type { SimulatorSession } from './useSimulatorSession';
 
-// The transmission plot (its chart module) loads after the first paint.
+// The transmission plot (its chart module) loads after the first paint (see SimulatorPageProps.lateShown).
 const TransmissionPanel = lazy(() =>
   import('../features/simulator/TransmissionPanel').then((m) => ({ default: m.TransmissionPanel })),
 );
 
+/** Props of SimulatorPage: the session, and whether the parts that follow the first frame are shown yet. */
+export interface SimulatorPageProps {
+  session: SimulatorSession;
+  /**
+   * The transmission plot is mounted: after the first frame, and on a phone (where it is below the fold) after
+   * the first answers, with the results column (AppLayout), so it does not hold up the first screen.
+   */
+  lateShown: boolean;
+}
+
 /** The full app's simulator page: the linkage, its angle plots and the transmission plot. */
-export function SimulatorPage({ session }: { session: SimulatorSession }) {
+export function SimulatorPage({ session, lateShown }: SimulatorPageProps) {
   const { state, t, cycle, design, deg, xMarks, plotsRef } = session;
   const shell = shellMessages(state.shell.locale);
   // The pin-force arrows the canvas draws while Forces and its arrows are on (the forces feature computes them).
@@ -37,14 +47,16 @@ export function SimulatorPage({ session }: { session: SimulatorSession }) {
         <SimulatorPlots session={session} />
       </section>
       <section className="card transmission-card" aria-label={t.chartTransmission}>
-        <Suspense fallback={null}>
-          <TransmissionPanel
-            deg={deg}
-            muBandLoDeg={state.display.muBandLoDeg}
-            muBandHiDeg={state.display.muBandHiDeg}
-            xMarks={xMarks}
-          />
-        </Suspense>
+        {lateShown ? (
+          <Suspense fallback={null}>
+            <TransmissionPanel
+              deg={deg}
+              muBandLoDeg={state.display.muBandLoDeg}
+              muBandHiDeg={state.display.muBandHiDeg}
+              xMarks={xMarks}
+            />
+          </Suspense>
+        ) : null}
       </section>
     </>
   );

@@ -7,6 +7,8 @@ import { useShownFrame } from '../shared/linkage/useShownFrame';
 import { useJobClient } from '../shared/jobs/useJobClient';
 import { useCycleTable } from '../features/simulator/useCycleTable';
 import { createSolverClient } from '../workers/solverClient';
+import { computeCycle, computePoint } from '../workers/compute';
+import type { FirstAnswers } from '../features/simulator/useSolver';
 import { useAnimation } from '../features/simulator/useAnimation';
 import { useCanvasEdits } from '../features/simulator/useCanvasEdits';
 import { useCycleFacts } from '../features/simulator/useCycleFacts';
@@ -18,6 +20,9 @@ import { forceColumnsFor } from '../features/forces/tableForces';
 import type { ShownViews } from '../features/simulator/useSimulator';
 import { useExports } from '../features/export/useExports';
 import { useAppHistory } from './useAppHistory';
+
+/** The first cycle and pose are solved on the main thread, with the worker's own solves (useSolver's FirstAnswers). */
+const FIRST_ANSWERS: FirstAnswers = { cycle: computeCycle, point: computePoint };
 
 /** Everything useSimulatorSession gives a layout. */
 export type SimulatorSession = ReturnType<typeof useSimulatorSession>;
@@ -39,7 +44,7 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   const { client, mode: solverMode, reason: solverReason } = useJobClient(createSolverClient, 'Solver');
   // The state with undo and redo (shared/state/history.ts): the URL and every view follow its present.
   const history = useAppHistory(initial);
-  const sim = useSimulator(history.state, history.dispatch, views, client);
+  const sim = useSimulator(history.state, history.dispatch, views, client, FIRST_ANSWERS);
   const { state, dispatch, cycle, point, plot } = sim;
   const solverChoice = useMemo(
     () => ({ method: state.solver.method, tol: state.solver.tol }),

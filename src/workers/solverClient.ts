@@ -26,34 +26,13 @@ function startSolverWorker(): WorkerLike {
 /** A worker started before the page's first render, waiting for the first client, and whether it already failed. */
 let prestarted: { worker: WorkerLike; failed: boolean } | null = null;
 
-/** What the page's HTML head left when it started the worker (scripts/viteEarlyWorker.ts), if it did. */
-interface EarlyWorker {
-  worker: WorkerLike;
-  failed: boolean;
-}
-
-/** Takes the worker the page's HTML head started (the built app's pages start it there), once. */
-function takeEarlyWorker(): EarlyWorker | null {
-  const host = globalThis as { __fourbarSolverWorker?: EarlyWorker };
-  const early = host.__fourbarSolverWorker ?? null;
-  delete host.__fourbarSolverWorker;
-  return early && typeof early === 'object' && early.worker ? early : null;
-}
-
 /**
- * Starts the solver worker now, before the page renders, unless the page's HTML head already did (it does in the
- * built app, while the app's script is still downloading): on a slow phone its script loads and compiles before
- * React renders the first frame, instead of after it (bench:ui, phone row). The first createSolverWorker takes it.
- * Where a worker cannot start, nothing happens and the client falls back later.
+ * Starts the solver worker now, before the page renders: on a slow phone its script loads and compiles while React
+ * renders the first frame, instead of after it (about half a second of the first load at 4x CPU, bench:ui). The
+ * first createSolverWorker takes it. Where a worker cannot start, nothing happens and the client falls back later.
  */
 export function prestartSolverWorker(): void {
   if (prestarted || typeof Worker === 'undefined') return;
-  const early = takeEarlyWorker();
-  if (early && !early.failed) {
-    prestarted = early;
-    return;
-  }
-  early?.worker.terminate();
   try {
     const entry = { worker: startSolverWorker(), failed: false };
     // An error before a client listens (a script that cannot load) would be lost: note it, so the client starts afresh.

@@ -1,19 +1,33 @@
-import { useMemo, useState } from 'react';
-import { useElementSize } from '../../shared/hooks/useElementSize';
+import { useCallback, useState } from 'react';
 
 /** The plots' width in device pixels (0 until laid out), and the callback ref to put on the plots' card. */
 export interface PlotPixels {
-  plotsRef: (el: HTMLElement | null) => void;
+  plotsRef: (el: HTMLElement | null) => (() => void) | undefined;
   plotPixels: number;
 }
 
 /**
- * Tracks the device-pixel width of the plots card: plot samples follow it, so only what shows is solved.
- * The element is kept in state (a callback ref), so the size follows the card when it mounts again.
+ * Tracks the device-pixel width of the plots card: plot samples follow it, so only what shows is solved. The
+ * callback ref measures the card as it is attached (in the commit that mounts it) and a ResizeObserver follows
+ * it, so the first load renders the app once more with the width, not once for the element and again for its
+ * size. Detached (the card unmounts), the width is 0.
  */
 export function usePlotPixels(): PlotPixels {
-  const [el, setEl] = useState<HTMLElement | null>(null);
-  const { width } = useElementSize(useMemo(() => ({ current: el }), [el]));
+  const [width, setWidth] = useState(0);
+  const plotsRef = useCallback((el: HTMLElement | null) => {
+    if (!el) return undefined;
+    const update = (w: number) => setWidth(Math.floor(w));
+    update(el.clientWidth || el.getBoundingClientRect().width);
+    const ro =
+      typeof ResizeObserver === 'undefined'
+        ? null
+        : new ResizeObserver((e) => update(e[e.length - 1].contentRect.width));
+    ro?.observe(el);
+    return () => {
+      ro?.disconnect();
+      setWidth(0);
+    };
+  }, []);
   const dpr = typeof window !== 'undefined' ? window.devicePixelRatio || 1 : 1;
-  return { plotsRef: setEl, plotPixels: width > 0 ? Math.round(width * dpr) : 0 };
+  return { plotsRef, plotPixels: width > 0 ? Math.round(width * dpr) : 0 };
 }

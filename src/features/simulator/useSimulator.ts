@@ -5,6 +5,7 @@ import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { CycleResponse, PointResponse } from '../../shared/solution';
 import type { SolvedPlot } from './usePlotSeries';
 import { usePlotSeries } from './usePlotSeries';
+import type { FirstAnswers } from './useSolver';
 import { useCycle, usePoint } from './useSolver';
 import type { SimulatorJobs } from './jobs';
 import { useThrottledValue } from '../../shared/hooks/useThrottledValue';
@@ -44,6 +45,7 @@ export function useSimulator(
   dispatch: Dispatch<Action>,
   shownFor: (state: AppState) => ShownViews,
   client: JobRunner<SimulatorJobs> | null,
+  firstAnswers: FirstAnswers | null = null,
 ): Simulator {
   const { stage, plotPixels, newton } = shownFor(state);
   const solver = useMemo(
@@ -81,6 +83,7 @@ export function useSimulator(
     state.solver.samples,
     state.design.coupler,
     cycleNeeds,
+    firstAnswers?.cycle,
   );
   // The canvas draws every frame from a pose solved on the main thread; the worker's answer only feeds the
   // numbers and the NR plot, which follow the state (a few times a second while playing, see useAnimation).
@@ -95,6 +98,7 @@ export function useSimulator(
     state.solver.samples,
     pointCoupler,
     pointNeeds,
+    firstAnswers?.point,
   );
   return { state, dispatch, cycle, cycleError: error, point, plot };
 }

@@ -1,4 +1,4 @@
-import { useLayoutEffect, useState } from 'react';
+import { useLayoutEffect, useRef, useState } from 'react';
 import { flushSync } from 'react-dom';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../../solver/angles';
@@ -7,7 +7,7 @@ import type { CouplerPoint } from '../../shared/state/appState';
 import { benchMark } from '../../shared/benchMarks';
 import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { CycleResponse, MethodChoice, PointResponse, WorkCount } from '../../shared/solution';
-import type { SimulatorJobs } from './jobs';
+import type { CycleParams, PointParams, SimulatorJobs } from './jobs';
 
 /**
  * What the visible views need from the worker's cycle solve (anything not shown is not computed). The plots are
@@ -23,6 +23,43 @@ export interface CycleNeeds {
 }
 
 /**
+ * The first answers solved on the main thread: each job's solve as the worker runs it. The first load draws its
+ * first frame with them in the render that measures the page, instead of waiting for the worker's start and answers
+ * and a render for each (the first load on a phone, docs/ARCHITECTURE.md); every later request goes to the worker.
+ */
+export interface FirstAnswers {
+  cycle: (params: CycleParams) => CycleResponse;
+  point: (params: PointParams) => PointResponse;
+}
+
+/**
+ * The first request of a hook solved at once on the main thread by solve (null: none). Returns whether it
+ * answered (then the same request is not sent to the worker; later ones are, keyed by their parameters).
+ */
+function useFirstAnswer<P, R>(solve: ((params: P) => R) | null, answer: (r: R) => void) {
+  const tried = useRef(false);
+  const answeredKey = useRef<string | null>(null);
+  return {
+    /** Answers params on the main thread if this is the hook's first request; true when it did. */
+    first(params: P): boolean {
+      if (!solve || tried.current) return false;
+      tried.current = true;
+      try {
+        answer(solve(params));
+        answeredKey.current = JSON.stringify(params);
+        return true;
+      } catch {
+        return false; // the worker answers it, with its error
+      }
+    },
+    /** Whether params are the ones answered on the main thread (no worker request needed). */
+    answered(params: P): boolean {
+      return answeredKey.current !== null && answeredKey.current === JSON.stringify(params);
+    },
+  };
+}
+
+/**
  * The latest solved cycle (view resolution: NR statistics, coupler curves, classification) for these inputs (latest
  * wins while they change), and the last error.
  */
@@ -32,9 +69,14 @@ export function useCycle(
   samples: number,
   coupler: CouplerPoint,
   needs: CycleNeeds,
+  firstSolve: FirstAnswers['cycle'] | null = null,
 ): { cycle: CycleResponse | null; error: string | null } {
   const [cycle, setCycle] = useState<CycleResponse | null>(null);
   const [error, setError] = useState<string | null>(null);
+  const firstAnswer = useFirstAnswer(firstSolve, (r: CycleResponse) => {
+    setCycle(r);
+    markWork('cycle', r.work, r.elapsedMs);
+  });
   const { r1, r2, r3, r4 } = linkage;
   const { distance, angleDeg } = coupler;
   const { method, tol } = needs.solver;
@@ -43,29 +85,30 @@ export function useCycle(
   const { otherBranch, curves } = needs;
   // A layout effect posts the request before the browser paints: a passive effect would wait a frame.
   useLayoutEffect(() => {
-    if (!client) return;
-    client
-      .run('cycle', {
-        linkage: { r1, r2, r3, r4 },
-        samples,
-        coupler: { distance, angleRad: degToRad(angleDeg) },
-        solver: { method, tol },
-        branch,
-        otherBranch,
-        curves,
-      })
-      .result.then(
-        (r) => {
-          if (!r) return;
-          // Drawn as soon as it arrives, not after a scheduler task: a drag's plots follow within a frame.
-          flushSync(() => {
-            setCycle(r);
-            setError(null);
-          });
-          markWork('cycle', r.work, r.elapsedMs);
-        },
-        (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
-      );
+    const params: CycleParams = {
+      linkage: { r1, r2, r3, r4 },
+      samples,
+      coupler: { distance, angleRad: degToRad(angleDeg) },
+      solver: { method, tol },
+      branch,
+      otherBranch,
+      curves,
+    };
+    if (firstAnswer.first(params) || !client || firstAnswer.answered(params)) return;
+    client.run('cycle', params).result.then(
+      (r) => {
+        if (!r) return;
+        // Drawn as soon as it arrives, not after a scheduler task: a drag's plots follow within a frame.
+        flushSync(() => {
+          setCycle(r);
+          setError(null);
+        });
+        markWork('cycle', r.work, r.elapsedMs);
+      },
+      (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
+    );
+    // firstAnswer is a fresh object each render and only reads refs: it is no dependency.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [client, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves]);
   return { cycle, error };
 }
@@ -88,33 +131,38 @@ export function usePoint(
   samples: number,
   coupler: CouplerPoint,
   needs: PointNeeds,
+  firstSolve: FirstAnswers['point'] | null = null,
 ): PointResponse | null {
   const [point, setPoint] = useState<PointResponse | null>(null);
+  const firstAnswer = useFirstAnswer(firstSolve, (r: PointResponse) => {
+    setPoint(r);
+    markWork('point', r.work);
+  });
   const { r1, r2, r3, r4 } = linkage;
   const { distance, angleDeg } = coupler;
   const { method, tol } = needs.solver;
   const { ghost, newton } = needs;
   useLayoutEffect(() => {
-    if (!client) return;
-    client
-      .run('point', {
-        linkage: { r1, r2, r3, r4 },
-        branch,
-        theta2Rad: degToRad(theta2Deg),
-        stepRad: degToRad(360 / samples),
-        coupler: { distance, angleRad: degToRad(angleDeg) },
-        solver: { method, tol },
-        ghost,
-        newton,
-      })
-      .result.then(
-        (r) => {
-          if (!r) return;
-          setPoint(r);
-          markWork('point', r.work);
-        },
-        (e: unknown) => console.warn(`Point solve failed: ${e instanceof Error ? e.message : String(e)}`),
-      );
+    const params: PointParams = {
+      linkage: { r1, r2, r3, r4 },
+      branch,
+      theta2Rad: degToRad(theta2Deg),
+      stepRad: degToRad(360 / samples),
+      coupler: { distance, angleRad: degToRad(angleDeg) },
+      solver: { method, tol },
+      ghost,
+      newton,
+    };
+    if (firstAnswer.first(params) || !client || firstAnswer.answered(params)) return;
+    client.run('point', params).result.then(
+      (r) => {
+        if (!r) return;
+        setPoint(r);
+        markWork('point', r.work);
+      },
+      (e: unknown) => console.warn(`Point solve failed: ${e instanceof Error ? e.message : String(e)}`),
+    );
+    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [client, r1, r2, r3, r4, branch, theta2Deg, samples, distance, angleDeg, method, tol, ghost, newton]);
   return point;
 }

@@ -1,9 +1,9 @@
-import { useEffect, useState } from 'react';
+import { useLayoutEffect, useState } from 'react';
 import type { Messages } from '../i18n/messages';
 import type { JobClient, JobClientMode, JobClientModeReason } from './jobClient';
 import type { JobTable } from './jobTable';
 
-/** A job client made by create() once mounted and disposed on unmount, where it runs and why; null until mounted. */
+/** A job client made by create() as it mounts and disposed on unmount, where it runs and why; null until mounted. */
 export function useJobClient<T extends JobTable<T>>(
   create: (options: {
     onModeChange: (mode: JobClientMode, reason: JobClientModeReason | null, detail: string) => void;
@@ -15,7 +15,9 @@ export function useJobClient<T extends JobTable<T>>(
     mode: 'starting',
     reason: null,
   });
-  useEffect(() => {
+  // Made in the commit that mounts it (a layout effect), so the requests of the render that follows are posted in
+  // that render's commit, not one render later.
+  useLayoutEffect(() => {
     const c = create({
       onModeChange: (mode, reason, detail) => {
         setStatus({ mode, reason });
