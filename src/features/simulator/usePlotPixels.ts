@@ -1,4 +1,5 @@
 import { useCallback, useState } from 'react';
+import { contentBox } from '../../shared/hooks/useElementSize';
 
 /** The plots' width in device pixels (0 until laid out), and the callback ref to put on the plots' card. */
 export interface PlotPixels {
@@ -17,7 +18,7 @@ export function usePlotPixels(): PlotPixels {
   const plotsRef = useCallback((el: HTMLElement | null) => {
     if (!el) return undefined;
     const update = (w: number) => setWidth(Math.floor(w));
-    update(el.clientWidth || el.getBoundingClientRect().width);
+    update(contentBox(el).width);
     const ro =
       typeof ResizeObserver === 'undefined'
         ? null

@@ -7,6 +7,19 @@ export interface ElementSize {
   height: number;
 }
 
+/**
+ * The content-box size of an element in CSS pixels, as a ResizeObserver's contentRect gives it: measured the same
+ * way at mount and on resize, so the observer's first callback changes nothing and costs no render.
+ */
+export function contentBox(el: HTMLElement): ElementSize {
+  const cs = getComputedStyle(el);
+  const px = (v: string) => Number.parseFloat(v) || 0;
+  return {
+    width: Math.max(0, el.clientWidth - px(cs.paddingLeft) - px(cs.paddingRight)),
+    height: Math.max(0, el.clientHeight - px(cs.paddingTop) - px(cs.paddingBottom)),
+  };
+}
+
 /** Tracks the content-box size of ref's element in CSS pixels; { 0, 0 } until it is laid out. */
 export function useElementSize(ref: RefObject<HTMLElement | null>): ElementSize {
   const [size, setSize] = useState<ElementSize>({ width: 0, height: 0 });
@@ -18,8 +31,8 @@ export function useElementSize(ref: RefObject<HTMLElement | null>): ElementSize 
       const height = Math.floor(h);
       setSize((s) => (s.width === width && s.height === height ? s : { width, height }));
     };
-    const r = el.getBoundingClientRect();
-    update(el.clientWidth || r.width, el.clientHeight || r.height);
+    const box = contentBox(el);
+    update(box.width, box.height);
     if (typeof ResizeObserver === 'undefined') return;
     const ro = new ResizeObserver((entries) => {
       const e = entries[entries.length - 1];
