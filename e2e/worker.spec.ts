@@ -14,6 +14,20 @@ async function killWorker(worker: Worker): Promise<void> {
   await gone;
 }
 
+/**
+ * Holds the solver worker's script until release() is called: until then no worker exists, so whatever the page
+ * shows was solved on the main thread.
+ */
+async function holdWorkerScript(page: Page): Promise<() => void> {
+  let release = () => {};
+  const held = new Promise<void>((resolve) => (release = resolve));
+  await page.route(/solver\.worker[^/]*\.js$/, async (route) => {
+    await held;
+    await route.continue().catch(() => undefined);
+  });
+  return release;
+}
+
 /** The one solver worker the page runs now. */
 function onlyWorker(page: Page): Worker {
   const workers = page.workers();
@@ -74,14 +88,9 @@ test.describe('the first load', () => {
   test('is ready with the first cycle and pose solved on the main thread, before the worker has loaded', async ({
     page,
   }) => {
-    // Hold the worker's script: the first answers (the pose's NR runs, the cycle's classification and numbers) and
-    // data-ready must come without it; later requests go to the worker once it is there.
-    let release = () => {};
-    const held = new Promise<void>((resolve) => (release = resolve));
-    await page.route(/solver\.worker[^/]*\.js$/, async (route) => {
-      await held;
-      await route.continue().catch(() => undefined);
-    });
+    // The first answers (the pose's NR runs, the cycle's classification and numbers) and data-ready must come
+    // without the worker; later requests go to it once it is there.
+    const release = await holdWorkerScript(page);
     try {
       await page.goto('./?t2=45');
       await waitReady(page);
@@ -104,14 +113,8 @@ test.describe('the plots', () => {
   test('are solved on the main thread: they draw and follow r3 while the worker has not even loaded', async ({
     page,
   }) => {
-    // Hold the worker's script: until it is released no worker exists, so whatever the plots show was solved
-    // on the main thread (the worker is never asked for plot samples).
-    let release = () => {};
-    const held = new Promise<void>((resolve) => (release = resolve));
-    await page.route(/solver\.worker[^/]*\.js$/, async (route) => {
-      await held;
-      await route.continue().catch(() => undefined);
-    });
+    // The worker is never asked for plot samples.
+    const release = await holdWorkerScript(page);
     try {
       await page.goto('./');
       await expect.poll(() => chartPath(page, 0)).toMatch(/^M[\d.]+,[\d.]+L/);

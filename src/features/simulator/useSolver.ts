@@ -1,4 +1,4 @@
-import { useLayoutEffect, useRef, useState } from 'react';
+import { useLayoutEffect, useMemo, useState } from 'react';
 import { flushSync } from 'react-dom';
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
 import { degToRad } from '../../solver/angles';
@@ -33,30 +33,29 @@ export interface FirstAnswers {
 }
 
 /**
- * The first request of a hook solved at once on the main thread by solve (null: none). Returns whether it
- * answered (then the same request is not sent to the worker; later ones are, keyed by their parameters).
+ * The first request of a hook, solved at once on the main thread by solve (null: none). Stable while solve is:
+ * first(params, answer) solves the hook's first request and hands the result to answer (true when it did);
+ * answered(params) says whether params are that request, so it is not sent to the worker as well.
  */
-function useFirstAnswer<P, R>(solve: ((params: P) => R) | null, answer: (r: R) => void) {
-  const tried = useRef(false);
-  const answeredKey = useRef<string | null>(null);
-  return {
-    /** Answers params on the main thread if this is the hook's first request; true when it did. */
-    first(params: P): boolean {
-      if (!solve || tried.current) return false;
-      tried.current = true;
-      try {
-        answer(solve(params));
-        answeredKey.current = JSON.stringify(params);
-        return true;
-      } catch {
-        return false; // the worker answers it, with its error
-      }
-    },
-    /** Whether params are the ones answered on the main thread (no worker request needed). */
-    answered(params: P): boolean {
-      return answeredKey.current !== null && answeredKey.current === JSON.stringify(params);
-    },
-  };
+function useFirstAnswer<P, R>(solve: ((params: P) => R) | null) {
+  return useMemo(() => {
+    // What this hook's first request was: whether it was tried, and its parameters' key once answered.
+    const seen: { tried: boolean; key: string | null } = { tried: false, key: null };
+    return {
+      first(params: P, answer: (r: R) => void): boolean {
+        if (!solve || seen.tried) return false;
+        seen.tried = true;
+        try {
+          answer(solve(params));
+          seen.key = JSON.stringify(params);
+          return true;
+        } catch {
+          return false; // the worker answers it, with its error
+        }
+      },
+      answered: (params: P): boolean => seen.key !== null && seen.key === JSON.stringify(params),
+    };
+  }, [solve]);
 }
 
 /**
@@ -73,10 +72,7 @@ export function useCycle(
 ): { cycle: CycleResponse | null; error: string | null } {
   const [cycle, setCycle] = useState<CycleResponse | null>(null);
   const [error, setError] = useState<string | null>(null);
-  const firstAnswer = useFirstAnswer(firstSolve, (r: CycleResponse) => {
-    setCycle(r);
-    markWork('cycle', r.work, r.elapsedMs);
-  });
+  const firstAnswer = useFirstAnswer(firstSolve);
   const { r1, r2, r3, r4 } = linkage;
   const { distance, angleDeg } = coupler;
   const { method, tol } = needs.solver;
@@ -94,7 +90,11 @@ export function useCycle(
       otherBranch,
       curves,
     };
-    if (firstAnswer.first(params) || !client || firstAnswer.answered(params)) return;
+    const answerNow = (r: CycleResponse) => {
+      setCycle(r);
+      markWork('cycle', r.work, r.elapsedMs);
+    };
+    if (firstAnswer.first(params, answerNow) || !client || firstAnswer.answered(params)) return;
     client.run('cycle', params).result.then(
       (r) => {
         if (!r) return;
@@ -107,9 +107,7 @@ export function useCycle(
       },
       (e: unknown) => setError(e instanceof Error ? e.message : String(e)),
     );
-    // firstAnswer is a fresh object each render and only reads refs: it is no dependency.
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [client, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves]);
+  }, [client, firstAnswer, r1, r2, r3, r4, samples, distance, angleDeg, method, tol, branch, otherBranch, curves]);
   return { cycle, error };
 }
 
@@ -134,10 +132,7 @@ export function usePoint(
   firstSolve: FirstAnswers['point'] | null = null,
 ): PointResponse | null {
   const [point, setPoint] = useState<PointResponse | null>(null);
-  const firstAnswer = useFirstAnswer(firstSolve, (r: PointResponse) => {
-    setPoint(r);
-    markWork('point', r.work);
-  });
+  const firstAnswer = useFirstAnswer(firstSolve);
   const { r1, r2, r3, r4 } = linkage;
   const { distance, angleDeg } = coupler;
   const { method, tol } = needs.solver;
@@ -153,7 +148,11 @@ export function usePoint(
       ghost,
       newton,
     };
-    if (firstAnswer.first(params) || !client || firstAnswer.answered(params)) return;
+    const answerNow = (r: PointResponse) => {
+      setPoint(r);
+      markWork('point', r.work);
+    };
+    if (firstAnswer.first(params, answerNow) || !client || firstAnswer.answered(params)) return;
     client.run('point', params).result.then(
       (r) => {
         if (!r) return;
@@ -162,8 +161,7 @@ export function usePoint(
       },
       (e: unknown) => console.warn(`Point solve failed: ${e instanceof Error ? e.message : String(e)}`),
     );
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [client, r1, r2, r3, r4, branch, theta2Deg, samples, distance, angleDeg, method, tol, ghost, newton]);
+  }, [client, firstAnswer, r1, r2, r3, r4, branch, theta2Deg, samples, distance, angleDeg, method, tol, ghost, newton]);
   return point;
 }
 
