@@ -20,6 +20,24 @@ test.describe('the simulator', () => {
     await page.screenshot({ path: artifact('default.png') });
   });
 
+  test('the canvas keeps its box when the lazily loaded transmission plot arrives after ready', async ({ page }) => {
+    // Hold the transmission plot's chunk until the page is ready: its arrival must not resize the canvas under a
+    // pointer that aims at what ready showed.
+    let release = () => {};
+    const held = new Promise<void>((resolve) => (release = resolve));
+    await page.route(/TransmissionPanel[^/]*\.(js|css)$/, async (route) => {
+      await held;
+      await route.continue().catch(() => undefined);
+    });
+    await page.goto('./');
+    await waitReady(page);
+    const canvas = page.locator('canvas.linkage-canvas');
+    const before = { box: await canvas.boundingBox(), p: await canvas.getAttribute('data-p') };
+    release();
+    await expect(page.locator('svg.transmission-svg')).toHaveCount(1);
+    expect({ box: await canvas.boundingBox(), p: await canvas.getAttribute('data-p') }).toEqual(before);
+  });
+
   test('redraws the plots while a slider is dragged and ends on the last value', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

@@ -1,4 +1,3 @@
-import './TransmissionPanel.css';
 import type { XMark } from '../../shared/charts/xMarks';
 import { useMemo } from 'react';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
