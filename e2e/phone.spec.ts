@@ -256,6 +256,9 @@ for (const lang of ['en', 'zh-TW'] as const) {
       await openApp(page, lang);
       const charts = page.locator('section.plots svg.chart-svg');
       await expect(charts).toHaveCount(2);
+      // The θ4 chart (below the fold) is drawn just after the first screen: wait for both legends, so the check
+      // below cannot pass on an empty chart.
+      await expect(charts.locator('g.legend')).toHaveCount(2);
       // Text boxes as Chromium lays them out with its own fonts.
       const faults = await charts.evaluateAll((svgs) => {
         const out: string[] = [];

@@ -15,8 +15,9 @@ const TransmissionPanel = lazy(() =>
 export interface SimulatorPageProps {
   session: SimulatorSession;
   /**
-   * The transmission plot is mounted: after the first frame, and on a phone (where it is below the fold) after
-   * the first answers, with the results column (AppLayout), so it does not hold up the first screen.
+   * The transmission plot is mounted and the θ4 chart drawn: after the first frame, and on a phone (where they are
+   * below the fold) after the first answers, with the results column (AppLayout), so they do not hold up the first
+   * screen.
    */
   lateShown: boolean;
 }
@@ -44,7 +45,7 @@ export function SimulatorPage({ session, lateShown }: SimulatorPageProps) {
         <DragHint locale={state.shell.locale} />
       </section>
       <section className="card plots" aria-label={t.sectionPlots} ref={plotsRef}>
-        <SimulatorPlots session={session} />
+        <SimulatorPlots session={session} secondHeld={!lateShown} />
       </section>
       <section className="card transmission-card" aria-label={t.chartTransmission}>
         {lateShown ? (

@@ -41,6 +41,11 @@ export interface AnglePlotsPanelProps {
   rates?: CycleRates | null;
   /** Plots another feature adds (shown when chosen); default none: an extra kind in the state shows the angles. */
   extra?: ExtraPlots | null;
+  /**
+   * The second of the separate angle charts (θ4, below the fold on a phone) waits, its box in place; default false.
+   * The app holds it for the first screen (SimulatorPage).
+   */
+  secondHeld?: boolean;
 }
 
 /** The plots' choosers: which plots (angles, velocities, accelerations, extras) and whether θ3 and θ4 share a chart. */
@@ -91,6 +96,7 @@ function AnglePlotsPanelImpl({
   kind = 'angles',
   rates = null,
   extra = null,
+  secondHeld = false,
 }: AnglePlotsPanelProps) {
   const t = useMessages();
   // The frame on screen: the markers (and the branch, which a rocking input switches) follow every frame of Play.
@@ -132,7 +138,7 @@ function AnglePlotsPanelImpl({
             {layout === 'separate' ? (
               <>
                 <AngleChartView inputs={in3} marker={m3} label={t.chartTheta3} xMarks={xMarks} />
-                <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} xMarks={xMarks} />
+                <AngleChartView inputs={in4} marker={m4} label={t.chartTheta4} xMarks={xMarks} held={secondHeld} />
               </>
             ) : (
               <AngleChartView inputs={inBoth} marker={mBoth} label={t.chartBoth} xMarks={xMarks} />

@@ -16,6 +16,8 @@ export interface Theta2ChartViewProps<S, M> {
   label: string;
   /** Faint theta2 rules (dead centres); default none. */
   xMarks?: readonly XMark[];
+  /** Not drawn yet, its box keeping its place (a chart below the fold on the first load); default false. */
+  held?: boolean;
 }
 
 const NO_MARKS: readonly XMark[] = [];
@@ -31,9 +33,10 @@ export function Theta2ChartView<S, M>({
   marker,
   label,
   xMarks = NO_MARKS,
+  held = false,
 }: Theta2ChartViewProps<S, M>) {
   const { data, title, xLabel, yLabel } = inputs;
-  const { chart, boxRef, svgRef, markerRef } = useLiveChart(create, data, marker);
+  const { chart, boxRef, svgRef, markerRef } = useLiveChart(create, data, marker, held);
 
   useLayoutEffect(() => {
     chart?.setText({ title, xLabel, yLabel });

@@ -22,12 +22,14 @@ export interface LiveChartRefs<C> {
  * Creates a chart once, on mount (create gets the SVG and the marker box at size 0: nothing drawn until
  * sized), and keeps its data, marker and size in step with the props, each through its own update so a
  * new marker only moves the marker. create must be stable (a module-level function). Texts and
- * chart-specific options stay with the view.
+ * chart-specific options stay with the view. While `held`, no chart is made (the view's box keeps its place): a chart
+ * below the fold can wait for the first screen.
  */
 export function useLiveChart<D, M, C extends LiveChart<D, M>>(
   create: (svg: SVGSVGElement, markerHost: HTMLDivElement | undefined) => C,
   data: D,
   marker: M,
+  held = false,
 ): LiveChartRefs<C> {
   const boxRef = useRef<HTMLDivElement>(null);
   const svgRef = useRef<SVGSVGElement>(null);
@@ -36,14 +38,14 @@ export function useLiveChart<D, M, C extends LiveChart<D, M>>(
   useLayoutEffect(() => {
     const svg = svgRef.current;
     const host = markerRef.current ?? undefined;
-    if (!svg) return;
+    if (!svg || held) return;
     // Once per mount: the element refs are read after commit, never during render.
     setChart(create(svg, host));
     return () => {
       setChart(null);
       host?.replaceChildren();
     };
-  }, [create]);
+  }, [create, held]);
   const { width, height } = useElementSize(boxRef);
   useLayoutEffect(() => {
     chart?.update(data);
