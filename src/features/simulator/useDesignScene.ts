@@ -4,45 +4,58 @@ import { degToRad, radToDeg } from '../../solver/angles';
 import { instantCenters } from '../../solver/instantCenters';
 import type { SceneDesign } from '../../shared/linkage/designOverlay';
 import type { AppState } from '../../shared/state/appState';
+import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
 import { formatDeg, formatNumber } from '../../shared/format';
 import type { Messages } from '../../shared/i18n/messages';
 import type { LocalPose } from '../../shared/linkage/localPose';
 import type { DesignInfo } from './useDesignMetrics';
 
+/** The display choices the design overlay reads. */
+export type DesignSceneDisplay = Pick<AppState['display'], 'showDeadCentres' | 'muBandLoDeg' | 'muBandHiDeg'>;
+
+/** The instant centres of a pose (null without a pose, or where the solver refuses them). */
+function centresOf(local: LocalPose | null) {
+  if (!local?.pose) return null;
+  try {
+    return instantCenters(local.linkage, local.theta2Rad, local.pose);
+  } catch {
+    return null;
+  }
+}
+
 /**
- * The canvas's design overlay for this frame: the mu band (always, for the mu label's colour), the dead
- * centres and swing when that toggle is on and the input is a crank driving a rocker, and this pose's
- * instant centres when that toggle is on (an off-screen one labelled with its coordinates in the length unit).
+ * The canvas's design overlay: the mu band (always, for the mu label's colour), the dead centres and swing when that
+ * toggle is on and the input is a crank driving a rocker, and the instant centres of `centres` (the frame's pose
+ * while that toggle is on, else null; an off-screen one is labelled with its coordinates in the length unit). Pure:
+ * the live stage's worker builds it for every frame of Play, useDesignScene for the page's canvas.
  */
+export function designScene(
+  display: DesignSceneDisplay,
+  unit: LengthUnit,
+  centres: LocalPose | null,
+  design: DesignInfo | null,
+  t: Messages,
+): SceneDesign {
+  const output = design?.metrics.output ?? null;
+  return {
+    muBandRad: { lo: degToRad(display.muBandLoDeg), hi: degToRad(display.muBandHiDeg) },
+    deadCentres: display.showDeadCentres && output ? [output.extended, output.folded] : null,
+    swingText: output ? t.swingLabel(`${formatDeg(radToDeg(output.swing), 2)}°`) : '',
+    instantCentres: centresOf(centres),
+    offscreenText: (name, at) =>
+      at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3), unit) : t.centreAtInfinity(name),
+  };
+}
+
+/** designScene for the frame on screen, rebuilt only when what it shows changes (the pose only with the centres). */
 export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {
   const {
     display: { showDeadCentres, showInstantCentres, muBandLoDeg, muBandHiDeg },
+    forces: { lengthUnit },
   } = state;
-  const output = design?.metrics.output ?? null;
-  const dead = useMemo(
-    () => (showDeadCentres && output ? [output.extended, output.folded] : null),
-    [showDeadCentres, output],
-  );
-  const { linkage, theta2Rad, pose } = local;
-  const centres = useMemo(() => {
-    if (!showInstantCentres || !pose) return null;
-    try {
-      return instantCenters(linkage, theta2Rad, pose);
-    } catch {
-      return null;
-    }
-  }, [showInstantCentres, linkage, theta2Rad, pose]);
-  const swingText = output ? t.swingLabel(`${formatDeg(radToDeg(output.swing), 2)}°`) : '';
-  const unit = state.forces.lengthUnit;
+  const centres = showInstantCentres ? local : null;
   return useMemo(
-    () => ({
-      muBandRad: { lo: degToRad(muBandLoDeg), hi: degToRad(muBandHiDeg) },
-      deadCentres: dead,
-      swingText,
-      instantCentres: centres,
-      offscreenText: (name, at) =>
-        at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3), unit) : t.centreAtInfinity(name),
-    }),
-    [muBandLoDeg, muBandHiDeg, dead, swingText, centres, t, unit],
+    () => designScene({ showDeadCentres, muBandLoDeg, muBandHiDeg }, lengthUnit, centres, design, t),
+    [showDeadCentres, muBandLoDeg, muBandHiDeg, lengthUnit, centres, design, t],
   );
 }

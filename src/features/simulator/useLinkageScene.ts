@@ -22,9 +22,18 @@ export interface LinkageSceneView {
 }
 
 /**
- * Bounds to fit that stay put while the linkage moves: the cycle's (both branches when the ghost shows or the input
- * rocks, which switches branch) once it has arrived, before that the pose itself.
+ * The cycle's bounds to fit, which stay put while the linkage moves: both branches when the ghost shows or the input
+ * rocks (which switches branch), else the branch's own.
  */
+export function cycleBounds(cycle: CycleResponse, branch: Branch, showGhost: boolean): Bounds {
+  const range = cycle.classification.inputRange;
+  const rocking = !range.full && range.intervals.length > 0;
+  const other: Branch = branch === 'open' ? 'crossed' : 'open';
+  const ext = (b: Branch): BranchExtent => ({ theta4: cycle[b].theta4, px: cycle[b].px, py: cycle[b].py });
+  return sceneBounds(cycle.linkage, showGhost || rocking ? [ext(branch), ext(other)] : [ext(branch)], [], []);
+}
+
+/** Bounds to fit: the cycle's (cycleBounds) once it has arrived, before that the pose itself. */
 function useSceneBounds(
   cycle: CycleResponse | null,
   branch: Branch,
@@ -33,35 +42,73 @@ function useSceneBounds(
   pose: ScenePose | null,
   ghost: ScenePose | null,
 ): Bounds {
-  const range = cycle?.classification.inputRange;
-  const rocking = range ? !range.full && range.intervals.length > 0 : false;
-  const cycleBounds = useMemo(() => {
-    if (!cycle) return null;
-    const other: Branch = branch === 'open' ? 'crossed' : 'open';
-    const ext = (b: Branch): BranchExtent => ({ theta4: cycle[b].theta4, px: cycle[b].px, py: cycle[b].py });
-    const both = showGhost || rocking;
-    return sceneBounds(cycle.linkage, both ? [ext(branch), ext(other)] : [ext(branch)], [], []);
-  }, [cycle, branch, showGhost, rocking]);
+  const fromCycle = useMemo(() => (cycle ? cycleBounds(cycle, branch, showGhost) : null), [cycle, branch, showGhost]);
   const poseBounds = useMemo(() => sceneBounds(linkage, [], [], [pose, ghost]), [linkage, pose, ghost]);
-  return cycleBounds ?? poseBounds;
+  return fromCycle ?? poseBounds;
 }
 
 /**
  * The scene's texts in the page's language: joint names, the warning, the grid's spacing and number formats (a
  * length with the app's length unit: "grid 2 mm").
  */
+export function sceneText(t: Messages, warning: string | null, warningDetail: string | null, unit: string): SceneText {
+  return {
+    ...t.jointLabels,
+    warning,
+    warningDetail,
+    gridSpacing: t.gridSpacing,
+    formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
+    formatLength: (x: number) => `${formatNumber(x, 4)} ${unit}`,
+  };
+}
+
+/** What a scene is made of (assembleScene): the pose's parts, the display toggles and the overlays. */
+export interface SceneParts {
+  linkage: LinkageScene['linkage'];
+  theta2: number;
+  pose: ScenePose | null;
+  ghost: ScenePose | null;
+  curves: LinkageScene['curves'];
+  display: Pick<AppState['display'], 'showGrid' | 'showAngles' | 'showGhost' | 'showTrace'>;
+  text: SceneText;
+  bounds: Bounds;
+  design?: SceneDesign;
+  vectors: SceneVectors | null;
+  placement: LinkageScene['placement'] | null;
+  markers: NonNullable<LinkageScene['markers']>;
+}
+
+/** The canvas scene from its parts (placement and markers only when there are some). */
+export function assembleScene(p: SceneParts): LinkageScene {
+  const { showGrid, showAngles, showGhost, showTrace } = p.display;
+  return {
+    linkage: p.linkage,
+    theta2: p.theta2,
+    pose: p.pose,
+    ghost: p.ghost,
+    curves: p.curves,
+    showGrid,
+    showAngles,
+    showGhost,
+    showTrace,
+    text: p.text,
+    bounds: p.bounds,
+    ...(p.design ? { design: p.design } : {}),
+    vectors: p.vectors,
+    ...(p.placement ? { placement: p.placement } : {}),
+    ...(p.markers.length > 0 ? { markers: p.markers } : {}),
+  };
+}
+
+/** The scene's accessible description: the angles, or why it cannot assemble. */
+export function sceneDescription(theta2Rad: number, pose: ScenePose | null, warning: string | null): string {
+  if (!pose) return warning ?? '';
+  const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
+  return `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`;
+}
+
 function useSceneText(t: Messages, warning: string | null, warningDetail: string | null, unit: string): SceneText {
-  return useMemo(
-    () => ({
-      ...t.jointLabels,
-      warning,
-      warningDetail,
-      gridSpacing: t.gridSpacing,
-      formatAngle: (d: number) => `${formatDeg(d, 1)}°`,
-      formatLength: (x: number) => `${formatNumber(x, 4)} ${unit}`,
-    }),
-    [t, warning, warningDetail, unit],
-  );
+  return useMemo(() => sceneText(t, warning, warningDetail, unit), [t, warning, warningDetail, unit]);
 }
 
 /**
@@ -84,7 +131,6 @@ export function useLinkageScene(
   const bounds = useSceneBounds(cycle, branch, state.display.showGhost, linkage, pose, ghost);
 
   const classification = cycle?.classification ?? null;
-  const theta2Text = formatDeg(radToDeg360(theta2Rad), 2);
   const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
   const text = useSceneText(t, warning, warningDetail, state.forces.lengthUnit);
   const {
@@ -95,23 +141,21 @@ export function useLinkageScene(
   const placement = useMemo(() => frameOf(ox, oy, degToRad(og)), [ox, oy, og]);
   const markers = state.synPath.targets;
   const scene: LinkageScene = useMemo(
-    () => ({
-      linkage,
-      theta2: theta2Rad,
-      pose,
-      ghost,
-      curves,
-      showGrid,
-      showAngles,
-      showGhost,
-      showTrace,
-      text,
-      bounds,
-      ...(design ? { design } : {}),
-      vectors,
-      ...(placement ? { placement } : {}),
-      ...(markers.length > 0 ? { markers } : {}),
-    }),
+    () =>
+      assembleScene({
+        linkage,
+        theta2: theta2Rad,
+        pose,
+        ghost,
+        curves,
+        display: { showGrid, showAngles, showGhost, showTrace },
+        text,
+        bounds,
+        design,
+        vectors,
+        placement,
+        markers,
+      }),
     [
       linkage,
       theta2Rad,
@@ -130,8 +174,5 @@ export function useLinkageScene(
       markers,
     ],
   );
-  const description = pose
-    ? `θ2 ${theta2Text}°, θ3 ${formatDeg(radToDeg(pose.theta3), 2)}°, θ4 ${formatDeg(radToDeg(pose.theta4), 2)}°, μ ${formatDeg(radToDeg(pose.mu), 2)}°`
-    : (warning ?? '');
-  return { scene, description };
+  return { scene, description: sceneDescription(theta2Rad, pose, warning) };
 }

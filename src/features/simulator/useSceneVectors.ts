@@ -1,7 +1,8 @@
 import { useMemo } from 'react';
-import type { SceneVectors, VectorText, WorldVector } from '../../shared/linkage/motionVectors';
+import type { ArrowScale, SceneVectors, VectorText, WorldVector } from '../../shared/linkage/motionVectors';
 import { arrowScale } from '../../shared/linkage/motionVectors';
 import type { AppState } from '../../shared/state/appState';
+import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
 import { formatNumber } from '../../shared/format';
 import type { Messages } from '../../shared/i18n/messages';
 import type { FrameMotion, PointRates } from '../../shared/linkage/frameMotion';
@@ -16,9 +17,55 @@ function accelerations(m: FrameMotion): Record<'A' | 'B' | 'P', WorldVector> {
   return { A: a(m.A), B: a(m.B), P: a(m.P) };
 }
 
+/** The arrows' texts in the page's language, with the app's length unit (the bar reads "= 5 mm/s"). */
+export function vectorText(t: Messages, unit: LengthUnit): VectorText {
+  return {
+    symbol: { v: 'v', a: 'a' },
+    velocityBar: (v: string) => `= ${v} ${unit}/s`,
+    accelerationBar: (v: string) => `= ${v} ${unit}/s²`,
+    zero: t.vectorZero,
+    clamped: t.vectorClamped,
+    limit: t.limitPosition,
+    formatValue: (x: number) => formatNumber(x, 3),
+  };
+}
+
+/** The arrows' scales (null where none reads). */
+export interface VectorScales {
+  velocity: ArrowScale | null;
+  acceleration: ArrowScale | null;
+}
+
+/** The arrows' scales: from the crank pin's own speed r2 |ω2| and acceleration r2 sqrt(ω2⁴ + α2²). */
+export function vectorScales(r2: number, w: number, a: number): VectorScales {
+  return { velocity: arrowScale(r2 * Math.abs(w)), acceleration: arrowScale(r2 * Math.hypot(w * w, a)) };
+}
+
+/**
+ * The canvas's motion vectors for a frame, or null when both toggles are off. Pure: the live stage's worker builds
+ * them for every frame of Play, useSceneVectors for the page's canvas.
+ */
+export function sceneVectors(
+  display: Pick<AppState['display'], 'showVelocity' | 'showAcceleration'>,
+  scales: VectorScales,
+  motion: FrameMotion | null,
+  text: VectorText,
+): SceneVectors | null {
+  const { showVelocity, showAcceleration } = display;
+  if (!showVelocity && !showAcceleration) return null;
+  return {
+    velocity: showVelocity && motion ? velocities(motion) : null,
+    acceleration: showAcceleration && motion ? accelerations(motion) : null,
+    velocityScale: showVelocity ? scales.velocity : null,
+    accelerationScale: showAcceleration ? scales.acceleration : null,
+    limit: motion?.limit ?? false,
+    text,
+  };
+}
+
 /**
  * The canvas's motion vectors for this frame, or null when both toggles are off. The scales follow the
- * crank pin's own speed r2 |ω2| and acceleration r2 sqrt(ω2⁴ + α2²), so they stay put while the linkage moves.
+ * crank pin's own speed and acceleration (vectorScales), so they stay put while the linkage moves.
  */
 export function useSceneVectors(state: AppState, motion: FrameMotion | null, t: Messages): SceneVectors | null {
   const {
@@ -27,30 +74,10 @@ export function useSceneVectors(state: AppState, motion: FrameMotion | null, t: 
   } = state;
   const r2 = state.design.linkage.r2;
   const unit = state.forces.lengthUnit;
-  const velocityScale = useMemo(() => arrowScale(r2 * Math.abs(w)), [r2, w]);
-  const accelerationScale = useMemo(() => arrowScale(r2 * Math.hypot(w * w, a)), [r2, w, a]);
-  const text: VectorText = useMemo(
-    () => ({
-      symbol: { v: 'v', a: 'a' },
-      // The bar's value in the app's length unit (= 5 mm/s).
-      velocityBar: (v: string) => `= ${v} ${unit}/s`,
-      accelerationBar: (v: string) => `= ${v} ${unit}/s²`,
-      zero: t.vectorZero,
-      clamped: t.vectorClamped,
-      limit: t.limitPosition,
-      formatValue: (x: number) => formatNumber(x, 3),
-    }),
-    [t, unit],
+  const scales = useMemo(() => vectorScales(r2, w, a), [r2, w, a]);
+  const text = useMemo(() => vectorText(t, unit), [t, unit]);
+  return useMemo(
+    () => sceneVectors({ showVelocity, showAcceleration }, scales, motion, text),
+    [showVelocity, showAcceleration, scales, motion, text],
   );
-  return useMemo(() => {
-    if (!showVelocity && !showAcceleration) return null;
-    return {
-      velocity: showVelocity && motion ? velocities(motion) : null,
-      acceleration: showAcceleration && motion ? accelerations(motion) : null,
-      velocityScale: showVelocity ? velocityScale : null,
-      accelerationScale: showAcceleration ? accelerationScale : null,
-      limit: motion?.limit ?? false,
-      text,
-    };
-  }, [showVelocity, showAcceleration, motion, velocityScale, accelerationScale, text]);
 }
