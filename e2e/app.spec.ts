@@ -1,5 +1,5 @@
 import { expect, test } from '@playwright/test';
-import { ORIGIN, artifact, chartPath, inkedPixels, waitReady } from './helpers';
+import { ORIGIN, artifact, chartPath, inkedPixels, shownTheta2InPage, waitReady, withoutLiveStage } from './helpers';
 
 test.describe('the simulator', () => {
   test('renders the default linkage, its numbers and its plots', async ({ page }) => {
@@ -96,7 +96,10 @@ test.describe('the simulator', () => {
     await expect(page.getByRole('img', { name: /^Linkage view\. θ2 45\.00°/ })).toBeVisible();
   });
 
-  test('draws a new pose in every animation frame while playing', async ({ page }) => {
+  test('draws a new pose in every animation frame while playing, on the page where no worker can draw', async ({
+    page,
+  }) => {
+    await withoutLiveStage(page);
     await page.goto('./');
     await waitReady(page);
     await page.getByRole('button', { name: 'Play' }).click();
@@ -117,6 +120,71 @@ test.describe('the simulator', () => {
     await page.getByRole('button', { name: 'Pause' }).click();
     const changes = labels.slice(1).filter((l, i) => l !== labels[i]).length;
     expect(changes).toBe(labels.length - 1);
+    await expect(page.locator('canvas.linkage-live')).toHaveCount(0);
+  });
+
+  test('Play is drawn in a worker over the canvas: every frame it draws is a new pose, and Pause hands the canvas back', async ({
+    page,
+  }) => {
+    await page.goto('./');
+    await waitReady(page);
+    const live = page.locator('canvas.linkage-live');
+    await expect(live).toBeHidden();
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(live).toBeVisible();
+    // 30 of the worker's frames as the page hears of them: each names a new θ2, further along (a crank turns on).
+    const drawn = await live.evaluate(
+      (c: HTMLCanvasElement) =>
+        new Promise<number[]>((resolve) => {
+          const seen: number[] = [];
+          new MutationObserver((_records, observer) => {
+            seen.push(Number(c.dataset.theta2));
+            if (seen.length < 30) return;
+            observer.disconnect();
+            resolve(seen);
+          }).observe(c, { attributes: true, attributeFilter: ['data-theta2'] });
+        }),
+    );
+    const steps = drawn.slice(1).map((d, i) => (d - drawn[i] + 360) % 360);
+    expect(
+      steps.every((s) => s > 0 && s < 30),
+      steps.join(' '),
+    ).toBe(true);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(live).toBeHidden();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+  });
+
+  test('on a slow page a θ2 drag is drawn by the worker over the canvas, and the release hands the canvas back at its value', async ({
+    page,
+    context,
+  }) => {
+    // 6x CPU from the first load: the page's own drawing of every overlay is slow, so the drag goes to the stage.
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
+    await page.goto('./?t2=45&vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
+    await waitReady(page);
+    const live = page.locator('canvas.linkage-live');
+    const field = page.getByRole('textbox', { name: /^θ2/ });
+    const box = await page.getByRole('slider', { name: /^θ2/ }).boundingBox();
+    if (!box) throw new Error('θ2 slider has no box');
+    // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
+    const x = (deg: number) => box.x + 8 + ((box.width - 16) * deg) / 360;
+    const y = box.y + box.height / 2;
+    await page.mouse.move(x(45), y);
+    await page.mouse.down();
+    for (let deg = 50; deg <= 90; deg += 5) await page.mouse.move(x(deg), y);
+    await expect(live).toBeVisible();
+    // The stage draws the value the field shows (the pointer is still down).
+    await expect
+      .poll(async () => Math.abs(Number(await live.getAttribute('data-theta2')) - Number(await field.inputValue())))
+      .toBeLessThan(1e-9);
+    expect(Number(await field.inputValue())).toBeGreaterThan(85);
+    await page.mouse.up();
+    await expect(live).toBeHidden();
+    const dragged = Number(await field.inputValue());
+    expect(Math.abs((await page.evaluate(shownTheta2InPage)) - dragged)).toBeLessThanOrEqual(0.006);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
   });
 
   test('Pause keeps the pose on screen: the θ2 field, the plots and the address bar take it, nothing jumps back', async ({
@@ -130,14 +198,10 @@ test.describe('the simulator', () => {
     const start = await canvasTheta2();
     await page.getByRole('button', { name: 'Play' }).click();
     // Well past the first commit of the playhead to the state (a few times a second).
-    await expect.poll(canvasTheta2).toBeGreaterThan(start + 40);
-    // The pose on screen at the moment of the click, read in the same task as the click.
-    const label = await page.getByRole('button', { name: 'Pause' }).evaluate((button: HTMLButtonElement) => {
-      const l = document.querySelector('canvas.linkage-canvas')?.getAttribute('aria-label') ?? '';
-      button.click();
-      return l;
-    });
-    const shown = Number(/θ2 (-?[\d.]+)°/.exec(label)?.[1]);
+    await expect.poll(() => page.evaluate(shownTheta2InPage)).toBeGreaterThan(start + 40);
+    // The pose on screen at the moment of the click (the live stage's, Play drawn in a worker), read in the same
+    // task as the click.
+    const shown = await page.getByRole('button', { name: 'Pause' }).evaluate(shownTheta2InPage);
     await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
     // The field and the address bar show the paused pose (the label rounds to hundredths), and the canvas stays there.
     const field = page.getByRole('textbox', { name: /^θ2/ });
@@ -145,7 +209,8 @@ test.describe('the simulator', () => {
     await expect
       .poll(() => Math.abs(Number(new URL(page.url()).searchParams.get('t2')) - shown))
       .toBeLessThanOrEqual(0.006);
-    expect(await canvasTheta2()).toBe(shown);
+    expect(Math.abs((await canvasTheta2()) - shown)).toBeLessThanOrEqual(0.006);
+    await expect(page.locator('canvas.linkage-live')).toBeHidden();
     // The plot marker sits at the same θ2: its x on the θ3 plot is that θ2 on the chart's own x scale.
     const markerX = await page.locator('.chart-marker').first().getAttribute('data-x');
     const plotWidth = await page

@@ -74,3 +74,23 @@ export async function chartPath(page: Page, n = 0): Promise<string> {
       return solid?.getAttribute('d') ?? '';
     });
 }
+
+/**
+ * The θ2 (degrees) of the linkage on screen, read in the page: the live stage's while its canvas shows (Play drawn in
+ * a worker: its data-theta2), else the one the linkage canvas's label names (hundredths). Pass to page.evaluate, or
+ * to a locator's evaluate to click its element right after reading (in the same task).
+ */
+export function shownTheta2InPage(thenClick?: unknown): number {
+  const live = document.querySelector<HTMLCanvasElement>('canvas.linkage-live');
+  const label = document.querySelector('canvas.linkage-canvas')?.getAttribute('aria-label') ?? '';
+  const theta2 = live && !live.hidden ? Number(live.dataset.theta2) : Number(/θ2 (-?[\d.]+)°/.exec(label)?.[1]);
+  if (thenClick instanceof HTMLElement) thenClick.click();
+  return theta2;
+}
+
+/** A page whose browser has no OffscreenCanvas: the page draws Play itself (no live stage), as where workers cannot draw. */
+export async function withoutLiveStage(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    delete (globalThis as { OffscreenCanvas?: unknown }).OffscreenCanvas;
+  });
+}

@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import type { Locator, Page } from '@playwright/test';
-import { artifact, waitReady } from './helpers';
+import { artifact, waitReady, withoutLiveStage } from './helpers';
 
 /** A joint's position in page pixels, from the canvas's data-* attribute (CSS pixels inside the canvas). */
 async function joint(canvas: Locator, name: 'o2' | 'a'): Promise<{ x: number; y: number }> {
@@ -127,6 +127,8 @@ test.describe('undo and redo', () => {
   test('a θ2 slider drag shows each value at once, commits the last on release as one undo step, and hands the canvas back', async ({
     page,
   }) => {
+    // The page draws the drag itself here (on a slow page the live stage would: app.spec's 6x drag).
+    await withoutLiveStage(page);
     await page.goto('./?t2=45');
     await waitReady(page);
     const canvas = page.locator('canvas.linkage-canvas');

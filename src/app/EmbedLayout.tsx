@@ -109,6 +109,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
                   hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
                   onShown={onShown}
                   forceLayer={forceLayer}
+                  stage={session.stage}
                 />
               </div>
               {show('controls') ? (

@@ -41,6 +41,7 @@ export function SimulatorPage({ session, lateShown }: SimulatorPageProps) {
           hint={shell.canvasHint({ crank: true, coupler: true })}
           onShown={session.onShown}
           forceLayer={forceLayer}
+          stage={session.stage}
         />
         <DragHint locale={state.shell.locale} />
       </section>

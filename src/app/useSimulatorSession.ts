@@ -7,6 +7,7 @@ import { useShownFrame } from '../shared/linkage/useShownFrame';
 import { useJobClient } from '../shared/jobs/useJobClient';
 import { useCycleTable } from '../features/simulator/useCycleTable';
 import { createSolverClient } from '../workers/solverClient';
+import { createLiveStage } from '../workers/stageClient';
 import { computeCycle, computePoint } from '../workers/compute';
 import type { FirstAnswers } from '../features/simulator/useSolver';
 import { useAnimation } from '../features/simulator/useAnimation';
@@ -65,7 +66,9 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
   const { shown, onShown } = useShownFrame();
   const exports = useExports({ state, point, shown, cycle, client, deg: facts.deg, t, forces: forceColumnsFor(state) });
   const [playhead] = useState(() => new Playhead());
-  const { step: onStep, scrub } = useAnimation(state, dispatch, facts.rangeDeg, playhead);
+  // Play's linkage drawn in a worker where the browser allows it (null: the page draws it).
+  const [stage] = useState(createLiveStage);
+  const { step: onStep, scrub } = useAnimation(state, dispatch, facts.rangeDeg, playhead, stage);
   const onViewChange = useCallback(
     (view: AppState['display']['view']) => dispatch({ type: 'setView', view }),
     [dispatch],
@@ -89,6 +92,8 @@ export function useSimulatorSession(initial: AppState, shownFor: ShownFor, table
     /** The frame the linkage view drew last (the printed report draws it). */
     shown,
     playhead,
+    /** The live stage that draws Play's frames in a worker (null where the page draws them). */
+    stage,
     onStep,
     /** The θ2 drag (slider, crank pin): moves the playhead, the state follows (FramePoseProvider provides it). */
     scrub,

@@ -30,7 +30,10 @@ export function FramePoseProvider({ state, playhead, scrub, ghostShown, children
   const shown = useMemo(() => withFrame(state, frame), [state, frame]);
   const { local, marker } = useLinkagePose(shown, ghostShown);
   const motion = useFrameMotion(shown, local);
-  const value = useMemo(() => ({ state: shown, local, marker, motion }), [shown, local, marker, motion]);
+  const value = useMemo(
+    () => ({ state: shown, local, marker, motion, committed: state, ghostShown }),
+    [shown, local, marker, motion, state, ghostShown],
+  );
   return (
     <Theta2ScrubContext.Provider value={scrub}>
       <FramePoseContext.Provider value={value}>{children}</FramePoseContext.Provider>

@@ -15,6 +15,8 @@ import { Icon } from '../../shared/ui/Icon';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { useElementSize } from '../../shared/hooks/useElementSize';
 import { useLinkageDrawing } from './useLinkageDrawing';
+import type { LiveStage } from '../../shared/linkage/liveStage';
+import { useStageShowing } from './useStageShowing';
 
 /** Props of LinkageCanvas: the scene, the user's pan and zoom, what can be dragged, and a size report for exports. */
 export interface LinkageCanvasProps {
@@ -31,6 +33,8 @@ export interface LinkageCanvasProps {
   description: string;
   /** The visible hint for the pointer and keyboard controls (shown while the canvas has focus). */
   hint: string;
+  /** The live stage: its canvas lies over this one and shows while it draws Play (LiveStage). */
+  stage?: LiveStage | null;
 }
 
 /** Degrees the arrow keys turn the crank (with Shift: ten times as far). */
@@ -109,8 +113,24 @@ function useCanvasHandles(
   return { bounds, ...panZoom };
 }
 
+/**
+ * The live stage's canvas over the linkage canvas (pointer events go through to the one under it): shown while the
+ * stage draws Play; handed to the stage's worker when Play first starts.
+ */
+function StageCanvas({ stage, width, height }: { stage: LiveStage; width: number; height: number }) {
+  const showing = useStageShowing(stage);
+  const ref = useRef<HTMLCanvasElement>(null);
+  useEffect(() => {
+    if (ref.current) stage.attach(ref.current);
+  }, [stage]);
+  useEffect(() => {
+    if (width > 0 && height > 0) stage.setSize(width, height);
+  }, [stage, width, height]);
+  return <canvas ref={ref} className="linkage-live" aria-hidden="true" hidden={!showing} />;
+}
+
 function LinkageCanvasImpl(props: LinkageCanvasProps) {
-  const { scene, view, onTheta2, onSize, description, hint } = props;
+  const { scene, view, onTheta2, onSize, description, hint, stage } = props;
   const t = useMessages();
   const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
@@ -120,7 +140,7 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
     if (width > 0 && height > 0) onSize?.(width, height);
   }, [width, height, onSize]);
   const { bounds, pointerHandlers, zoomBy, resetView, onZoomKey } = useCanvasHandles(props, canvasRef, width, height);
-  useLinkageDrawing(canvasRef, scene, bounds, view, width, height);
+  useLinkageDrawing(canvasRef, scene, bounds, view, width, height, stage?.notePageDraw);
   const turnBy = (deltaDeg: number) => {
     if (!onTheta2) return;
     const next = wrapDeg360(Math.round((radToDeg360(scene.theta2) + deltaDeg) * 100) / 100);
@@ -148,6 +168,7 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
           e.preventDefault();
         }}
       />
+      {stage ? <StageCanvas stage={stage} width={width} height={height} /> : null}
       <CanvasTools zoomBy={zoomBy} resetView={resetView} />
       <p id={hintId} className="canvas-hint">
         {hint}

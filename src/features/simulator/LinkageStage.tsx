@@ -1,4 +1,4 @@
-import { useLayoutEffect, useMemo } from 'react';
+import { useEffect, useLayoutEffect, useMemo } from 'react';
 import type { ViewOffset, CouplerPoint } from '../../shared/state/appState';
 import type { CycleResponse } from '../../shared/solution';
 import { useFramePose } from '../../shared/linkage/FramePoseContext';
@@ -10,6 +10,11 @@ import { useLinkageScene } from './useLinkageScene';
 import { useSceneVectors } from './useSceneVectors';
 import type { ShownFrame } from '../../shared/linkage/shownFrame';
 import type { ForceLayer } from '../../shared/linkage/forceVectors';
+import type { FramePose } from '../../shared/linkage/FramePoseContext';
+import type { LiveStage } from '../../shared/linkage/liveStage';
+import { useFrameMotion } from './useFrameMotion';
+import { useLinkagePose } from './useLinkagePose';
+import { useStageShowing } from './useStageShowing';
 
 /** Props of LinkageStage: the latest cycle and design facts, the canvas's callbacks and hint, and a scene report. */
 export interface LinkageStageProps {
@@ -26,6 +31,26 @@ export interface LinkageStageProps {
   onShown?: (frame: ShownFrame) => void;
   /** Pin forces to draw for the frame (the app feeds the forces feature's layer); default none. */
   forceLayer?: ForceLayer;
+  /** The live stage that draws Play's frames in a worker (null where there is none: the page draws them). */
+  stage?: LiveStage | null;
+}
+
+/**
+ * The frame the page's canvas draws: the frame on screen, or while the live stage draws Play the committed state's
+ * (under the stage's canvas: it then redraws only when the state commits, not every frame). The stage is told what
+ * it draws from (the committed state, the cycle, the ghost) as they change.
+ */
+function useStageFrame(stage: LiveStage | null | undefined, cycle: CycleResponse | null): FramePose {
+  const framed = useFramePose();
+  const { committed, ghostShown } = framed;
+  const own = useLinkagePose(committed, ghostShown);
+  const ownMotion = useFrameMotion(committed, own.local);
+  const showing = useStageShowing(stage);
+  useEffect(() => stage?.setScene(committed, cycle, ghostShown), [stage, committed, cycle, ghostShown]);
+  return useMemo(
+    () => (showing ? { ...framed, state: committed, local: own.local, marker: own.marker, motion: ownMotion } : framed),
+    [showing, framed, committed, own, ownMotion],
+  );
 }
 
 /**
@@ -43,9 +68,10 @@ export function LinkageStage({
   hint,
   onShown,
   forceLayer,
+  stage = null,
 }: LinkageStageProps) {
   const t = useMessages();
-  const { state, local, marker, motion } = useFramePose();
+  const { state, local, marker, motion } = useStageFrame(stage, cycle);
   const designScene = useDesignScene(state, local, design, t);
   const vectors = useSceneVectors(state, motion, t);
   const { scene: kinematic, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
@@ -62,6 +88,7 @@ export function LinkageStage({
       onSize={onSize}
       description={description}
       hint={hint}
+      stage={stage}
     />
   );
 }

@@ -9,6 +9,7 @@ import type { PlayFrame, Playhead } from '../../shared/state/playhead';
 import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
 import { ExternalValue } from '../../shared/state/externalValue';
+import type { LiveStage } from '../../shared/linkage/liveStage';
 
 /**
  * How often Play commits its frame to the app state at most, ms. Every frame moves the playhead (canvas and plot
@@ -65,12 +66,16 @@ export interface AnimationHandlers {
  * forward in the play direction (so clockwise when Clockwise is chosen), -1 one back. Play waits for the
  * first cycle's input range. Each frame moves the playhead (see PLAY_COMMIT_MS); when Play stops, the frame
  * on screen is committed and the playhead handed back to the state. A θ2 drag (Theta2Scrub) moves the same playhead.
+ * With a live stage (LiveStage: Play drawn in a worker with its own clock) the playhead follows the stage's newest
+ * frame; the page advances it itself only until the stage has drawn one, and restarts the stage from any frame
+ * someone else put on the playhead or in the state (an edit, a drag), or at a new speed.
  */
 export function useAnimation(
   state: AppState,
   dispatch: Dispatch<Action>,
   rangeDeg: InputRangeDeg | null,
   playhead: Playhead,
+  stage: LiveStage | null = null,
 ): AnimationHandlers {
   // Touched only in the frame callback and effects: the state's frame at the previous tick, the frames
   // committed and not yet seen in the state (oldest first), and when the last commit was.
@@ -94,7 +99,10 @@ export function useAnimation(
     return true;
   };
   const dragging = useRef(false);
-  const scrub = useTheta2Scrub(state, dispatch, playhead, commitThrottled, dragging);
+  const scrub = useTheta2Scrub(state, dispatch, playhead, commitThrottled, dragging, stage);
+  // The frame this loop last put on the playhead, and what the stage was started with (null: not started).
+  const lastSet = useRef<PlayFrame | null>(null);
+  const stageRun = useRef<{ speed: number; range: InputRangeDeg } | null>(null);
   useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
     if (!rangeDeg || !state.motion.playing) return;
@@ -103,20 +111,33 @@ export function useAnimation(
     const base = playBase(own, seen.current, playhead.get(), committed.current);
     if (i >= 0) committed.current = committed.current.slice(i + 1);
     seen.current = own;
-    const next = advanceTheta2(
-      base.theta2Deg,
-      degreesForElapsed(state.motion.speedDegPerFrame, dt),
-      base.direction,
-      base.branch,
-      rangeDeg,
-    );
+    const speed = state.motion.speedDegPerFrame;
+    const advanced = advanceTheta2(base.theta2Deg, degreesForElapsed(speed, dt), base.direction, base.branch, rangeDeg);
+    let next = advanced;
+    if (stage) {
+      const run = stageRun.current;
+      const moved = lastSet.current !== null && !sameFrame(base, lastSet.current);
+      if (!run || moved || run.speed !== speed || run.range !== rangeDeg) {
+        stage.play(advanced, now, speed, rangeDeg);
+        stageRun.current = { speed, range: rangeDeg };
+      } else next = stage.latest() ?? advanced;
+    }
     playhead.set(next);
+    lastSet.current = next;
     if (commitThrottled(now, { type: 'animate', ...next })) committed.current = [...committed.current, next];
   });
   // Stopped: commit the frame on screen, then (once the state shows it) drop the playhead. An edit that came with
   // the stop (a "Go to" sets θ2 as it stops Play) wins over the frame on screen: the state already holds the pose.
   useEffect(() => {
-    if (state.motion.playing || dragging.current) return;
+    if (state.motion.playing) return;
+    // The stage's newest frame is the one on screen: it is the one Pause keeps. A drag that stopped Play goes on
+    // showing its frames on the stage (the drag's end stops it).
+    const drawn = stageRun.current ? stage?.latest() : null;
+    if (drawn && !dragging.current) playhead.set(drawn);
+    stageRun.current = null;
+    lastSet.current = null;
+    if (dragging.current) return;
+    stage?.stop();
     const own = frameOf(state);
     const edited =
       seen.current !== null && !sameFrame(own, seen.current) && !committed.current.some((c) => sameFrame(c, own));
@@ -131,7 +152,7 @@ export function useAnimation(
     // Compared as the reducer stores it, so a frame the state cannot hold more exactly still hands back.
     if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
-  }, [state, playhead, dispatch]);
+  }, [state, playhead, dispatch, stage]);
   const step = useCallback(
     (sign: 1 | -1) =>
       dispatch({
@@ -146,7 +167,9 @@ export function useAnimation(
 /**
  * The θ2 drag of useAnimation: moves the playhead, commits through commit (throttled, returns whether it
  * dispatched) and, once the drag rests for SCRUB_REST_MS or end() is called, commits the last value at once.
- * draggingRef is true from the first move to the end: Play's stop effect leaves the playhead alone meanwhile.
+ * draggingRef is true from the first move to the end: Play's stop effect leaves the playhead alone meanwhile. With a
+ * live stage the dragged frames are drawn there (the page's canvas then redraws only as the state commits); the end
+ * hands the canvas back in the commit of the last value.
  */
 function useTheta2Scrub(
   state: AppState,
@@ -154,12 +177,14 @@ function useTheta2Scrub(
   playhead: Playhead,
   commit: (now: number, action: Action) => boolean,
   draggingRef: RefObject<boolean>,
+  stage: LiveStage | null,
 ): Theta2Scrub {
   const latest = useRef({ state, commit });
   useLayoutEffect(() => {
     latest.current = { state, commit };
   });
   const restTimer = useRef<ReturnType<typeof setTimeout> | undefined>(undefined);
+  const viaStage = useRef(false);
   useEffect(() => () => clearTimeout(restTimer.current), []);
   const [dragged] = useState(() => new ExternalValue<number | null>(null));
   const handlers = useMemo<Theta2Scrub>(() => {
@@ -170,6 +195,7 @@ function useTheta2Scrub(
       const frame = playhead.get();
       if (!committing || !frame || latest.current.state.motion.playing) {
         dragged.set(null);
+        if (!latest.current.state.motion.playing) stage?.stop();
         return;
       }
       // One synchronous commit of the last value (the slider goes back to the state, which now holds it); the
@@ -177,6 +203,7 @@ function useTheta2Scrub(
       flushSync(() => {
         dispatch({ type: 'setTheta2', deg: frame.theta2Deg });
         dragged.set(null);
+        stage?.stop();
       });
       const shown = { ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) };
       if (playhead.get() === frame && sameFrame(shown, frameOf(latest.current.state))) playhead.set(null);
@@ -191,10 +218,13 @@ function useTheta2Scrub(
       restTimer.current = setTimeout(end, SCRUB_REST_MS);
       // While Play runs it goes on from here and commits itself.
       if (s.motion.playing && !stopPlay) return;
+      // The drag's frames go to the stage where the page draws slowly, from its first move to its end.
+      if (!draggingRef.current) viaStage.current = stage?.prefersStage() ?? false;
       draggingRef.current = true;
+      if (viaStage.current) stage?.show(next);
       commitNow(performance.now(), { type: 'setTheta2', deg: next.theta2Deg });
     };
     return { move, end, dragged: dragged.get, subscribe: dragged.subscribe };
-  }, [playhead, dispatch, draggingRef, dragged]);
+  }, [playhead, dispatch, draggingRef, dragged, stage]);
   return handlers;
 }

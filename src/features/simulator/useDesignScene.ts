@@ -1,51 +1,10 @@
 import { useMemo } from 'react';
-import { degToRad, radToDeg } from '../../solver/angles';
-// The module itself, not the solver's barrel (which would pull the sweep and NR into the main bundle).
-import { instantCenters } from '../../solver/instantCenters';
 import type { SceneDesign } from '../../shared/linkage/designOverlay';
 import type { AppState } from '../../shared/state/appState';
-import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
-import { formatDeg, formatNumber } from '../../shared/format';
 import type { Messages } from '../../shared/i18n/messages';
 import type { LocalPose } from '../../shared/linkage/localPose';
 import type { DesignInfo } from './useDesignMetrics';
-
-/** The display choices the design overlay reads. */
-export type DesignSceneDisplay = Pick<AppState['display'], 'showDeadCentres' | 'muBandLoDeg' | 'muBandHiDeg'>;
-
-/** The instant centres of a pose (null without a pose, or where the solver refuses them). */
-function centresOf(local: LocalPose | null) {
-  if (!local?.pose) return null;
-  try {
-    return instantCenters(local.linkage, local.theta2Rad, local.pose);
-  } catch {
-    return null;
-  }
-}
-
-/**
- * The canvas's design overlay: the mu band (always, for the mu label's colour), the dead centres and swing when that
- * toggle is on and the input is a crank driving a rocker, and the instant centres of `centres` (the frame's pose
- * while that toggle is on, else null; an off-screen one is labelled with its coordinates in the length unit). Pure:
- * the live stage's worker builds it for every frame of Play, useDesignScene for the page's canvas.
- */
-export function designScene(
-  display: DesignSceneDisplay,
-  unit: LengthUnit,
-  centres: LocalPose | null,
-  design: DesignInfo | null,
-  t: Messages,
-): SceneDesign {
-  const output = design?.metrics.output ?? null;
-  return {
-    muBandRad: { lo: degToRad(display.muBandLoDeg), hi: degToRad(display.muBandHiDeg) },
-    deadCentres: display.showDeadCentres && output ? [output.extended, output.folded] : null,
-    swingText: output ? t.swingLabel(`${formatDeg(radToDeg(output.swing), 2)}°`) : '',
-    instantCentres: centresOf(centres),
-    offscreenText: (name, at) =>
-      at ? t.offscreenCentre(name, formatNumber(at.x, 3), formatNumber(at.y, 3), unit) : t.centreAtInfinity(name),
-  };
-}
+import { designScene } from './designScene';
 
 /** designScene for the frame on screen, rebuilt only when what it shows changes (the pose only with the centres). */
 export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {

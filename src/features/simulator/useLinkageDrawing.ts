@@ -16,7 +16,8 @@ const newCanvas = () => document.createElement('canvas');
  * Draws the scene on the canvas (sized for devicePixelRatio) in a layout effect whenever the scene, the fit bounds,
  * the view or the size (CSS pixels) changes: the background (grid, curves, ground) is kept in a bitmap once it is
  * drawn twice (drawLinkageFrame), so Play redraws just the linkage over a copy of it. The canvas's data-o2, data-a and data-p
- * say where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas.
+ * say where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas. onDrawn gets how
+ * long each draw took (ms).
  */
 export function useLinkageDrawing(
   canvasRef: RefObject<HTMLCanvasElement | null>,
@@ -25,6 +26,7 @@ export function useLinkageDrawing(
   view: ViewOffset,
   width: number,
   height: number,
+  onDrawn?: (ms: number) => void,
 ): void {
   // Touched in the drawing effect only.
   const background = useRef<FrameBackground | null>(null);
@@ -32,6 +34,7 @@ export function useLinkageDrawing(
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
     if (!sized) return;
+    const started = performance.now();
     const drawn = drawLinkageFrame(
       sized.ctx,
       background.current,
@@ -50,6 +53,7 @@ export function useLinkageDrawing(
     canvas.dataset.o2 = at({ x: 0, y: 0 });
     canvas.dataset.a = at(scene.pose?.A);
     canvas.dataset.p = at(scene.pose?.P);
+    onDrawn?.(performance.now() - started);
     benchMark('fourbar:canvas', { theta2Rad: scene.theta2 });
-  }, [canvasRef, scene, bounds, view, width, height]);
+  }, [canvasRef, scene, bounds, view, width, height, onDrawn]);
 }

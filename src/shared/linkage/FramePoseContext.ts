@@ -11,6 +11,10 @@ export interface FramePose {
   marker: PointResponse;
   /** Velocities and accelerations at the pose; null where it does not assemble. */
   motion: FrameMotion | null;
+  /** The committed state (the frame's fields as the app state holds them, behind Play's playhead). */
+  committed: AppState;
+  /** The other branch's pose is drawn (the canvas is on screen and the ghost is on). */
+  ghostShown: boolean;
 }
 
 /** The frame on screen; null outside a FramePoseProvider. */

@@ -1,0 +1,168 @@
+import type { LiveStage } from '../shared/linkage/liveStage';
+import type { InputRangeDeg } from '../shared/state/animation';
+import type { AppState } from '../shared/state/appState';
+import type { PlayFrame } from '../shared/state/playhead';
+import type { CycleResponse } from '../shared/solution';
+import { benchMark } from '../shared/benchMarks';
+import type { StageReply, StageRequest } from './stageProtocol';
+
+/**
+ * A page whose recent draws of the linkage take this long (ms, their median) hands a θ2 drag to the stage: past it,
+ * the page's frame (its React render, the drawing, its paint) no longer fits in the one frame the worker's route adds.
+ */
+const SLOW_PAGE_DRAW_MS = 5;
+/** How many of the page's latest draws the median is taken over (one slow draw, say the first, does not count). */
+const DRAWS_KEPT = 5;
+
+/** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
+function canTransfer(): boolean {
+  return (
+    typeof Worker !== 'undefined' &&
+    typeof OffscreenCanvas !== 'undefined' &&
+    typeof HTMLCanvasElement !== 'undefined' &&
+    'transferControlToOffscreen' in HTMLCanvasElement.prototype
+  );
+}
+
+/** Starts the live stage's module worker (matched by scripts/viteInlineWorker.ts: keep it as is). */
+function startStageWorker(): Worker {
+  return new Worker(new URL('./stage.worker.ts', import.meta.url), { type: 'module' });
+}
+
+/**
+ * The page's side of the live stage (shared/linkage/liveStage.ts): its worker starts at the first play(), when it is
+ * handed the attached canvas (a page that never plays never loads it). The canvas element shows the frames the worker draws; the page keeps
+ * the newest one for its playhead, and the canvas's data-theta2 names the θ2 it shows. Marks each drawn frame 'fourbar:stage-frame' (page time, θ2) for bench:ui.
+ * Null where a worker cannot draw; a worker that fails or says it cannot animate turns the stage off for good.
+ */
+export function createLiveStage(): LiveStage | null {
+  if (!canTransfer()) return null;
+  let worker: Worker | null = null;
+  let broken = false;
+  /** The page's canvas for the stage, handed to the worker at the first play(). */
+  let element: HTMLCanvasElement | null = null;
+  /** What the stage is doing: playing, showing a drag's frames, or nothing. */
+  let mode: 'play' | 'show' | null = null;
+  let playId = 0;
+  let newest: PlayFrame | null = null;
+  let shown = false;
+  let lastState: { state: AppState; ghostShown: boolean } | null = null;
+  let lastCycle: CycleResponse | null | undefined;
+  let lastSize: { width: number; height: number; dpr: number } | null = null;
+  const listeners = new Set<() => void>();
+  const pageDraws: number[] = [];
+  const setShown = (next: boolean) => {
+    if (shown === next) return;
+    shown = next;
+    for (const listener of [...listeners]) listener();
+  };
+  const post = (message: StageRequest, transfer: Transferable[] = []) => {
+    if (worker && !broken) worker.postMessage(message, transfer);
+  };
+  const breakDown = () => {
+    broken = true;
+    mode = null;
+    worker?.terminate();
+    worker = null;
+    setShown(false);
+  };
+  const onReply = (e: MessageEvent<StageReply>) => {
+    const m = e.data;
+    if (m.type === 'unsupported') {
+      breakDown();
+      return;
+    }
+    if (m.id !== playId) return;
+    newest = m.frame;
+    // The pose on screen, for tests and tools (the page's canvas's label names the committed pose meanwhile).
+    if (element) element.dataset.theta2 = String(m.frame.theta2Deg);
+    benchMark('fourbar:stage-frame', {
+      theta2Deg: m.frame.theta2Deg,
+      t: m.atEpochMs - performance.timeOrigin,
+      shown: m.shownEpochMs - performance.timeOrigin,
+      drawMs: m.drawMs,
+    });
+    setShown(true);
+  };
+  /** Starts the worker and hands it the canvas: at the first play(), so a page that never plays never loads it. */
+  const start = (): boolean => {
+    if (worker) return true;
+    if (broken || !element || element.dataset.stage === 'attached') return false;
+    try {
+      worker = startStageWorker();
+      worker.addEventListener('message', onReply);
+      worker.addEventListener('error', breakDown);
+      const offscreen = element.transferControlToOffscreen();
+      element.dataset.stage = 'attached';
+      post({ type: 'canvas', canvas: offscreen }, [offscreen]);
+      if (lastSize) post({ type: 'size', ...lastSize });
+      if (lastState) post({ type: 'state', ...lastState });
+      if (lastCycle !== undefined) post({ type: 'cycle', cycle: lastCycle });
+      return true;
+    } catch {
+      breakDown();
+      return false;
+    }
+  };
+  return {
+    attach(canvas) {
+      if (!worker) element = canvas;
+    },
+    setSize(width, height) {
+      const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
+      if (lastSize && lastSize.width === width && lastSize.height === height && lastSize.dpr === dpr) return;
+      lastSize = { width, height, dpr };
+      post({ type: 'size', ...lastSize });
+    },
+    setScene(state, cycle, ghostShown) {
+      if (!lastState || lastState.state !== state || lastState.ghostShown !== ghostShown) {
+        lastState = { state, ghostShown };
+        post({ type: 'state', ...lastState });
+      }
+      if (lastCycle !== cycle) {
+        lastCycle = cycle;
+        post({ type: 'cycle', cycle });
+      }
+    },
+    play(frame: PlayFrame, atMs: number, speedDegPerFrame: number, range: InputRangeDeg) {
+      if (!start()) return;
+      mode = 'play';
+      playId += 1;
+      newest = null;
+      post({ type: 'play', id: playId, frame, atEpochMs: performance.timeOrigin + atMs, speedDegPerFrame, range });
+    },
+    show(frame: PlayFrame) {
+      if (!start()) return;
+      if (mode !== 'show') {
+        mode = 'show';
+        playId += 1;
+        newest = null;
+      }
+      post({ type: 'show', id: playId, frame });
+    },
+    stop() {
+      if (mode === null) return;
+      mode = null;
+      playId += 1;
+      newest = null;
+      post({ type: 'stop' });
+      setShown(false);
+    },
+    notePageDraw(ms) {
+      if (!Number.isFinite(ms) || ms < 0) return;
+      pageDraws.push(ms);
+      if (pageDraws.length > DRAWS_KEPT) pageDraws.shift();
+    },
+    prefersStage() {
+      if (broken || element === null || pageDraws.length < DRAWS_KEPT) return false;
+      const sorted = [...pageDraws].sort((a, b) => a - b);
+      return sorted[Math.floor(sorted.length / 2)] >= SLOW_PAGE_DRAW_MS;
+    },
+    latest: () => newest,
+    showing: () => shown,
+    subscribe(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+  };
+}
