@@ -153,6 +153,16 @@ test.describe('the simulator', () => {
     await page.getByRole('button', { name: 'Pause' }).click();
     await expect(live).toBeHidden();
     await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    // Another page and back: the simulator's canvas is a new element, and the worker draws on it.
+    await page.getByRole('tab', { name: 'Solver lab' }).click();
+    await page.getByRole('tab', { name: 'Simulator' }).click();
+    await page.getByRole('button', { name: 'Play' }).click();
+    const again = page.locator('canvas.linkage-live');
+    await expect(again).toBeVisible();
+    const before = await again.getAttribute('data-theta2');
+    await expect.poll(() => again.getAttribute('data-theta2')).not.toBe(before);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(again).toBeHidden();
   });
 
   test('on a slow page a θ2 drag is drawn by the worker over the canvas, and the release hands the canvas back at its value', async ({

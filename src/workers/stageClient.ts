@@ -7,11 +7,12 @@ import { benchMark } from '../shared/benchMarks';
 import type { StageReply, StageRequest } from './stageProtocol';
 
 /**
- * A page whose recent draws of the linkage take this long (ms, their median) hands a θ2 drag to the stage: past it,
- * the page's frame (its React render, the drawing, its paint) no longer fits in the one frame the worker's route adds.
+ * A page whose recent draws of the linkage take this long (ms, their lower median) hands a θ2 drag to the stage: past
+ * it, the page's frame (its React render, the drawing, its paint) no longer fits in the one frame the worker's route
+ * adds.
  */
 const SLOW_PAGE_DRAW_MS = 5;
-/** How many of the page's latest draws the median is taken over (one slow draw, say the first, does not count). */
+/** How many of the page's latest draws the median is taken over (a slow one, say the first, does not decide alone). */
 const DRAWS_KEPT = 5;
 
 /** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
@@ -84,17 +85,22 @@ export function createLiveStage(): LiveStage | null {
     });
     setShown(true);
   };
+  /** Hands the worker the canvas element (once per element: a remounted canvas view is a new one). */
+  const handOver = (canvas: HTMLCanvasElement) => {
+    if (canvas.dataset.stage === 'attached') return;
+    const offscreen = canvas.transferControlToOffscreen();
+    canvas.dataset.stage = 'attached';
+    post({ type: 'canvas', canvas: offscreen }, [offscreen]);
+  };
   /** Starts the worker and hands it the canvas: at the first play(), so a page that never plays never loads it. */
   const start = (): boolean => {
     if (worker) return true;
-    if (broken || !element || element.dataset.stage === 'attached') return false;
+    if (broken || !element) return false;
     try {
       worker = startStageWorker();
       worker.addEventListener('message', onReply);
       worker.addEventListener('error', breakDown);
-      const offscreen = element.transferControlToOffscreen();
-      element.dataset.stage = 'attached';
-      post({ type: 'canvas', canvas: offscreen }, [offscreen]);
+      handOver(element);
       if (lastSize) post({ type: 'size', ...lastSize });
       if (lastState) post({ type: 'state', ...lastState });
       if (lastCycle !== undefined) post({ type: 'cycle', cycle: lastCycle });
@@ -106,7 +112,14 @@ export function createLiveStage(): LiveStage | null {
   };
   return {
     attach(canvas) {
-      if (!worker) element = canvas;
+      if (element === canvas) return;
+      element = canvas;
+      if (!worker || broken) return;
+      try {
+        handOver(canvas);
+      } catch {
+        breakDown();
+      }
     },
     setSize(width, height) {
       const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));
@@ -154,9 +167,9 @@ export function createLiveStage(): LiveStage | null {
       if (pageDraws.length > DRAWS_KEPT) pageDraws.shift();
     },
     prefersStage() {
-      if (broken || element === null || pageDraws.length < DRAWS_KEPT) return false;
+      if (broken || element === null || pageDraws.length < 2) return false;
       const sorted = [...pageDraws].sort((a, b) => a - b);
-      return sorted[Math.floor(sorted.length / 2)] >= SLOW_PAGE_DRAW_MS;
+      return sorted[Math.floor((sorted.length - 1) / 2)] >= SLOW_PAGE_DRAW_MS;
     },
     latest: () => newest,
     showing: () => shown,
