@@ -144,6 +144,9 @@ export function createLiveStage(): LiveStage | null {
       newest = null;
       post({ type: 'play', id: playId, frame, atEpochMs: performance.timeOrigin + atMs, speedDegPerFrame, range });
     },
+    warm() {
+      start();
+    },
     show(frame: PlayFrame) {
       if (!start()) return;
       if (mode !== 'show') {

@@ -219,7 +219,10 @@ function useTheta2Scrub(
       // While Play runs it goes on from here and commits itself.
       if (s.motion.playing && !stopPlay) return;
       // The drag's frames go to the stage where the page draws slowly, from its first move to its end.
-      if (!draggingRef.current) viaStage.current = stage?.prefersStage() ?? false;
+      if (!draggingRef.current) {
+        viaStage.current = stage?.prefersStage() ?? false;
+        if (!viaStage.current) stage?.warm();
+      }
       draggingRef.current = true;
       if (viaStage.current) stage?.show(next);
       commitNow(performance.now(), { type: 'setTheta2', deg: next.theta2Deg });

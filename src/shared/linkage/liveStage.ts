@@ -29,6 +29,8 @@ export interface LiveStage {
    * So a drag goes to the stage only where the page's own drawing is slow (prefersStage).
    */
   show(frame: PlayFrame): void;
+  /** Starts the worker without drawing (a drag the page draws itself: the next may need the stage at once). */
+  warm(): void;
   /** Notes how long the page took to draw the linkage once (ms): the stage learns how slow the page is. */
   notePageDraw(ms: number): void;
   /** Whether the page draws the linkage too slowly to keep up with a drag (the lower median of its latest draws). */
