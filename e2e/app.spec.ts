@@ -197,6 +197,27 @@ test.describe('the simulator', () => {
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
   });
 
+  test('on a slow page Pause keeps the frame the worker drew last, though the page is frames behind it', async ({
+    page,
+    context,
+  }) => {
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
+    await page.goto('./?vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
+    await waitReady(page);
+    await page.getByRole('button', { name: 'Play' }).click();
+    const live = page.locator('canvas.linkage-live');
+    await expect(live).toBeVisible();
+    await expect.poll(async () => Number(await live.getAttribute('data-theta2'))).toBeGreaterThan(80);
+    const shown = await page.getByRole('button', { name: 'Pause' }).evaluate(shownTheta2InPage);
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    await expect(live).toBeHidden();
+    const field = page.getByRole('textbox', { name: /^θ2/ });
+    await expect.poll(async () => Math.abs(Number(await field.inputValue()) - shown)).toBeLessThanOrEqual(0.006);
+    expect(Math.abs((await page.evaluate(shownTheta2InPage)) - shown)).toBeLessThanOrEqual(0.006);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
+  });
+
   test('Pause keeps the pose on screen: the θ2 field, the plots and the address bar take it, nothing jumps back', async ({
     page,
   }) => {

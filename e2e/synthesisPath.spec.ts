@@ -172,8 +172,11 @@ test.describe('the synthesis page, Path mode', () => {
     await expect(bar).toHaveAttribute('aria-valuetext', /best Σd²/);
     // The run's pool: the workers made by Synthesize. Cancel terminates them (a worker sees an abort only between
     // rounds of the search, which can take hundreds of ms on a phone); the time it takes is in bench:ui (synCancel).
-    const pool = page.workers().filter((w) => !before.has(w));
-    expect(pool.length).toBeGreaterThan(0);
+    // Playwright hears of a new worker through the DevTools protocol, which can come after the page's first progress
+    // on a busy machine: wait for it.
+    const newWorkers = () => page.workers().filter((w) => !before.has(w));
+    await expect.poll(() => newWorkers().length).toBeGreaterThan(0);
+    const pool = newWorkers();
     const closed = new Set<unknown>();
     for (const w of pool) w.once('close', () => closed.add(w));
     await page.getByRole('button', { name: 'Cancel' }).click();
