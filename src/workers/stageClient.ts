@@ -31,16 +31,18 @@ function startStageWorker(): Worker {
 }
 
 /**
- * The page's side of the live stage (shared/linkage/liveStage.ts): its worker starts at the first play(), when it is
- * handed the attached canvas (a page that never plays never loads it). The canvas element shows the frames the worker draws; the page keeps
- * the newest one for its playhead, and the canvas's data-theta2 names the θ2 it shows. Marks each drawn frame 'fourbar:stage-frame' (page time, θ2) for bench:ui.
- * Null where a worker cannot draw; a worker that fails or says it cannot animate turns the stage off for good.
+ * The page's side of the live stage (shared/linkage/liveStage.ts). Its worker starts at the first play(), show() or
+ * warm(), when it is handed the attached canvas: a page that never plays or drags never loads it. The canvas element
+ * shows the frames the worker draws; the page keeps the newest one for its playhead, and the canvas's data-theta2
+ * names the θ2 it shows. Marks each drawn frame 'fourbar:stage-frame' (page time, θ2, the worker's cost) for
+ * bench:ui. Null where a worker cannot draw; a worker that fails or says it cannot animate turns the stage off for
+ * good (the page draws as before).
  */
 export function createLiveStage(): LiveStage | null {
   if (!canTransfer()) return null;
   let worker: Worker | null = null;
   let broken = false;
-  /** The page's canvas for the stage, handed to the worker at the first play(). */
+  /** The page's canvas for the stage, handed to the worker when it starts (or at once, once it has). */
   let element: HTMLCanvasElement | null = null;
   /** What the stage is doing: playing, showing a drag's frames, or nothing. */
   let mode: 'play' | 'show' | null = null;
@@ -92,7 +94,7 @@ export function createLiveStage(): LiveStage | null {
     canvas.dataset.stage = 'attached';
     post({ type: 'canvas', canvas: offscreen }, [offscreen]);
   };
-  /** Starts the worker and hands it the canvas: at the first play(), so a page that never plays never loads it. */
+  /** Starts the worker and hands it the canvas and what it draws from; false where it cannot. */
   const start = (): boolean => {
     if (worker) return true;
     if (broken || !element) return false;
