@@ -184,7 +184,14 @@ test.describe('the simulator', () => {
     await page.mouse.move(x(45), y);
     await page.mouse.down();
     for (let deg = 50; deg <= 90; deg += 5) await page.mouse.move(x(deg), y);
-    await expect(live).toBeVisible();
+    // The pointer keeps moving by half a pixel while this waits: 300 ms without input would end the drag.
+    let k = 0;
+    await expect
+      .poll(async () => {
+        await page.mouse.move(x(90) + (k++ % 2) / 2, y);
+        return live.isVisible();
+      })
+      .toBe(true);
     // The stage draws the value the field shows (the pointer is still down).
     await expect
       .poll(async () => Math.abs(Number(await live.getAttribute('data-theta2')) - Number(await field.inputValue())))

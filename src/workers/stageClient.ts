@@ -15,6 +15,13 @@ const SLOW_PAGE_DRAW_MS = 5;
 /** How many of the page's latest draws the median is taken over (a slow one, say the first, does not decide alone). */
 const DRAWS_KEPT = 5;
 
+/**
+ * Play's canvas shows from the worker's third frame of a run: a worker's first frames come slowly (its script
+ * compiling, its first scene, fonts; at 6x CPU a quarter second between the first two), and the page draws Play
+ * meanwhile. A drag's shows from its first (each of its frames is one input, and a drag can be a single move).
+ */
+const PLAY_SHOWS_AFTER = 3;
+
 /** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
 function canTransfer(): boolean {
   return (
@@ -47,6 +54,8 @@ export function createLiveStage(): LiveStage | null {
   /** What the stage is doing: playing, showing a drag's frames, or nothing. */
   let mode: 'play' | 'show' | null = null;
   let playId = 0;
+  /** Frames drawn in the current run (play or show). */
+  let runFrames = 0;
   let newest: PlayFrame | null = null;
   let shown = false;
   let lastState: { state: AppState; ghostShown: boolean } | null = null;
@@ -77,6 +86,7 @@ export function createLiveStage(): LiveStage | null {
     }
     if (m.id !== playId) return;
     newest = m.frame;
+    runFrames += 1;
     // The pose on screen, for tests and tools (the page's canvas's label names the committed pose meanwhile).
     if (element) element.dataset.theta2 = String(m.frame.theta2Deg);
     benchMark('fourbar:stage-frame', {
@@ -85,7 +95,7 @@ export function createLiveStage(): LiveStage | null {
       shown: m.shownEpochMs - performance.timeOrigin,
       drawMs: m.drawMs,
     });
-    setShown(true);
+    if (runFrames >= (mode === 'play' ? PLAY_SHOWS_AFTER : 1)) setShown(true);
   };
   /** Hands the worker the canvas element (once per element: a remounted canvas view is a new one). */
   const handOver = (canvas: HTMLCanvasElement) => {
@@ -144,6 +154,7 @@ export function createLiveStage(): LiveStage | null {
       mode = 'play';
       playId += 1;
       newest = null;
+      runFrames = 0;
       post({ type: 'play', id: playId, frame, atEpochMs: performance.timeOrigin + atMs, speedDegPerFrame, range });
     },
     warm() {
@@ -155,6 +166,7 @@ export function createLiveStage(): LiveStage | null {
         mode = 'show';
         playId += 1;
         newest = null;
+        runFrames = 0;
       }
       post({ type: 'show', id: playId, frame });
     },
@@ -163,6 +175,7 @@ export function createLiveStage(): LiveStage | null {
       mode = null;
       playId += 1;
       newest = null;
+      runFrames = 0;
       post({ type: 'stop' });
       setShown(false);
     },

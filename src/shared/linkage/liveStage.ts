@@ -39,7 +39,10 @@ export interface LiveStage {
   stop(): void;
   /** The newest frame the stage drew since the last play(), or null before its first. */
   latest(): PlayFrame | null;
-  /** Whether the stage's canvas shows: from its first frame after play() or show() to stop(). */
+  /**
+   * Whether the stage's canvas shows: from its third frame after play() (the page draws the first) or its first after
+   * show(), to stop().
+   */
   showing(): boolean;
   /** Adds a listener to changes of showing(); returns its removal. */
   subscribe(listener: () => void): () => void;
