@@ -33,6 +33,7 @@ test.describe('the offline single file', () => {
     expect(html).not.toMatch(/<script[^>]*\ssrc=/);
     expect(html).not.toMatch(/<link[^>]*rel="(stylesheet|modulepreload)"/);
     expect(html).not.toMatch(/solver\.worker[^"']*\.js/);
+    expect(html).not.toMatch(/stage\.worker[^"']*\.js/);
   });
 
   test('runs from file://, solves in its inline worker, takes a new r3 and exports the CSV', async ({ page }) => {
@@ -54,6 +55,21 @@ test.describe('the offline single file', () => {
     // The worker from the inline blob answered: no fall-back to the main thread.
     await expect(page.getByText(/main thread/)).toHaveCount(0);
     expect(requests.filter((u) => !/^(file|blob|data):/.test(u))).toEqual([]);
+    expect(errors).toEqual([]);
+  });
+
+  test('plays from file:// with Play drawn in its inline live stage worker', async ({ page }) => {
+    const errors: string[] = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`file://${SINGLE}`);
+    await waitReady(page);
+    await page.getByRole('button', { name: 'Play' }).click();
+    const live = page.locator('canvas.linkage-live');
+    await expect(live).toBeVisible();
+    const first = await live.getAttribute('data-theta2');
+    await expect.poll(() => live.getAttribute('data-theta2')).not.toBe(first);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(live).toBeHidden();
     expect(errors).toEqual([]);
   });
 
