@@ -1,5 +1,14 @@
 import { expect, test } from '@playwright/test';
-import { ORIGIN, artifact, chartPath, inkedPixels, shownTheta2InPage, waitReady, withoutLiveStage } from './helpers';
+import {
+  artifact,
+  chartPath,
+  inkedPixels,
+  ORIGIN,
+  shownTheta2InPage,
+  theta2Slider,
+  waitReady,
+  withoutLiveStage,
+} from './helpers';
 
 test.describe('the simulator', () => {
   test('renders the default linkage, its numbers and its plots', async ({ page }) => {
@@ -176,11 +185,7 @@ test.describe('the simulator', () => {
     await waitReady(page);
     const live = page.locator('canvas.linkage-live');
     const field = page.getByRole('textbox', { name: /^θ2/ });
-    const box = await page.getByRole('slider', { name: /^θ2/ }).boundingBox();
-    if (!box) throw new Error('θ2 slider has no box');
-    // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
-    const x = (deg: number) => box.x + 8 + ((box.width - 16) * deg) / 360;
-    const y = box.y + box.height / 2;
+    const { x, y } = await theta2Slider(page);
     await page.mouse.move(x(45), y);
     await page.mouse.down();
     for (let deg = 50; deg <= 90; deg += 5) await page.mouse.move(x(deg), y);

@@ -94,3 +94,11 @@ export async function withoutLiveStage(page: Page): Promise<void> {
     delete (globalThis as { OffscreenCanvas?: unknown }).OffscreenCanvas;
   });
 }
+
+/** The θ2 slider's thumb position for an angle (page pixels): a mouse drag along it sets θ2. */
+export async function theta2Slider(page: Page): Promise<{ x: (deg: number) => number; y: number }> {
+  const box = await page.getByRole('slider', { name: /^θ2/ }).boundingBox();
+  if (!box) throw new Error('θ2 slider has no box');
+  // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
+  return { x: (deg) => box.x + 8 + ((box.width - 16) * deg) / 360, y: box.y + box.height / 2 };
+}

@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import type { Locator, Page } from '@playwright/test';
-import { artifact, waitReady, withoutLiveStage } from './helpers';
+import { artifact, theta2Slider, waitReady, withoutLiveStage } from './helpers';
 
 /** A joint's position in page pixels, from the canvas's data-* attribute (CSS pixels inside the canvas). */
 async function joint(canvas: Locator, name: 'o2' | 'a'): Promise<{ x: number; y: number }> {
@@ -140,11 +140,7 @@ test.describe('undo and redo', () => {
       return (deg + 360) % 360;
     };
     const field = page.getByRole('textbox', { name: /^θ2/ });
-    const box = await page.getByRole('slider', { name: /^θ2/ }).boundingBox();
-    if (!box) throw new Error('θ2 slider has no box');
-    // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
-    const x = (deg: number) => box.x + 8 + ((box.width - 16) * deg) / 360;
-    const y = box.y + box.height / 2;
+    const { x, y } = await theta2Slider(page);
     await page.mouse.move(x(45), y);
     await page.mouse.down();
     // The field and the canvas show each value as the input event that brought it is handled: read at once, not

@@ -12,8 +12,8 @@ import type { ShownFrame } from '../../shared/linkage/shownFrame';
 import type { ForceLayer } from '../../shared/linkage/forceVectors';
 import type { FramePose } from '../../shared/linkage/FramePoseContext';
 import type { LiveStage } from '../../shared/linkage/liveStage';
-import { useFrameMotion } from './useFrameMotion';
-import { useLinkagePose } from './useLinkagePose';
+import { posedState } from './framePose';
+import { poseAsPoint } from '../../shared/linkage/localPose';
 import { useStageShowing } from './useStageShowing';
 
 /** Props of LinkageStage: the latest cycle and design facts, the canvas's callbacks and hint, and a scene report. */
@@ -43,13 +43,18 @@ export interface LinkageStageProps {
 function useStageFrame(stage: LiveStage | null | undefined, cycle: CycleResponse | null): FramePose {
   const framed = useFramePose();
   const { committed, ghostShown } = framed;
-  const own = useLinkagePose(committed, ghostShown);
-  const ownMotion = useFrameMotion(committed, own.local);
   const showing = useStageShowing(stage);
   useEffect(() => stage?.setScene(committed, cycle, ghostShown), [stage, committed, cycle, ghostShown]);
+  // Posed only while the stage shows, once per commit (otherwise the frame on screen is the committed state's).
+  const underStage = useMemo(() => {
+    if (!showing) return null;
+    const { local, motion } = posedState(committed, ghostShown);
+    const { method, tol } = committed.solver;
+    return { local, motion, marker: poseAsPoint(local, { method, tol }) };
+  }, [showing, committed, ghostShown]);
   return useMemo(
-    () => (showing ? { ...framed, state: committed, local: own.local, marker: own.marker, motion: ownMotion } : framed),
-    [showing, framed, committed, own, ownMotion],
+    () => (underStage ? { ...framed, state: committed, ...underStage } : framed),
+    [underStage, framed, committed],
   );
 }
 
