@@ -104,4 +104,36 @@ export default tseslint.config(
       ],
     },
   })),
+  {
+    // The simulator's scene pipeline: one pure builder that the page and the live stage's worker both run, so it
+    // knows no React and no DOM (its own rule name, so it adds to the feature's fence instead of replacing it).
+    files: ['src/features/simulator/scene/**/*.{ts,tsx}'],
+    rules: {
+      '@typescript-eslint/no-restricted-imports': [
+        'error',
+        {
+          patterns: [
+            {
+              group: ['react', 'react-dom', 'react/*', 'react-dom/*'],
+              message: 'The scene pipeline is pure: no React.',
+            },
+            {
+              regex: '(^|/)(use[A-Z]\\w*|[A-Z]\\w*)(\\.tsx?)?$',
+              caseSensitive: true,
+              message: 'The scene pipeline is pure: no hooks or components.',
+            },
+          ],
+        },
+      ],
+      'no-restricted-globals': [
+        'error',
+        'window',
+        'document',
+        'navigator',
+        'self',
+        'requestAnimationFrame',
+        'OffscreenCanvas',
+      ],
+    },
+  },
 );

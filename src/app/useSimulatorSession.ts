@@ -8,7 +8,7 @@ import { useJobClient } from '../shared/jobs/useJobClient';
 import { useCycleTable } from '../features/simulator/useCycleTable';
 import { createSolverClient } from '../workers/solverClient';
 import { createLiveStage } from '../workers/stageClient';
-import { computeCycle, computePoint } from '../workers/compute';
+import { computeCycle, computePoint } from '../features/simulator/solve/compute';
 import type { FirstAnswers } from '../features/simulator/useSolver';
 import { useAnimation } from '../features/simulator/useAnimation';
 import { useCanvasEdits } from '../features/simulator/useCanvasEdits';

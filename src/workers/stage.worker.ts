@@ -8,8 +8,9 @@ import { advanceTheta2, degreesForElapsed } from '../shared/state/animation';
 import type { Locale } from '../shared/state/appState';
 import type { PlayFrame } from '../shared/state/playhead';
 import type { CycleResponse } from '../shared/solution';
-import type { StageInputs } from './stageScene';
-import { createStageScene } from './stageScene';
+import { createForceLayer } from '../features/forces/forceLayer';
+import type { StageInputs } from '../features/simulator/scene/stageScene';
+import { createStageScene } from '../features/simulator/scene/stageScene';
 import type { StageReply, StageRequest } from './stageProtocol';
 
 declare const self: DedicatedWorkerGlobalScope;
@@ -37,7 +38,7 @@ let handle = 0;
 let background: FrameBackground | null = null;
 /** The languages whose tables have loaded here (English is bundled). */
 const loaded = new Set<Locale>(['en']);
-const buildScene = createStageScene();
+const buildScene = createStageScene(createForceLayer());
 const reply = (message: StageReply) => self.postMessage(message);
 const epochNow = (now: number) => performance.timeOrigin + now;
 

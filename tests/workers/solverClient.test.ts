@@ -6,7 +6,8 @@ import { SOLVE_BUDGET, simulatorJobs } from '../../src/features/simulator/jobs';
 import { LAB_STAGE_MS, labJobs } from '../../src/features/lab/jobs';
 import type { LabJobs } from '../../src/features/lab/jobs';
 import { createSolverClient, solverJobs } from '../../src/workers/solverClient';
-import { labHandlers, solverHandlers } from '../../src/workers/solverHandlers';
+import { labHandlers } from '../../src/features/lab/labHandlers';
+import { solverHandlers } from '../../src/workers/solverHandlers';
 import { FakeWorker } from '../shared/jobs/fakeWorker';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };

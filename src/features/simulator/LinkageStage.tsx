@@ -5,14 +5,12 @@ import { useFramePose } from '../../shared/linkage/FramePoseContext';
 import { LinkageCanvas } from './LinkageCanvas';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { DesignInfo } from './useDesignMetrics';
-import { useDesignScene } from './useDesignScene';
-import { useLinkageScene } from './useLinkageScene';
-import { useSceneVectors } from './useSceneVectors';
+import { createSceneBuilder } from './scene/sceneBuilder';
 import type { ShownFrame } from '../../shared/linkage/shownFrame';
 import type { ForceLayer } from '../../shared/linkage/forceVectors';
 import type { FramePose } from '../../shared/linkage/FramePoseContext';
 import type { LiveStage } from '../../shared/linkage/liveStage';
-import { posedState } from './framePose';
+import { posedState } from './scene/framePose';
 import { poseAsPoint } from '../../shared/linkage/localPose';
 import { useStageShowing } from './useStageShowing';
 
@@ -77,11 +75,12 @@ export function LinkageStage({
 }: LinkageStageProps) {
   const t = useMessages();
   const { state, local, marker, motion } = useStageFrame(stage, cycle);
-  const designScene = useDesignScene(state, local, design, t);
-  const vectors = useSceneVectors(state, motion, t);
-  const { scene: kinematic, description } = useLinkageScene(state, local, cycle, t, designScene, vectors);
-  const forces = useMemo(() => forceLayer?.(state, local) ?? null, [forceLayer, state, local]);
-  const scene = useMemo(() => (forces ? { ...kinematic, forces } : kinematic), [kinematic, forces]);
+  // The one scene pipeline (the live stage's worker builds its frames with the same builder).
+  const build = useMemo(() => createSceneBuilder(), []);
+  const { scene, description } = useMemo(
+    () => build({ state, local, motion, cycle, design, t, forceLayer }),
+    [build, state, local, motion, cycle, design, t, forceLayer],
+  );
   useLayoutEffect(() => onShown?.({ state, marker, motion, scene }), [state, marker, motion, scene, onShown]);
   return (
     <LinkageCanvas

@@ -1,9 +1,9 @@
 import { useMemo } from 'react';
 import type { Branch, Linkage } from '../../solver/types';
-import type { DesignInfo } from './designScene';
-import { designInfo } from './designScene';
+import type { DesignInfo } from './scene/designScene';
+import { designInfo } from './scene/designScene';
 
-export type { DesignInfo } from './designScene';
+export type { DesignInfo } from './scene/designScene';
 
 /**
  * designMetrics and inputRange on the main thread (closed form, microseconds), recomputed only when the

@@ -1,7 +1,7 @@
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
 import { CSV_HEADER, CSV_INPUT_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../../src/shared/csv';
-import { computeTable } from '../../../src/workers/compute';
+import { computeTable } from '../../../src/features/simulator/solve/compute';
 import { cycleTableOf } from '../../../src/features/export/exporters';
 import { referenceMotion } from '../../oracle/rates';
 

@@ -11,7 +11,7 @@ import { CSV_FORCE_HEADER, CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { AppState } from '../../../src/shared/state/appState';
 import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
-import { computeTable } from '../../../src/workers/compute';
+import { computeTable } from '../../../src/features/simulator/solve/compute';
 import { cycleTableOf } from '../../../src/features/export/exporters';
 import { forceColumnsFor } from '../../../src/features/forces/tableForces';
 import { referenceMotion } from '../../oracle/rates';

@@ -1,6 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { VIEW_SAMPLES_MAX, computeCycle, computePoint, computeTable } from '../../src/workers/compute';
-import { decodeStatuses } from '../../src/shared/pointStatusCodes';
+import {
+  VIEW_SAMPLES_MAX,
+  computeCycle,
+  computePoint,
+  computeTable,
+} from '../../../../src/features/simulator/solve/compute';
+import { decodeStatuses } from '../../../../src/shared/pointStatusCodes';
 
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
 const C = { distance: 2.5, angleRad: Math.PI / 6 };

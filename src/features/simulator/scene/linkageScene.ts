@@ -1,15 +1,15 @@
 // The angles module alone: importing the barrel would pull the whole solver into the main bundle.
-import { radToDeg, radToDeg360 } from '../../solver/angles';
-import type { Branch } from '../../solver/types';
-import type { SceneDesign } from '../../shared/linkage/designOverlay';
-import type { SceneVectors } from '../../shared/linkage/motionVectors';
-import type { BranchExtent, LinkageScene, ScenePose, SceneText } from '../../shared/linkage/scene';
-import type { Bounds } from '../../shared/canvas/view';
-import { sceneBounds } from '../../shared/linkage/scene';
-import type { AppState } from '../../shared/state/appState';
-import { formatDeg, formatNumber } from '../../shared/format';
-import type { Messages } from '../../shared/i18n/messages';
-import type { CycleResponse } from '../../shared/solution';
+import { radToDeg, radToDeg360 } from '../../../solver/angles';
+import type { Branch } from '../../../solver/types';
+import type { SceneDesign } from '../../../shared/linkage/designOverlay';
+import type { SceneVectors } from '../../../shared/linkage/motionVectors';
+import type { BranchExtent, LinkageScene, ScenePose, SceneText } from '../../../shared/linkage/scene';
+import type { Bounds } from '../../../shared/canvas/view';
+import { sceneBounds } from '../../../shared/linkage/scene';
+import type { AppState } from '../../../shared/state/appState';
+import { formatDeg, formatNumber } from '../../../shared/format';
+import type { Messages } from '../../../shared/i18n/messages';
+import type { CycleResponse } from '../../../shared/solution';
 
 /**
  * The cycle's bounds to fit, which stay put while the linkage moves: both branches when the ghost shows or the input

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import type { Linkage } from '../../src/solver';
-import { computeCycle } from '../../src/workers/compute';
-import type { CouplerSpec } from '../../src/shared/solution';
+import type { Linkage } from '../../../../src/solver';
+import { computeCycle } from '../../../../src/features/simulator/solve/compute';
+import type { CouplerSpec } from '../../../../src/shared/solution';
 
 /** The report's coupler point: 2.5 from A at 30 degrees from AB. */
 const C: CouplerSpec = { distance: 2.5, angleRad: Math.PI / 6 };

@@ -1,17 +1,17 @@
-import { degToRad, radToDeg } from '../../solver/angles';
+import { degToRad, radToDeg } from '../../../solver/angles';
 // The module itself, not the solver's barrel (which would pull the sweep and NR into the main bundle).
-import { instantCenters } from '../../solver/instantCenters';
-import type { SceneDesign } from '../../shared/linkage/designOverlay';
-import type { AppState } from '../../shared/state/appState';
-import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
-import { formatDeg, formatNumber } from '../../shared/format';
-import type { Messages } from '../../shared/i18n/messages';
-import type { LocalPose } from '../../shared/linkage/localPose';
+import { instantCenters } from '../../../solver/instantCenters';
+import type { SceneDesign } from '../../../shared/linkage/designOverlay';
+import type { AppState } from '../../../shared/state/appState';
+import type { LengthUnit } from '../../../shared/state/slices/forcesSlice';
+import { formatDeg, formatNumber } from '../../../shared/format';
+import type { Messages } from '../../../shared/i18n/messages';
+import type { LocalPose } from '../../../shared/linkage/localPose';
 // The solver's modules themselves, not its barrel: the barrel would pull the sweep and NR into the main bundle.
-import { inputRange } from '../../solver/classify';
-import type { DesignMetrics } from '../../solver/metrics';
-import { designMetrics } from '../../solver/metrics';
-import type { Branch, InputRange, Linkage } from '../../solver/types';
+import { inputRange } from '../../../solver/classify';
+import type { DesignMetrics } from '../../../solver/metrics';
+import { designMetrics } from '../../../solver/metrics';
+import type { Branch, InputRange, Linkage } from '../../../solver/types';
 
 /** The design metrics of the linkage on its branch and the input's reachable range (radians). */
 export interface DesignInfo {
@@ -45,7 +45,7 @@ function centresOf(local: LocalPose | null) {
  * The canvas's design overlay: the mu band (always, for the mu label's colour), the dead centres and swing when that
  * toggle is on and the input is a crank driving a rocker, and the instant centres of `centres` (the frame's pose
  * while that toggle is on, else null; an off-screen one is labelled with its coordinates in the length unit). Pure:
- * the live stage's worker builds it for every frame of Play, useDesignScene for the page's canvas.
+ * the scene builder (sceneBuilder.ts) memoizes it for the page's canvas and the live stage's worker.
  */
 export function designScene(
   display: DesignSceneDisplay,

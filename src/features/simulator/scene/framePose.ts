@@ -1,9 +1,9 @@
-import type { AppState } from '../../shared/state/appState';
-import { effectiveInputMotion } from '../../shared/state/inputMotion';
-import type { FrameMotion } from '../../shared/linkage/frameMotion';
-import { frameMotion } from '../../shared/linkage/frameMotion';
-import type { LocalPose } from '../../shared/linkage/localPose';
-import { localPose } from '../../shared/linkage/localPose';
+import type { AppState } from '../../../shared/state/appState';
+import { effectiveInputMotion } from '../../../shared/state/inputMotion';
+import type { FrameMotion } from '../../../shared/linkage/frameMotion';
+import { frameMotion } from '../../../shared/linkage/frameMotion';
+import type { LocalPose } from '../../../shared/linkage/localPose';
+import { localPose } from '../../../shared/linkage/localPose';
 
 /**
  * A state's pose (closed form; the ghost when it is shown and on) and its velocities and accelerations for the input

@@ -1,10 +1,10 @@
-import type { ArrowScale, SceneVectors, VectorText, WorldVector } from '../../shared/linkage/motionVectors';
-import { arrowScale } from '../../shared/linkage/motionVectors';
-import type { AppState } from '../../shared/state/appState';
-import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
-import { formatNumber } from '../../shared/format';
-import type { Messages } from '../../shared/i18n/messages';
-import type { FrameMotion, PointRates } from '../../shared/linkage/frameMotion';
+import type { ArrowScale, SceneVectors, VectorText, WorldVector } from '../../../shared/linkage/motionVectors';
+import { arrowScale } from '../../../shared/linkage/motionVectors';
+import type { AppState } from '../../../shared/state/appState';
+import type { LengthUnit } from '../../../shared/state/slices/forcesSlice';
+import { formatNumber } from '../../../shared/format';
+import type { Messages } from '../../../shared/i18n/messages';
+import type { FrameMotion, PointRates } from '../../../shared/linkage/frameMotion';
 
 function velocities(m: FrameMotion): Record<'A' | 'B' | 'P', WorldVector> {
   const v = (p: PointRates) => ({ x: p.vx, y: p.vy });
@@ -41,8 +41,8 @@ export function vectorScales(r2: number, w: number, a: number): VectorScales {
 }
 
 /**
- * The canvas's motion vectors for a frame, or null when both toggles are off. Pure: the live stage's worker builds
- * them for every frame of Play, useSceneVectors for the page's canvas.
+ * The canvas's motion vectors for a frame, or null when both toggles are off. Pure: the scene builder builds
+ * them for every frame, the page's canvas and the live stage's worker alike (sceneBuilder.ts).
  */
 export function sceneVectors(
   display: Pick<AppState['display'], 'showVelocity' | 'showAcceleration'>,

@@ -1,15 +1,16 @@
 import { describe, expect, it } from 'vitest';
-import { createStageScene } from '../../src/workers/stageScene';
-import type { StageInputs } from '../../src/workers/stageScene';
-import { computeCycle } from '../../src/workers/compute';
-import { getMessages } from '../../src/shared/i18n/i18n';
-import { sameBackground } from '../../src/shared/linkage/drawLinkage';
-import type { AppState } from '../../src/shared/state/appState';
-import { DEFAULT_STATE } from '../../src/shared/state/appState';
-import type { PlayFrame } from '../../src/shared/state/playhead';
-import type { Branch, Linkage } from '../../src/solver/types';
-import { angleDiff, referenceSolve } from '../oracle/reference';
-import { angleTolerance } from '../oracle/tolerance';
+import { createForceLayer } from '../../../../src/features/forces/forceLayer';
+import { createStageScene } from '../../../../src/features/simulator/scene/stageScene';
+import type { StageInputs } from '../../../../src/features/simulator/scene/stageScene';
+import { computeCycle } from '../../../../src/features/simulator/solve/compute';
+import { getMessages } from '../../../../src/shared/i18n/i18n';
+import { sameBackground } from '../../../../src/shared/linkage/drawLinkage';
+import type { AppState } from '../../../../src/shared/state/appState';
+import { DEFAULT_STATE } from '../../../../src/shared/state/appState';
+import type { PlayFrame } from '../../../../src/shared/state/playhead';
+import type { Branch, Linkage } from '../../../../src/solver/types';
+import { angleDiff, referenceSolve } from '../../../oracle/reference';
+import { angleTolerance } from '../../../oracle/tolerance';
 
 const t = getMessages('en');
 const REPORT: Linkage = { r1: 6, r2: 2, r3: 5, r4: 5 };
@@ -54,7 +55,7 @@ describe('the live stage’s scene for a frame of Play', () => {
   it('poses the linkage as the oracle does, on the frame’s branch, with the other branch as the ghost', () => {
     let checked = 0;
     for (const l of [REPORT, TRIPLE_ROCKER]) {
-      const build = createStageScene();
+      const build = createStageScene(createForceLayer());
       const inputs = inputsFor(stateWith(l));
       for (const branch of ['open', 'crossed'] as const) {
         for (let deg = 5; deg < 360; deg += 20) {
@@ -86,14 +87,18 @@ describe('the live stage’s scene for a frame of Play', () => {
   });
 
   it('draws only the overlays the state turns on: ghost, vectors, dead and instant centres, pin forces', () => {
-    const plain = createStageScene()(inputsFor(stateWith(REPORT, { showGhost: false })), frame(60), t);
+    const plain = createStageScene(createForceLayer())(
+      inputsFor(stateWith(REPORT, { showGhost: false })),
+      frame(60),
+      t,
+    );
     expect(plain.ghost).toBeNull();
     expect(plain.vectors).toBeNull();
     expect(plain.forces).toBeUndefined();
     expect(plain.design?.deadCentres).toBeNull();
     expect(plain.design?.instantCentres).toBeNull();
     // Not shown because the canvas does not show it (the lab page), though the state's ghost is on.
-    expect(createStageScene()(inputsFor(stateWith(REPORT), false), frame(60), t).ghost).toBeNull();
+    expect(createStageScene(createForceLayer())(inputsFor(stateWith(REPORT), false), frame(60), t).ghost).toBeNull();
 
     const omega = 3;
     const all = stateWith(
@@ -102,7 +107,7 @@ describe('the live stage’s scene for a frame of Play', () => {
       { enabled: true, showVectors: true },
       { omega2RadPerS: omega, alpha2RadPerS2: 0 },
     );
-    const scene = createStageScene()(inputsFor(all), frame(60), t);
+    const scene = createStageScene(createForceLayer())(inputsFor(all), frame(60), t);
     // The crank pin's speed is r2 ω2, at right angles to the crank.
     const vA = scene.vectors?.velocity?.A;
     if (!vA) throw new Error('no velocity at A');
@@ -127,7 +132,7 @@ describe('the live stage’s scene for a frame of Play', () => {
   });
 
   it('keeps the background the same from frame to frame (its bitmap holds) until the inputs change', () => {
-    const build = createStageScene();
+    const build = createStageScene(createForceLayer());
     const inputs = inputsFor(stateWith(REPORT));
     const a = build(inputs, frame(10), t);
     const b = build(inputs, frame(200), t);
@@ -139,7 +144,7 @@ describe('the live stage’s scene for a frame of Play', () => {
 
   it('fits the whole cycle: every joint of every frame lies within the scene’s bounds', () => {
     for (const l of [REPORT, TRIPLE_ROCKER]) {
-      const build = createStageScene();
+      const build = createStageScene(createForceLayer());
       const inputs = inputsFor(stateWith(l));
       for (let deg = 0; deg < 360; deg += 3) {
         for (const branch of ['open', 'crossed'] as const) {

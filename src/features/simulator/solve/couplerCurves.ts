@@ -1,7 +1,7 @@
-import { couplerPoint, sweep } from '../solver';
-import { PI, TWO_PI } from '../solver/angles';
-import type { Branch, Classification, Linkage } from '../solver/types';
-import type { CouplerCurve, CouplerSpec } from '../shared/solution';
+import { couplerPoint, sweep } from '../../../solver';
+import { PI, TWO_PI } from '../../../solver/angles';
+import type { Branch, Classification, Linkage } from '../../../solver/types';
+import type { CouplerCurve, CouplerSpec } from '../../../shared/solution';
 
 /** Inset from an input limit when sampling a rocking circuit (radians): the exact limit may miss by an ulp. */
 const LIMIT_INSET_RAD = 1e-9;

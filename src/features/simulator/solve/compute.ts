@@ -13,12 +13,12 @@ import {
   transmissionAngle,
   validateLinkage,
   velocityRatios,
-} from '../solver';
-import type { InputMotion } from '../solver';
-import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../solver/types';
+} from '../../../solver';
+import type { InputMotion } from '../../../solver';
+import type { Angles, Branch, Linkage, NewtonOptions, NewtonResult } from '../../../solver/types';
 import { couplerCurves } from './couplerCurves';
-import { sweepOptions } from '../shared/charts/plotSeries';
-import { encodeStatuses } from '../shared/pointStatusCodes';
+import { sweepOptions } from '../../../shared/charts/plotSeries';
+import { encodeStatuses } from '../../../shared/pointStatusCodes';
 import type {
   BranchCycle,
   CouplerSpec,
@@ -30,8 +30,8 @@ import type {
   PoseAngles,
   TableParams,
   TableResponse,
-} from '../shared/solution';
-import type { CycleParams, PointParams } from '../features/simulator/jobs';
+} from '../../../shared/solution';
+import type { CycleParams, PointParams } from '../jobs';
 
 /** Most intervals of the cycle's view grid (half a degree): enough for bounds and a smooth coupler curve on screen. */
 export const VIEW_SAMPLES_MAX = 720;

@@ -1,0 +1,24 @@
+import type { JobHandlers } from '../../shared/jobs/jobTable';
+import type { SynthesisJobs } from './jobs';
+
+/** The synthesis page's handlers: a part of a path synthesis's global stage, and the merge of the parts. */
+export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
+  async pathPart(params, { signal, progress }) {
+    // The synthesis numerics load only now: they stay off the worker's first load.
+    const { pathSynthesisPart } = await import('../../synthesis');
+    const { task, seed, part, parts, rounds, budgetMs } = params;
+    return pathSynthesisPart(task, {
+      seed,
+      part,
+      parts,
+      rounds,
+      budgetMs,
+      signal,
+      onProgress: ({ fraction, best }) => progress(fraction, String(best)),
+    });
+  },
+  async pathMerge(params) {
+    const { mergePathCandidates } = await import('../../synthesis');
+    return mergePathCandidates(params.task, params.parts);
+  },
+};
