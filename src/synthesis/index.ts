@@ -33,8 +33,8 @@ export type {
   FunctionGeneratorResult,
   FunctionTask,
 } from './functionGeneration';
-export { motionDesign, threePositionSynthesis } from './motionGeneration';
-export type { MotionDesign, ThreePositionGiven } from './motionGeneration';
+export { motionDesign, threePositionConstruction, threePositionSynthesis } from './motionGeneration';
+export type { MotionDesign, PivotConstruction, PivotName, ThreePositionGiven } from './motionGeneration';
 export { screenPoses } from './defects';
 export type { MotionDefect, PinPair } from './defects';
 export { twoPositionRocker } from './twoPosition';

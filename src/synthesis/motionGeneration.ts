@@ -24,6 +24,60 @@ export interface MotionDesign {
   defects: MotionDefect[];
 }
 
+/** The pivot a construction finds, named as the design names it. */
+export type PivotName = 'A' | 'B' | 'O2' | 'O4';
+
+/**
+ * One pivot's three-position construction: the three positions of a given pivot (a moving pivot's in the plane; a
+ * fixed pivot's seen from the coupler, in the coupler frame) and the centre of the circle through them, which is the
+ * pivot found (its fixed pivot; by inversion, its moving pivot in the coupler frame), or null when no circle passes
+ * through them (collinear, or two coincide).
+ */
+export interface PivotConstruction {
+  /** The pivot found (O2, O4 from A, B; A, B from O2, O4). */
+  found: PivotName;
+  /** The given pivot whose positions these are. */
+  given: PivotName;
+  points: [Point, Point, Point];
+  centre: Point | null;
+}
+
+/**
+ * The construction threePositionSynthesis builds its design from, for each of the two given pivots: their three
+ * positions and the circle's centre (null where none passes; threePositionSynthesis throws there). Checks its input
+ * as threePositionSynthesis does.
+ */
+export function threePositionConstruction(
+  poses: readonly [Pose, Pose, Pose],
+  given: ThreePositionGiven,
+): [PivotConstruction, PivotConstruction] {
+  checkArray('poses', poses, 3, 3);
+  poses.forEach((p, i) => checkPose(`poses[${i}]`, p));
+  if (typeof given === 'object' && given !== null && 'moving' in given) {
+    checkArray('given.moving', given.moving, 2, 2);
+    given.moving.forEach((q, i) => checkPoint(`given.moving[${i}]`, q));
+    const [a, b] = given.moving;
+    return [construct('A', 'O2', poses, (p) => toPlane(p, a)), construct('B', 'O4', poses, (p) => toPlane(p, b))];
+  }
+  if (typeof given === 'object' && given !== null && 'fixed' in given) {
+    checkArray('given.fixed', given.fixed, 2, 2);
+    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
+    const [o2, o4] = given.fixed;
+    return [construct('O2', 'A', poses, (p) => toFrame(p, o2)), construct('O4', 'B', poses, (p) => toFrame(p, o4))];
+  }
+  throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
+}
+
+function construct(
+  given: PivotName,
+  found: PivotName,
+  poses: readonly [Pose, Pose, Pose],
+  position: (p: Pose) => Point,
+): PivotConstruction {
+  const points = poses.map(position) as [Point, Point, Point];
+  return { given, found, points, centre: circumcentre(points[0], points[1], points[2]) };
+}
+
 /**
  * The four-bar whose coupler frame passes through three poses, from the moving pivots (coupler frame) or the fixed
  * pivots (plane); P is the frame's origin. θ2[i] puts the coupler at pose i; defects are screened as screenPoses
@@ -31,60 +85,18 @@ export interface MotionDesign {
  * through them: the message names the pivot), and when two pivots of the result coincide.
  */
 export function threePositionSynthesis(poses: readonly [Pose, Pose, Pose], given: ThreePositionGiven): MotionDesign {
-  checkArray('poses', poses, 3, 3);
-  poses.forEach((p, i) => checkPose(`poses[${i}]`, p));
-  if (typeof given !== 'object' || given === null) {
-    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
-  }
-  let moving: [Point, Point];
-  let fixed: [Point, Point];
-  if ('moving' in given) {
-    checkArray('given.moving', given.moving, 2, 2);
-    given.moving.forEach((q, i) => checkPoint(`given.moving[${i}]`, q));
-    moving = given.moving;
-    fixed = [
-      centreOf(
-        poses.map((p) => toPlane(p, moving[0])),
-        'moving pivot A',
-        'the plane',
-      ),
-      centreOf(
-        poses.map((p) => toPlane(p, moving[1])),
-        'moving pivot B',
-        'the plane',
-      ),
-    ];
-  } else if ('fixed' in given) {
-    checkArray('given.fixed', given.fixed, 2, 2);
-    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
-    fixed = given.fixed;
-    moving = [
-      centreOf(
-        poses.map((p) => toFrame(p, fixed[0])),
-        'fixed pivot O2',
-        'the coupler frame',
-      ),
-      centreOf(
-        poses.map((p) => toFrame(p, fixed[1])),
-        'fixed pivot O4',
-        'the coupler frame',
-      ),
-    ];
-  } else {
-    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
-  }
-  return motionDesign(poses, fixed, moving);
+  const [c0, c1] = threePositionConstruction(poses, given);
+  const [p0, p1] = [centreOf(c0), centreOf(c1)];
+  return 'moving' in given ? motionDesign(poses, [p0, p1], given.moving) : motionDesign(poses, given.fixed, [p0, p1]);
 }
 
-/** Centre of the circle through three positions of a pivot; throws naming the pivot when there is none. */
-function centreOf(points: Point[], pivot: string, where: string): Point {
-  const c = circumcentre(points[0], points[1], points[2]);
-  if (!c) {
-    throw new Error(
-      `no circle passes through the three positions of ${pivot} in ${where}: they are collinear or two coincide, got ${show(points)}`,
-    );
-  }
-  return c;
+/** The centre a construction found; throws naming the pivot when there is none. */
+function centreOf(c: PivotConstruction): Point {
+  if (c.centre) return c.centre;
+  const moving = c.given === 'A' || c.given === 'B';
+  throw new Error(
+    `no circle passes through the three positions of ${moving ? 'moving' : 'fixed'} pivot ${c.given} in ${moving ? 'the plane' : 'the coupler frame'}: they are collinear or two coincide, got ${show(c.points)}`,
+  );
 }
 
 /**

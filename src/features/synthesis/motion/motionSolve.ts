@@ -9,13 +9,20 @@ import {
   burmesterCurves,
   burmesterFourBars,
   burmesterPoints,
-  motionDesign,
-  toFrame,
+  threePositionConstruction,
+  threePositionSynthesis,
   toPlane,
   twoPositionRocker,
 } from '../../../synthesis';
-import type { BurmesterPair, MotionDefect, PlacedFourBar, Pose, TwoPositionRocker } from '../../../synthesis';
-import type { PivotChoice, PoseDeg, SynMotionState } from '../../../shared/state/slices/synMotionSlice';
+import type {
+  BurmesterPair,
+  MotionDefect,
+  PlacedFourBar,
+  Pose,
+  ThreePositionGiven,
+  TwoPositionRocker,
+} from '../../../synthesis';
+import type { PoseDeg, SynMotionState } from '../../../shared/state/slices/synMotionSlice';
 
 /** A design the mode offers: the placed four-bar, θ2 at each pose (radians), its defects and its type. */
 export interface MotionCandidate {
@@ -100,67 +107,35 @@ const candidate = (design: PlacedFourBar, theta2: number[], defects: MotionDefec
   type: classify(design.links).type,
 });
 
-/** Whether three points have a circle through them (not collinear, no two coinciding), to the solver's own test. */
-function circleThrough(a: Point, b: Point, c: Point): boolean {
-  const bx = b.x - a.x;
-  const by = b.y - a.y;
-  const cx = c.x - a.x;
-  const cy = c.y - a.y;
-  // As circumcentre in src/synthesis/poseFrame.ts: twice the signed area against the longest side squared.
-  const d = 2 * (bx * cy - by * cx);
-  return Math.abs(d) > 1e-12 * Math.max(bx * bx + by * by, cx * cx + cy * cy, (bx - cx) ** 2 + (by - cy) ** 2);
-}
-
-/** The circle through three points (assumed to exist), computed relative to the first. */
-function centreOf([a, b, c]: [Point, Point, Point]): Point {
-  const bx = b.x - a.x;
-  const by = b.y - a.y;
-  const cx = c.x - a.x;
-  const cy = c.y - a.y;
-  const d = 2 * (bx * cy - by * cx);
-  const b2 = bx * bx + by * by;
-  const c2 = cx * cx + cy * cy;
-  return { x: a.x + (cy * b2 - by * c2) / d, y: a.y + (bx * c2 - cx * b2) / d };
-}
-
 /**
- * The pivots a three-pose construction draws, in the plane at pose 1. Moving pivots: each one's three positions
- * in the plane, whose circle's centre is its fixed pivot. Fixed pivots (kinematic inversion): each one's three
- * positions seen from the coupler, carried to the plane by pose 1, whose circle's centre is its moving pivot at pose 1.
+ * The pivots a three-pose construction draws, in the plane at pose 1 (threePositionConstruction, the synthesis
+ * module's): for moving pivots each one's three positions in the plane, whose circle's centre is its fixed pivot; for
+ * fixed pivots (kinematic inversion) each one's three positions seen from the coupler, carried to the plane by pose 1,
+ * whose circle's centre is its moving pivot at pose 1. Stops at the first pivot with no circle, named in the problem.
  */
 export function threePoseConstruction(
-  poses: readonly Pose[],
-  choice: PivotChoice,
-  pivots: readonly [Point, Point],
+  poses: readonly [Pose, Pose, Pose],
+  given: ThreePositionGiven,
 ): { construction: PivotConstruction[]; problem: MotionProblem | null } {
-  const names = choice === 'moving' ? (['A', 'B'] as const) : (['O2', 'O4'] as const);
   const construction: PivotConstruction[] = [];
-  for (let k = 0; k < 2; k++) {
-    const q = pivots[k];
-    const points = poses.map((p) => (choice === 'moving' ? toPlane(p, q) : toPlane(poses[0], toFrame(p, q)))) as [
-      Point,
-      Point,
-      Point,
-    ];
-    if (!circleThrough(...points)) return { construction, problem: { code: 'collinear', pivot: names[k] } };
-    construction.push({ points, centre: centreOf(points) });
+  // The fixed pivots' construction is in the coupler frame: drawn in the plane at pose 1.
+  const shown = (q: Point) => ('moving' in given ? q : toPlane(poses[0], q));
+  for (const c of threePositionConstruction(poses, given)) {
+    if (!c.centre) return { construction, problem: { code: 'collinear', pivot: c.given } };
+    construction.push({ points: c.points.map(shown) as [Point, Point, Point], centre: shown(c.centre) });
   }
   return { construction, problem: null };
 }
 
-/** Three poses: the construction and the four-bar (threePositionSynthesis's result, built from the construction). */
+/** Three poses: the construction and the four-bar (threePositionSynthesis's, the synthesis module's own). */
 function threePoses(poses: Pose[], s: SynMotionState): ThreePoseOutcome {
-  const { construction, problem } = threePoseConstruction(poses, s.pivotChoice, s.pivots);
+  const three: [Pose, Pose, Pose] = [poses[0], poses[1], poses[2]];
+  const pivots: [Point, Point] = [s.pivots[0], s.pivots[1]];
+  const given: ThreePositionGiven = s.pivotChoice === 'moving' ? { moving: pivots } : { fixed: pivots };
+  const { construction, problem } = threePoseConstruction(three, given);
   if (problem) return { count: 3, construction, chosen: null, problem };
-  const [c0, c1] = construction;
-  // Moving: the centres are O2, O4. Fixed: the centres are A, B at pose 1, taken into the coupler frame.
-  const fixed: [Point, Point] = s.pivotChoice === 'moving' ? [c0.centre, c1.centre] : [s.pivots[0], s.pivots[1]];
-  const moving: [Point, Point] =
-    s.pivotChoice === 'moving'
-      ? [s.pivots[0], s.pivots[1]]
-      : [toFrame(poses[0], c0.centre), toFrame(poses[0], c1.centre)];
   try {
-    const d = motionDesign(poses, fixed, moving);
+    const d = threePositionSynthesis(three, given);
     return { count: 3, construction, chosen: candidate(d.design, d.theta2, d.defects), problem: null };
   } catch {
     return { count: 3, construction, chosen: null, problem: { code: 'coincident' } };

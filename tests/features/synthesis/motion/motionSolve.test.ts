@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { SynMotionState } from '../../../../src/shared/state/slices/synMotionSlice';
 import { DEFAULT_SYN_MOTION } from '../../../../src/shared/state/slices/synMotionSlice';
 import { nearestDyad, rotationPole, solveMotion, toPose } from '../../../../src/features/synthesis/motion/motionSolve';
-import { placedJoints } from '../../../../src/synthesis';
+import { placedJoints, threePositionSynthesis } from '../../../../src/synthesis';
 import { KNOWN, inPlane, knownPose } from './knownLinkage';
 
 const deg = (d: number) => (d * Math.PI) / 180;
@@ -42,6 +42,25 @@ describe('solveMotion with three poses', () => {
       const j = placedJoints(o.chosen!.design, t)!;
       expect(dist(j.P, poses[i])).toBeLessThan(TIGHT);
     });
+  });
+
+  it('shows the synthesis module’s own design (threePositionSynthesis), for either choice of pivots', () => {
+    const three = [toPose(poses[0]), toPose(poses[1]), toPose(poses[2])] as const;
+    for (const [pivotChoice, pivots] of [
+      ['moving', [KNOWN.a, KNOWN.b]],
+      ['fixed', [KNOWN.O2, KNOWN.O4]],
+    ] as const) {
+      const o = solveMotion(motion({ poses, pivotChoice, pivots: [pivots[0], pivots[1]] }));
+      if (o.count !== 3 || !o.chosen) throw new Error(`no design from the ${pivotChoice} pivots`);
+      const given = pivotChoice === 'moving' ? { moving: [pivots[0], pivots[1]] } : { fixed: [pivots[0], pivots[1]] };
+      const d = threePositionSynthesis(
+        [three[0], three[1], three[2]],
+        given as Parameters<typeof threePositionSynthesis>[1],
+      );
+      expect(o.chosen.design).toEqual(d.design);
+      expect(o.chosen.theta2).toEqual(d.theta2);
+      expect(o.chosen.defects).toEqual(d.defects);
+    }
   });
 
   it('says the input cannot turn fully when the rocker’s dyad drives (the Grashof check)', () => {
