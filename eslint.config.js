@@ -1,14 +1,26 @@
+import { readdirSync } from 'node:fs';
 import reactHooks from 'eslint-plugin-react-hooks';
 import tseslint from 'typescript-eslint';
 
-/** Every feature folder under src/features: each may import only itself, src/shared and the numerics. */
-const FEATURES = ['simulator', 'lab', 'export', 'share', 'synthesis', 'forces', 'designs'];
+/**
+ * Every feature folder under src/features, read from the disk so a new feature is fenced the day its folder
+ * exists: each may import only itself, src/shared and the numerics.
+ */
+const FEATURES = readdirSync(new URL('./src/features', import.meta.url), { withFileTypes: true })
+  .filter((e) => e.isDirectory())
+  .map((e) => e.name);
+/** The numerics folders under src: pure, testable in Node, importing nothing of the app. */
+const NUMERICS = ['solver', 'synthesis', 'study'];
 /** A relative import that reaches the app's layers (from a numerics folder). */
 const APP_LAYERS = '^(\\.\\./)+(app|features|shared|workers)(/|$)';
 /** A relative import from src/shared that reaches above it. */
 const ABOVE_SHARED = '^(\\.\\./)+(app|features|workers)(/|$)';
 
-/** Lint: the solver's import boundary (STYLE.md principle 1), type-only imports, hooks rules. */
+/**
+ * Lint: the layers' import fences (app → workers → features → shared → numerics, docs/ARCHITECTURE.md "The house":
+ * the numerics import nothing of the app, shared/ no feature, a feature no other feature), units in one module,
+ * type-only imports, the hooks rules.
+ */
 export default tseslint.config(
   {
     ignores: [
@@ -58,7 +70,7 @@ export default tseslint.config(
   },
   {
     // Numerics (the solver, synthesis, the lab's study): pure, testable in Node, importing nothing of the app.
-    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/study/**/*.ts'],
+    files: NUMERICS.map((folder) => `src/${folder}/**/*.ts`),
     rules: {
       'no-restricted-imports': [
         'error',

@@ -1,5 +1,6 @@
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import { dirname, join, normalize, relative } from 'node:path';
+import { ESLint } from 'eslint';
 import { describe, expect, it } from 'vitest';
 
 // docs/ARCHITECTURE.md's table says which folders each folder may import. This reads the table and checks every
@@ -75,5 +76,29 @@ describe('docs/ARCHITECTURE.md', () => {
       { folder: 'src/a/d', allowed: [] },
     ]);
     expect(rowOf(tableRows(md), 'src/a/d/e.ts')?.folder).toBe('src/a/d');
+  });
+});
+
+describe('eslint.config.js', () => {
+  const features = readdirSync(join(ROOT, 'src/features'), { withFileTypes: true })
+    .filter((e) => e.isDirectory())
+    .map((e) => e.name);
+
+  it('fences every folder under src/features: an import of another feature is an error', async () => {
+    const eslint = new ESLint({ cwd: ROOT });
+    for (const feature of features) {
+      const other = features.find((f) => f !== feature)!;
+      const text = `import { x } from '../${other}/x';\nexport const y = x;\n`;
+      const [result] = await eslint.lintText(text, { filePath: join(ROOT, `src/features/${feature}/probe.ts`) });
+      const rules = result.messages.map((m) => m.ruleId);
+      expect(rules, `features/${feature} importing features/${other}`).toContain('no-restricted-imports');
+    }
+  }, 30_000);
+
+  it('lets a feature import shared kits and the numerics', async () => {
+    const eslint = new ESLint({ cwd: ROOT });
+    const text = "import { x } from '../../shared/x';\nimport { z } from '../../solver/z';\nexport const y = [x, z];\n";
+    const [result] = await eslint.lintText(text, { filePath: join(ROOT, 'src/features/report/probe.ts') });
+    expect(result.messages.map((m) => m.ruleId)).not.toContain('no-restricted-imports');
   });
 });
