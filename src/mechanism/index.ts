@@ -15,5 +15,23 @@ export type {
 } from './types';
 export { GROUND, mobility, validateSpec } from './validate';
 export { MAX_MOVE, MECHANISM_STATUSES, SINGULAR_PIVOT, sweepMechanism } from './sweep';
-export { MECHANISM_TEMPLATES, fourBarSpec, invertedSliderCrankSpec, sliderCrankSpec } from './templates';
+export {
+  MECHANISM_TEMPLATES,
+  chebyshevSpec,
+  fourBarSpec,
+  hoekensSpec,
+  invertedSliderCrankSpec,
+  jansenSpec,
+  klannSpec,
+  peaucellierSpec,
+  pistonDrivenSpec,
+  scotchYokeSpec,
+  sliderCrankSpec,
+  stephensonIIISpec,
+  stephensonIISpec,
+  stephensonISpec,
+  wattIISpec,
+  wattISpec,
+  whitworthSpec,
+} from './templates';
 export type { MechanismTemplate } from './templates';
