@@ -10,7 +10,7 @@ const FEATURES = readdirSync(new URL('./src/features', import.meta.url), { withF
   .filter((e) => e.isDirectory())
   .map((e) => e.name);
 /** The numerics folders under src: pure, testable in Node, importing nothing of the app. */
-const NUMERICS = ['solver', 'synthesis', 'study'];
+const NUMERICS = ['solver', 'synthesis', 'study', 'mechanism', 'spatial'];
 /** A relative import that reaches the app's layers (from a numerics folder). */
 const APP_LAYERS = '^(\\.\\./)+(app|features|shared|workers)(/|$)';
 /** A relative import from src/shared that reaches above it. */
