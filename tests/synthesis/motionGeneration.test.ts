@@ -178,8 +178,9 @@ describe('twoPositionRocker', () => {
           // designMetrics is exact to rounding; the construction loses a few digits in the circle intersections.
           expect(Math.abs(m.output!.swing - Math.abs(swing))).toBeLessThan(1e-12);
           expect(Math.abs(m.timeRatio! - timeRatio)).toBeLessThan(1e-12);
-          expect(r.swing).toBe(m.output!.swing);
-          expect(r.timeRatio).toBe(m.timeRatio);
+          // Reported from the design in the rocker's frame (rocker 1): the same to rounding.
+          expect(r.swing).toBeCloseTo(m.output!.swing, 13);
+          expect(r.timeRatio).toBeCloseTo(m.timeRatio!, 13);
           // The dead centres put the rocker pin on the two given positions.
           const want = [job.startAngle, job.startAngle + swing].map((a) => ({
             x: job.O4.x + job.rocker * Math.cos(a),
