@@ -36,52 +36,99 @@ export function threePositionSynthesis(poses: readonly [Pose, Pose, Pose], given
   if (typeof given !== 'object' || given === null) {
     throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
   }
-  let moving: [Point, Point];
-  let fixed: [Point, Point];
+  if ('moving' in given && 'fixed' in given) {
+    throw new Error(`given must hold either moving or fixed pivots, not both, got ${show(given)}`);
+  }
   if ('moving' in given) {
     checkArray('given.moving', given.moving, 2, 2);
     given.moving.forEach((q, i) => checkPoint(`given.moving[${i}]`, q));
+  } else if ('fixed' in given) {
+    checkArray('given.fixed', given.fixed, 2, 2);
+    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
+  } else {
+    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
+  }
+  // Solved at the unit scale: the poses' spread (and the pivots' distance from pose 1) is brought near 1 by a power
+  // of two, which is exact, so circumcentres and the branch's cross products neither overflow (beyond 1e103 today
+  // they would square 1e206 and multiply two of those) nor underflow (below 1e-110); the design is scaled back.
+  const k = 2 ** -unitExponent(poses, given);
+  const down = (q: Point): Point => ({ x: q.x * k, y: q.y * k });
+  const unitPoses = poses.map((p) => ({ x: p.x * k, y: p.y * k, angle: p.angle })) as [Pose, Pose, Pose];
+  const unitGiven: ThreePositionGiven =
+    'moving' in given
+      ? { moving: [down(given.moving[0]), down(given.moving[1])] }
+      : { fixed: [down(given.fixed[0]), down(given.fixed[1])] };
+  const out = solveThree(unitPoses, unitGiven, k);
+  const up = (v: number) => v / k;
+  const d = out.design;
+  return {
+    ...out,
+    design: {
+      ...d,
+      links: { r1: up(d.links.r1), r2: up(d.links.r2), r3: up(d.links.r3), r4: up(d.links.r4) },
+      O2: { x: up(d.O2.x), y: up(d.O2.y) },
+      pDist: up(d.pDist),
+    },
+  };
+}
+
+/** The exponent of the power of two nearest the problem's size: the poses' spread and the pivots' reach. */
+function unitExponent(poses: readonly Pose[], given: ThreePositionGiven): number {
+  const P = poses[0];
+  let size = 0;
+  for (const p of poses) size = Math.max(size, Math.hypot(p.x - P.x, p.y - P.y));
+  if ('moving' in given) for (const q of given.moving) size = Math.max(size, Math.hypot(q.x, q.y));
+  else for (const q of given.fixed) size = Math.max(size, Math.hypot(q.x - P.x, q.y - P.y));
+  if (!(size > 0) || !Number.isFinite(size)) return 0;
+  return Math.max(-1000, Math.min(1000, Math.round(Math.log2(size))));
+}
+
+/** threePositionSynthesis on a validated problem scaled by k to a size about 1. */
+function solveThree(poses: readonly [Pose, Pose, Pose], given: ThreePositionGiven, k: number): MotionDesign {
+  let moving: [Point, Point];
+  let fixed: [Point, Point];
+  if ('moving' in given) {
     moving = given.moving;
     fixed = [
       centreOf(
         poses.map((p) => toPlane(p, moving[0])),
         'moving pivot A',
         'the plane',
+        k,
       ),
       centreOf(
         poses.map((p) => toPlane(p, moving[1])),
         'moving pivot B',
         'the plane',
+        k,
       ),
     ];
-  } else if ('fixed' in given) {
-    checkArray('given.fixed', given.fixed, 2, 2);
-    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
+  } else {
     fixed = given.fixed;
     moving = [
       centreOf(
         poses.map((p) => toFrame(p, fixed[0])),
         'fixed pivot O2',
         'the coupler frame',
+        k,
       ),
       centreOf(
         poses.map((p) => toFrame(p, fixed[1])),
         'fixed pivot O4',
         'the coupler frame',
+        k,
       ),
     ];
-  } else {
-    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
   }
   return motionDesign(poses, fixed, moving);
 }
 
-/** Centre of the circle through three positions of a pivot; throws naming the pivot when there is none. */
-function centreOf(points: Point[], pivot: string, where: string): Point {
+/** Centre of the circle through three positions of a pivot (scaled by k); throws naming the pivot when there is none. */
+function centreOf(points: Point[], pivot: string, where: string, k: number): Point {
   const c = circumcentre(points[0], points[1], points[2]);
   if (!c) {
     throw new Error(
-      `no circle passes through the three positions of ${pivot} in ${where}: they are collinear or two coincide, got ${show(points)}`,
+      `no circle passes through the three positions of ${pivot} in ${where}: they are collinear or two coincide, got ${show(points.map((q) => ({ x: q.x / k, y: q.y / k })))}`,
     );
   }
   return c;
