@@ -39,11 +39,14 @@ export const MAX_PAIRS = 10000;
  */
 export function freudenstein(pairs: readonly AnglePair[], options: { r1?: number } = {}): FreudensteinDesign {
   checkArray('pairs', pairs, 3, MAX_PAIRS);
-  pairs.forEach((p, i) => {
+  // An index loop, not forEach: a sparse array's holes are pairs too, and must be named.
+  for (let i = 0; i < pairs.length; i++) {
+    const p: unknown = pairs[i];
     if (typeof p !== 'object' || p === null) throw new Error(`pairs[${i}] must be {theta2, theta4}, got ${show(p)}`);
-    checkFiniteNumber(`pairs[${i}].theta2`, p.theta2, 'angle in radians');
-    checkFiniteNumber(`pairs[${i}].theta4`, p.theta4, 'angle in radians');
-  });
+    const q = p as Record<string, unknown>;
+    checkFiniteNumber(`pairs[${i}].theta2`, q.theta2, 'angle in radians');
+    checkFiniteNumber(`pairs[${i}].theta4`, q.theta4, 'angle in radians');
+  }
   if (typeof options !== 'object' || options === null)
     throw new Error(`options must be an object, got ${show(options)}`);
   const r1 = options.r1 ?? 1;
@@ -58,8 +61,18 @@ export function freudenstein(pairs: readonly AnglePair[], options: { r1?: number
     );
   }
   const [K1, K2, K3] = fit.x;
-  const links = linksFromK(K1, K2, K3, r1);
-  return { links, branch: bestBranch(links, pairs), residual: fit.residual };
+  // The lengths are ratios of r1: formed with r1 = 1 (no r1² to overflow past 1.3e154 or to go subnormal below
+  // 1e-154), then scaled; the branch, which does not depend on the scale, is read on the unit linkage.
+  const unit = linksFromK(K1, K2, K3, 1);
+  const links = { r1, r2: unit.r2 * r1, r3: unit.r3 * r1, r4: unit.r4 * r1 };
+  for (const k of ['r2', 'r3', 'r4'] as const) {
+    if (!(links[k] > 0) || !Number.isFinite(links[k])) {
+      throw new Error(
+        `options.r1 = ${show(r1)} puts ${k} = ${show(unit[k])} r1 outside the double range (${show(links[k])}); choose a smaller or larger r1`,
+      );
+    }
+  }
+  return { links, branch: bestBranch(unit, pairs), residual: fit.residual };
 }
 
 /** Link lengths from Freudenstein's K's with ground r1; throws naming the length when it is not a positive real. */
@@ -135,8 +148,9 @@ export const MAX_PRECISION_POINTS = 50;
 
 /** Chebyshev spacing of n points on [x0, x1], ascending: x_j = (x0+x1)/2 − (x1−x0)/2 · cos((2j−1)π/(2n)). */
 export function chebyshevPoints(x0: number, x1: number, n: number): number[] {
-  const mid = (x0 + x1) / 2;
-  const half = (x1 - x0) / 2;
+  // Halves first: no overflow for any finite x0, x1.
+  const mid = x0 / 2 + x1 / 2;
+  const half = x1 / 2 - x0 / 2;
   return Array.from({ length: n }, (_, k) => mid - half * Math.cos(((2 * k + 1) * PI) / (2 * n)));
 }
 
@@ -172,8 +186,12 @@ export function functionGenerator(task: FunctionTask): FunctionGeneratorResult {
   const y0 = y(x[0]);
   const y1 = y(x[1]);
   if (y0 === y1) throw new Error(`f(x0) and f(x1) must differ to map y onto θ4, got f(${x[0]}) = f(${x[1]}) = ${y0}`);
-  const theta2Of = (v: number) => t2[0] + ((v - x[0]) / (x[1] - x[0])) * (t2[1] - t2[0]);
-  const theta4Of = (w: number) => t4[0] + ((w - y0) / (y1 - y0)) * (t4[1] - t4[0]);
+  // Differences of x and of y are formed from halves, so a range as wide as the doubles (x from −1.7e308 to
+  // 1.7e308, or f's values there) maps without overflow; halving is exact above the subnormals.
+  const xHalf = x[1] / 2 - x[0] / 2;
+  const yHalf = y1 / 2 - y0 / 2;
+  const theta2Of = (v: number) => t2[0] + ((v / 2 - x[0] / 2) / xHalf) * (t2[1] - t2[0]);
+  const theta4Of = (w: number) => t4[0] + ((w / 2 - y0 / 2) / yHalf) * (t4[1] - t4[0]);
   const precision = chebyshevPoints(x[0], x[1], points).map((v) => ({
     x: v,
     theta2: theta2Of(v),
@@ -183,13 +201,14 @@ export function functionGenerator(task: FunctionTask): FunctionGeneratorResult {
 
   // y generated − f(x) = (θ4 generated − θ4 wanted) (y1 − y0) / (θ4 end − θ4 start), the difference wrapped so
   // that a range crossing ±π reads right.
-  const yPerRad = (y1 - y0) / (t4[1] - t4[0]);
+  const halfYPerRad = yHalf / (t4[1] - t4[0]);
   const structuralError: { x: number; error: number }[] = [];
   let maxError = 0;
   for (let k = 0; k < samples; k++) {
-    const v = k === samples - 1 ? x[1] : x[0] + ((x[1] - x[0]) * k) / (samples - 1);
+    const step = xHalf * (k / (samples - 1));
+    const v = k === samples - 1 ? x[1] : x[0] + step + step;
     const a = solveClosedForm(design.links, theta2Of(v), design.branch);
-    const error = a ? angleDiff(a.theta4, theta4Of(y(v))) * yPerRad : NaN;
+    const error = a ? angleDiff(a.theta4, theta4Of(y(v))) * halfYPerRad * 2 : NaN;
     structuralError.push({ x: v, error });
     maxError = Number.isNaN(error) ? Infinity : Math.max(maxError, Math.abs(error));
   }

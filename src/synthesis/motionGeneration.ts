@@ -42,30 +42,88 @@ export interface PivotConstruction {
   centre: Point | null;
 }
 
+/** Checks threePositionSynthesis's input; throws naming the field. */
+function checkThree(poses: readonly [Pose, Pose, Pose], given: ThreePositionGiven): void {
+  checkArray('poses', poses, 3, 3);
+  poses.forEach((p, i) => checkPose(`poses[${i}]`, p));
+  if (typeof given !== 'object' || given === null) {
+    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
+  }
+  if ('moving' in given && 'fixed' in given) {
+    throw new Error(`given must hold either moving or fixed pivots, not both, got ${show(given)}`);
+  }
+  if ('moving' in given) {
+    checkArray('given.moving', given.moving, 2, 2);
+    given.moving.forEach((q, i) => checkPoint(`given.moving[${i}]`, q));
+  } else if ('fixed' in given) {
+    checkArray('given.fixed', given.fixed, 2, 2);
+    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
+  } else {
+    throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
+  }
+}
+
+/** The exponent of the power of two nearest the problem's size: the poses' spread and the pivots' reach. */
+function unitExponent(poses: readonly Pose[], given: ThreePositionGiven): number {
+  const P = poses[0];
+  let size = 0;
+  for (const p of poses) size = Math.max(size, Math.hypot(p.x - P.x, p.y - P.y));
+  if ('moving' in given) for (const q of given.moving) size = Math.max(size, Math.hypot(q.x, q.y));
+  else for (const q of given.fixed) size = Math.max(size, Math.hypot(q.x - P.x, q.y - P.y));
+  if (!(size > 0) || !Number.isFinite(size)) return 0;
+  return Math.max(-1000, Math.min(1000, Math.round(Math.log2(size))));
+}
+
+/** The problem scaled by k (a power of two, so exactly): poses' positions and the given pivots. */
+function scaleProblem(
+  poses: readonly [Pose, Pose, Pose],
+  given: ThreePositionGiven,
+  k: number,
+): [[Pose, Pose, Pose], ThreePositionGiven] {
+  const down = (q: Point): Point => ({ x: q.x * k, y: q.y * k });
+  const unitPoses = poses.map((p) => ({ x: p.x * k, y: p.y * k, angle: p.angle })) as [Pose, Pose, Pose];
+  const unitGiven: ThreePositionGiven =
+    'moving' in given
+      ? { moving: [down(given.moving[0]), down(given.moving[1])] }
+      : {
+          fixed: [
+            down((given as { fixed: [Point, Point] }).fixed[0]),
+            down((given as { fixed: [Point, Point] }).fixed[1]),
+          ],
+        };
+  return [unitPoses, unitGiven];
+}
+
+/** The two constructions on a validated problem, at the scale given. */
+function constructions(
+  poses: readonly [Pose, Pose, Pose],
+  given: ThreePositionGiven,
+): [PivotConstruction, PivotConstruction] {
+  if ('moving' in given) {
+    const [a, b] = given.moving;
+    return [construct('A', 'O2', poses, (p) => toPlane(p, a)), construct('B', 'O4', poses, (p) => toPlane(p, b))];
+  }
+  const [o2, o4] = given.fixed;
+  return [construct('O2', 'A', poses, (p) => toFrame(p, o2)), construct('O4', 'B', poses, (p) => toFrame(p, o4))];
+}
+
 /**
  * The construction threePositionSynthesis builds its design from, for each of the two given pivots: their three
  * positions and the circle's centre (null where none passes; threePositionSynthesis throws there). Checks its input
- * as threePositionSynthesis does.
+ * as threePositionSynthesis does; solved at unit scale as it is.
  */
 export function threePositionConstruction(
   poses: readonly [Pose, Pose, Pose],
   given: ThreePositionGiven,
 ): [PivotConstruction, PivotConstruction] {
-  checkArray('poses', poses, 3, 3);
-  poses.forEach((p, i) => checkPose(`poses[${i}]`, p));
-  if (typeof given === 'object' && given !== null && 'moving' in given) {
-    checkArray('given.moving', given.moving, 2, 2);
-    given.moving.forEach((q, i) => checkPoint(`given.moving[${i}]`, q));
-    const [a, b] = given.moving;
-    return [construct('A', 'O2', poses, (p) => toPlane(p, a)), construct('B', 'O4', poses, (p) => toPlane(p, b))];
-  }
-  if (typeof given === 'object' && given !== null && 'fixed' in given) {
-    checkArray('given.fixed', given.fixed, 2, 2);
-    given.fixed.forEach((q, i) => checkPoint(`given.fixed[${i}]`, q));
-    const [o2, o4] = given.fixed;
-    return [construct('O2', 'A', poses, (p) => toFrame(p, o2)), construct('O4', 'B', poses, (p) => toFrame(p, o4))];
-  }
-  throw new Error(`given must be { moving: [A, B] } or { fixed: [O2, O4] }, got ${show(given)}`);
+  checkThree(poses, given);
+  const k = 2 ** -unitExponent(poses, given);
+  const up = (q: Point): Point => ({ x: q.x / k, y: q.y / k });
+  return constructions(...scaleProblem(poses, given, k)).map((c) => ({
+    ...c,
+    points: c.points.map(up) as [Point, Point, Point],
+    centre: c.centre ? up(c.centre) : null,
+  })) as [PivotConstruction, PivotConstruction];
 }
 
 function construct(
@@ -81,21 +139,43 @@ function construct(
 /**
  * The four-bar whose coupler frame passes through three poses, from the moving pivots (coupler frame) or the fixed
  * pivots (plane); P is the frame's origin. θ2[i] puts the coupler at pose i; defects are screened as screenPoses
- * says. Throws for bad input, when a pivot's three positions are collinear or two coincide (no circle passes
- * through them: the message names the pivot), and when two pivots of the result coincide.
+ * says. Throws for bad input (both kinds of pivot given included), when a pivot's three positions are collinear or
+ * two coincide (no circle passes through them: the message names the pivot), and when two pivots of the result
+ * coincide.
  */
 export function threePositionSynthesis(poses: readonly [Pose, Pose, Pose], given: ThreePositionGiven): MotionDesign {
-  const [c0, c1] = threePositionConstruction(poses, given);
-  const [p0, p1] = [centreOf(c0), centreOf(c1)];
-  return 'moving' in given ? motionDesign(poses, [p0, p1], given.moving) : motionDesign(poses, given.fixed, [p0, p1]);
+  checkThree(poses, given);
+  // Solved at the unit scale: the poses' spread (and the pivots' distance from pose 1) is brought near 1 by a power
+  // of two, which is exact, so circumcentres and the branch's cross products neither overflow (beyond 1e103 they
+  // would square 1e206 and multiply two of those) nor underflow (below 1e-110); the design is scaled back.
+  const k = 2 ** -unitExponent(poses, given);
+  const [unitPoses, unitGiven] = scaleProblem(poses, given, k);
+  const [c0, c1] = constructions(unitPoses, unitGiven);
+  const [p0, p1] = [centreOf(c0, k), centreOf(c1, k)];
+  const out =
+    'moving' in unitGiven
+      ? motionDesign(unitPoses, [p0, p1], unitGiven.moving)
+      : motionDesign(unitPoses, unitGiven.fixed, [p0, p1]);
+  const up = (v: number) => v / k;
+  const d = out.design;
+  return {
+    ...out,
+    design: {
+      ...d,
+      links: { r1: up(d.links.r1), r2: up(d.links.r2), r3: up(d.links.r3), r4: up(d.links.r4) },
+      O2: { x: up(d.O2.x), y: up(d.O2.y) },
+      pDist: up(d.pDist),
+    },
+  };
 }
 
-/** The centre a construction found; throws naming the pivot when there is none. */
-function centreOf(c: PivotConstruction): Point {
+/** The centre a construction found (at scale k); throws naming the pivot, in the caller's scale, when there is none. */
+function centreOf(c: PivotConstruction, k: number): Point {
   if (c.centre) return c.centre;
   const moving = c.given === 'A' || c.given === 'B';
+  const points = c.points.map((q) => ({ x: q.x / k, y: q.y / k }));
   throw new Error(
-    `no circle passes through the three positions of ${moving ? 'moving' : 'fixed'} pivot ${c.given} in ${moving ? 'the plane' : 'the coupler frame'}: they are collinear or two coincide, got ${show(c.points)}`,
+    `no circle passes through the three positions of ${moving ? 'moving' : 'fixed'} pivot ${c.given} in ${moving ? 'the plane' : 'the coupler frame'}: they are collinear or two coincide, got ${show(points)}`,
   );
 }
 

@@ -11,7 +11,7 @@
  * the ground length |O2 O4|; every such O2 (up to four) is returned, best transmission angle first. The result is
  * always a Grashof crank-rocker: the two dead-centre triangles give r2 + r_i ≤ r_j + r_k for each arrangement.
  */
-import { PI, designMetrics } from '../solver';
+import { PI, designMetrics, wrapAngle } from '../solver';
 import type { Point } from '../solver';
 import { fourBarFromJoints } from './placed';
 import type { PlacedFourBar } from './types';
@@ -49,8 +49,10 @@ export interface TwoPositionRocker {
 /**
  * Every crank-rocker (up to four) whose rocker swings between the task's two positions with its time ratio and
  * ground length, best minimum transmission angle (nearest 90°) first; empty when no crank pivot at that distance
- * sees the positions at the needed angle (for Q = 1 the ground must exceed the rocker). Throws for bad input,
- * naming it (|swing| in (0, π), Q ≥ 1, positive lengths).
+ * sees the positions at the needed angle with both dead centres on one assembly branch (for Q = 1 the ground must
+ * exceed the rocker). Each design's own swing and time ratio (designMetrics) are the task's. Works at any scale
+ * (the construction is done with the rocker as the unit). Throws for bad input, naming it (|swing| in (0, π),
+ * Q ≥ 1, positive lengths).
  */
 export function twoPositionRocker(task: TwoPositionRockerTask): TwoPositionRocker[] {
   if (typeof task !== 'object' || task === null) throw new Error(`task must be an object, got ${show(task)}`);
@@ -67,94 +69,115 @@ export function twoPositionRocker(task: TwoPositionRockerTask): TwoPositionRocke
     throw new Error(`timeRatio must be a finite number ≥ 1, got ${show(Q)}`);
   }
   const { O4, rocker: r4, ground: r1 } = task;
-  const at = (angle: number): Point => ({ x: O4.x + r4 * Math.cos(angle), y: O4.y + r4 * Math.sin(angle) });
-  const B1 = at(task.startAngle);
-  const B2 = at(task.startAngle + task.swing);
+  // The construction is done in the rocker's frame: O4 at the origin, the rocker as the unit of length, the
+  // chord B1B2 upright and bisected by the x axis, so nothing squares a length of the task (no overflow at 1e200)
+  // and a start angle of 1e16 rad does not swallow the swing (the frame turns by the start, then by half the swing).
+  const h = task.swing / 2;
+  const cs = Math.cos(task.startAngle);
+  const ss = Math.sin(task.startAngle);
+  const ch = Math.cos(h);
+  const sh = Math.sin(h);
+  const frame = { c: cs * ch - ss * sh, s: ss * ch + cs * sh };
+  const B1 = { x: ch, y: -sh };
+  const B2 = { x: ch, y: sh };
+  // Q − 1 is exact (Sterbenz), so α keeps every digit as Q → 1.
   const alpha = (PI * (Q - 1)) / (Q + 1);
+  const g = r1 / r4;
   const results: TwoPositionRocker[] = [];
-  for (const O2 of crankPivots(O4, B1, B2, r1, alpha)) {
-    const built = crankRocker(O2, O4, B1, B2);
-    if (built) results.push(built);
+  for (const O2 of crankPivots(g, Math.abs(h), alpha)) {
+    const built = crankRocker(O2, B1, B2, Q, Math.abs(task.swing));
+    if (!built) continue;
+    const { local, theta2, swing, timeRatio, transmission } = built;
+    const toPlane = (p: Point): Point => ({
+      x: O4.x + r4 * (frame.c * p.x - frame.s * p.y),
+      y: O4.y + r4 * (frame.s * p.x + frame.c * p.y),
+    });
+    const design: PlacedFourBar = {
+      // r1 and r4 are the task's own; r2, r3 and |AP| scale with the rocker.
+      links: { r1, r2: local.links.r2 * r4, r3: local.links.r3 * r4, r4 },
+      branch: local.branch,
+      O2: toPlane(O2),
+      groundAngle: wrapAngle(local.groundAngle + Math.atan2(frame.s, frame.c)),
+      pDist: local.links.r3 * r4,
+      pAngle: 0,
+    };
+    results.push({ design, theta2, swing, timeRatio, transmission });
   }
   const margin = (r: TwoPositionRocker) => Math.min(r.transmission.min, PI - r.transmission.max);
   return results.sort((a, b) => margin(b) - margin(a));
 }
 
-/** Points at distance r1 from O4 that see the chord B1B2 under the angle alpha (radians, in [0, π)). */
-function crankPivots(O4: Point, B1: Point, B2: Point, r1: number, alpha: number): Point[] {
-  const M = { x: (B1.x + B2.x) / 2, y: (B1.y + B2.y) / 2 };
-  const c = Math.hypot(B2.x - B1.x, B2.y - B1.y);
-  const u = { x: (B2.x - B1.x) / c, y: (B2.y - B1.y) / c };
-  const n = { x: -u.y, y: u.x };
+/**
+ * Crank pivots in the rocker's frame (O4 at the origin, rocker 1, B1,2 = (cos h, ∓sin h), h = |swing|/2 > 0) at
+ * distance g from O4 that see the chord B1B2 under the angle α (radians, in [0, π)).
+ *
+ * The circles through B1 and B2 have their centre (c, 0) on the x axis; as B1 and B2 lie on the unit circle, such
+ * a circle is x² + y² − 2cx + 2c cos h − 1 = 0, and on x² + y² = g² it meets x = cos h + (g² − 1)/(2c). The one
+ * whose arc on the side s = ±1 of the chord sees B1B2 under α has c = cos h + s sin h cot α, so
+ * 1/c = sin α / sin(α + s h): no cot α, whose radius runs to infinity as Q → 1, and no cancellation; at α = 0 this
+ * is Q = 1's line x = cos h. The arc is the side s of the chord: s (x − cos h) > 0, or |y| > sin h when α = 0.
+ */
+function crankPivots(g: number, h: number, alpha: number): Point[] {
+  const ch = Math.cos(h);
+  const sh = Math.sin(h);
   const out: Point[] = [];
-  if (alpha === 0) {
-    // O2 on the line B1B2, outside the segment: |O2 M| > c/2.
-    const h = (O4.x - M.x) * u.x + (O4.y - M.y) * u.y;
-    const foot = { x: M.x + h * u.x, y: M.y + h * u.y };
-    const d2 = (O4.x - foot.x) ** 2 + (O4.y - foot.y) ** 2;
-    const t = Math.sqrt(r1 * r1 - d2);
-    if (!Number.isFinite(t)) return out;
-    for (const s of [t, -t]) {
-      const p = { x: foot.x + s * u.x, y: foot.y + s * u.y };
-      if (Math.abs((p.x - M.x) * u.x + (p.y - M.y) * u.y) > c / 2) out.push(p);
-    }
-    return out;
-  }
-  // The inscribed-angle circles: centre on the chord's bisector at (c/2) cot α either side, radius c / (2 sin α).
-  const R = c / (2 * Math.sin(alpha));
-  const k = c / 2 / Math.tan(alpha);
-  for (const side of [1, -1]) {
-    const K = { x: M.x + side * k * n.x, y: M.y + side * k * n.y };
-    for (const p of circleCircle(K, R, O4, r1)) {
-      const ax = B1.x - p.x;
-      const ay = B1.y - p.y;
-      const bx = B2.x - p.x;
-      const by = B2.y - p.y;
-      const seen = Math.atan2(Math.abs(ax * by - ay * bx), ax * bx + ay * by);
-      if (Math.abs(seen - alpha) < 1e-9 * (1 + alpha)) out.push(p);
+  const sides = alpha === 0 ? [0] : [1, -1];
+  for (const side of sides) {
+    const t = alpha === 0 ? 0 : Math.sin(alpha) / (2 * Math.sin(alpha + side * h));
+    const off = (g - 1) * t * (g + 1);
+    const x = ch + off;
+    if (!Number.isFinite(x)) continue;
+    const y2 = (g - x) * (g + x);
+    if (!(y2 >= 0)) continue;
+    const y = Math.sqrt(y2);
+    for (const p of y === 0
+      ? [{ x, y }]
+      : [
+          { x, y },
+          { x, y: -y },
+        ]) {
+      const onArc = alpha === 0 ? Math.abs(p.y) > sh : side * off > 0;
+      if (onArc) out.push(p);
     }
   }
   return out;
 }
 
-/** Intersections of two circles (none, one when tangent, or two). */
-function circleCircle(P: Point, R: number, Q: Point, r: number): Point[] {
-  const dx = Q.x - P.x;
-  const dy = Q.y - P.y;
-  const d = Math.hypot(dx, dy);
-  if (!(d > 0) || d > R + r || d < Math.abs(R - r)) return [];
-  const a = (R * R - r * r + d * d) / (2 * d);
-  const h = Math.sqrt(Math.max(0, R * R - a * a));
-  const mx = P.x + (a * dx) / d;
-  const my = P.y + (a * dy) / d;
-  if (h === 0) return [{ x: mx, y: my }];
-  return [
-    { x: mx - (h * dy) / d, y: my + (h * dx) / d },
-    { x: mx + (h * dy) / d, y: my - (h * dx) / d },
-  ];
-}
-
-/** The crank-rocker with crank pivot O2 whose dead centres put the rocker pin at B1 and B2; null if r2 would be 0. */
-function crankRocker(O2: Point, O4: Point, B1: Point, B2: Point): TwoPositionRocker | null {
+/**
+ * The crank-rocker with crank pivot O2 (rocker's frame) whose dead centres put the rocker pin at B1 and B2, its
+ * θ2 there and its metrics; null when r2 would be 0, when the two dead centres lie on opposite branches (the
+ * design never reaches one of the positions), or when its own swing or time ratio is not the task's.
+ */
+function crankRocker(
+  O2: Point,
+  B1: Point,
+  B2: Point,
+  Q: number,
+  swing: number,
+): (Omit<TwoPositionRocker, 'design'> & { local: PlacedFourBar }) | null {
   const d1 = Math.hypot(B1.x - O2.x, B1.y - O2.y);
   const d2 = Math.hypot(B2.x - O2.x, B2.y - O2.y);
-  const r2 = Math.abs(d1 - d2) / 2;
+  // d1² − d2² = 4 y sin h (B1,2 = (cos h, ∓sin h)), so d1 − d2 without the cancellation of two near distances.
+  const r2 = Math.abs((2 * O2.y * (B2.y - B1.y)) / (d1 + d2)) / 2;
   if (!(r2 > 1e-12 * (d1 + d2))) return null;
   // Extended at the farther position (crank along O2→B), folded at the nearer (crank pointing away from B).
   const pin = (B: Point, d: number, extended: boolean): Point => {
     const k = (extended ? r2 : -r2) / d;
     return { x: O2.x + k * (B.x - O2.x), y: O2.y + k * (B.y - O2.y) };
   };
-  const A1 = pin(B1, d1, d1 > d2);
-  const A2 = pin(B2, d2, d2 > d1);
-  const { design, theta2: t1 } = fourBarFromJoints({ O2, A: A1, B: B1, O4, P: B1 });
-  const t2 = fourBarFromJoints({ O2, A: A2, B: B2, O4, P: B2 }).theta2;
-  const m = designMetrics(design.links, design.branch);
+  const O4 = { x: 0, y: 0 };
+  const one = fourBarFromJoints({ O2, A: pin(B1, d1, d1 > d2), B: B1, O4, P: B1 });
+  const two = fourBarFromJoints({ O2, A: pin(B2, d2, d2 > d1), B: B2, O4, P: B2 });
+  if (one.design.branch !== two.design.branch) return null;
+  const m = designMetrics(one.design.links, one.design.branch);
+  if (!m.output || m.timeRatio === null) return null;
+  // A safety net on the construction: the design's own stroke must be the task's (to far more than rounding).
+  if (Math.abs(m.output.swing - swing) > 1e-9 * swing || Math.abs(m.timeRatio - Q) > 1e-9 * Q) return null;
   return {
-    design,
-    theta2: [t1, t2],
-    swing: m.output?.swing ?? NaN,
-    timeRatio: m.timeRatio ?? NaN,
+    local: one.design,
+    theta2: [one.theta2, two.theta2],
+    swing: m.output.swing,
+    timeRatio: m.timeRatio,
     transmission: { min: m.transmission.min, max: m.transmission.max },
   };
 }

@@ -94,6 +94,31 @@ describe('freudenstein', () => {
     expect(() => freudenstein(crank)).toThrow(/no real linkage fits these pairs: r2 would be -/);
   });
 
+  it('gives the same linkage, scaled, for r1 from 1e-300 to 1e300 (issue 31, 3)', () => {
+    // The pairs do not depend on the scale; the oracle's linkage scaled by r1 is the answer at every r1.
+    const rnd = seeded(3);
+    const l = randomCrankRocker(rnd);
+    const t2 = [0.3, 1.4, 3.1];
+    const pairs = t2.map((t) => ({ theta2: t, theta4: theta4(l, t, 'open') }));
+    for (const r1 of [1e-300, 1e-160, 1e-100, 1e100, 1.3e154, 1e200, 1e300]) {
+      const k = r1 / l.r1;
+      const want = { r1, r2: l.r2 * k, r3: l.r3 * k, r4: l.r4 * k };
+      const out = freudenstein(pairs, { r1 });
+      expect(linkError(out.links, want), `r1 ${r1}`).toBeLessThan(1e-10);
+      expect(out.branch).toBe('open');
+    }
+  });
+
+  it('refuses an r1 that would put a length outside the double range, naming r1', () => {
+    const pairs = [0.3, 1.4, 3.1].map((t) => ({
+      theta2: t,
+      theta4: theta4({ r1: 1, r2: 0.3, r3: 1.2, r4: 1.1 }, t, 'open'),
+    }));
+    expect(() => freudenstein(pairs, { r1: 1.7e308 })).toThrow(
+      /options\.r1 = 1\.7e\+308 puts r3 = .* outside the double range/,
+    );
+  });
+
   it('throws for bad pairs and options, naming the parameter and the value', () => {
     const ok = [
       { theta2: 0, theta4: 1 },
@@ -107,6 +132,10 @@ describe('freudenstein', () => {
     expect(() => freudenstein([ok[0], null as never, ok[2]])).toThrow('pairs[1] must be {theta2, theta4}, got null');
     expect(() => freudenstein(ok, { r1: -2 })).toThrow('options.r1 must be a positive finite length, got -2');
     expect(() => freudenstein([ok[0], ok[0], ok[1]])).toThrow(/singular/);
+    // A sparse array's hole is a pair too (issue 31, 10).
+    const sparse = [ok[0], ok[1], ok[2]];
+    delete sparse[1];
+    expect(() => freudenstein(sparse)).toThrow('pairs[1] must be {theta2, theta4}, got undefined');
   });
 });
 
@@ -202,6 +231,30 @@ describe('functionGenerator', () => {
     expect(linkError(out.links, l)).toBeLessThan(1e-10);
     expect(out.branch).toBe('open');
     expect(out.defects).toEqual(['branch']);
+  });
+
+  it('maps a range as wide as the doubles without overflow, and blames nothing (issue 31, 3)', () => {
+    // x on [−1.7e308, 1.7e308] with f(x) = x/2 is the unit problem x' on [−1, 1], f(x') = x'/2, scaled: the same
+    // design, precision angles and relative structural error.
+    const big = 1.7e308;
+    const unit = functionGenerator({
+      f: (v) => v / 2,
+      x: [-1, 1],
+      theta2: [0.5, 1.9],
+      theta4: [-0.9, -2.1],
+      points: 3,
+    });
+    const out = functionGenerator({
+      f: (v) => v / 2,
+      x: [-big, big],
+      theta2: [0.5, 1.9],
+      theta4: [-0.9, -2.1],
+      points: 3,
+    });
+    expect(linkError(out.links, unit.links)).toBeLessThan(1e-12);
+    out.precision.forEach((p, i) => expect(p.theta2).toBeCloseTo(unit.precision[i].theta2, 14));
+    expect(out.structuralError.every((s) => Number.isFinite(s.x) && Number.isFinite(s.error))).toBe(true);
+    expect(out.maxError / big).toBeCloseTo(unit.maxError, 12);
   });
 
   it('throws for bad tasks, naming the parameter and the value', () => {

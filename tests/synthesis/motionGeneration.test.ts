@@ -66,6 +66,35 @@ describe('threePositionSynthesis', () => {
     }
   });
 
+  it('gives back the linkage scaled, from either pivots, at sizes from 1e-300 to 1e300 (issue 31, 3)', () => {
+    // The oracle's poses of a unit design, scaled by k: the answer is that design scaled by k, with the same θ2 and
+    // branch. Before the fix the circumcentres and cross products overflowed past 1e103 and underflowed below 1e-110.
+    const rnd = seeded(24);
+    for (let trial = 0; trial < 4; trial++) {
+      const d = randomPlaced(rnd, randomCrankRocker(rnd), trial % 2 ? 'open' : 'crossed');
+      const start = 2 * PI * rnd() - PI;
+      const t2 = [start, start + 0.8 + rnd(), start + 2.4 + rnd()];
+      const at = posesOf(d, t2);
+      for (const k of [1e-300, 1e-105, 1e105, 1e300]) {
+        const s = (p: { x: number; y: number }) => ({ x: p.x * k, y: p.y * k });
+        const poses = at.map((a) => ({ ...s(a.pose), angle: a.pose.angle })) as [Pose, Pose, Pose];
+        const want: PlacedFourBar = {
+          ...d,
+          links: { r1: d.links.r1 * k, r2: d.links.r2 * k, r3: d.links.r3 * k, r4: d.links.r4 * k },
+          O2: s(d.O2),
+          pDist: d.pDist * k,
+        };
+        const moving = threePositionSynthesis(poses, {
+          moving: [s(inFrame(at[0].pose, at[0].A)), s(inFrame(at[0].pose, at[0].B))],
+        });
+        expectSameDesign(moving.design, want, `trial ${trial}, scale ${k}, moving`);
+        const fixed = threePositionSynthesis(poses, { fixed: [s(d.O2), s(at[0].O4)] });
+        expectSameDesign(fixed.design, want, `trial ${trial}, scale ${k}, fixed`);
+        moving.theta2.forEach((t, i) => expect(Math.abs(angleDiff(t, t2[i]))).toBeLessThan(REL));
+      }
+    }
+  });
+
   it("reports 'branch' when a pose needs the other branch", () => {
     const rnd = seeded(23);
     const d = randomPlaced(rnd, { r1: 4, r2: 1, r3: 3.5, r4: 3 }, 'open');
@@ -141,6 +170,10 @@ describe('threePositionSynthesis', () => {
     expect(() => threePositionSynthesis(poses, {} as never)).toThrow(
       /given must be \{ moving: \[A, B\] \} or \{ fixed/,
     );
+    // Both kinds of pivot: refused rather than one silently used (issue 31, 10).
+    expect(() => threePositionSynthesis(poses, { moving, fixed: moving } as never)).toThrow(
+      'given must hold either moving or fixed pivots, not both',
+    );
     expect(() =>
       threePositionSynthesis(poses, {
         fixed: [
@@ -178,8 +211,9 @@ describe('twoPositionRocker', () => {
           // designMetrics is exact to rounding; the construction loses a few digits in the circle intersections.
           expect(Math.abs(m.output!.swing - Math.abs(swing))).toBeLessThan(1e-12);
           expect(Math.abs(m.timeRatio! - timeRatio)).toBeLessThan(1e-12);
-          expect(r.swing).toBe(m.output!.swing);
-          expect(r.timeRatio).toBe(m.timeRatio);
+          // Reported from the design in the rocker's frame (rocker 1): the same to rounding.
+          expect(r.swing).toBeCloseTo(m.output!.swing, 13);
+          expect(r.timeRatio).toBeCloseTo(m.timeRatio!, 13);
           // The dead centres put the rocker pin on the two given positions.
           const want = [job.startAngle, job.startAngle + swing].map((a) => ({
             x: job.O4.x + job.rocker * Math.cos(a),
