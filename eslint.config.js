@@ -58,7 +58,7 @@ export default tseslint.config(
   },
   {
     // Numerics (the solver, synthesis, the lab's study): pure, testable in Node, importing nothing of the app.
-    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/study/**/*.ts'],
+    files: ['src/solver/**/*.ts', 'src/synthesis/**/*.ts', 'src/study/**/*.ts', 'src/spatial/**/*.ts'],
     rules: {
       'no-restricted-imports': [
         'error',
