@@ -51,7 +51,7 @@ export interface BranchCycle {
   theta4: Float64Array;
   iterations: Int32Array;
   residual: Float64Array;
-  /** Status of each point as a code: an index into POINT_STATUSES ('ok', 'unreachable', 'singular', 'failed'). */
+  /** Status of each point as a code: an index into the solver's POINT_STATUSES ('ok', 'unreachable', 'singular', 'failed'). */
   statusCodes: Uint8Array;
   /** Coupler point P along the cycle (length unit), NaN where not assembled. */
   px: Float64Array;

@@ -4,7 +4,7 @@ import type { AppState } from '../shared/state/appState';
 import type { PlayFrame } from '../shared/state/playhead';
 import type { CycleResponse } from '../shared/solution';
 import { benchMark } from '../shared/benchMarks';
-import type { StageReply, StageRequest } from './stageProtocol';
+import type { StageReply, StageRequest } from '../features/simulator/stage/stageProtocol';
 
 /**
  * A page whose recent draws of the linkage take this long (ms, their lower median) hands a θ2 drag to the stage: past

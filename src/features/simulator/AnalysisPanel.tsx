@@ -39,28 +39,30 @@ function AnalysisPanelImpl({ cycle, table, point, branch, nrStart }: AnalysisPan
             <span className="mono" data-testid="grashof-sums">
               {c ? grashofSumsText(c) : 'S + L = — P + Q = —'}
             </span>
-            <span className={`badge ${c?.grashof ? 'badge-ok' : 'badge-warn'}`}>{verdict}</span>
+            <span className={`badge ${c?.grashof ? 'badge-ok' : 'badge-warn'}`} data-testid="grashof-verdict">
+              {verdict}
+            </span>
           </dd>
         </div>
         <Fact label={t.linkageType} testId="linkage-type">
           {c ? t.types[c.type] : '—'}
         </Fact>
-        <Fact label={t.barker} mono>
+        <Fact label={t.barker} mono testId="barker">
           {c ? c.barker : '—'}
         </Fact>
-        <Fact label={t.inputRange} wide>
+        <Fact label={t.inputRange} wide testId="input-range">
           {range}
         </Fact>
       </dl>
       <h3 className="subhead">{t.atTheta2(theta2)}</h3>
       <dl className="facts facts-grid">
-        <Fact label="θ3" mono>
+        <Fact label="θ3" mono testId="analysis-theta3">
           {pose ? deg(pose.theta3) : '—'}
         </Fact>
-        <Fact label="θ4" mono>
+        <Fact label="θ4" mono testId="analysis-theta4">
           {pose ? deg(pose.theta4) : '—'}
         </Fact>
-        <Fact label={t.transmissionAngle} mono>
+        <Fact label={t.transmissionAngle} mono testId="analysis-mu">
           {pose ? `${formatDeg(radToDeg(pose.mu), 3)}°` : '—'}
         </Fact>
         <Fact label={t.status}>

@@ -1,4 +1,5 @@
 import { truncateText } from '../format';
+import { normalizeNumberText, parseDecimal } from '../decimal';
 
 /** Which numeric field a value belongs to; names the field in messages. */
 export type FieldName =
@@ -69,23 +70,6 @@ export const FIELD_SPECS: Record<FieldName, FieldSpec> = {
   muBandLo: { min: 0, max: 180, allowZero: true, signed: false, bounded: true },
   muBandHi: { min: 0, max: 180, allowZero: true, signed: false, bounded: true },
 };
-
-const FULL_WIDTH = /[\uFF10-\uFF19\uFF0E\uFF0D\uFF0B\uFF45\uFF25]/g;
-const DECIMAL = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[+-]?\d+)?$/i;
-
-/** Normalises typed text: trims, maps full-width digits and signs (from CJK input methods) to ASCII, one comma to a point. */
-export function normalizeNumberText(raw: string): string {
-  let s = raw.trim().replace(FULL_WIDTH, (c) => String.fromCharCode(c.charCodeAt(0) - 0xfee0));
-  s = s.replace(/\u2212/g, '-');
-  if (!s.includes('.') && (s.match(/,/g)?.length ?? 0) === 1) s = s.replace(',', '.');
-  return s;
-}
-
-/** Parses a decimal number (no hex, no Infinity, no thousands separators); NaN when the text is not one. */
-export function parseDecimal(raw: string): number {
-  const s = normalizeNumberText(raw);
-  return DECIMAL.test(s) ? Number(s) : Number.NaN;
-}
 
 /** Parses and range-checks the text typed into a field; never throws. */
 export function parseField(field: FieldName, raw: string): FieldResult {

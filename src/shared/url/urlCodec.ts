@@ -1,5 +1,6 @@
 import type { FieldName } from '../ui/validateNumber';
-import { checkValue, parseDecimal } from '../ui/validateNumber';
+import { parseDecimal } from '../decimal';
+import { checkValue } from '../ui/validateNumber';
 
 /** What a codec made of a URL value: the value, or why the text was refused (English, for the console). */
 export type Decoded<T> = { ok: true; value: T } | { ok: false; why: string };

@@ -1,3 +1,4 @@
+import { plainDecimal } from '../decimal';
 import type { AppState } from '../state/appState';
 import { DEFAULT_EMBED } from './embedOptions';
 import { serializeState } from './url';
@@ -5,8 +6,6 @@ import { URL_KEYS } from './urlKeys';
 
 /** A URL key's value as JSON carries it: a number where the URL text is a number, a boolean, or the text. */
 export type UrlValue = number | string | boolean;
-
-const NUMERIC = /^-?(\d+\.?\d*|\.\d+)(e-?\d+)?$/;
 
 /**
  * The state as URL keys and JSON values, the keys serializeState writes for a share link: numbers where the
@@ -18,7 +17,7 @@ export function stateValues(state: AppState): Record<string, UrlValue> {
   for (const [name, text] of new URLSearchParams(serializeState(state))) {
     const k = URL_KEYS.find((x) => x.name === name);
     const raw = k?.get({ state, embed: DEFAULT_EMBED });
-    out[name] = typeof raw === 'boolean' ? raw : NUMERIC.test(text) ? Number(text) : text;
+    out[name] = typeof raw === 'boolean' ? raw : Number.isFinite(plainDecimal(text)) ? Number(text) : text;
   }
   return out;
 }

@@ -1,37 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { messagesEn } from '../../../src/shared/i18n/messagesEn';
 import { messagesZhTw } from '../../../src/shared/i18n/messagesZhTw';
-import {
-  ECHO_MAX_CHARS,
-  checkValue,
-  normalizeNumberText,
-  parseDecimal,
-  parseField,
-  readNumberText,
-} from '../../../src/shared/ui/validateNumber';
+import { ECHO_MAX_CHARS, checkValue, parseField, readNumberText } from '../../../src/shared/ui/validateNumber';
 
 function message(field: Parameters<typeof parseField>[0], raw: string): string {
   const r = parseField(field, raw);
   if (r.ok) throw new Error(`expected ${raw} to be rejected`);
   return messagesEn.fieldError(r.error, { raw: raw.trim(), min: String(r.error.min), max: String(r.error.max) });
 }
-
-describe('parseDecimal', () => {
-  it('reads plain and exponent decimals', () => {
-    expect(parseDecimal('2.5')).toBe(2.5);
-    expect(parseDecimal(' -1e-7 ')).toBe(-1e-7);
-    expect(parseDecimal('.5')).toBe(0.5);
-    expect(parseDecimal('5.')).toBe(5);
-  });
-  it('rejects hex, Infinity, words and thousands separators', () => {
-    for (const s of ['0x10', 'Infinity', 'abc', '1,000.5', '1e', '--1', '']) expect(parseDecimal(s)).toBeNaN();
-  });
-  it('accepts a decimal comma and full-width digits from CJK input methods', () => {
-    expect(parseDecimal('2,5')).toBe(2.5);
-    expect(normalizeNumberText('２．５')).toBe('2.5');
-    expect(parseDecimal('－３')).toBe(-3);
-  });
-});
 
 describe('parseField', () => {
   it('accepts a positive length', () => {

@@ -1,5 +1,6 @@
 import {
   DEFAULT_TOLERANCE,
+  STATUS_CODE,
   SEED_TOLERANCE,
   classify,
   couplerPoint,
@@ -68,7 +69,7 @@ function skippedCycle(n: number): BranchCycle {
     theta4: nan(),
     iterations: new Int32Array(n),
     residual: nan(),
-    statusCodes: new Uint8Array(n).fill(1),
+    statusCodes: new Uint8Array(n).fill(STATUS_CODE.unreachable),
     px: nan(),
     py: nan(),
     totalIterations: 0,

@@ -1,4 +1,5 @@
 import type { Point } from '../../../solver/kinematics';
+import { plainDecimal } from '../../../shared/decimal';
 import { MAX_TARGETS } from '../../../shared/state/slices/synthesisSlice';
 
 /** Targets read from text: the points, and θ2 per point (degrees) when every line gave a third number. */
@@ -10,18 +11,13 @@ export interface ParsedTargets {
 /** Why pasted text was refused: a line that is not a point (1-based number, its text), or too many points. */
 export type TargetsTextError = { kind: 'line'; line: number; text: string } | { kind: 'too-many'; max: number };
 
-/** A decimal number, or NaN (no hex, Infinity or empty text). */
-function decimal(text: string): number {
-  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(text) ? Number(text) : NaN;
-}
-
 /** The numbers of one line split at commas, semicolons, tabs or spaces; null when an item is not a number. */
 function numbersOf(line: string): number[] | null {
   const items = line
     .trim()
     .split(/\s*[,;\t]\s*|\s+/)
     .filter((s) => s !== '');
-  const xs = items.map(decimal);
+  const xs = items.map(plainDecimal);
   return xs.every(Number.isFinite) ? xs : null;
 }
 

@@ -5,7 +5,7 @@ import { enumCodec, fixedText, significantText } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sameText, sliceLens } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
-import { parseDecimal } from '../../ui/validateNumber';
+import { parseDecimal } from '../../decimal';
 import type { Action } from '../appState';
 
 /** A coupler pose as the page holds it: its point (length unit) and the direction of its frame (degrees, CCW from +x). */

@@ -4,6 +4,7 @@ import { enumCodec, exactText, integerCodec, nullableCodec } from '../../url/url
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sameText, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
+import { plainDecimal } from '../../decimal';
 
 /** The synthesis page's modes: path, motion or function generation. */
 export type SynthesisMode = 'path' | 'motion' | 'function';
@@ -116,12 +117,6 @@ function fail<T>(why: string): Decoded<T> {
   return { ok: false, why };
 }
 
-/** A finite decimal (no hex, no empty text), or NaN. */
-function decimal(text: string): number {
-  const s = text.trim();
-  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(s) ? Number(s) : NaN;
-}
-
 /** Numbers separated by commas (exact text), count from min to max; names the bad item. */
 export function numberListCodec(what: string, min: number, max: number): Codec<number[]> {
   return {
@@ -129,7 +124,7 @@ export function numberListCodec(what: string, min: number, max: number): Codec<n
       const items = raw.trim() === '' ? [] : raw.split(',');
       if (items.length < min || items.length > max)
         return fail(`expected ${min} to ${max} ${what} separated by commas`);
-      const out = items.map(decimal);
+      const out = items.map(plainDecimal);
       const bad = out.findIndex((x) => !Number.isFinite(x));
       return bad < 0 ? ok(out) : fail(`${what} ${bad + 1} (${JSON.stringify(items[bad])}) is not a number`);
     },
@@ -145,7 +140,7 @@ export const targetsCodec: Codec<Point[]> = {
     if (items.length > MAX_TARGETS) return fail(`expected at most ${MAX_TARGETS} points x,y separated by ;`);
     const out: Point[] = [];
     for (let i = 0; i < items.length; i++) {
-      const xy = items[i].split(',').map(decimal);
+      const xy = items[i].split(',').map(plainDecimal);
       if (xy.length !== 2 || !xy.every(Number.isFinite)) {
         return fail(`point ${i + 1} (${JSON.stringify(items[i])}) is not x,y`);
       }
@@ -159,7 +154,7 @@ export const targetsCodec: Codec<Point[]> = {
 /** A positive length (exact text). */
 const lengthCodec: Codec<number> = {
   parse(raw) {
-    const x = decimal(raw);
+    const x = plainDecimal(raw);
     return x > 0 && Number.isFinite(x) ? ok(x) : fail('expected a positive length');
   },
   format: exactText,
@@ -168,7 +163,7 @@ const lengthCodec: Codec<number> = {
 /** The θ2 step of equal-step timing: degrees, nonzero, −180 … 180 (exact text). */
 const stepCodec: Codec<number> = {
   parse(raw) {
-    const x = decimal(raw);
+    const x = plainDecimal(raw);
     return x !== 0 && Math.abs(x) <= 180 ? ok(x) : fail('expected a nonzero step in degrees from -180 to 180');
   },
   format: exactText,

@@ -1,9 +1,12 @@
-import type { InputRangeDeg } from '../shared/state/animation';
-import type { AppState } from '../shared/state/appState';
-import type { PlayFrame } from '../shared/state/playhead';
-import type { CycleResponse } from '../shared/solution';
+import type { InputRangeDeg } from '../../../shared/state/animation';
+import type { AppState } from '../../../shared/state/appState';
+import type { PlayFrame } from '../../../shared/state/playhead';
+import type { CycleResponse } from '../../../shared/solution';
 
-/** The page to the live stage's worker (stage.worker.ts). Times are epoch ms (timeOrigin + now): the two clocks agree. */
+/**
+ * The page to the live stage's worker (workers/stage.worker.ts, its loop stageLoop.ts). Times are epoch ms
+ * (timeOrigin + now): the two clocks agree.
+ */
 export type StageRequest =
   | { type: 'canvas'; canvas: OffscreenCanvas }
   | { type: 'size'; width: number; height: number; dpr: number }
