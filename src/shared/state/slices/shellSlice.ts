@@ -2,6 +2,7 @@ import { enumCodec } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import { LOCALES } from '../../i18n/i18n';
 
 /** UI languages: English (default) and Traditional Chinese. */
@@ -50,3 +51,11 @@ export const SHELL_URL_KEYS: readonly UrlKey<unknown>[] = [
     DEFAULT_SHELL.page,
   ),
 ];
+
+/** The shell slice's registration in SLICES (appState.ts). */
+export const SHELL_SLICE: Slice<ShellState, ShellAction> = {
+  summary: 'the language and the page',
+  defaults: DEFAULT_SHELL,
+  reducer: shellReducer,
+  urlKeys: SHELL_URL_KEYS,
+};
