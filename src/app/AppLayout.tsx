@@ -1,5 +1,4 @@
 import './AppLayout.css';
-import { Suspense, lazy } from 'react';
 import type { ParsedUrl } from '../shared/url/url';
 import { Brand } from './Brand';
 import { ControlsColumn } from './ControlsColumn';
@@ -11,22 +10,15 @@ import { MessagesContext } from '../shared/i18n/MessagesContext';
 import { PageTabs, pageTabId } from './PageTabs';
 import { ResultsSidebar } from './ResultsSidebar';
 import { shellMessages } from './shellMessages';
-import { SimulatorPage } from './SimulatorPage';
+import { PAGES } from './pages';
 import { SkipLink } from './SkipLink';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useAfterFirstFrame } from '../shared/hooks/useAfterFirstFrame';
 import { useSimulatorSession } from './useSimulatorSession';
-import type { ShownFor } from './useSimulatorSession';
+import type { ShownFor, SimulatorSession } from './useSimulatorSession';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
 import { useUrlSync } from './useUrlSync';
 import { UrlNotice } from './UrlNotice';
-import { createSolverPool } from '../workers/solverClient';
-
-// The solver lab (its charts and tables) and the synthesis page load only when they are opened.
-const LabPanel = lazy(() => import('../features/lab/LabPanel').then((m) => ({ default: m.LabPanel })));
-const SynthesisPage = lazy(() =>
-  import('../features/synthesis/SynthesisPage').then((m) => ({ default: m.SynthesisPage })),
-);
 
 /** Props of AppLayout: the state parsed from the URL. */
 export interface AppLayoutProps {
@@ -40,9 +32,6 @@ const appViews: ShownFor = (s, plotPixels) => ({
   newton: true,
 });
 
-/** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
-const createSynthesisPool = () => createSolverPool();
-
 /** Ids of the main landmark (the skip link's target) and of the page tab panel inside it. */
 const MAIN_ID = 'main-content';
 const PANEL_ID = 'page-panel';
@@ -53,9 +42,9 @@ const PANEL_ID = 'page-panel';
  */
 export function AppLayout({ initial }: AppLayoutProps) {
   const session = useSimulatorSession(initial.state, appViews, true);
-  const { state, dispatch, client, cycle, point, t, playhead } = session;
-  const onLab = state.shell.page === 'lab';
-  const onSynthesis = state.shell.page === 'synthesis';
+  const { state, dispatch, cycle, point, t, playhead } = session;
+  const page = PAGES[state.shell.page];
+  const pageClass = (prefix: string) => (page.layoutClass ? ` ${prefix}-${page.layoutClass}` : '');
   // A phone's simulator page: the phone bar at the bottom and the other controls in a sheet (ControlsColumn).
   const phone = useMediaQuery(PHONE_MEDIA) && state.shell.page === 'simulator';
   const shell = shellMessages(state.shell.locale);
@@ -72,17 +61,17 @@ export function AppLayout({ initial }: AppLayoutProps) {
 
   return (
     <MessagesContext.Provider value={t}>
-      <FramePoseProvider state={state} playhead={playhead} scrub={session.scrub} ghostShown={!onLab}>
+      <FramePoseProvider
+        state={state}
+        playhead={playhead}
+        scrub={session.scrub}
+        ghostShown={state.shell.page !== 'lab'}
+      >
         <SkipLink targetId={MAIN_ID} label={shell.skipToMain} />
-        <div className={`app${onSynthesis ? ' app-synthesis' : ''}`} data-ready={ready ? 'true' : 'false'}>
+        <div className={`app${pageClass('app')}`} data-ready={ready ? 'true' : 'false'}>
           <header className="topbar">
             <Brand />
-            <PageTabs
-              page={state.shell.page}
-              dispatch={dispatch}
-              panelId={PANEL_ID}
-              synthesisLabel={shell.viewSynthesis}
-            />
+            <PageTabs page={state.shell.page} locale={state.shell.locale} dispatch={dispatch} panelId={PANEL_ID} />
             <DesignBar
               state={state}
               dispatch={dispatch}
@@ -94,36 +83,27 @@ export function AppLayout({ initial }: AppLayoutProps) {
             <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
           </header>
           <UrlNotice ignored={initial.ignored} />
-          {onSynthesis ? null : <ControlsColumn session={session} label={shell.controlsLabel} phone={phone} />}
+          {page.sideColumns && <ControlsColumn session={session} label={shell.controlsLabel} phone={phone} />}
           <main className="app-main" id={MAIN_ID} tabIndex={-1}>
             <div
-              className={`main${onLab ? ' main-lab' : ''}${onSynthesis ? ' main-synthesis' : ''}`}
+              className={`main${pageClass('main')}`}
               // One panel element per page: a page opens at its top, not at the last page's scroll.
               key={state.shell.page}
               id={PANEL_ID}
               role="tabpanel"
               aria-labelledby={pageTabId(state.shell.page)}
             >
-              {onSynthesis ? (
-                <Suspense fallback={<p className="note">{shell.viewSynthesis}…</p>}>
-                  <SynthesisPage state={state} dispatch={dispatch} createPool={createSynthesisPool} />
-                </Suspense>
-              ) : onLab ? (
-                <Suspense fallback={<p className="note">{t.labRun}…</p>}>
-                  <LabPanel client={client} state={state} dispatch={dispatch} />
-                </Suspense>
-              ) : (
-                <SimulatorPage session={session} lateShown={resultsShown} />
-              )}
+              {page.view({ session, lateShown: resultsShown })}
             </div>
           </main>
-          {onSynthesis ? null : resultsShown ? (
-            <ResultsSidebar session={session} label={shell.resultsLabel} />
-          ) : (
-            <aside className="rightbar" aria-label={shell.resultsLabel} />
-          )}
+          {page.sideColumns && <ResultsColumn session={session} label={shell.resultsLabel} shown={resultsShown} />}
         </div>
       </FramePoseProvider>
     </MessagesContext.Provider>
   );
+}
+
+/** The results column, or its empty landmark until it mounts just after the first frame. */
+function ResultsColumn({ session, label, shown }: { session: SimulatorSession; label: string; shown: boolean }) {
+  return shown ? <ResultsSidebar session={session} label={label} /> : <aside className="rightbar" aria-label={label} />;
 }

@@ -1,14 +1,14 @@
 import { memo, useRef } from 'react';
 import type { Dispatch, KeyboardEvent } from 'react';
-import type { Action, Page } from '../shared/state/appState';
-import { useMessages } from '../shared/i18n/MessagesContext';
+import type { Action, Locale, Page } from '../shared/state/appState';
+import { PAGES, PAGE_ORDER } from './pages';
 
-/** Props of PageTabs: the page shown, the dispatcher, the id of the tab panel the tabs control, the synthesis tab's name. */
+/** Props of PageTabs: the page shown, the language, the dispatcher, the id of the tab panel the tabs control. */
 export interface PageTabsProps {
   page: Page;
+  locale: Locale;
   dispatch: Dispatch<Action>;
   panelId: string;
-  synthesisLabel: string;
 }
 
 /** Id of a page's tab, for the tab panel's aria-labelledby. */
@@ -16,23 +16,20 @@ export function pageTabId(page: Page): string {
   return `tab-${page}`;
 }
 
-const PAGES: readonly Page[] = ['simulator', 'lab', 'synthesis'];
-
 /** The page a key moves to from page in the WAI-ARIA tabs pattern (arrows wrap, Home/End), or null. */
 export function pageForKey(page: Page, key: string): Page | null {
-  const i = PAGES.indexOf(page);
-  const n = PAGES.length;
-  if (key === 'ArrowRight') return PAGES[(i + 1) % n];
-  if (key === 'ArrowLeft') return PAGES[(i - 1 + n) % n];
-  if (key === 'Home') return PAGES[0];
-  if (key === 'End') return PAGES[n - 1];
+  const i = PAGE_ORDER.indexOf(page);
+  const n = PAGE_ORDER.length;
+  if (key === 'ArrowRight') return PAGE_ORDER[(i + 1) % n];
+  if (key === 'ArrowLeft') return PAGE_ORDER[(i - 1 + n) % n];
+  if (key === 'Home') return PAGE_ORDER[0];
+  if (key === 'End') return PAGE_ORDER[n - 1];
   return null;
 }
 
-function PageTabsImpl({ page, dispatch, panelId, synthesisLabel }: PageTabsProps) {
-  const t = useMessages();
+function PageTabsImpl({ page, locale, dispatch, panelId }: PageTabsProps) {
   const tabs = useRef(new Map<Page, HTMLButtonElement>());
-  const names: Record<Page, string> = { simulator: t.viewSimulator, lab: t.viewLab, synthesis: synthesisLabel };
+  const name = (p: Page) => PAGES[p].label[locale];
   const onKeyDown = (e: KeyboardEvent<HTMLButtonElement>) => {
     const next = pageForKey(page, e.key);
     if (!next) return;
@@ -42,8 +39,8 @@ function PageTabsImpl({ page, dispatch, panelId, synthesisLabel }: PageTabsProps
     dispatch({ type: 'setPage', page: next });
   };
   return (
-    <div className="page-tabs" role="tablist" aria-label={PAGES.map((p) => names[p]).join(' / ')}>
-      {PAGES.map((p) => (
+    <div className="page-tabs" role="tablist" aria-label={PAGE_ORDER.map(name).join(' / ')}>
+      {PAGE_ORDER.map((p) => (
         <button
           key={p}
           ref={(el) => {
@@ -60,7 +57,7 @@ function PageTabsImpl({ page, dispatch, panelId, synthesisLabel }: PageTabsProps
           onClick={() => dispatch({ type: 'setPage', page: p })}
           onKeyDown={onKeyDown}
         >
-          {names[p]}
+          {name(p)}
         </button>
       ))}
     </div>
@@ -68,7 +65,7 @@ function PageTabsImpl({ page, dispatch, panelId, synthesisLabel }: PageTabsProps
 }
 
 /**
- * The Simulator / Solver lab / Synthesis tabs in the top bar, with the WAI-ARIA tabs keyboard pattern: one Tab stop
+ * The pages' tabs in the top bar (PAGES, in its order), with the WAI-ARIA tabs keyboard pattern: one Tab stop
  * (roving tabindex), Left/Right arrows move between the tabs and wrap, Home and End go to the first and last.
  */
 export const PageTabs = memo(PageTabsImpl);

@@ -8,8 +8,6 @@ export interface ShellMessages {
   /** Names of the two side landmarks of the full app: the controls and the results column. */
   controlsLabel: string;
   resultsLabel: string;
-  /** The synthesis page's tab. */
-  viewSynthesis: string;
   /** The canvas's control hint; crank and coupler say whether A and P can be dragged (not locked). */
   canvasHint: (movable: { crank: boolean; coupler: boolean }) => string;
 }
@@ -18,7 +16,6 @@ const EN: ShellMessages = {
   skipToMain: 'Skip to main content',
   controlsLabel: 'Controls',
   resultsLabel: 'Results, export and share',
-  viewSynthesis: 'Synthesis',
   canvasHint: ({ crank, coupler }) => {
     const drag = [crank ? 'A to turn the crank' : '', coupler ? 'P to move the coupler point' : '', 'elsewhere to pan']
       .filter(Boolean)
@@ -32,7 +29,6 @@ const ZH_TW: ShellMessages = {
   skipToMain: '跳到主要內容',
   controlsLabel: '控制項',
   resultsLabel: '結果、匯出與分享',
-  viewSynthesis: '機構合成',
   canvasHint: ({ crank, coupler }) => {
     const drag = [crank ? ' A 轉動曲柄' : '', coupler ? ' P 移動耦點' : '', '其他地方平移'].filter(Boolean).join('、');
     const keys = crank ? '← → 轉動曲柄（Shift：10°），' : '';

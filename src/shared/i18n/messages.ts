@@ -262,8 +262,6 @@ export interface Messages {
   /** Tail of a long list: how many more were ignored. */
   urlIgnoredMore: (count: string) => string;
   urlNoticeDismiss: string;
-  viewSimulator: string;
-  viewLab: string;
   labRun: string;
   methodNames: Record<SweepMethod, string>;
   /** Status line: the solver worker stopped (missed its deadline or died) and was restarted. */

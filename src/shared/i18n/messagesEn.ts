@@ -309,8 +309,6 @@ export const messagesEn: Messages = {
   urlIgnoredSeparator: ', ',
   urlIgnoredMore: (count) => `and ${count} more`,
   urlNoticeDismiss: 'Dismiss',
-  viewSimulator: 'Simulator',
-  viewLab: 'Solver lab',
   labRun: 'Run',
   methodNames: {
     'closed-form': 'Closed form',

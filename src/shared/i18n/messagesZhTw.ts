@@ -308,8 +308,6 @@ export const messagesZhTw: Messages = {
   urlIgnoredSeparator: '、',
   urlIgnoredMore: (count) => `另有 ${count} 個`,
   urlNoticeDismiss: '關閉',
-  viewSimulator: '模擬器',
-  viewLab: '求解器實驗室',
   labRun: '執行',
   methodNames: {
     'closed-form': '封閉解',

@@ -1,23 +1,14 @@
-import type { DesignAction, DesignState } from './slices/designSlice';
-import { DEFAULT_DESIGN, designReducer } from './slices/designSlice';
-import type { DisplayAction, DisplayState } from './slices/displaySlice';
-import { DEFAULT_DISPLAY, displayReducer } from './slices/displaySlice';
-import type { LabAction, LabState } from './slices/labSlice';
-import { DEFAULT_LAB, labReducer } from './slices/labSlice';
-import type { Direction, MotionAction, MotionState } from './slices/motionSlice';
-import { DEFAULT_MOTION, motionReducer } from './slices/motionSlice';
-import type { ShellAction, ShellState } from './slices/shellSlice';
-import { DEFAULT_SHELL, shellReducer } from './slices/shellSlice';
-import type { SolverAction, SolverState } from './slices/solverSlice';
-import { DEFAULT_SOLVER, solverReducer } from './slices/solverSlice';
-import type { SynPathAction, SynPathState } from './slices/synthesisSlice';
-import { DEFAULT_SYN_PATH, synPathReducer } from './slices/synthesisSlice';
-import type { SynMotionAction, SynMotionState } from './slices/synMotionSlice';
-import { DEFAULT_SYN_MOTION, synMotionReducer } from './slices/synMotionSlice';
-import type { SynFunctionAction, SynFunctionState } from './slices/synFunctionSlice';
-import { DEFAULT_SYN_FUNCTION, synFunctionReducer } from './slices/synFunctionSlice';
-import type { ForcesAction, ForcesState } from './slices/forcesSlice';
-import { DEFAULT_FORCES, forcesReducer } from './slices/forcesSlice';
+import type { Direction } from './slices/motionSlice';
+import { DESIGN_SLICE } from './slices/designSlice';
+import { MOTION_SLICE } from './slices/motionSlice';
+import { DISPLAY_SLICE } from './slices/displaySlice';
+import { SOLVER_SLICE } from './slices/solverSlice';
+import { SHELL_SLICE } from './slices/shellSlice';
+import { LAB_SLICE } from './slices/labSlice';
+import { SYN_PATH_SLICE } from './slices/synthesisSlice';
+import { FORCES_SLICE } from './slices/forcesSlice';
+import { SYN_MOTION_SLICE } from './slices/synMotionSlice';
+import { SYN_FUNCTION_SLICE } from './slices/synFunctionSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -41,45 +32,38 @@ export { SAMPLES_MAX, SAMPLES_MIN, SAMPLE_CHOICES } from './slices/solverSlice';
 export type { PathInput, PathTiming, PivotBox, SynPathState, SynthesisMode } from './slices/synthesisSlice';
 
 /**
- * The whole shareable state of the app, one slice per concern; lengths in one user unit, angles in degrees.
- * Each slice (./slices) owns its fields, defaults, reducer and URL keys; this module only composes them.
+ * Every slice of the app state, registered once (each slice file exports its Slice: summary, defaults, reducer, URL keys,
+ * and as a type its own actions). AppState, DEFAULT_STATE, the Action union, the reducer, the URL table (shared/url/urlKeys.ts) and
+ * the docs' lists of slices and keys are derived from it, in this order. A new slice is a slice file and one line
+ * here (docs/ARCHITECTURE.md "To add a slice").
  */
-export interface AppState {
-  /** What the linkage is: lengths, branch, coupler point. */
-  design: DesignState;
-  /** Where the crank is, how it plays, and the input motion of the rate analysis. */
-  motion: MotionState;
-  /** What the canvas and the plots show. */
-  display: DisplayState;
-  /** How the cycle is swept. */
-  solver: SolverState;
-  /** The language and the page. */
-  shell: ShellState;
-  /** The solver lab's own settings. */
-  lab: LabState;
-  /** The synthesis page's mode and its Path mode's task. */
-  synPath: SynPathState;
-  /** The length unit, and the forces: on or off, mass model, loads, force arrows. */
-  forces: ForcesState;
-  /** The synthesis page's Motion mode: poses and the pivots or dyads chosen. */
-  synMotion: SynMotionState;
-  /** The synthesis page's Function mode: y = f(x), its ranges and precision points. */
-  synFunction: SynFunctionState;
-}
+export const SLICES = {
+  design: DESIGN_SLICE,
+  motion: MOTION_SLICE,
+  display: DISPLAY_SLICE,
+  solver: SOLVER_SLICE,
+  shell: SHELL_SLICE,
+  lab: LAB_SLICE,
+  synPath: SYN_PATH_SLICE,
+  forces: FORCES_SLICE,
+  synMotion: SYN_MOTION_SLICE,
+  synFunction: SYN_FUNCTION_SLICE,
+};
+
+/** The slices' names in SLICES's order (the URL table's order). */
+export type SliceName = keyof typeof SLICES;
+
+/** The slices' names, in SLICES's order. */
+export const SLICE_NAMES = Object.keys(SLICES) as SliceName[];
+
+/**
+ * The whole shareable state of the app, one field per slice of SLICES; lengths in one user unit, angles in
+ * degrees. Each slice (./slices) owns its fields, defaults, reducer and URL keys; this module only composes them.
+ */
+export type AppState = { [K in SliceName]: (typeof SLICES)[K]['defaults'] };
 
 /** The report's linkage at 45 degrees on the open branch, with every slice at its default. */
-export const DEFAULT_STATE: AppState = {
-  design: DEFAULT_DESIGN,
-  motion: DEFAULT_MOTION,
-  display: DEFAULT_DISPLAY,
-  solver: DEFAULT_SOLVER,
-  shell: DEFAULT_SHELL,
-  lab: DEFAULT_LAB,
-  synPath: DEFAULT_SYN_PATH,
-  forces: DEFAULT_FORCES,
-  synMotion: DEFAULT_SYN_MOTION,
-  synFunction: DEFAULT_SYN_FUNCTION,
-};
+export const DEFAULT_STATE = Object.fromEntries(SLICE_NAMES.map((name) => [name, SLICES[name].defaults])) as AppState;
 
 /** Actions that more than one slice handles. */
 export type SharedAction =
@@ -89,19 +73,14 @@ export type SharedAction =
   | { type: 'applyPreset'; linkage: Linkage; theta2Deg: number; branch: Branch; coupler: CouplerPoint }
   | { type: 'replace'; state: AppState };
 
-/** Every state change the UI can make. */
-export type Action =
-  | DesignAction
-  | MotionAction
-  | DisplayAction
-  | SolverAction
-  | ShellAction
-  | LabAction
-  | SynPathAction
-  | ForcesAction
-  | SynMotionAction
-  | SynFunctionAction
-  | SharedAction;
+/** Every state change the UI can make: each slice's own actions and the shared ones. */
+export type Action = { [K in SliceName]: NonNullable<(typeof SLICES)[K]['actionType']> }[SliceName] | SharedAction;
+
+/** A slice's reducer, seen from the loop over SLICES. */
+type AnyReducer = (s: unknown, action: Action) => unknown;
+
+/** Changing page stops Play: no other page shows the animation. */
+const STOP_PLAY: Action = { type: 'setPlaying', playing: false };
 
 /**
  * The app's reducer: each slice's reducer sees every action (Redux's combineReducers); pure, and returns the
@@ -109,23 +88,13 @@ export type Action =
  */
 export function reducer(state: AppState, action: Action): AppState {
   if (action.type === 'replace') return action.state;
-  // Changing page stops Play: no other page shows the animation.
   const leavesPage = action.type === 'setPage' && action.page !== state.shell.page;
-  const motion = leavesPage
-    ? motionReducer(state.motion, { type: 'setPlaying', playing: false })
-    : motionReducer(state.motion, action);
-  const next: AppState = {
-    design: designReducer(state.design, action),
-    motion,
-    display: displayReducer(state.display, action),
-    solver: solverReducer(state.solver, action),
-    shell: shellReducer(state.shell, action),
-    lab: labReducer(state.lab, action),
-    synPath: synPathReducer(state.synPath, action),
-    forces: forcesReducer(state.forces, action),
-    synMotion: synMotionReducer(state.synMotion, action),
-    synFunction: synFunctionReducer(state.synFunction, action),
-  };
-  const changed = (Object.keys(next) as (keyof AppState)[]).some((k) => next[k] !== state[k]);
-  return changed ? next : state;
+  const next = {} as Record<SliceName, unknown>;
+  let changed = false;
+  for (const name of SLICE_NAMES) {
+    const sliceAction = leavesPage && name === 'motion' ? STOP_PLAY : action;
+    next[name] = (SLICES[name].reducer as AnyReducer)(state[name], sliceAction);
+    changed ||= next[name] !== state[name];
+  }
+  return changed ? (next as AppState) : state;
 }

@@ -35,7 +35,7 @@ export interface UrlConstraint {
 }
 
 /** The slices of the app state (each a plain object of fields). */
-export type SliceName = keyof AppState;
+type SliceName = keyof AppState;
 
 /** A lens on one field of one slice: sliceLens('motion')('theta2Deg'). */
 export function sliceLens<S extends SliceName>(slice: S) {

@@ -1,14 +1,4 @@
-import { DESIGN_URL_KEYS } from '../state/slices/designSlice';
-import { DISPLAY_URL_KEYS } from '../state/slices/displaySlice';
-import { FORCES_URL_KEYS } from '../state/slices/forcesSlice';
-import { LAB_URL_KEYS } from '../state/slices/labSlice';
-import { MOTION_URL_KEYS } from '../state/slices/motionSlice';
-import { SHELL_URL_KEYS } from '../state/slices/shellSlice';
-import { SOLVER_URL_KEYS } from '../state/slices/solverSlice';
-import { SYN_FUNCTION_URL_KEYS } from '../state/slices/synFunctionSlice';
-import { SYN_MOTION_URL_KEYS } from '../state/slices/synMotionSlice';
-import { SYN_PATH_URL_KEYS } from '../state/slices/synthesisSlice';
-import { DEFAULT_STATE } from '../state/appState';
+import { DEFAULT_STATE, SLICES, SLICE_NAMES } from '../state/appState';
 import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
 import { listCodec } from './urlCodec';
 import type { UrlConstraint, UrlKey, UrlTarget } from './urlKey';
@@ -26,20 +16,11 @@ const EMBED_URL_KEYS: readonly UrlKey<unknown>[] = [
 ];
 
 /**
- * The one URL table: every slice's keys, in the order serializeState writes them. docs/instructors.md "URL keys"
- * lists them; panels and lock go only into embed URLs.
+ * The one URL table: every slice's keys in SLICES's order, the order serializeState writes them, then the embed-only
+ * keys (panels and lock go only into embed URLs). docs/instructors.md "URL keys" lists them (tests check the list).
  */
 export const URL_KEYS: readonly UrlKey<unknown>[] = [
-  ...DESIGN_URL_KEYS,
-  ...MOTION_URL_KEYS,
-  ...DISPLAY_URL_KEYS,
-  ...SOLVER_URL_KEYS,
-  ...SHELL_URL_KEYS,
-  ...LAB_URL_KEYS,
-  ...SYN_PATH_URL_KEYS,
-  ...FORCES_URL_KEYS,
-  ...SYN_MOTION_URL_KEYS,
-  ...SYN_FUNCTION_URL_KEYS,
+  ...SLICE_NAMES.flatMap((name) => SLICES[name].urlKeys),
   ...EMBED_URL_KEYS,
 ];
 

@@ -9,7 +9,7 @@ export type UrlValue = number | string | boolean;
 
 /**
  * The state as URL keys and JSON values, the keys serializeState writes for a share link: numbers where the
- * URL text is a number (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
+ * URL text is a number and the value is not text (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
  * (br 'open', dir 'ccw'). valueText gives each value's URL text back.
  */
 export function stateValues(state: AppState): Record<string, UrlValue> {
@@ -17,7 +17,13 @@ export function stateValues(state: AppState): Record<string, UrlValue> {
   for (const [name, text] of new URLSearchParams(serializeState(state))) {
     const k = URL_KEYS.find((x) => x.name === name);
     const raw = k?.get({ state, embed: DEFAULT_EMBED });
-    out[name] = typeof raw === 'boolean' ? raw : Number.isFinite(plainDecimal(text)) ? Number(text) : text;
+    // A text value stays text even when it reads as a number (the expression "1.50" or "-0" is not 1.5 or 0).
+    out[name] =
+      typeof raw === 'boolean'
+        ? raw
+        : typeof raw !== 'string' && Number.isFinite(plainDecimal(text))
+          ? Number(text)
+          : text;
   }
   return out;
 }

@@ -2,9 +2,6 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { AppState } from '../../../src/shared/state/appState';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
-import { OMEGA_UNITS } from '../../../src/shared/state/inputMotion';
-import { SWEEP_METHODS } from '../../../src/solver/methods';
-import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../../src/study/options';
 import { parseUrl, serializeState } from '../../../src/shared/url/url';
 import type { BadField, DesignFileError } from '../../../src/features/designs/designFile';
 import {
@@ -18,71 +15,11 @@ import {
   writeDesignFile,
 } from '../../../src/features/designs/designFile';
 import { withFields } from '../../shared/state/stateFixtures';
+import { SLICE_ARBITRARIES, anyLinkState as anyState, oneSliceState } from '../../shared/state/sliceArbitraries';
+import { SLICE_NAMES } from '../../../src/shared/state/appState';
 
 const SEED = 20260119;
 const SAVED_AT = new Date('2026-01-19T10:30:00.000Z');
-
-/** A double on a decimal grid (the URL's angle grid: 9 decimals). */
-function onDecimalGrid(lo: number, hi: number, decimals: number): fc.Arbitrary<number> {
-  const scale = 10 ** decimals;
-  return fc.integer({ min: Math.ceil(lo * scale), max: Math.floor(hi * scale) }).map((k) => k / scale);
-}
-
-/** A double with at most `digits` significant digits in [lo, hi] (the URL's view grid). */
-function onSignificantGrid(lo: number, hi: number, digits: number): fc.Arbitrary<number> {
-  return fc
-    .double({ min: lo, max: hi, noNaN: true })
-    .map((x) => Number(x.toPrecision(digits)))
-    .filter((x) => x >= lo && x <= hi);
-}
-
-const length = fc.double({ min: 1e-9, max: 1e9, noNaN: true, noDefaultInfinity: true });
-
-/** Random valid states of every slice the file holds, on the URL's rounding grids, Play on or off. */
-const anyState: fc.Arbitrary<AppState> = fc
-  .record({
-    linkage: fc.record({ r1: length, r2: length, r3: length, r4: length }),
-    theta2Deg: onDecimalGrid(0, 359.999999999, 9),
-    branch: fc.constantFrom('open' as const, 'crossed' as const),
-    coupler: fc.record({
-      distance: fc.double({ min: 0, max: 1e9, noNaN: true, noDefaultInfinity: true }),
-      angleDeg: onDecimalGrid(-179.999999999, 180, 9),
-    }),
-    playing: fc.boolean(),
-    speedDegPerFrame: fc.double({ min: 0.5, max: 10, noNaN: true }),
-    direction: fc.constantFrom(1 as const, -1 as const),
-    omega2RadPerS: fc.double({ min: -1e6, max: 1e6, noNaN: true }),
-    alpha2RadPerS2: fc.double({ min: -1e9, max: 1e9, noNaN: true }),
-    omegaUnit: fc.constantFrom(...OMEGA_UNITS),
-    showGrid: fc.boolean(),
-    showAngles: fc.boolean(),
-    showGhost: fc.boolean(),
-    showTrace: fc.boolean(),
-    showDeadCentres: fc.boolean(),
-    showInstantCentres: fc.boolean(),
-    showVelocity: fc.boolean(),
-    showAcceleration: fc.boolean(),
-    plotKind: fc.constantFrom('angles' as const, 'velocities' as const, 'accelerations' as const),
-    plotLayout: fc.constantFrom('separate' as const, 'together' as const),
-    view: fc.record({
-      zoom: onSignificantGrid(0.001, 1000, 6),
-      panX: onSignificantGrid(-100, 100, 6),
-      panY: onSignificantGrid(-100, 100, 6),
-    }),
-    nrStart: fc.constantFrom('continuation' as const, 'cold' as const),
-    samples: fc.integer({ min: 12, max: 36000 }),
-    method: fc.constantFrom(...SWEEP_METHODS),
-    tol: fc.constantFrom(null, ...LAB_TOLERANCES),
-    locale: fc.constantFrom('en' as const, 'zh-TW' as const),
-    page: fc.constantFrom('simulator' as const, 'lab' as const),
-    labStepDeg: fc.constantFrom(...LAB_STEPS_DEG),
-    band: fc
-      .tuple(fc.double({ min: 0, max: 180, noNaN: true }), fc.double({ min: 0, max: 180, noNaN: true }))
-      .filter(([a, b]) => a !== b),
-  })
-  .map(({ band: [a, b], ...s }) =>
-    withFields(DEFAULT_STATE, { ...s, muBandLoDeg: Math.min(a, b), muBandHiDeg: Math.max(a, b) }),
-  );
 
 /** -0 and 0 are written alike; the state never needs to tell them apart. */
 function plain<T>(x: T): T {
@@ -152,6 +89,29 @@ describe('readDesignFile', () => {
       }),
       { seed: SEED, numRuns: 300 },
     );
+  });
+
+  it.each(SLICE_NAMES)('round-trips any %s slice exactly (seeded property, every key of the slice)', (name) => {
+    fc.assert(
+      fc.property(oneSliceState(name), (s) => {
+        const saved = plain(s);
+        const r = readDesignFile(writeDesignFile(saved, 'd', SAVED_AT), DEFAULT_STATE);
+        if (!r.ok) throw new Error(JSON.stringify(r.error));
+        const expected = { ...saved, shell: DEFAULT_STATE.shell, motion: { ...saved.motion, playing: false } };
+        expect(plain(r.state)).toEqual(expected);
+      }),
+      { seed: SEED, numRuns: 100 },
+    );
+    expect(SLICE_ARBITRARIES[name]).toBeDefined();
+  });
+
+  it('keeps an off-centre pivot box of the path task (bp) exactly', () => {
+    const pivotBox = { min: { x: -30, y: 5 }, max: { x: 12.5, y: 40 } };
+    const s = { ...DEFAULT_STATE, synPath: { ...DEFAULT_STATE.synPath, mode: 'path' as const, pivotBox } };
+    const file = JSON.parse(writeDesignFile(s, 'box', SAVED_AT));
+    expect(file.state.bp).toBe('-30,5,12.5,40');
+    const r = readDesignFile(JSON.stringify(file), DEFAULT_STATE);
+    expect(r.ok && r.state.synPath.pivotBox).toEqual(pivotBox);
   });
 
   it('reads back the name and the time', () => {

@@ -1,77 +1,15 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import type { AppState } from '../../../src/shared/state/appState';
-import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../../src/study/options';
-import { SWEEP_METHODS } from '../../../src/solver/methods';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../../src/shared/url/url';
 import { DEFAULT_TARGET, URL_KEYS } from '../../../src/shared/url/urlKeys';
 import type { FlatState } from '../state/stateFixtures';
 import { withFields } from '../state/stateFixtures';
+import { anyLinkState, oneSliceState } from '../state/sliceArbitraries';
+import { SLICE_NAMES } from '../../../src/shared/state/appState';
 
 const quiet = () => undefined;
 const SEED = 20251222;
-
-/** A double that is the nearest one to a decimal with `decimals` places: the URL's angle grid. */
-function onDecimalGrid(lo: number, hi: number, decimals: number): fc.Arbitrary<number> {
-  const scale = 10 ** decimals;
-  return fc.integer({ min: Math.ceil(lo * scale), max: Math.floor(hi * scale) }).map((k) => k / scale);
-}
-
-/** A double with at most `digits` significant digits, in [lo, hi]: the URL's view grid. */
-function onSignificantGrid(lo: number, hi: number, digits: number): fc.Arbitrary<number> {
-  return fc
-    .double({ min: lo, max: hi, noNaN: true })
-    .map((x) => Number(x.toPrecision(digits)))
-    .filter((x) => x >= lo && x <= hi);
-}
-
-const length = fc.double({ min: 1e-9, max: 1e9, noNaN: true, noDefaultInfinity: true });
-const band = fc
-  .tuple(fc.double({ min: 0, max: 180, noNaN: true }), fc.double({ min: 0, max: 180, noNaN: true }))
-  .filter(([a, b]) => a !== b)
-  .map(([a, b]) => [Math.min(a, b), Math.max(a, b)] as const);
-
-/** Valid states whose angles and view lie on the URL's rounding grids (lengths and rates are any doubles). */
-const gridState: fc.Arbitrary<AppState> = fc
-  .record({
-    linkage: fc.record({ r1: length, r2: length, r3: length, r4: length }),
-    theta2Deg: onDecimalGrid(0, 359.999999999, 9),
-    branch: fc.constantFrom('open' as const, 'crossed' as const),
-    coupler: fc.record({
-      distance: fc.double({ min: 0, max: 1e9, noNaN: true, noDefaultInfinity: true }),
-      angleDeg: onDecimalGrid(-179.999999999, 180, 9),
-    }),
-    playing: fc.boolean(),
-    speedDegPerFrame: fc.double({ min: 0.5, max: 10, noNaN: true }),
-    direction: fc.constantFrom(1 as const, -1 as const),
-    showGrid: fc.boolean(),
-    showAngles: fc.boolean(),
-    showGhost: fc.boolean(),
-    showTrace: fc.boolean(),
-    showDeadCentres: fc.boolean(),
-    showInstantCentres: fc.boolean(),
-    showVelocity: fc.boolean(),
-    showAcceleration: fc.boolean(),
-    plotKind: fc.constantFrom('angles' as const, 'velocities' as const, 'accelerations' as const),
-    nrStart: fc.constantFrom('continuation' as const, 'cold' as const),
-    plotLayout: fc.constantFrom('separate' as const, 'together' as const),
-    samples: fc.integer({ min: 12, max: 36000 }),
-    locale: fc.constantFrom('en' as const, 'zh-TW' as const),
-    view: fc.record({
-      zoom: onSignificantGrid(0.001, 1000, 6),
-      panX: onSignificantGrid(-100, 100, 6),
-      panY: onSignificantGrid(-100, 100, 6),
-    }),
-    method: fc.constantFrom(...SWEEP_METHODS),
-    tol: fc.constantFrom(null, ...LAB_TOLERANCES),
-    page: fc.constantFrom('simulator' as const, 'lab' as const),
-    labStepDeg: fc.constantFrom(...LAB_STEPS_DEG),
-    omega2RadPerS: fc.double({ min: -1e6, max: 1e6, noNaN: true }),
-    alpha2RadPerS2: fc.double({ min: -1e9, max: 1e9, noNaN: true }),
-    band,
-  })
-  .map(({ band: [lo, hi], ...s }) => withFields(DEFAULT_STATE, { ...s, muBandLoDeg: lo, muBandHiDeg: hi }));
 
 /** -0 and 0 serialise alike; the state never needs to tell them apart. */
 function withoutNegativeZero<T>(x: T): T {
@@ -94,7 +32,7 @@ describe('serializeState and parseUrl', () => {
 
   it('round-trips any valid state on the URL grids exactly (seeded property)', () => {
     fc.assert(
-      fc.property(gridState, (s) => {
+      fc.property(anyLinkState, (s) => {
         const clean = withoutNegativeZero(s);
         const back = parseUrl(serializeState(clean), DEFAULT_STATE, quiet);
         expect(back.ignored).toEqual([]);
@@ -102,6 +40,27 @@ describe('serializeState and parseUrl', () => {
       }),
       { seed: SEED, numRuns: 300 },
     );
+  });
+
+  it.each(SLICE_NAMES)('round-trips any %s slice exactly (seeded property, every key of the slice)', (name) => {
+    fc.assert(
+      fc.property(oneSliceState(name), (s) => {
+        const clean = withoutNegativeZero(s);
+        const back = parseUrl(serializeState(clean), DEFAULT_STATE, quiet);
+        expect(back.ignored).toEqual([]);
+        expect(withoutNegativeZero(back.state)).toEqual(clean);
+      }),
+      { seed: SEED, numRuns: 100 },
+    );
+  });
+
+  it('keeps an off-centre pivot box of the path task (bp) exactly', () => {
+    const pivotBox = { min: { x: -30, y: 5 }, max: { x: 12.5, y: 40 } };
+    const s = { ...DEFAULT_STATE, synPath: { ...DEFAULT_STATE.synPath, pivotBox } };
+    const q = serializeState(s);
+    expect(new URLSearchParams(q).get('bp')).toBe('-30,5,12.5,40');
+    expect(parseUrl(q, DEFAULT_STATE, quiet).state.synPath.pivotBox).toEqual(pivotBox);
+    expect(parseUrl('bp=-30,5,12.5,40', DEFAULT_STATE, quiet).state.synPath.pivotBox).toEqual(pivotBox);
   });
 
   it('writes any valid state stably: a second round trip changes nothing, angles move < 5e-10 deg (seeded property)', () => {
@@ -141,14 +100,6 @@ describe('serializeState and parseUrl', () => {
       const r = k.parse(k.format(v));
       expect(r, k.name).toEqual({ ok: true, value: v });
     }
-  });
-
-  it('keeps every documented key, grouped by the slice that owns it', () => {
-    // Design, motion, display, solver, shell, lab, then the embed-only keys.
-    expect(URL_KEYS.map((k) => k.name).join(' ')).toBe(
-      'r1 r2 r3 r4 br pd pa ox oy og t2 play spd dir w2 a2 w2u grid ang ghost trace plots vel acc plot mulo muhi dc ic z px py ' +
-        'nr n m tol lang page lstep syn tg tm ts tt bl bc bp in sd frc lu mass rho m2 i2 c2 ca2 m3 i3 c3 ca3 m4 i4 c4 ca4 g gd pfx pfy tl fv cs ps pc pv dy mc mg mq fx xr t2r t4r np panels lock',
-    );
   });
 
   it('writes the optional keys only when they differ from the default', () => {

@@ -4,6 +4,7 @@ import { enumCodec, numberCodec } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { nestedLens, optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 
 /** Coupler point P on the coupler plane: distance from the crank pin A (length unit) and angle from AB (degrees, CCW). */
@@ -103,3 +104,11 @@ export const DESIGN_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('oy', position, placement('y'), DEFAULT_PLACEMENT.y),
   optionalKey('og', groundAngle, placement('angleDeg'), DEFAULT_PLACEMENT.angleDeg),
 ];
+
+/** The design slice's registration in SLICES (appState.ts). */
+export const DESIGN_SLICE: Slice<DesignState, DesignAction> = {
+  summary: 'what the linkage is: lengths, branch, coupler point, placement',
+  defaults: DEFAULT_DESIGN,
+  reducer: designReducer,
+  urlKeys: DESIGN_URL_KEYS,
+};

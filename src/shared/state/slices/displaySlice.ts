@@ -3,6 +3,7 @@ import type { UrlKey, UrlTarget } from '../../url/urlKey';
 import { nestedLens, optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
 import { URL_VIEW_DIGITS } from '../../url/urlPrecision';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 
 /** How the angle plots are laid out: theta3 and theta4 in two charts, or both in one. */
 export type PlotLayout = 'separate' | 'together';
@@ -155,3 +156,11 @@ export const DISPLAY_URL_KEYS: readonly UrlKey<unknown>[] = [
   urlKey('px', numberCodec(PAN_RANGE, { significant: URL_VIEW_DIGITS }), view('panX'), 'state', viewMoved),
   urlKey('py', numberCodec(PAN_RANGE, { significant: URL_VIEW_DIGITS }), view('panY'), 'state', viewMoved),
 ];
+
+/** The display slice's registration in SLICES (appState.ts). */
+export const DISPLAY_SLICE: Slice<DisplayState, DisplayAction> = {
+  summary: 'what the canvas and the plots show: overlays, plot choice, view, transmission band',
+  defaults: DEFAULT_DISPLAY,
+  reducer: displayReducer,
+  urlKeys: DISPLAY_URL_KEYS,
+};

@@ -4,6 +4,7 @@ import type { UrlKey, UrlTarget } from '../../url/urlKey';
 import { nestedLens, optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 
 /** The app's length unit: lengths are numbers in it; the forces convert them to metres (METRES_PER_UNIT). */
 export type LengthUnit = 'mm' | 'cm' | 'm' | 'in';
@@ -170,3 +171,11 @@ export const FORCES_URL_KEYS: readonly UrlKey<unknown>[] = [
   optional('fv', boolCodec, 'showVectors'),
   optional('cs', numberCodec({ min: 1e-6, max: 1 }), 'speedFluctuation'),
 ];
+
+/** The forces slice's registration in SLICES (appState.ts). */
+export const FORCES_SLICE: Slice<ForcesState, ForcesAction> = {
+  summary: 'the length unit, and the forces: on or off, mass model, gravity, loads, force arrows',
+  defaults: DEFAULT_FORCES,
+  reducer: forcesReducer,
+  urlKeys: FORCES_URL_KEYS,
+};

@@ -3,6 +3,7 @@ import { choiceCodec } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 
 /** The solver lab's slice: the input step of its cycle. */
 export interface LabState {
@@ -26,3 +27,11 @@ export function labReducer(s: LabState, action: Action): LabState {
 export const LAB_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('lstep', choiceCodec(LAB_STEPS_DEG), sliceLens('lab')('stepDeg'), DEFAULT_LAB.stepDeg),
 ];
+
+/** The lab slice's registration in SLICES (appState.ts). */
+export const LAB_SLICE: Slice<LabState, LabAction> = {
+  summary: "the solver lab's step",
+  defaults: DEFAULT_LAB,
+  reducer: labReducer,
+  urlKeys: LAB_URL_KEYS,
+};

@@ -4,6 +4,7 @@ import { optionalKey, sliceLens, urlKey } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 import { wrapDeg360 } from '../../../solver/angles';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import type { OmegaUnit } from '../inputMotion';
 
 /** Direction of the animated input: +1 counter-clockwise (theta2 increasing), -1 clockwise. */
@@ -125,3 +126,11 @@ export const MOTION_URL_KEYS: readonly UrlKey<unknown>[] = [
     DEFAULT_MOTION.omegaUnit,
   ),
 ];
+
+/** The motion slice's registration in SLICES (appState.ts). */
+export const MOTION_SLICE: Slice<MotionState, MotionAction> = {
+  summary: 'where the crank is, how it plays, and the input motion of the rate analysis',
+  defaults: DEFAULT_MOTION,
+  reducer: motionReducer,
+  urlKeys: MOTION_URL_KEYS,
+};

@@ -2,13 +2,21 @@ import { enumCodec } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import { LOCALES } from '../../i18n/i18n';
 
 /** UI languages: English (default) and Traditional Chinese. */
 export type Locale = 'en' | 'zh-TW';
 
-/** Which page the app shows: the simulator, the solver lab (work-precision study of the current linkage), or synthesis. */
-export type Page = 'simulator' | 'lab' | 'synthesis';
+/**
+ * Every page of the app and its value in the URL (page=…): the simulator, the solver lab (work-precision study of
+ * the current linkage), synthesis. src/app/pages.tsx gives each its tab and view (a page missing there is a type
+ * error); docs/ARCHITECTURE.md "To add a page".
+ */
+export const PAGE_URL_VALUES = { simulator: 'sim', lab: 'lab', synthesis: 'syn' } as const;
+
+/** Which page the app shows. */
+export type Page = keyof typeof PAGE_URL_VALUES;
 
 /** The shell slice: the language and the page shown. */
 export interface ShellState {
@@ -41,12 +49,16 @@ export const SHELL_URL_KEYS: readonly UrlKey<unknown>[] = [
   urlKey('lang', enumCodec(sameText(LOCALES), true), field('locale')),
   optionalKey(
     'page',
-    enumCodec([
-      ['sim', 'simulator'],
-      ['lab', 'lab'],
-      ['syn', 'synthesis'],
-    ] as const),
+    enumCodec((Object.keys(PAGE_URL_VALUES) as Page[]).map((page) => [PAGE_URL_VALUES[page], page] as const)),
     field('page'),
     DEFAULT_SHELL.page,
   ),
 ];
+
+/** The shell slice's registration in SLICES (appState.ts). */
+export const SHELL_SLICE: Slice<ShellState, ShellAction> = {
+  summary: 'the language and the page',
+  defaults: DEFAULT_SHELL,
+  reducer: shellReducer,
+  urlKeys: SHELL_URL_KEYS,
+};

@@ -5,6 +5,7 @@ import { choiceCodec, enumCodec, integerCodec, nullableCodec } from '../../url/u
 import type { UrlKey } from '../../url/urlKey';
 import { sameText, sliceLens, urlKey } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import { clamp } from './motionSlice';
 
 /** Which start the NR convergence plot and panel show: the previous cycle point or a fixed cold guess. */
@@ -68,3 +69,11 @@ export const SOLVER_URL_KEYS: readonly UrlKey<unknown>[] = [
   urlKey('m', enumCodec(sameText(SWEEP_METHODS)), field('method')),
   urlKey('tol', nullableCodec(choiceCodec(LAB_TOLERANCES), 'default'), field('tol')),
 ];
+
+/** The solver slice's registration in SLICES (appState.ts). */
+export const SOLVER_SLICE: Slice<SolverState, SolverAction> = {
+  summary: 'how the cycle is swept: method, tolerance, NR start, samples',
+  defaults: DEFAULT_SOLVER,
+  reducer: solverReducer,
+  urlKeys: SOLVER_URL_KEYS,
+};

@@ -3,6 +3,7 @@ import { integerCodec, significantText } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 import { decimalTuple } from './synMotionSlice';
 
 /** The synthesis page's Function mode: y = f(x) on an x range, mapped onto the θ2 and θ4 ranges. */
@@ -135,3 +136,11 @@ export const SYN_FUNCTION_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('t4r', rangeCodec('angle'), field('theta4RangeDeg'), DEFAULT_SYN_FUNCTION.theta4RangeDeg),
   optionalKey('np', integerCodec(3, MAX_FN_POINTS), field('precisionPoints'), DEFAULT_SYN_FUNCTION.precisionPoints),
 ];
+
+/** The synFunction slice's registration in SLICES (appState.ts). */
+export const SYN_FUNCTION_SLICE: Slice<SynFunctionState, SynFunctionAction> = {
+  summary: "the synthesis page's Function mode: y = f(x), its ranges and precision points",
+  defaults: DEFAULT_SYN_FUNCTION,
+  reducer: synFunctionReducer,
+  urlKeys: SYN_FUNCTION_URL_KEYS,
+};

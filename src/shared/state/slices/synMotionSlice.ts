@@ -7,6 +7,7 @@ import { optionalKey, sameText, sliceLens } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 import { parseDecimal } from '../../decimal';
 import type { Action } from '../appState';
+import type { Slice } from '../slice';
 
 /** A coupler pose as the page holds it: its point (length unit) and the direction of its frame (degrees, CCW from +x). */
 export interface PoseDeg {
@@ -251,3 +252,11 @@ export const SYN_MOTION_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('mg', groundCodec, field('groundLength'), DEFAULT_SYN_MOTION.groundLength),
   optionalKey('mq', ratioCodec, field('timeRatio'), DEFAULT_SYN_MOTION.timeRatio),
 ];
+
+/** The synMotion slice's registration in SLICES (appState.ts). */
+export const SYN_MOTION_SLICE: Slice<SynMotionState, SynMotionAction> = {
+  summary: "the synthesis page's Motion mode: poses and the pivots or dyads chosen",
+  defaults: DEFAULT_SYN_MOTION,
+  reducer: synMotionReducer,
+  urlKeys: SYN_MOTION_URL_KEYS,
+};

@@ -5,6 +5,7 @@ import type { UrlKey } from '../../url/urlKey';
 import { optionalKey, sameText, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
 import { plainDecimal } from '../../decimal';
+import type { Slice } from '../slice';
 
 /** The synthesis page's modes: path, motion or function generation. */
 export type SynthesisMode = 'path' | 'motion' | 'function';
@@ -210,3 +211,11 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('in', enumCodec(sameText(['crank', 'any'] as const)), field('input'), DEFAULT_SYN_PATH.input),
   optionalKey('sd', integerCodec(1, 2 ** 31 - 1), field('seed'), DEFAULT_SYN_PATH.seed),
 ];
+
+/** The synPath slice's registration in SLICES (appState.ts). */
+export const SYN_PATH_SLICE: Slice<SynPathState, SynPathAction> = {
+  summary: "the synthesis page's mode and its Path mode's task: targets, timing, bounds, seed",
+  defaults: DEFAULT_SYN_PATH,
+  reducer: synPathReducer,
+  urlKeys: SYN_PATH_URL_KEYS,
+};
