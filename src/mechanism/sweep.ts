@@ -9,6 +9,8 @@
  * turns back. Rates come from the same Jacobian at the converged pose: J q' = e ω, J q'' = rhs (rates.ts).
  */
 import { describe } from '../solver/validate';
+import { planDyads, poseDyads } from './dyads';
+import type { DyadPlan } from './dyads';
 import { luFactor, luSolve } from './lu';
 import { buildModel, evaluate, newTrig, sliderState, trigOf } from './model';
 import type { Model, Trig } from './model';
@@ -26,6 +28,8 @@ export const SINGULAR_PIVOT = 1e-12;
 /** A step (input units, relative) below which the continuation gives up: the input cannot go on. */
 const H_MIN = 1e-12;
 const MAX_ITERATIONS = 16;
+/** The dyad path walks between inputs in steps of at most this (rad), checking that every dyad closes. */
+export const MAX_DYAD_STEP = 0.05;
 const EPS = Number.EPSILON;
 
 /** Every array the solver works in, allocated once per sweep. */
@@ -131,6 +135,7 @@ function allocate(model: Model, count: number, withRates: boolean): MechanismSwe
     detJ: nan(),
     iterations: new Uint16Array(count),
     scale: model.scale,
+    method: 'newton',
   };
 }
 
@@ -247,6 +252,76 @@ function sliderRates(
   return sRates;
 }
 
+/** Exact rates at the pose ws.q (input t): J at the pose itself, J q' = e ω, J q'' = rhs; det J into out. */
+function exactRates(
+  ws: Workspace,
+  t: number,
+  omega: number,
+  alpha: number,
+  qd: Float64Array,
+  qdd: Float64Array,
+  out: MechanismSweep,
+  i: number,
+): void {
+  const n = ws.model.n;
+  ws.qTry.set(ws.q);
+  factorAt(ws, t);
+  qd.fill(0);
+  qd[n - 1] = omega;
+  luSolve(ws.jac, n, ws.perm, qd, ws.tmp);
+  accelerationRhs(ws.model, ws.q, qd, ws.tr, alpha, qdd);
+  luSolve(ws.jac, n, ws.perm, qdd, ws.tmp);
+  out.detJ[i] = ws.det;
+}
+
+/**
+ * The dyad path (dyads.ts): each input is reached from the previous one in steps of at most MAX_DYAD_STEP, every
+ * step posed in closed form; a dyad that cannot close stops the path there ('limit'), as in the Newton path.
+ */
+function sweepDyads(
+  ws: Workspace,
+  plan: DyadPlan,
+  inputs: ArrayLike<number>,
+  rates: { omega: number; alpha: number } | undefined,
+  out: MechanismSweep,
+): void {
+  const { q, qTry } = ws;
+  const n = ws.model.n;
+  const qd = rates ? new Float64Array(n) : null;
+  const qdd = rates ? new Float64Array(n) : null;
+  let t = 0;
+  let blocked = 0;
+  for (let i = 0; i < inputs.length; i++) {
+    const target = inputs[i];
+    if (blocked !== 0 && (target - t) * blocked > 0) {
+      out.status[i] = 1;
+      continue;
+    }
+    blocked = 0;
+    const steps = Math.ceil(Math.abs(target - t) / MAX_DYAD_STEP);
+    qTry.set(q);
+    let reached = true;
+    for (let k = 1; k <= steps; k++) {
+      const tt = k === steps ? target : t + ((target - t) * k) / steps;
+      if (!poseDyads(plan, tt, qTry)) {
+        reached = false;
+        break;
+      }
+    }
+    if (!reached) {
+      // Not a step of it past the last reachable input: wait there for the path to turn back.
+      blocked = Math.sign(target - t);
+      out.status[i] = 1;
+      continue;
+    }
+    q.set(qTry);
+    t = target;
+    out.ok[i] = 1;
+    if (qd && qdd && rates) exactRates(ws, t, rates.omega, rates.alpha, qd, qdd, out, i);
+    record(ws, out, i, qd, qdd);
+  }
+}
+
 /** Throws an Error naming the index unless every input is finite, and unless rates are two finite numbers. */
 function checkInputs(inputs: ArrayLike<number>, rates: { omega: number; alpha: number } | undefined): void {
   if (typeof inputs !== 'object' || inputs === null || typeof inputs.length !== 'number') {
@@ -308,6 +383,12 @@ export function sweepMechanism(
     out.status.fill(2);
     return out;
   }
+  const plan = planDyads(model);
+  out.method = plan ? 'dyads' : 'newton';
+  if (plan) {
+    sweepDyads(ws, plan, inputs, rates, out);
+    return out;
+  }
   tangentFromFactors(ws);
   const detSign = Math.sign(ws.det);
   const qd = rates ? new Float64Array(n) : null;
@@ -367,14 +448,7 @@ export function sweepMechanism(
     out.detJ[i] = det;
     if (rates && qd && qdd) {
       // Exact rates need J at the converged pose itself (the continuation's factors are one chord step behind).
-      ws.qTry.set(q);
-      factorAt(ws, t);
-      qd.fill(0);
-      qd[n - 1] = rates.omega * rateScale;
-      luSolve(ws.jac, n, ws.perm, qd, ws.tmp);
-      accelerationRhs(model, q, qd, ws.tr, rates.alpha * rateScale, qdd);
-      luSolve(ws.jac, n, ws.perm, qdd, ws.tmp);
-      out.detJ[i] = ws.det;
+      exactRates(ws, t, rates.omega * rateScale, rates.alpha * rateScale, qd, qdd, out, i);
       tangentFromFactors(ws);
     }
     record(ws, out, i, qd, qdd);
