@@ -31,6 +31,8 @@ const MAX_ITERATIONS = 16;
 /** The dyad path walks between inputs in steps of at most this (rad), checking that every dyad closes. */
 export const MAX_DYAD_STEP = 0.05;
 const EPS = Number.EPSILON;
+/** Steps below this (relative) that no longer shrink are rounding noise: the corrector has converged. */
+const NOISE = 1e-12;
 
 /** Every array the solver works in, allocated once per sweep. */
 interface Workspace {
@@ -90,6 +92,9 @@ function correct(ws: Workspace, t: number): number {
     if (norm <= floor) return k;
     const ratio = norm / prev;
     if (k > 1 && ratio < 0.5 && (64 * norm * ratio) / (1 - ratio) <= floor) return k;
+    // Stagnation at the rounding noise of the residual (about cond(J) eps, above the floor when J is not
+    // well conditioned): the steps stop shrinking while already tiny.
+    if (k > 2 && ratio >= 0.5 && norm <= NOISE * Math.max(1, maxAbs(qTry))) return k;
     prev = norm;
     if (ratio > 0.25 && k > 1) {
       if (!factorAt(ws, t)) return -k;
@@ -354,6 +359,16 @@ export function sweepMechanism(
   inputs: ArrayLike<number>,
   rates?: { omega: number; alpha: number },
 ): MechanismSweep {
+  return sweepWith(spec, inputs, rates, true);
+}
+
+/** sweepMechanism, with the dyad path allowed or not (tests compare the two paths; not in the barrel). */
+export function sweepWith(
+  spec: MechanismSpec,
+  inputs: ArrayLike<number>,
+  rates: { omega: number; alpha: number } | undefined,
+  allowDyads: boolean,
+): MechanismSweep {
   validateSpec(spec);
   checkInputs(inputs, rates);
   const model = buildModel(spec);
@@ -383,7 +398,7 @@ export function sweepMechanism(
     out.status.fill(2);
     return out;
   }
-  const plan = planDyads(model);
+  const plan = allowDyads ? planDyads(model) : null;
   out.method = plan ? 'dyads' : 'newton';
   if (plan) {
     sweepDyads(ws, plan, inputs, rates, out);
