@@ -296,26 +296,26 @@ function sweepDyads(
   const qdd = rates ? new Float64Array(n) : null;
   let t = 0;
   let blocked = 0;
+  let blockedAt = 0;
   for (let i = 0; i < inputs.length; i++) {
     const target = inputs[i];
-    if (blocked !== 0 && (target - t) * blocked > 0) {
+    if (blocked !== 0 && (target - blockedAt) * blocked >= 0) {
       out.status[i] = 1;
       continue;
     }
     blocked = 0;
     const steps = Math.ceil(Math.abs(target - t) / MAX_DYAD_STEP);
     qTry.set(q);
-    let reached = true;
     for (let k = 1; k <= steps; k++) {
       const tt = k === steps ? target : t + ((target - t) * k) / steps;
       if (!poseDyads(plan, tt, qTry)) {
-        reached = false;
+        blocked = Math.sign(target - t);
+        blockedAt = tt;
         break;
       }
     }
-    if (!reached) {
-      // Not a step of it past the last reachable input: wait there for the path to turn back.
-      blocked = Math.sign(target - t);
+    if (blocked !== 0) {
+      // No pose at or beyond the first input that failed: wait at the last pose for the path to turn back.
       out.status[i] = 1;
       continue;
     }
@@ -412,14 +412,18 @@ export function sweepWith(
   let t = 0;
   let hMax = Infinity;
   let blocked = 0;
+  let blockedAt = 0;
   let det = ws.det;
+  const qSave = new Float64Array(n);
   for (let i = 0; i < count; i++) {
     const target = inputs[i] * inputScale;
-    if (blocked !== 0 && (target - t) * blocked > 0) {
+    if (blocked !== 0 && (target - blockedAt) * blocked >= 0) {
       out.status[i] = 1;
       continue;
     }
     blocked = 0;
+    qSave.set(q);
+    const tSave = t;
     let iterations = 0;
     while (t !== target) {
       let h = target - t;
@@ -456,6 +460,14 @@ export function sweepWith(
     }
     out.iterations[i] = Math.min(iterations, 65535);
     if (blocked !== 0) {
+      // Back to the last input reached: the continuation crept up to the fold, where going back is as hard as
+      // going on (the tangent is unbounded there).
+      blockedAt = t;
+      q.set(qSave);
+      t = tSave;
+      ws.qTry.set(q);
+      factorAt(ws, t);
+      tangentFromFactors(ws);
       out.status[i] = 1;
       continue;
     }
