@@ -34,8 +34,14 @@ const EPS = Number.EPSILON;
 /** Steps below this (relative) that no longer shrink are rounding noise: the corrector has converged. */
 const NOISE = 1e-12;
 
+/**
+ * Called at every assembled pose when rates are asked, with J factored at the pose (ws.jac, ws.perm) and the
+ * scaled rates qd, qdd: the forces (forces.ts) solve with the same factors.
+ */
+export type PoseHook = (i: number, ws: Workspace, qd: Float64Array, qdd: Float64Array) => void;
+
 /** Every array the solver works in, allocated once per sweep. */
-interface Workspace {
+export interface Workspace {
   model: Model;
   q: Float64Array;
   qTry: Float64Array;
@@ -289,6 +295,7 @@ function sweepDyads(
   inputs: ArrayLike<number>,
   rates: { omega: number; alpha: number } | undefined,
   out: MechanismSweep,
+  onPose: PoseHook | undefined,
 ): void {
   const { q, qTry } = ws;
   const n = ws.model.n;
@@ -324,6 +331,7 @@ function sweepDyads(
     out.ok[i] = 1;
     if (qd && qdd && rates) exactRates(ws, t, rates.omega, rates.alpha, qd, qdd, out, i);
     record(ws, out, i, qd, qdd);
+    if (onPose && qd && qdd) onPose(i, ws, qd, qdd);
   }
 }
 
@@ -368,6 +376,7 @@ export function sweepWith(
   inputs: ArrayLike<number>,
   rates: { omega: number; alpha: number } | undefined,
   allowDyads: boolean,
+  onPose?: PoseHook,
 ): MechanismSweep {
   validateSpec(spec);
   checkInputs(inputs, rates);
@@ -401,7 +410,7 @@ export function sweepWith(
   const plan = allowDyads ? planDyads(model) : null;
   out.method = plan ? 'dyads' : 'newton';
   if (plan) {
-    sweepDyads(ws, plan, inputs, rates, out);
+    sweepDyads(ws, plan, inputs, rates, out, onPose);
     return out;
   }
   tangentFromFactors(ws);
@@ -479,6 +488,7 @@ export function sweepWith(
       tangentFromFactors(ws);
     }
     record(ws, out, i, qd, qdd);
+    if (onPose && qd && qdd) onPose(i, ws, qd, qdd);
   }
   return out;
 }
