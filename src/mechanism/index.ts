@@ -35,3 +35,5 @@ export {
   whitworthSpec,
 } from './templates';
 export type { MechanismTemplate } from './templates';
+export { mechanismForces } from './forces';
+export type { LinkMass, MechanismForces, MechanismLoads } from './forces';

@@ -9,6 +9,8 @@
  * turns back. Rates come from the same Jacobian at the converged pose: J q' = e ω, J q'' = rhs (rates.ts).
  */
 import { describe } from '../solver/validate';
+import { planDyads, poseDyads } from './dyads';
+import type { DyadPlan } from './dyads';
 import { luFactor, luSolve } from './lu';
 import { buildModel, evaluate, newTrig, sliderState, trigOf } from './model';
 import type { Model, Trig } from './model';
@@ -26,10 +28,20 @@ export const SINGULAR_PIVOT = 1e-12;
 /** A step (input units, relative) below which the continuation gives up: the input cannot go on. */
 const H_MIN = 1e-12;
 const MAX_ITERATIONS = 16;
+/** The dyad path walks between inputs in steps of at most this (rad), checking that every dyad closes. */
+export const MAX_DYAD_STEP = 0.05;
 const EPS = Number.EPSILON;
+/** Steps below this (relative) that no longer shrink are rounding noise: the corrector has converged. */
+const NOISE = 1e-12;
+
+/**
+ * Called at every assembled pose when rates are asked, with J factored at the pose (ws.jac, ws.perm) and the
+ * scaled rates qd, qdd: the forces (forces.ts) solve with the same factors.
+ */
+export type PoseHook = (i: number, ws: Workspace, qd: Float64Array, qdd: Float64Array) => void;
 
 /** Every array the solver works in, allocated once per sweep. */
-interface Workspace {
+export interface Workspace {
   model: Model;
   q: Float64Array;
   qTry: Float64Array;
@@ -86,6 +98,9 @@ function correct(ws: Workspace, t: number): number {
     if (norm <= floor) return k;
     const ratio = norm / prev;
     if (k > 1 && ratio < 0.5 && (64 * norm * ratio) / (1 - ratio) <= floor) return k;
+    // Stagnation at the rounding noise of the residual (about cond(J) eps, above the floor when J is not
+    // well conditioned): the steps stop shrinking while already tiny.
+    if (k > 2 && ratio >= 0.5 && norm <= NOISE * Math.max(1, maxAbs(qTry))) return k;
     prev = norm;
     if (ratio > 0.25 && k > 1) {
       if (!factorAt(ws, t)) return -k;
@@ -131,6 +146,7 @@ function allocate(model: Model, count: number, withRates: boolean): MechanismSwe
     detJ: nan(),
     iterations: new Uint16Array(count),
     scale: model.scale,
+    method: 'newton',
   };
 }
 
@@ -247,6 +263,78 @@ function sliderRates(
   return sRates;
 }
 
+/** Exact rates at the pose ws.q (input t): J at the pose itself, J q' = e ω, J q'' = rhs; det J into out. */
+function exactRates(
+  ws: Workspace,
+  t: number,
+  omega: number,
+  alpha: number,
+  qd: Float64Array,
+  qdd: Float64Array,
+  out: MechanismSweep,
+  i: number,
+): void {
+  const n = ws.model.n;
+  ws.qTry.set(ws.q);
+  factorAt(ws, t);
+  qd.fill(0);
+  qd[n - 1] = omega;
+  luSolve(ws.jac, n, ws.perm, qd, ws.tmp);
+  accelerationRhs(ws.model, ws.q, qd, ws.tr, alpha, qdd);
+  luSolve(ws.jac, n, ws.perm, qdd, ws.tmp);
+  out.detJ[i] = ws.det;
+}
+
+/**
+ * The dyad path (dyads.ts): each input is reached from the previous one in steps of at most MAX_DYAD_STEP, every
+ * step posed in closed form; a dyad that cannot close stops the path there ('limit'), as in the Newton path.
+ */
+function sweepDyads(
+  ws: Workspace,
+  plan: DyadPlan,
+  inputs: ArrayLike<number>,
+  rates: { omega: number; alpha: number } | undefined,
+  out: MechanismSweep,
+  onPose: PoseHook | undefined,
+): void {
+  const { q, qTry } = ws;
+  const n = ws.model.n;
+  const qd = rates ? new Float64Array(n) : null;
+  const qdd = rates ? new Float64Array(n) : null;
+  let t = 0;
+  let blocked = 0;
+  let blockedAt = 0;
+  for (let i = 0; i < inputs.length; i++) {
+    const target = inputs[i];
+    if (blocked !== 0 && (target - blockedAt) * blocked >= 0) {
+      out.status[i] = 1;
+      continue;
+    }
+    blocked = 0;
+    const steps = Math.ceil(Math.abs(target - t) / MAX_DYAD_STEP);
+    qTry.set(q);
+    for (let k = 1; k <= steps; k++) {
+      const tt = k === steps ? target : t + ((target - t) * k) / steps;
+      if (!poseDyads(plan, tt, qTry)) {
+        blocked = Math.sign(target - t);
+        blockedAt = tt;
+        break;
+      }
+    }
+    if (blocked !== 0) {
+      // No pose at or beyond the first input that failed: wait at the last pose for the path to turn back.
+      out.status[i] = 1;
+      continue;
+    }
+    q.set(qTry);
+    t = target;
+    out.ok[i] = 1;
+    if (qd && qdd && rates) exactRates(ws, t, rates.omega, rates.alpha, qd, qdd, out, i);
+    record(ws, out, i, qd, qdd);
+    if (onPose && qd && qdd) onPose(i, ws, qd, qdd);
+  }
+}
+
 /** Throws an Error naming the index unless every input is finite, and unless rates are two finite numbers. */
 function checkInputs(inputs: ArrayLike<number>, rates: { omega: number; alpha: number } | undefined): void {
   if (typeof inputs !== 'object' || inputs === null || typeof inputs.length !== 'number') {
@@ -279,6 +367,17 @@ export function sweepMechanism(
   inputs: ArrayLike<number>,
   rates?: { omega: number; alpha: number },
 ): MechanismSweep {
+  return sweepWith(spec, inputs, rates, true);
+}
+
+/** sweepMechanism, with the dyad path allowed or not (tests compare the two paths; not in the barrel). */
+export function sweepWith(
+  spec: MechanismSpec,
+  inputs: ArrayLike<number>,
+  rates: { omega: number; alpha: number } | undefined,
+  allowDyads: boolean,
+  onPose?: PoseHook,
+): MechanismSweep {
   validateSpec(spec);
   checkInputs(inputs, rates);
   const model = buildModel(spec);
@@ -308,6 +407,12 @@ export function sweepMechanism(
     out.status.fill(2);
     return out;
   }
+  const plan = allowDyads ? planDyads(model) : null;
+  out.method = plan ? 'dyads' : 'newton';
+  if (plan) {
+    sweepDyads(ws, plan, inputs, rates, out, onPose);
+    return out;
+  }
   tangentFromFactors(ws);
   const detSign = Math.sign(ws.det);
   const qd = rates ? new Float64Array(n) : null;
@@ -316,14 +421,18 @@ export function sweepMechanism(
   let t = 0;
   let hMax = Infinity;
   let blocked = 0;
+  let blockedAt = 0;
   let det = ws.det;
+  const qSave = new Float64Array(n);
   for (let i = 0; i < count; i++) {
     const target = inputs[i] * inputScale;
-    if (blocked !== 0 && (target - t) * blocked > 0) {
+    if (blocked !== 0 && (target - blockedAt) * blocked >= 0) {
       out.status[i] = 1;
       continue;
     }
     blocked = 0;
+    qSave.set(q);
+    const tSave = t;
     let iterations = 0;
     while (t !== target) {
       let h = target - t;
@@ -360,6 +469,14 @@ export function sweepMechanism(
     }
     out.iterations[i] = Math.min(iterations, 65535);
     if (blocked !== 0) {
+      // Back to the last input reached: the continuation crept up to the fold, where going back is as hard as
+      // going on (the tangent is unbounded there).
+      blockedAt = t;
+      q.set(qSave);
+      t = tSave;
+      ws.qTry.set(q);
+      factorAt(ws, t);
+      tangentFromFactors(ws);
       out.status[i] = 1;
       continue;
     }
@@ -367,17 +484,11 @@ export function sweepMechanism(
     out.detJ[i] = det;
     if (rates && qd && qdd) {
       // Exact rates need J at the converged pose itself (the continuation's factors are one chord step behind).
-      ws.qTry.set(q);
-      factorAt(ws, t);
-      qd.fill(0);
-      qd[n - 1] = rates.omega * rateScale;
-      luSolve(ws.jac, n, ws.perm, qd, ws.tmp);
-      accelerationRhs(model, q, qd, ws.tr, rates.alpha * rateScale, qdd);
-      luSolve(ws.jac, n, ws.perm, qdd, ws.tmp);
-      out.detJ[i] = ws.det;
+      exactRates(ws, t, rates.omega * rateScale, rates.alpha * rateScale, qd, qdd, out, i);
       tangentFromFactors(ws);
     }
     record(ws, out, i, qd, qdd);
+    if (onPose && qd && qdd) onPose(i, ws, qd, qdd);
   }
   return out;
 }

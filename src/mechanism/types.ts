@@ -74,10 +74,15 @@ export interface MechanismSweep {
   links: Record<string, LinkSeries>;
   /** Every P joint. */
   sliders: Record<string, SliderSeries>;
-  /** det J of the constraint Jacobian (lengths divided by the spec's scale); its sign is the assembly's. */
+  /**
+   * det J of the constraint Jacobian (lengths divided by the spec's scale) at each pose; its sign is the
+   * assembly's. On the dyad path it is computed only when rates are asked (NaN otherwise).
+   */
   detJ: Float64Array;
   /** Newton iterations spent reaching each point (its share of the continuation). */
   iterations: Uint16Array;
   /** The power of two lengths were divided by inside the solver. */
   scale: number;
+  /** 'dyads': posed in closed form dyad by dyad (iterations 0); 'newton': Newton continuation on all links. */
+  method: 'dyads' | 'newton';
 }
