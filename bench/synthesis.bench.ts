@@ -3,7 +3,8 @@
  * each run with 5 seeds and a 10 s budget on one core. Prints, per case, Σd² (median and spread over the seeds),
  * the best published Σd², the time and the evaluations (median and spread), then the closed-form synthesis rows of
  * bench/synthesisClosedForms.ts when that file exists, then the pool's speed-up (bench/synthesisPool.ts: a fixed number of
- * rounds on 1 and on 2 … cores − 1 processes); writes bench/results/synthesis.json and synthesis-table.md.
+ * rounds on 1 and on 2 … cores − 1 processes), then the nine-point row (bench/synthesisNinePoint.ts: WMS Problem 3 solved
+ * completely on one core, classes, paths and paths/s); writes bench/results/synthesis.json and synthesis-table.md.
  * Run: npm run bench:synthesis   (BENCH_QUICK=1: 2 seeds, 3 s budget)
  */
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
@@ -12,6 +13,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 import { mergePathCandidates, pathSynthesisPart } from '../src/synthesis';
 import { BENCHMARK_CASES, targetSize } from '../tests/synthesis/benchmarkCases';
 import { poolRows } from './synthesisPool';
+import { ninePointRow, ninePointTable } from './synthesisNinePoint';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const QUICK = process.env.BENCH_QUICK === '1';
@@ -137,6 +139,10 @@ const poolTable = [
 ].join('\n');
 console.log('\nThe pool (pathSynthesisPart in parallel processes, then mergePathCandidates):\n');
 console.log(poolTable);
+const nine = await ninePointRow();
+const nineTable = ninePointTable(nine);
+console.log('\nNine-point synthesis (every four-bar through nine points, one core):\n');
+console.log(nineTable);
 const out = resolve(here, 'results');
 mkdirSync(out, { recursive: true });
 writeFileSync(
@@ -150,6 +156,7 @@ writeFileSync(
       path: rows,
       closedForms: cf,
       pool,
+      ninePoint: nine,
     },
     null,
     2,
@@ -159,5 +166,6 @@ writeFileSync(
   resolve(out, 'synthesis-table.md'),
   `# bench:synthesis\n\nPath synthesis, ${SEEDS.length} seeds, budget ${BUDGET_MS} ms per run (one core).\n\n${pathTable}\n` +
     (cfTable ? `\nClosed-form synthesis:\n\n${cfTable}\n` : '') +
-    `\nThe pool (${POOL_ROUNDS} rounds dealt to parts in parallel processes, then merged):\n\n${poolTable}\n`,
+    `\nThe pool (${POOL_ROUNDS} rounds dealt to parts in parallel processes, then merged):\n\n${poolTable}\n` +
+    `\nNine-point synthesis (every four-bar through nine points, one core):\n\n${nineTable}\n`,
 );

@@ -44,3 +44,5 @@ export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
 export type { RobertsCognate } from './cognates';
+export { mergeNinePoint, ninePointSynthesis } from './ninePoint';
+export type { NinePointClass, NinePointLinkage, NinePointOptions, NinePointResult } from './ninePoint';

@@ -22,12 +22,12 @@ export const AH = 5;
 export const YH = 6;
 export const BH = 7;
 
-// Products without allocation: the result of the last cm() lands in these.
-let pr = 0;
-let pi = 0;
+// Products without allocation: the result of the last cm() lands in T (a typed array, so no number is boxed, as a
+// module-level `let` would be on every write).
+const T = new Float64Array(2);
 function cm(ar: number, ai: number, br: number, bi: number): void {
-  pr = ar * br - ai * bi;
-  pi = ar * bi + ai * br;
+  T[0] = ar * br - ai * bi;
+  T[1] = ar * bi + ai * br;
 }
 
 /** Scratch for one equation's intermediates: p1 q1 r1 p2 q2 r2 N1 N2 D and the partials Ep1 … Er2 (complex each). */
@@ -79,33 +79,33 @@ export function evaluate(
       Dr = p[16 + 2 * j],
       Di = p[17 + 2 * j];
     cm(dr, di, Dr, Di);
-    const ddr = pr,
-      ddi = pi;
+    const ddr = T[0],
+      ddi = T[1];
     // p1 = x (â − δ̂), q1 = x̂ (a − δ), r1 = (â − x̂) δ + (a − x) δ̂ − δ δ̂; likewise for the second dyad.
     cm(xr, xi, Ar - Dr, Ai - Di);
-    S[P1] = pr;
-    S[P1 + 1] = pi;
+    S[P1] = T[0];
+    S[P1 + 1] = T[1];
     cm(Xr, Xi, ar - dr, ai - di);
-    S[Q1] = pr;
-    S[Q1 + 1] = pi;
+    S[Q1] = T[0];
+    S[Q1 + 1] = T[1];
     cm(Ar - Xr, Ai - Xi, dr, di);
-    let tr = pr - ddr,
-      ti = pi - ddi;
+    let tr = T[0] - ddr,
+      ti = T[1] - ddi;
     cm(ar - xr, ai - xi, Dr, Di);
-    S[R1] = tr + pr;
-    S[R1 + 1] = ti + pi;
+    S[R1] = tr + T[0];
+    S[R1 + 1] = ti + T[1];
     cm(yr, yi, Br - Dr, Bi - Di);
-    S[P2] = pr;
-    S[P2 + 1] = pi;
+    S[P2] = T[0];
+    S[P2 + 1] = T[1];
     cm(Yr, Yi, br - dr, bi - di);
-    S[Q2] = pr;
-    S[Q2 + 1] = pi;
+    S[Q2] = T[0];
+    S[Q2 + 1] = T[1];
     cm(Br - Yr, Bi - Yi, dr, di);
-    tr = pr - ddr;
-    ti = pi - ddi;
+    tr = T[0] - ddr;
+    ti = T[1] - ddi;
     cm(br - yr, bi - yi, Dr, Di);
-    S[R2] = tr + pr;
-    S[R2 + 1] = ti + pi;
+    S[R2] = tr + T[0];
+    S[R2 + 1] = ti + T[1];
     const p1r = S[P1],
       p1i = S[P1 + 1],
       q1r = S[Q1],
@@ -120,29 +120,29 @@ export function evaluate(
       r2i = S[R2 + 1];
     // N1 = q1 r2 − r1 q2 (γ·D), N2 = r1 p2 − p1 r2 (γ̂·D), D = p1 q2 − q1 p2.
     cm(q1r, q1i, r2r, r2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(r1r, r1i, q2r, q2i);
-    const n1r = tr - pr,
-      n1i = ti - pi;
+    const n1r = tr - T[0],
+      n1i = ti - T[1];
     cm(r1r, r1i, p2r, p2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(p1r, p1i, r2r, r2i);
-    const n2r = tr - pr,
-      n2i = ti - pi;
+    const n2r = tr - T[0],
+      n2i = ti - T[1];
     cm(p1r, p1i, q2r, q2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(q1r, q1i, p2r, p2i);
-    const Dtr = tr - pr,
-      Dti = ti - pi;
+    const Dtr = tr - T[0],
+      Dti = ti - T[1];
     cm(n1r, n1i, n2r, n2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(Dtr, Dti, n1r + n2r, n1i + n2i);
-    F[2 * j] = tr + pr;
-    F[2 * j + 1] = ti + pi;
+    F[2 * j] = tr + T[0];
+    F[2 * j + 1] = ti + T[1];
     if (!J && !Fp) continue;
     // ∂E/∂N1 = N2 + D, ∂E/∂N2 = N1 + D, ∂E/∂D = N1 + N2; then the chain rule to p1 … r2.
     const e1r = n2r + Dtr,
@@ -152,41 +152,41 @@ export function evaluate(
       eDr = n1r + n2r,
       eDi = n1i + n2i;
     cm(eDr, eDi, q2r, q2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(e2r, e2i, r2r, r2i);
-    S[EP1] = tr - pr;
-    S[EP1 + 1] = ti - pi;
+    S[EP1] = tr - T[0];
+    S[EP1 + 1] = ti - T[1];
     cm(e1r, e1i, r2r, r2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(eDr, eDi, p2r, p2i);
-    S[EQ1] = tr - pr;
-    S[EQ1 + 1] = ti - pi;
+    S[EQ1] = tr - T[0];
+    S[EQ1 + 1] = ti - T[1];
     cm(e2r, e2i, p2r, p2i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(e1r, e1i, q2r, q2i);
-    S[ER1] = tr - pr;
-    S[ER1 + 1] = ti - pi;
+    S[ER1] = tr - T[0];
+    S[ER1 + 1] = ti - T[1];
     cm(e2r, e2i, r1r, r1i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(eDr, eDi, q1r, q1i);
-    S[EP2] = tr - pr;
-    S[EP2 + 1] = ti - pi;
+    S[EP2] = tr - T[0];
+    S[EP2 + 1] = ti - T[1];
     cm(eDr, eDi, p1r, p1i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(e1r, e1i, r1r, r1i);
-    S[EQ2] = tr - pr;
-    S[EQ2 + 1] = ti - pi;
+    S[EQ2] = tr - T[0];
+    S[EQ2 + 1] = ti - T[1];
     cm(e1r, e1i, q1r, q1i);
-    tr = pr;
-    ti = pi;
+    tr = T[0];
+    ti = T[1];
     cm(e2r, e2i, p1r, p1i);
-    S[ER2] = tr - pr;
-    S[ER2 + 1] = ti - pi;
+    S[ER2] = tr - T[0];
+    S[ER2 + 1] = ti - T[1];
     if (J) {
       const row = 16 * j;
       // ∂x = Ep1 (â − δ̂) − Er1 δ̂ ; ∂â = Ep1 x + Er1 δ ; ∂x̂ = Eq1 (a − δ) − Er1 δ ; ∂a = Eq1 x̂ + Er1 δ̂
@@ -206,35 +206,35 @@ export function evaluate(
         hr = 0,
         hi = 0;
       cm(S[EQ1], S[EQ1 + 1], -Xr, -Xi);
-      gr += pr;
-      gi += pi;
+      gr += T[0];
+      gi += T[1];
       cm(S[ER1], S[ER1 + 1], Ar - Xr - Dr, Ai - Xi - Di);
-      gr += pr;
-      gi += pi;
+      gr += T[0];
+      gi += T[1];
       cm(S[EQ2], S[EQ2 + 1], -Yr, -Yi);
-      gr += pr;
-      gi += pi;
+      gr += T[0];
+      gi += T[1];
       cm(S[ER2], S[ER2 + 1], Br - Yr - Dr, Bi - Yi - Di);
-      gr += pr;
-      gi += pi;
+      gr += T[0];
+      gi += T[1];
       cm(S[EP1], S[EP1 + 1], -xr, -xi);
-      hr += pr;
-      hi += pi;
+      hr += T[0];
+      hi += T[1];
       cm(S[ER1], S[ER1 + 1], ar - xr - dr, ai - xi - di);
-      hr += pr;
-      hi += pi;
+      hr += T[0];
+      hi += T[1];
       cm(S[EP2], S[EP2 + 1], -yr, -yi);
-      hr += pr;
-      hi += pi;
+      hr += T[0];
+      hi += T[1];
       cm(S[ER2], S[ER2 + 1], br - yr - dr, bi - yi - di);
-      hr += pr;
-      hi += pi;
+      hr += T[0];
+      hi += T[1];
       cm(gr, gi, dp[2 * j], dp[2 * j + 1]);
-      tr = pr;
-      ti = pi;
+      tr = T[0];
+      ti = T[1];
       cm(hr, hi, dp[16 + 2 * j], dp[17 + 2 * j]);
-      Fp[2 * j] = tr + pr;
-      Fp[2 * j + 1] = ti + pi;
+      Fp[2 * j] = tr + T[0];
+      Fp[2 * j + 1] = ti + T[1];
     }
   }
 }
@@ -242,11 +242,11 @@ export function evaluate(
 /** J[at] = S[i]·(ur + i ui) + S[k]·(vr + i vi). */
 function sum2(J: Float64Array, at: number, i: number, ur: number, ui: number, k: number, vr: number, vi: number) {
   cm(S[i], S[i + 1], ur, ui);
-  const tr = pr,
-    ti = pi;
+  const tr = T[0],
+    ti = T[1];
   cm(S[k], S[k + 1], vr, vi);
-  J[at] = tr + pr;
-  J[at + 1] = ti + pi;
+  J[at] = tr + T[0];
+  J[at + 1] = ti + T[1];
 }
 
 /** The coupler rotation θ_j = 1 + γ_j (complex, into out[0..1]) at root z for parameters p; NaN where D = 0. */
@@ -281,4 +281,31 @@ export function rotation(z: Float64Array, p: Float64Array, j: number, out: Float
   // γ = N1 / D
   out[0] = 1 + (n1[0] * det[0] + n1[1] * det[1]) / m;
   out[1] = (n1[1] * det[0] - n1[0] * det[1]) / m;
+}
+
+/** Relative size below which a link or coordinate counts as zero in isDegenerate. */
+export const DEGENERATE_TOL = 1e-8;
+
+/**
+ * Whether z is a degenerate root: a pivot on the coupler point, two pivots coincident (in either half), or a pose
+ * whose rotation is undefined (D = 0). Elimination by Cramer's rule adds such roots to the system (E = 0 wherever
+ * N1 N2 = D = 0); they are no linkage and lie off the component of the 8652 genuine roots.
+ */
+export function isDegenerate(z: Float64Array, p: Float64Array): boolean {
+  let size = 0;
+  for (let i = 0; i < z.length; i++) size = Math.max(size, Math.abs(z[i]));
+  const tol = DEGENERATE_TOL * (1 + size);
+  const d = (i: number, k: number) => Math.hypot(z[2 * i] - z[2 * k], z[2 * i + 1] - z[2 * k + 1]);
+  const m = (i: number) => Math.hypot(z[2 * i], z[2 * i + 1]);
+  for (const o of [0, 4]) {
+    if (m(X + o) <= tol || m(Y + o) <= tol) return true;
+    if (d(X + o, A + o) <= tol || d(Y + o, B + o) <= tol || d(X + o, Y + o) <= tol || d(A + o, B + o) <= tol)
+      return true;
+  }
+  const out = new Float64Array(2);
+  for (let j = 0; j < 8; j++) {
+    rotation(z, p, j, out);
+    if (!(Math.hypot(out[0], out[1]) < 1 / tol)) return true;
+  }
+  return false;
 }

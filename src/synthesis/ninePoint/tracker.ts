@@ -12,12 +12,15 @@ export interface TrackOptions {
   h0?: number;
   /** Give up after this many steps (default 4000). */
   maxSteps?: number;
+  /** Newton's tolerance along the path, relative to |z| (default 1e-8). */
+  tol?: number;
 }
 
 /** |z| beyond this (in units of the normalised points) counts as a path going to infinity. */
 export const DIVERGED_NORM = 1e7;
 const TRACK_TOL = 1e-8;
 const END_TOL = 1e-12;
+const END_FLOOR = 1e-9;
 
 /**
  * A predictor–corrector tracker for the parameter homotopy p(s) = w p0 + (1 − w) p1, w = (1 − s)γ / ((1 − s)γ + s)
@@ -138,7 +141,7 @@ export class Tracker {
       }
       for (let i = 0; i < n; i++) zp[i] = z[i] + (h / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
       const sNew = s + h >= 1 - 1e-15 ? 1 : s + h;
-      const it = this.newton(zp, sNew, 3, TRACK_TOL);
+      const it = this.newton(zp, sNew, 3, opts.tol ?? TRACK_TOL);
       if (it < 0) {
         h *= 0.5;
         continue;
@@ -152,7 +155,13 @@ export class Tracker {
       else if (it === 2) h = Math.min(1.25 * h, hMax);
     }
     // Polish at the target; a root that will not converge quadratically is singular (or the path jumped).
-    const it = this.newton(z, 1, 6, END_TOL);
+    const zEnd = z.slice();
+    let it = this.newton(z, 1, 6, END_TOL);
+    if (it < 0) {
+      // An ill-conditioned root stalls at its rounding level above END_TOL: accept it at END_FLOOR.
+      z.set(zEnd);
+      it = this.newton(z, 1, 6, END_FLOOR);
+    }
     if (it < 0) {
       const zz = norm(z);
       return { status: zz > 1e4 ? 'diverged' : 'failed', steps };

@@ -1,0 +1,343 @@
+/**
+ * Every four-bar whose coupler curve passes through nine given points (Alt's problem), by a parameter homotopy from a
+ * shipped generic start system (Wampler, Morgan and Sommese 1992; see docs/synthesis.md).
+ */
+import { TWO_PI, classify, inputRange, solveClosedForm, wrapAngle } from '../../solver';
+import type { Branch, Point } from '../../solver';
+import { fourBarFromJoints, placedCouplerPoint } from '../placed';
+import type { AbortSignalLike } from '../pathSynthesis';
+import type { PlacedFourBar } from '../types';
+import { checkArray, checkPoint } from '../validate';
+import { A, AH, B, BH, NV, X, XH, Y, YH, rotation } from './equations';
+import { cognateRoots, orbitKey, sameKey } from './group';
+import { norm } from './linear';
+import { decodeRoots } from './startCodec';
+import { Tracker } from './tracker';
+
+/** A four-bar through the nine points: θ2 at each point (radians, as PlacedFourBar) and its assembly there. */
+export interface NinePointLinkage extends PlacedFourBar {
+  theta2: number[];
+  branches: Branch[];
+}
+
+/** One real solution class: the three Roberts cognates, whether the first is Grashof, its defects. */
+export interface NinePointClass {
+  cognates: NinePointLinkage[];
+  grashof: boolean;
+  defects: ('circuit' | 'order' | 'branch')[];
+}
+
+/**
+ * Every real, non-degenerate class found, and the paths: each tracked path is one orbit of six roots (two labellings ×
+ * three cognates); finished counts paths that ended at a regular root or at infinity, failed those lost.
+ */
+export interface NinePointResult {
+  classes: NinePointClass[];
+  paths: { total: number; finished: number; failed: number };
+}
+
+/** Options: cancel, progress, and a slice [start, end) of the start solutions for a worker pool. */
+export interface NinePointOptions {
+  signal?: AbortSignalLike;
+  onProgress?: (p: { done: number; total: number; found: number }) => void;
+  paths?: { start: number; end: number };
+}
+
+/** A linkage passes through a point when its coupler point is within this of it (relative to the points' size). */
+export const RECHECK_TOL = 1e-6;
+/** A root is real when its hatted half is the conjugate of the other to this (relative to |z|). */
+const REAL_TOL = 1e-8;
+/** Links shorter than this (relative to the points' size) make a degenerate linkage. */
+const DEGENERATE = 1e-8;
+/** The homotopy's γ: fixed, so a run is reproducible and a retry uses the same path. */
+const GAMMA: [number, number] = [0.8134, -0.5817];
+
+interface StartSystem {
+  params: Float64Array;
+  roots: Float64Array[];
+}
+let startCache: Promise<StartSystem> | null = null;
+
+/** The shipped start system (loaded on first use), its roots polished by Newton at the start parameters. */
+export function loadStartSystem(): Promise<StartSystem> {
+  startCache ??= import('./startData').then((m) => {
+    const params = Float64Array.from(m.START_PARAMS);
+    const roots = decodeRoots(m.START_ROOTS, m.START_ORBITS);
+    const t = new Tracker();
+    t.setSegment(params, params, 1, 0);
+    for (const z of roots) t.newton(z, 0, 8, 1e-12);
+    return { params, roots };
+  });
+  return startCache;
+}
+
+function checkPoints(points: unknown): asserts points is Point[] {
+  checkArray('points', points, 9, 9);
+  points.forEach((p, i) => checkPoint(`points[${i}]`, p));
+  const ps = points as Point[];
+  const size = Math.max(...ps.map((p) => Math.hypot(p.x - ps[0].x, p.y - ps[0].y)));
+  for (let i = 0; i < 9; i++)
+    for (let j = i + 1; j < 9; j++) {
+      if (Math.hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y) <= 1e-12 * size || size === 0) {
+        throw new Error(
+          `points[${i}] and points[${j}] coincide at (${ps[i].x}, ${ps[i].y}): nine distinct points needed`,
+        );
+      }
+    }
+  // Collinear: the smaller principal axis of the points is zero.
+  const cx = ps.reduce((s, p) => s + p.x, 0) / 9;
+  const cy = ps.reduce((s, p) => s + p.y, 0) / 9;
+  let sxx = 0,
+    syy = 0,
+    sxy = 0;
+  for (const p of ps) {
+    sxx += (p.x - cx) ** 2;
+    syy += (p.y - cy) ** 2;
+    sxy += (p.x - cx) * (p.y - cy);
+  }
+  const tr = sxx + syy;
+  const lmin = tr / 2 - Math.sqrt(((sxx - syy) / 2) ** 2 + sxy * sxy);
+  if (Math.sqrt(Math.max(0, lmin) / 9) <= 1e-9 * size) {
+    throw new Error('points lie on one line: the solutions of the nine-point problem go to infinity there');
+  }
+  // Concyclic: the circle through three of them passes through all (Kåsa's algebraic fit would do; this is exact).
+  const circle = circleThrough(ps[0], ps[3], ps[6]);
+  if (circle && ps.every((p) => Math.abs(Math.hypot(p.x - circle.x, p.y - circle.y) - circle.r) <= 1e-9 * size)) {
+    throw new Error('points lie on one circle: the solutions of the nine-point problem go to infinity there');
+  }
+}
+
+function circleThrough(a: Point, b: Point, c: Point): { x: number; y: number; r: number } | null {
+  const bx = b.x - a.x,
+    by = b.y - a.y,
+    cx = c.x - a.x,
+    cy = c.y - a.y;
+  const d = 2 * (bx * cy - by * cx);
+  if (d === 0) return null;
+  const ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d;
+  const uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d;
+  return { x: a.x + ux, y: a.y + uy, r: Math.hypot(ux, uy) };
+}
+
+/** Target parameters: δ_j = (P_j − P_0)/size and their conjugates. */
+function targetParams(points: Point[], size: number): Float64Array {
+  const p = new Float64Array(4 * NV);
+  for (let j = 1; j < 9; j++) {
+    const re = (points[j].x - points[0].x) / size;
+    const im = (points[j].y - points[0].y) / size;
+    p[2 * (j - 1)] = re;
+    p[2 * (j - 1) + 1] = im;
+    p[16 + 2 * (j - 1)] = re;
+    p[17 + 2 * (j - 1)] = -im;
+  }
+  return p;
+}
+
+/** The real root nearest z (its hatted half conjugate to the rest), or null when z is not real. */
+function realPart(z: Float64Array): Float64Array | null {
+  const tol = REAL_TOL * (1 + norm(z));
+  const w = new Float64Array(2 * NV);
+  for (const [k, kh] of [
+    [X, XH],
+    [A, AH],
+    [Y, YH],
+    [B, BH],
+  ]) {
+    const re = z[2 * k],
+      im = z[2 * k + 1],
+      reh = z[2 * kh],
+      imh = z[2 * kh + 1];
+    if (Math.hypot(re - reh, im + imh) > tol) return null;
+    w[2 * k] = (re + reh) / 2;
+    w[2 * k + 1] = (im - imh) / 2;
+    w[2 * kh] = w[2 * k];
+    w[2 * kh + 1] = -w[2 * k + 1];
+  }
+  return w;
+}
+
+/** The linkage of a real root in the user's plane, checked through all nine points; null when degenerate. */
+function linkageOf(z: Float64Array, p: Float64Array, points: Point[], size: number): NinePointLinkage | null {
+  const P0 = points[0];
+  const at = (k: number): Point => ({ x: P0.x + size * z[2 * k], y: P0.y + size * z[2 * k + 1] });
+  const c = (k: number) => [z[2 * k], z[2 * k + 1]];
+  const dist = (u: number[], v: number[]) => Math.hypot(u[0] - v[0], u[1] - v[1]);
+  if (
+    !(dist(c(X), c(A)) > DEGENERATE) ||
+    !(dist(c(Y), c(B)) > DEGENERATE) ||
+    !(dist(c(X), c(Y)) > DEGENERATE) ||
+    !(dist(c(A), c(B)) > DEGENERATE)
+  )
+    return null;
+  const theta2: number[] = [];
+  const branches: Branch[] = [];
+  let base: PlacedFourBar | null = null;
+  const rot = new Float64Array(2);
+  for (let j = 0; j < 9; j++) {
+    let tr = 1,
+      ti = 0;
+    if (j > 0) {
+      rotation(z, p, j - 1, rot);
+      [tr, ti] = [rot[0], rot[1]];
+      if (!Number.isFinite(tr) || !Number.isFinite(ti)) return null;
+    }
+    // Moving pivots at pose j: P_j + θ_j x and P_j + θ_j y.
+    const Pj = points[j];
+    const move = (k: number): Point => ({
+      x: Pj.x + size * (tr * z[2 * k] - ti * z[2 * k + 1]),
+      y: Pj.y + size * (tr * z[2 * k + 1] + ti * z[2 * k]),
+    });
+    let pose;
+    try {
+      pose = fourBarFromJoints({ O2: at(A), A: move(X), B: move(Y), O4: at(B), P: Pj });
+    } catch {
+      return null;
+    }
+    base ??= pose.design;
+    theta2.push(pose.theta2);
+    branches.push(pose.design.branch);
+  }
+  const d: NinePointLinkage = { ...base!, theta2, branches };
+  // The solver's own kinematics must put the coupler point on every target.
+  for (let j = 0; j < 9; j++) {
+    const q = placedCouplerPoint({ ...d, branch: branches[j] }, theta2[j]);
+    if (!q || Math.hypot(q.x - points[j].x, q.y - points[j].y) > RECHECK_TOL * size) return null;
+  }
+  return d;
+}
+
+/** 'circuit' when the assembly changes between points, 'order' when one turn of the input does not meet them in order, 'branch' when it must pass a dead centre between two. */
+function defectsOf(d: NinePointLinkage): ('circuit' | 'order' | 'branch')[] {
+  const out: ('circuit' | 'order' | 'branch')[] = [];
+  if (d.branches.some((b) => b !== d.branches[0])) out.push('circuit');
+  const steps = d.theta2.slice(1).map((t, i) => wrapAngle(t - d.theta2[i]));
+  const fwd = steps.map((s) => (s < 0 ? s + TWO_PI : s));
+  const back = steps.map((s) => (s > 0 ? TWO_PI - s : -s));
+  const sum = (v: number[]) => v.reduce((a, b) => a + b, 0);
+  const dir = sum(fwd) <= sum(back) ? 1 : -1;
+  const travel = dir > 0 ? fwd : back;
+  if (sum(travel) >= TWO_PI) out.push('order');
+  if (!out.includes('circuit') && !inputRange(d.links).full) {
+    const SAMPLES = 16;
+    let broken = false;
+    for (let i = 0; i < 8 && !broken; i++) {
+      for (let k = 1; k < SAMPLES && !broken; k++) {
+        const t = d.theta2[i] + (dir * travel[i] * k) / SAMPLES;
+        if (!solveClosedForm(d.links, t, d.branch)) broken = true;
+      }
+    }
+    if (broken) out.push('branch');
+  }
+  return out;
+}
+
+/**
+ * All real, non-degenerate four-bars whose coupler curves pass through nine points (length unit of the points), as
+ * classes of three Roberts cognates. Throws for anything but nine finite distinct points, and for points on one line
+ * or circle (the roots go to infinity). options.paths picks a slice of the start solutions (merge with mergeNinePoint).
+ */
+export async function ninePointSynthesis(points: Point[], options: NinePointOptions = {}): Promise<NinePointResult> {
+  checkPoints(points);
+  const size = Math.max(...points.map((q) => Math.hypot(q.x - points[0].x, q.y - points[0].y)));
+  const target = targetParams(points, size);
+  const start = await loadStartSystem();
+  const n = start.roots.length;
+  const from = Math.max(0, Math.min(n, Math.floor(options.paths?.start ?? 0)));
+  const to = Math.max(from, Math.min(n, Math.floor(options.paths?.end ?? n)));
+  const tracker = new Tracker();
+  tracker.setSegment(start.params, target, GAMMA[0], GAMMA[1]);
+  const ends: { z: Float64Array; key: Float64Array; index: number }[] = [];
+  let failed = 0;
+  let finished = 0;
+  let real = 0;
+  const trackOne = (index: number, careful: boolean) => {
+    const z = start.roots[index].slice();
+    const r = careful
+      ? tracker.track(z, { hMax: 0.01, h0: 1e-3, maxSteps: 40000, tol: 1e-10 })
+      : tracker.track(z, { hMax: 0.1 });
+    return { z, status: r.status };
+  };
+  for (let i = from; i < to; i++) {
+    // Cancelled: what is done so far, with finished + failed < total saying the rest was not tracked.
+    if (options.signal?.aborted) break;
+    let r = trackOne(i, false);
+    if (r.status === 'failed') r = trackOne(i, true);
+    if (r.status === 'failed') failed++;
+    else {
+      finished++;
+      if (r.status === 'finished') {
+        ends.push({ z: r.z, key: orbitKey(r.z), index: i });
+        if (realPart(r.z)) real++;
+      }
+    }
+    if (options.onProgress && ((i - from) % 16 === 15 || i === to - 1)) {
+      options.onProgress({ done: i - from + 1, total: to - from, found: real });
+      await Promise.resolve();
+    }
+  }
+  // Two paths that end in one orbit mean one jumped: track them again, carefully; a duplicate that stays is failed.
+  for (const group of duplicates(ends.map((e) => e.key))) {
+    for (const k of group) {
+      const r = trackOne(ends[k].index, true);
+      if (r.status === 'finished') ends[k] = { z: r.z, key: orbitKey(r.z), index: ends[k].index };
+    }
+  }
+  const drop = new Set<number>();
+  for (const group of duplicates(ends.map((e) => e.key))) {
+    for (const k of group.slice(1)) drop.add(k);
+  }
+  finished -= drop.size;
+  failed += drop.size;
+  const classes: NinePointClass[] = [];
+  for (let k = 0; k < ends.length; k++) {
+    const w = drop.has(k) ? null : realPart(ends[k].z);
+    const cls = w && classOf(w, target, points, size);
+    if (cls) classes.push(cls);
+  }
+  return { classes, paths: { total: to - from, finished, failed } };
+}
+
+/** Groups (two or more) of indices whose orbit keys agree. */
+function duplicates(keys: Float64Array[]): number[][] {
+  const order = keys.map((_, i) => i).sort((i, j) => keys[i][0] - keys[j][0]);
+  const taken = new Set<number>();
+  const groups: number[][] = [];
+  for (let a = 0; a < order.length; a++) {
+    if (taken.has(order[a])) continue;
+    const group = [order[a]];
+    for (let b = a + 1; b < order.length; b++) {
+      const ka = keys[order[a]];
+      const kb = keys[order[b]];
+      if (kb[0] - ka[0] > 1e-6 * (1 + Math.abs(ka[0]))) break;
+      if (sameKey(ka, kb, 1e-8)) group.push(order[b]);
+    }
+    if (group.length > 1) {
+      group.forEach((k) => taken.add(k));
+      groups.push(group);
+    }
+  }
+  return groups;
+}
+
+function classOf(w: Float64Array, p: Float64Array, points: Point[], size: number): NinePointClass | null {
+  const cognates: NinePointLinkage[] = [];
+  for (const v of [w, ...cognateRoots(w)]) {
+    const d = linkageOf(v, p, points, size);
+    if (!d) return null;
+    cognates.push(d);
+  }
+  const first = cognates[0];
+  return { cognates, grashof: classify(first.links).grashof, defects: defectsOf(first) };
+}
+
+/** The union of slices' results: classes concatenated, path counts summed. */
+export function mergeNinePoint(parts: NinePointResult[]): NinePointResult {
+  return {
+    classes: parts.flatMap((r) => r.classes),
+    paths: {
+      total: parts.reduce((s, r) => s + r.paths.total, 0),
+      finished: parts.reduce((s, r) => s + r.paths.finished, 0),
+      failed: parts.reduce((s, r) => s + r.paths.failed, 0),
+    },
+  };
+}

@@ -1,0 +1,139 @@
+import { describe, expect, it } from 'vitest';
+import type { Point } from '../../src/solver';
+import { mergeNinePoint, ninePointSynthesis } from '../../src/synthesis';
+import type { NinePointResult } from '../../src/synthesis';
+import { robertsCognates } from '../../src/synthesis/cognates';
+import { orbit, orbitKey, sameKey } from '../../src/synthesis/ninePoint/group';
+import { loadStartSystem } from '../../src/synthesis/ninePoint/ninePointSynthesis';
+import { Tracker } from '../../src/synthesis/ninePoint/tracker';
+import { placedCouplerPoint, placedJoints } from '../../src/synthesis/placed';
+import type { PlacedFourBar } from '../../src/synthesis/types';
+
+/** Problem 3 of Wampler, Morgan and Sommese (1992), as in the alphaCertified data (Hauenstein and Sottile). */
+const PROBLEM_3: Point[] = [
+  [0.25, 0.0],
+  [0.52, 0.1],
+  [0.8, 0.7],
+  [1.2, 1.0],
+  [1.4, 1.3],
+  [1.1, 1.48],
+  [0.7, 1.4],
+  [0.2, 1.0],
+  [0.02, 0.4],
+].map(([x, y]) => ({ x, y }));
+
+/** A crank-rocker chosen by hand, and nine points of its coupler curve spread over most of a turn. */
+const KNOWN: PlacedFourBar = {
+  links: { r1: 1, r2: 0.3, r3: 1.1, r4: 0.9 },
+  branch: 'open',
+  O2: { x: 0.2, y: -0.1 },
+  groundAngle: 0.3,
+  pDist: 0.6,
+  pAngle: 0.7,
+};
+const KNOWN_THETA2 = Array.from({ length: 9 }, (_, k) => 0.2 + 0.62 * k);
+const KNOWN_POINTS = KNOWN_THETA2.map((t) => placedCouplerPoint(KNOWN, t)!);
+
+const GAMMA = [0.8134, -0.5817];
+
+function groundPivots(d: PlacedFourBar): Point[] {
+  return [d.O2, { x: d.O2.x + d.links.r1 * Math.cos(d.groundAngle), y: d.O2.y + d.links.r1 * Math.sin(d.groundAngle) }];
+}
+const near = (p: Point, q: Point, tol: number) => Math.hypot(p.x - q.x, p.y - q.y) <= tol;
+function samePair(u: Point[], v: Point[], tol: number) {
+  return (near(u[0], v[0], tol) && near(u[1], v[1], tol)) || (near(u[0], v[1], tol) && near(u[1], v[0], tol));
+}
+
+/**
+ * The start solution whose path leads to the known linkage: its root at the nine points, tracked back along the
+ * same homotopy (reversing s turns γ into 1/γ), matched to the shipped orbit representatives by orbit key.
+ */
+async function startIndexOf(points: Point[], d: PlacedFourBar, theta2: number): Promise<number> {
+  const j = placedJoints(d, theta2)!;
+  const P0 = points[0];
+  const size = Math.max(...points.map((q) => Math.hypot(q.x - P0.x, q.y - P0.y)));
+  const z = new Float64Array(16);
+  [j.A, j.O2, j.B, j.O4].forEach((q, k) => {
+    z[2 * k] = (q.x - P0.x) / size;
+    z[2 * k + 1] = (q.y - P0.y) / size;
+    z[8 + 2 * k] = z[2 * k];
+    z[9 + 2 * k] = -z[2 * k + 1];
+  });
+  const p = new Float64Array(32);
+  for (let k = 1; k < 9; k++) {
+    p[2 * (k - 1)] = (points[k].x - P0.x) / size;
+    p[2 * (k - 1) + 1] = (points[k].y - P0.y) / size;
+    p[16 + 2 * (k - 1)] = p[2 * (k - 1)];
+    p[17 + 2 * (k - 1)] = -p[2 * (k - 1) + 1];
+  }
+  const start = await loadStartSystem();
+  const m = GAMMA[0] ** 2 + GAMMA[1] ** 2;
+  const t = new Tracker();
+  t.setSegment(p, start.params, GAMMA[0] / m, -GAMMA[1] / m);
+  expect(t.track(z).status).toBe('finished');
+  const key = orbitKey(z);
+  const hits = start.roots.map((r, i) => (sameKey(orbitKey(r), key, 1e-6) ? i : -1)).filter((i) => i >= 0);
+  expect(hits.length).toBe(1);
+  expect(
+    orbit(start.roots[hits[0]]).some((w) => w.every((v, i) => Math.abs(v - z[i]) < 1e-6 * (1 + Math.abs(v)))),
+  ).toBe(true);
+  return hits[0];
+}
+
+describe('ninePointSynthesis', () => {
+  it('refuses anything but nine finite, distinct points, naming the value', async () => {
+    await expect(ninePointSynthesis(PROBLEM_3.slice(0, 8))).rejects.toThrow(
+      /points must hold exactly 9 entries, got 8/,
+    );
+    await expect(ninePointSynthesis([...PROBLEM_3.slice(0, 8), { x: NaN, y: 0 }])).rejects.toThrow(/points\[8\]\.x/);
+    await expect(ninePointSynthesis([...PROBLEM_3.slice(0, 8), { x: 1, y: Infinity }])).rejects.toThrow(
+      /points\[8\]\.y/,
+    );
+    await expect(ninePointSynthesis('nine' as unknown as Point[])).rejects.toThrow(/points must be an array/);
+    await expect(ninePointSynthesis([...PROBLEM_3.slice(0, 8), { ...PROBLEM_3[2] }])).rejects.toThrow(
+      /points\[2\] and points\[8\] coincide/,
+    );
+  });
+
+  it('refuses points on one line or one circle: the roots go to infinity', async () => {
+    const line = Array.from({ length: 9 }, (_, k) => ({ x: 1 + 0.5 * k, y: 2 - 0.25 * k }));
+    await expect(ninePointSynthesis(line)).rejects.toThrow(/one line.*infinity/);
+    const circle = Array.from({ length: 9 }, (_, k) => ({
+      x: 3 + 2 * Math.cos(0.6 * k),
+      y: -1 + 2 * Math.sin(0.6 * k),
+    }));
+    await expect(ninePointSynthesis(circle)).rejects.toThrow(/one circle.*infinity/);
+  });
+
+  it('gives back a linkage built by hand and both its Roberts cognates from nine points of its curve', async () => {
+    const i = await startIndexOf(KNOWN_POINTS, KNOWN, KNOWN_THETA2[0]);
+    const r = await ninePointSynthesis(KNOWN_POINTS, { paths: { start: i, end: i + 1 } });
+    expect(r.paths).toEqual({ total: 1, finished: 1, failed: 0 });
+    expect(r.classes.length).toBe(1);
+    const got = r.classes[0].cognates;
+    expect(got.length).toBe(3);
+    // Oracle: the known design and the two cognates of src/synthesis/cognates (Roberts' diagram, built directly).
+    const want = [KNOWN, ...robertsCognates(KNOWN, KNOWN_THETA2[0]).map((c) => c.design)].map(groundPivots);
+    const tol = 1e-7;
+    for (const w of want) expect(got.some((g) => samePair(groundPivots(g), w, tol))).toBe(true);
+    const same = got.find((g) => samePair(groundPivots(g), want[0], tol))!;
+    // Driven from either pivot: crank and rocker may swap, the coupler stays.
+    const ends = (d: PlacedFourBar) => [d.links.r2, d.links.r4].sort((u, v) => u - v);
+    expect(ends(same)[0]).toBeCloseTo(ends(KNOWN)[0], 8);
+    expect(ends(same)[1]).toBeCloseTo(ends(KNOWN)[1], 8);
+    expect(same.links.r3).toBeCloseTo(KNOWN.links.r3, 8);
+    for (const g of got) {
+      for (let k = 0; k < 9; k++) {
+        const q = placedCouplerPoint({ ...g, branch: g.branches[k] }, g.theta2[k])!;
+        expect(Math.hypot(q.x - KNOWN_POINTS[k].x, q.y - KNOWN_POINTS[k].y)).toBeLessThan(1e-8);
+      }
+    }
+    expect(r.classes[0].grashof).toBe(true);
+  });
+
+  it('merges slices by summing paths and concatenating classes', () => {
+    const a: NinePointResult = { classes: [], paths: { total: 3, finished: 2, failed: 1 } };
+    const b: NinePointResult = { classes: [], paths: { total: 5, finished: 5, failed: 0 } };
+    expect(mergeNinePoint([a, b]).paths).toEqual({ total: 8, finished: 7, failed: 1 });
+  });
+});
