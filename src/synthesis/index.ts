@@ -44,3 +44,6 @@ export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
 export type { RobertsCognate } from './cognates';
+// Limits of the synthesis contracts (issue 31; docs/synthesis.md "Limits and refusals").
+export { MAX_SEED } from './pathSynthesis';
+export { MAX_PATH_TARGETS, MAX_TARGET_SIZE, MIN_TARGET_SIZE } from './pathTask';
