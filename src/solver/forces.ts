@@ -66,6 +66,12 @@ export interface Loads {
 
 /** Forces at one pose: Fij is the force of link i on link j (N); torques and moments N·m, counter-clockwise +. */
 export interface JointForces {
+  /**
+   * 'ok'; 'limit-position' where the pose is a limit (coupler and rocker in line: the rates, and so the forces, are
+   * unbounded; every field NaN); 'overflow' where the rates are finite but a force passes the double range (every
+   * field NaN).
+   */
+  status: 'ok' | 'limit-position' | 'overflow';
   /** T12: torque of the ground (motor) on the crank. */
   torque: number;
   F12: Point;
@@ -360,14 +366,20 @@ export function linkForces(
   const p = planForces(l, inertia, loads);
   forcesInto(p, theta2, pose.theta3, pose.theta4, input.omega2, input.alpha2, singleRates, 0, single);
   const f = single;
+  const fields = [f.torque, f.f12x, f.f12y, f.f32x, f.f32y, f.f43x, f.f43y, f.f14x, f.f14y];
+  const finite = fields.every((a) => Number.isFinite(a[0]));
+  const ratesFinite = [rates.omega3, rates.omega4, rates.alpha3, rates.alpha4].every(Number.isFinite);
+  const status = finite ? 'ok' : ratesFinite ? 'overflow' : 'limit-position';
+  const x = (v: number) => (finite ? v : NaN);
   return {
-    torque: f.torque[0],
-    F12: { x: f.f12x[0], y: f.f12y[0] },
-    F32: { x: f.f32x[0], y: f.f32y[0] },
-    F43: { x: f.f43x[0], y: f.f43y[0] },
-    F14: { x: f.f14x[0], y: f.f14y[0] },
-    shakingForce: { x: f.shakingX[0], y: f.shakingY[0] },
-    shakingMoment: f.shakingMoment[0],
+    status,
+    torque: x(f.torque[0]),
+    F12: { x: x(f.f12x[0]), y: x(f.f12y[0]) },
+    F32: { x: x(f.f32x[0]), y: x(f.f32y[0]) },
+    F43: { x: x(f.f43x[0]), y: x(f.f43y[0]) },
+    F14: { x: x(f.f14x[0]), y: x(f.f14y[0]) },
+    shakingForce: { x: x(f.shakingX[0]), y: x(f.shakingY[0]) },
+    shakingMoment: x(f.shakingMoment[0]),
   };
 }
 

@@ -16,13 +16,14 @@ import { classify } from './classify';
 import type { LinkInertias, Loads, SweepForces } from './forces';
 import { sweepForces } from './forces';
 import type { InputMotion } from './rates';
+import { LIMIT_SIN_MU } from './rates';
 import { STATUS_CODE } from './pointStatus';
 import { sweep } from './sweep';
 import type { Branch, Linkage } from './types';
 import { checkFinite, checkObject, describe } from './validate';
 
 /** Why a cycle's statistics are missing: the grid is not one full turn, or a sample is not finite. */
-export type TorqueCycleStatus = 'ok' | 'not-a-full-turn' | 'missing-points';
+export type TorqueCycleStatus = 'ok' | 'not-a-full-turn' | 'missing-points' | 'overflow';
 
 /** Input torque over one crank turn (N·m), its energy fluctuation (J) and flywheel inertia (kg·m²); NaN unless ok. */
 export interface TorqueCycleStats {
@@ -116,24 +117,32 @@ export function torqueCycleStats(
   const span = theta2[n - 1] - theta2[0];
   const mean = (sum / span) * scale;
   const rms = Math.sqrt(sumSq / span) * scale;
-  const energyFluctuation = energySwing(theta2, torque, mean);
+  // ΔE is found on the scaled torque too (T − mean can overflow where T is near the double range), then scaled.
+  const swing = energySwing(theta2, torque, mean / scale, scale);
+  const energyFluctuation = swing * scale;
+  // A statistic past the double range (ΔE of torques near 1e308 over a turn) is an overflow, said as such.
+  if (![mean, rms, energyFluctuation].every(Number.isFinite)) return missing('overflow');
   const w = Math.abs(omega2);
-  const flywheelInertia = w > 0 ? energyFluctuation / k / w / w : NaN;
+  // Divided while scaled when ΔE / k alone passes the doubles but the inertia itself may not.
+  let flywheelInertia = w > 0 ? energyFluctuation / k / w / w : NaN;
+  if (w > 0 && !Number.isFinite(flywheelInertia)) flywheelInertia = (swing / k / w / w) * scale;
+  if (w > 0 && !Number.isFinite(flywheelInertia)) return missing('overflow');
   return { status, mean, rms, min, max, peak, energyFluctuation, flywheelInertia };
 }
 
 /**
- * max - min of E(theta) = ∫ (T - mean) dtheta for the linear interpolant of the samples (J). Inside an
+ * max - min of E(theta) = ∫ (T/scale - mean) dtheta for the linear interpolant of the samples (J / scale; mean is
+ * the scaled mean). Inside an
  * interval where T - mean changes sign, E has an extreme at the crossing: that value is included too.
  */
-function energySwing(theta2: ArrayLike<number>, torque: ArrayLike<number>, mean: number): number {
+function energySwing(theta2: ArrayLike<number>, torque: ArrayLike<number>, mean: number, scale: number): number {
   let e = 0;
   let lo = 0;
   let hi = 0;
   for (let i = 0; i + 1 < theta2.length; i++) {
     const h = theta2[i + 1] - theta2[i];
-    const d0 = torque[i] - mean;
-    const d1 = torque[i + 1] - mean;
+    const d0 = torque[i] / scale - mean;
+    const d1 = torque[i + 1] / scale - mean;
     if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
       // The interpolant crosses the mean at the fraction t of the interval; E there is e + d0 t h / 2.
       const t = d0 / (d0 - d1);
@@ -149,7 +158,7 @@ function energySwing(theta2: ArrayLike<number>, torque: ArrayLike<number>, mean:
 }
 
 /** Why forceCycle has no statistics: the crank cannot turn, or the turn passes a limit position. */
-export type ForceCycleStatus = 'ok' | 'crank-does-not-turn' | 'limit-position';
+export type ForceCycleStatus = 'ok' | 'crank-does-not-turn' | 'limit-position' | 'overflow';
 
 /** Options of forceCycle. */
 export interface ForceCycleOptions {
@@ -214,7 +223,15 @@ export function forceCycle(
   if (!c.inputIsCrank) status = 'crank-does-not-turn';
   else if (c.type === 'change-point') status = 'limit-position';
   const stats = torqueCycleStats(grid, forces.torque, input.omega2, k);
-  if (status === 'ok' && stats.status !== 'ok') status = 'limit-position';
+  if (status === 'ok' && stats.status !== 'ok') {
+    // A torque that is not finite at a solved pose clear of a limit (|sin μ| above LIMIT_SIN_MU) has overflowed.
+    let overflow = stats.status === 'overflow';
+    for (let i = 0; i <= points && !overflow; i++) {
+      const clear = codes[i] === ok && Math.abs(Math.sin(r.theta4[i] - r.theta3[i])) > LIMIT_SIN_MU;
+      if (clear && !Number.isFinite(forces.torque[i])) overflow = true;
+    }
+    status = overflow ? 'overflow' : 'limit-position';
+  }
   const { theta2, theta3, theta4 } = r;
   const kept = status === 'ok' ? stats : missing(stats.status === 'ok' ? 'missing-points' : stats.status);
   return { status, theta2, theta3, theta4, forces, stats: kept };

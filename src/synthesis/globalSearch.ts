@@ -9,7 +9,7 @@
  * are independent work items: a pool of workers can run rounds part, part + parts, … and merge what they find.
  */
 import { PI, TWO_PI, inputRange } from '../solver';
-import { levenbergMarquardt } from './levenbergMarquardt';
+import { levenbergMarquardtSteps } from './levenbergMarquardt';
 import { MODEL_SIZE, couplerLocal } from './pathModel';
 import { createPathProblem, pathLayout, sweepWithinRange, turnsFully } from './pathProblem';
 import type { NormalisedTask } from './pathTask';
@@ -25,12 +25,16 @@ export interface PathCandidate {
   x: number[];
   /** Σd² in normalised units. */
   f: number;
+  /** The global round that found it (the merge keeps the rounds before an exact fit's cut-off). */
+  round: number;
 }
 
 /** Shapes screened per round. */
 export const SAMPLES_PER_ROUND = 400;
 /** Screened shapes solved by Levenberg–Marquardt per round. */
 export const STARTS_PER_ROUND = 4;
+/** Shapes screened between two pauses of a round's steps. */
+const SCREEN_PAUSE = 10;
 /** Curve samples per shape for free timing's arc-length assignment. */
 const CURVE_SAMPLES = 40;
 /** Iteration cap of one local solve in the global stage. */
@@ -274,12 +278,14 @@ function placeShape(
 }
 
 /** Screens SAMPLES_PER_ROUND random shapes and returns the best `keep` starts, best first. */
-function screen(t: NormalisedTask, rand: () => number, samples: number, keep: number): Start[] {
+function* screen(t: NormalisedTask, rand: () => number, samples: number, keep: number): Generator<void, Start[], void> {
   const best: Start[] = [];
   const phi = chordFractions(t);
   const th = new Float64Array(t.n);
   const m = pathLayout(t).m;
   for (let sIdx = 0; sIdx < samples; sIdx++) {
+    // A pause every few shapes: with many targets the arc-length assignment alone takes milliseconds per shape.
+    if (sIdx % SCREEN_PAUSE === SCREEN_PAUSE - 1) yield;
     const shape = sampleShape(t, rand);
     if (!shape) continue;
     const sigma = rand() < 0.5 ? 1 : -1;
@@ -328,25 +334,51 @@ export interface RoundStats {
 }
 
 /**
- * Runs round `round` of the global stage for seed (deterministic in both): screening, then a local solve of each
- * kept start. Stops between local solves once Date.now() passes deadline (ms since the epoch).
+ * Round `round` of the global stage for seed (deterministic in both) as steps: screening, then a local solve of
+ * each kept start, the generator pausing after each so the caller can yield to the event loop or stop. Once
+ * Date.now() passes deadline or the signal is aborted (also checked inside each local solve), the starts not yet
+ * solved are returned as they were placed: feasible designs, just not polished.
  */
+export function* pathRoundSteps(
+  t: NormalisedTask,
+  seed: number,
+  round: number,
+  deadline = Infinity,
+  signal?: { readonly aborted: boolean },
+): Generator<void, { candidates: PathCandidate[]; stats: RoundStats }, void> {
+  const rand = createRandom(mixSeed(seed, round));
+  const starts = yield* screen(t, rand, SAMPLES_PER_ROUND, STARTS_PER_ROUND);
+  const candidates: PathCandidate[] = [];
+  let evaluations = SAMPLES_PER_ROUND;
+  for (const s of starts) {
+    yield;
+    if (Date.now() > deadline || signal?.aborted) {
+      candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(s.x), f: s.f, round });
+      continue;
+    }
+    const problem = createPathProblem(t, s.sigma, s.dir);
+    const r = yield* levenbergMarquardtSteps(problem.lsq, s.x, {
+      maxIterations: LOCAL_ITERATIONS,
+      fTarget: EXACT_F,
+      deadline,
+      signal,
+    });
+    evaluations += r.evaluations;
+    if (Number.isFinite(r.f)) candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(r.x), f: r.f, round });
+  }
+  return { candidates, stats: { evaluations } };
+}
+
+/** Runs round `round` of the global stage at once (pathRoundSteps without pauses). */
 export function runPathRound(
   t: NormalisedTask,
   seed: number,
   round: number,
   deadline = Infinity,
 ): { candidates: PathCandidate[]; stats: RoundStats } {
-  const rand = createRandom(mixSeed(seed, round));
-  const starts = screen(t, rand, SAMPLES_PER_ROUND, STARTS_PER_ROUND);
-  const candidates: PathCandidate[] = [];
-  let evaluations = SAMPLES_PER_ROUND;
-  for (const s of starts) {
-    if (Date.now() > deadline) break;
-    const problem = createPathProblem(t, s.sigma, s.dir);
-    const r = levenbergMarquardt(problem.lsq, s.x, { maxIterations: LOCAL_ITERATIONS, fTarget: EXACT_F });
-    evaluations += r.evaluations;
-    if (Number.isFinite(r.f)) candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(r.x), f: r.f });
+  const steps = pathRoundSteps(t, seed, round, deadline);
+  for (;;) {
+    const next = steps.next();
+    if (next.done) return next.value;
   }
-  return { candidates, stats: { evaluations } };
 }

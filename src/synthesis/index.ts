@@ -46,3 +46,6 @@ export { robertsCognates } from './cognates';
 export type { RobertsCognate } from './cognates';
 export { mergeNinePoint, ninePointSynthesis } from './ninePoint';
 export type { NinePointClass, NinePointLinkage, NinePointOptions, NinePointResult } from './ninePoint';
+// Limits of the synthesis contracts (issue 31; docs/synthesis.md "Limits and refusals").
+export { MAX_SEED } from './pathSynthesis';
+export { MAX_PATH_TARGETS, MAX_TARGET_SIZE, MIN_TARGET_SIZE } from './pathTask';

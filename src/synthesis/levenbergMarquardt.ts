@@ -32,6 +32,8 @@ export interface LevenbergMarquardtOptions {
   fTarget?: number;
   /** Stop after the iteration that passes this time (Date.now(), ms; default never). */
   deadline?: number;
+  /** Stop after the iteration during which this is aborted (an AbortSignal fits). */
+  signal?: { readonly aborted: boolean };
 }
 
 /** Result of levenbergMarquardt: the last accepted point, its Σr², and the work done. */
@@ -85,6 +87,22 @@ export function levenbergMarquardt(
   x0: Float64Array,
   options: LevenbergMarquardtOptions = {},
 ): LevenbergMarquardtResult {
+  const steps = levenbergMarquardtSteps(p, x0, options);
+  for (;;) {
+    const next = steps.next();
+    if (next.done) return next.value;
+  }
+}
+
+/**
+ * levenbergMarquardt as a generator that pauses before each iteration, so a caller can yield to the event loop
+ * between iterations of a large problem (one iteration of 200 free-timing targets is tens of milliseconds).
+ */
+export function* levenbergMarquardtSteps(
+  p: LeastSquaresProblem,
+  x0: Float64Array,
+  options: LevenbergMarquardtOptions = {},
+): Generator<void, LevenbergMarquardtResult, void> {
   const { m, k, lo, hi } = p;
   const maxIterations = options.maxIterations ?? 200;
   const fTarget = options.fTarget ?? 0;
@@ -112,7 +130,8 @@ export function levenbergMarquardt(
   let stalls = 0;
   let iterations = 0;
   for (; iterations < maxIterations && f > fTarget; iterations++) {
-    if (deadline < Infinity && Date.now() > deadline) break;
+    yield;
+    if ((deadline < Infinity && Date.now() > deadline) || options.signal?.aborted) break;
     g.fill(0);
     A.fill(0);
     for (let row = 0; row < k; row++) {
@@ -140,6 +159,7 @@ export function levenbergMarquardt(
     let accepted = false;
     const fOld = f;
     while (lambda < 1e16) {
+      yield;
       for (let a = 0; a < nf; a++) {
         const i = free[a];
         for (let b = a; b < nf; b++) {

@@ -117,13 +117,14 @@ export function sameDesign(a: PlacedFourBar, b: PlacedFourBar, size: number): bo
 /**
  * Merges candidate lists (from one run or from several workers' slices), polishes the best, and returns the
  * checked, distinct answers best first (at most MAX_SOLUTIONS). Deterministic in its input unless the deadline
- * (Date.now(), ms) cuts the polishing short.
+ * (Date.now(), ms) or the signal cuts the polishing short.
  */
 export function screenCandidates(
   t: NormalisedTask,
   task: PathTask,
   lists: PathCandidate[][],
   deadline = Infinity,
+  signal?: { readonly aborted: boolean },
 ): PathSolution[] {
   const all = lists.flat().filter((c) => Number.isFinite(c.f));
   all.sort((a, b) => a.f - b.f || a.sigma - b.sigma || a.dir - b.dir);
@@ -139,6 +140,7 @@ export function screenCandidates(
       maxIterations: polished.length < POLISH_LONG ? POLISH_LONG_ITERATIONS : POLISH_ITERATIONS,
       fTarget: EXACT_F,
       deadline,
+      signal,
     });
     polished.push(r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c);
   }

@@ -40,6 +40,14 @@ export interface NormalisedTask {
   sampleMax: number;
 }
 
+/**
+ * Most targets a path task may have: one Levenberg–Marquardt iteration is dense in the 9 + n variables (about
+ * 30 ms at 200 free-timing targets on a desktop core), and the search yields between iterations.
+ */
+export const MAX_PATH_TARGETS = 200;
+/** Smallest and largest target-set size accepted (task's unit). */
+export const MIN_TARGET_SIZE = 1e-100;
+export const MAX_TARGET_SIZE = 1e100;
 /** Lengths below this fraction of the target size are not sampled, and never allowed below it times 1e-6. */
 const DEFAULT_MIN = 1e-6;
 const DEFAULT_MAX = 1e6;
@@ -51,7 +59,7 @@ const SAMPLE_MAX = 6;
 export function checkPathTask(task: unknown): asserts task is PathTask {
   if (typeof task !== 'object' || task === null) throw new Error(`task must be a path task object, got ${show(task)}`);
   const t = task as Record<string, unknown>;
-  checkArray('task.targets', t.targets, 1);
+  checkArray('task.targets', t.targets, 1, MAX_PATH_TARGETS);
   (t.targets as unknown[]).forEach((p, i) => checkPoint(`task.targets[${i}]`, p));
   const n = (t.targets as unknown[]).length;
   const timing = t.timing as Record<string, unknown> | undefined;
@@ -133,6 +141,13 @@ export function normaliseTask(task: PathTask): NormalisedTask {
   let size = 0;
   for (const p of task.targets) size = Math.max(size, Math.hypot(p.x - cx, p.y - cy));
   if (!(size > 0)) size = Math.max(1, Math.abs(cx), Math.abs(cy));
+  // Σd² is reported in the task's unit squared: beyond these sizes it would overflow, or underflow to 0 for every
+  // answer (issue 31), so the task is refused rather than ranked on zeros.
+  if (!(size >= MIN_TARGET_SIZE && size <= MAX_TARGET_SIZE)) {
+    throw new Error(
+      `task.targets must span between ${MIN_TARGET_SIZE} and ${MAX_TARGET_SIZE} (largest distance from their centroid), got ${show(size)}: rescale the unit`,
+    );
+  }
   const tx = new Float64Array(n);
   const ty = new Float64Array(n);
   task.targets.forEach((p, i) => {
@@ -140,6 +155,11 @@ export function normaliseTask(task: PathTask): NormalisedTask {
     ty[i] = (p.y - cy) / size;
   });
   const b = task.bounds ?? {};
+  if (b.length && !(b.length[1] / size > DEFAULT_MIN)) {
+    throw new Error(
+      `task.bounds.length[1] must exceed ${DEFAULT_MIN} of the targets' size (${show(size)}): links shorter than that are not searched, got ${show(b.length[1])}`,
+    );
+  }
   const lenMin = b.length ? Math.max(b.length[0] / size, DEFAULT_MIN) : DEFAULT_MIN;
   const lenMax = b.length ? b.length[1] / size : DEFAULT_MAX;
   const coupler = b.coupler !== undefined ? b.coupler / size : Infinity;

@@ -55,6 +55,7 @@ describe('linkForces: worked cases', () => {
     const loads = { gravity: { g: 10 }, outputTorque: -1.5 };
     const got = linkForces(l, 0, pose, STILL, { crank, coupler: MASSLESS, rocker: MASSLESS }, loads);
     expectForces(got, {
+      status: 'ok',
       torque: 1.5,
       F12: { x: 0, y: 15 },
       F32: { x: 0, y: 5 },
@@ -74,6 +75,7 @@ describe('linkForces: worked cases', () => {
     const crank: LinkInertia = { mass: 2, inertia: 0.02, cg: { dist: 0.15, angle: 0 } };
     const got = linkForces(l, 0, pose, { omega2: 10, alpha2: 5 }, { crank, coupler: MASSLESS, rocker: MASSLESS }, {});
     expectForces(got, {
+      status: 'ok',
       torque: 0.325,
       F12: { x: -30, y: 1.5 },
       F32: { x: 0, y: 0 },
@@ -100,6 +102,7 @@ describe('linkForces at and near limit positions', () => {
     const limitPose = solveClosedForm(l, hi, 'open')!;
     expect(limitPose.limit).toBe(true);
     expect(allNaN(linkForces(l, hi, limitPose, STILL, heavyCoupler, gravity))).toBe(true);
+    expect(linkForces(l, hi, limitPose, STILL, heavyCoupler, gravity).status).toBe('limit-position');
     // A parallelogram at its change point: all four pins on the ground line.
     const para = { r1: 2, r2: 1, r3: 2, r4: 1 };
     expect(allNaN(linkForces(para, 0, solveClosedForm(para, 0, 'open')!, STILL, heavyCoupler, gravity))).toBe(true);
