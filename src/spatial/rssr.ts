@@ -74,7 +74,8 @@ export function rssrAt(plan: RSSRPlan, theta2: number, sigma: number, p: Spatial
   const z = -r2 * s2 * sb + h2 * cb - h4;
   const az = Math.abs(z);
   if (az > r3 + 4 * EPS * (r2 + Math.abs(h2) + Math.abs(h4) + r3)) return Closure.Unreachable;
-  const r3p = az >= r3 ? 0 : Math.sqrt(r3 - az) * Math.sqrt(r3 + az);
+  // Exactly r3 in a plane (z = 0): the planar limit keeps src/solver's flat positions flat.
+  const r3p = az === 0 ? r3 : az >= r3 ? 0 : Math.sqrt(r3 - az) * Math.sqrt(r3 + az);
   let m = Math.sqrt(pp * pp + q * q);
   if (m < 1e-150) m = Math.hypot(pp, q);
   const g1 = r4 + r3p - m;

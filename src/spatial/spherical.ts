@@ -106,7 +106,9 @@ export function sphericalAt(plan: SphericalPlan, theta2: number, sigma: number, 
   const limit = g1 <= 0 || g2 <= 0 || g3 <= 0 || g4 <= 0;
   // sin(s - d) = sin(g1/2), sin(s - a4) = sin(g2/2), sin(s - a3) = sin(g3/2), sin s = sin(g4/2).
   const n1 = Math.sqrt(Math.sin(Math.max(0, g1) / 2)) * Math.sqrt(Math.sin(Math.max(0, g2) / 2));
-  const n2 = Math.sqrt(Math.sin(Math.max(0, g4) / 2)) * Math.sqrt(Math.sin(Math.max(0, g3) / 2));
+  // sin s from s itself while s < pi/2 (tiny arcs: pi - s would round to pi), from 2 pi - 2 s beyond.
+  const sinS = sum < HALF_TURN ? Math.sin(sum / 2) : Math.sin(Math.max(0, g4) / 2);
+  const n2 = Math.sqrt(sinS) * Math.sqrt(Math.sin(Math.max(0, g3) / 2));
   const psi = 2 * Math.atan2(n1, n2);
   const phi = Math.atan2(ay, au);
   const t4 = wrapSmall(phi + sigma * psi, HALF_TURN, FULL_TURN);
