@@ -2,16 +2,16 @@
  * Drawing primitives of the synthesis page's canvases (Motion and Function modes): the grid, a placed four-bar,
  * markers and polylines, each a pure function of (context, data, view) in CSS pixels.
  */
-import { drawGrid } from '../../../shared/canvas/drawGrid';
-import { drawGroundTriangle, drawJoint, drawLink } from '../../../shared/linkage/linkPrimitives';
-import { TWO_PI } from '../../../solver';
-import type { Point } from '../../../solver';
-import { placedJoints } from '../../../synthesis';
-import type { PlacedFourBar } from '../../../synthesis';
-import type { DrawContext } from '../../../shared/canvas/drawContext';
-import { THEME } from '../../../shared/canvas/canvasTheme';
-import type { ViewTransform } from '../../../shared/canvas/view';
-import { toScreenX, toScreenY } from '../../../shared/canvas/view';
+import { drawGrid } from '../../shared/canvas/drawGrid';
+import { drawGroundTriangle, drawJoint, drawLink } from '../../shared/linkage/linkPrimitives';
+import { TWO_PI } from '../../solver';
+import type { Point } from '../../solver';
+import { placedJoints } from '../../synthesis';
+import type { PlacedFourBar } from '../../synthesis';
+import type { DrawContext } from '../../shared/canvas/drawContext';
+import { THEME } from '../../shared/canvas/canvasTheme';
+import type { ViewTransform } from '../../shared/canvas/view';
+import { toScreenX, toScreenY } from '../../shared/canvas/view';
 
 /** A point in CSS pixels. */
 export interface Px {
