@@ -11,7 +11,7 @@ import type { CouplerPoint, ViewOffset } from '../../shared/state/appState';
 import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
 import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle } from '../../shared/canvas/canvasGestures';
 import { usePanZoom } from '../../shared/canvas/usePanZoom';
-import { Icon } from '../../shared/ui/Icon';
+import { ZoomTools } from '../../shared/canvas/ZoomTools';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { useElementSize } from '../../shared/hooks/useElementSize';
 import { useLinkageDrawing } from './useLinkageDrawing';
@@ -46,24 +46,6 @@ function keyTurnDeg(e: { key: string; shiftKey: boolean }): number | null {
   if (e.key === 'ArrowRight' || e.key === 'ArrowUp') return step;
   if (e.key === 'ArrowLeft' || e.key === 'ArrowDown') return -step;
   return null;
-}
-
-/** The zoom in, zoom out and fit buttons over the canvas. */
-function CanvasTools({ zoomBy, resetView }: { zoomBy: (factor: number) => void; resetView: () => void }) {
-  const t = useMessages();
-  return (
-    <div className="canvas-tools">
-      <button type="button" className="icon-btn" aria-label={t.zoomIn} title={t.zoomIn} onClick={() => zoomBy(1.25)}>
-        <Icon name="plus" />
-      </button>
-      <button type="button" className="icon-btn" aria-label={t.zoomOut} title={t.zoomOut} onClick={() => zoomBy(0.8)}>
-        <Icon name="minus" />
-      </button>
-      <button type="button" className="icon-btn" aria-label={t.resetView} title={t.resetView} onClick={resetView}>
-        <Icon name="fit" />
-      </button>
-    </div>
-  );
 }
 
 /**
@@ -169,7 +151,7 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
         }}
       />
       {stage ? <StageCanvas stage={stage} width={width} height={height} /> : null}
-      <CanvasTools zoomBy={zoomBy} resetView={resetView} />
+      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={t} />
       <p id={hintId} className="canvas-hint">
         {hint}
       </p>

@@ -3,7 +3,7 @@ import type { ViewOffset } from '../../../shared/state/appState';
 import { fitView } from '../../../shared/canvas/view';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
-import { CanvasZoomTools } from '../motion/CanvasZoomTools';
+import { ZoomTools } from '../../../shared/canvas/ZoomTools';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import { CanvasExports } from '../CanvasExports';
 import type { FunctionPicture } from './functionPicture';
@@ -49,7 +49,7 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
           if (onZoomKey(e)) e.preventDefault();
         }}
       />
-      <CanvasZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
+      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
       <CanvasExports
         draw={(ctx) => drawFunction(ctx, picture, fitView(bounds, width, height, view))}
         width={width}

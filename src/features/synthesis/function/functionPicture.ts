@@ -8,7 +8,7 @@ import type { DrawContext } from '../../../shared/canvas/drawContext';
 import { THEME } from '../../../shared/canvas/canvasTheme';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { emptyBounds, extendBoundsCircle } from '../../../shared/canvas/view';
-import { drawBackground, drawFourBar, drawLabel, drawPolyline } from '../motion/drawPlane';
+import { drawBackground, drawFourBar, drawLabel, drawPolyline } from '../drawPlane';
 import type { FunctionDesign } from './functionSolve';
 
 /** Everything the Function canvas draws: the design, its ranges (radians) and the current input angle. */

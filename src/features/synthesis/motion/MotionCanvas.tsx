@@ -12,7 +12,7 @@ import type { ViewOffset } from '../../../shared/state/appState';
 import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionHandle, MotionPicture } from './motionPicture';
 import { drawMotion, handleAt, motionBounds, turnHandlePx } from './motionPicture';
-import { CanvasZoomTools } from './CanvasZoomTools';
+import { ZoomTools } from '../../../shared/canvas/ZoomTools';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import { CanvasExports } from '../CanvasExports';
 
@@ -185,7 +185,7 @@ export function MotionCanvas(props: MotionCanvasProps) {
         {...pointerHandlers}
         onKeyDown={onKeyDown}
       />
-      <CanvasZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
+      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
       <p id={hintId} className="syn-canvas-hint">
         {labels.hint}
       </p>

@@ -14,8 +14,8 @@ import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { emptyBounds, extendBounds } from '../../../shared/canvas/view';
 import type { PivotChoice } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionOutcome, PivotConstruction } from './motionSolve';
-import type { Px } from './drawPlane';
-import { drawBackground, drawFourBar, drawLabel, drawMarker, drawPolyline, drawWorldCircle, px } from './drawPlane';
+import type { Px } from '../drawPlane';
+import { drawBackground, drawFourBar, drawLabel, drawMarker, drawPolyline, drawWorldCircle, px } from '../drawPlane';
 
 /** Everything the Motion canvas draws. */
 export interface MotionPicture {

@@ -6,12 +6,12 @@ import { placedJoints } from '../../../synthesis/placed';
 import type { ScreenPoint } from '../../../shared/canvas/canvasGestures';
 import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
+import { ZoomTools } from '../../../shared/canvas/ZoomTools';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { fitView, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
 import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
 import type { ViewOffset } from '../../../shared/state/appState';
-import { Icon } from '../../../shared/ui/Icon';
 import type { SynthesisMessages } from '../synthesisMessages';
 import type { MotionRange } from './candidateFacts';
 import { theta2AtPhase } from './candidateFacts';
@@ -165,17 +165,7 @@ export function TargetCanvas(props: TargetCanvasProps) {
           }
         }}
       />
-      <div className="syn-canvas-tools">
-        <button type="button" className="syn-icon-btn" aria-label={st.zoomIn} onClick={() => panZoom.zoomBy(1.25)}>
-          <Icon name="plus" />
-        </button>
-        <button type="button" className="syn-icon-btn" aria-label={st.zoomOut} onClick={() => panZoom.zoomBy(0.8)}>
-          <Icon name="minus" />
-        </button>
-        <button type="button" className="syn-icon-btn" aria-label={st.resetView} onClick={panZoom.resetView}>
-          <Icon name="fit" />
-        </button>
-      </div>
+      <ZoomTools zoomBy={panZoom.zoomBy} resetView={panZoom.resetView} labels={st} />
       {targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
       <p id={hintId} className="syn-canvas-hint">
         {st.canvasHint}

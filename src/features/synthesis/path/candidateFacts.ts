@@ -1,7 +1,6 @@
 import { PI, TWO_PI, radToDeg, wrapAngle } from '../../../solver/angles';
 import { classify } from '../../../solver/classify';
 import { solveClosedForm } from '../../../solver/closedForm';
-import type { Point } from '../../../solver/kinematics';
 import type { LinkageType } from '../../../solver/types';
 import { placedCouplerPoint } from '../../../synthesis/placed';
 import type { PathSolution, PlacedFourBar } from '../../../synthesis/types';
@@ -100,14 +99,4 @@ export function designFacts(design: PlacedFourBar, theta2: number, maxDistance: 
 /** The facts of a path solution (see designFacts); size is the targets' size (length unit). */
 export function candidateFacts(s: PathSolution, size: number): CandidateFacts {
   return designFacts(s.design, s.theta2[0] ?? 0, s.maxDistance, size);
-}
-
-/** Largest distance from the targets to a design's coupler point at its θ2 per target (length unit). */
-export function maxTargetDistance(design: PlacedFourBar, theta2: readonly number[], targets: readonly Point[]): number {
-  let most = 0;
-  targets.forEach((t, i) => {
-    const p = placedCouplerPoint(design, theta2[i] ?? 0);
-    most = Math.max(most, p ? Math.hypot(p.x - t.x, p.y - t.y) : Infinity);
-  });
-  return most;
 }

@@ -1,5 +1,6 @@
 import { drawGrid } from '../../../shared/canvas/drawGrid';
-import { drawGroundTriangle, drawJoint, drawLink } from '../../../shared/linkage/linkPrimitives';
+import { drawPlacedPose } from '../drawPlacedPose';
+import { drawLink } from '../../../shared/linkage/linkPrimitives';
 import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import type { PlacedFourBar, PlacedJoints } from '../../../synthesis/types';
@@ -73,29 +74,6 @@ function drawCurve(ctx: DrawContext, v: ViewTransform, c: PathCurve): void {
   ctx.setLineDash([]);
 }
 
-function drawLinkagePose(ctx: DrawContext, v: ViewTransform, pose: PlacedJoints): void {
-  const [O2, A, B, O4, P] = [pose.O2, pose.A, pose.B, pose.O4, pose.P].map((p) => px(v, p));
-  drawGroundTriangle(ctx, O2, 10);
-  drawGroundTriangle(ctx, O4, 10);
-  ctx.setLineDash([6, 4]);
-  drawLink(ctx, O2, O4, COLORS.ground, 1.5);
-  ctx.setLineDash([]);
-  ctx.fillStyle = COLORS.couplerFill;
-  ctx.beginPath();
-  ctx.moveTo(A.x, A.y);
-  ctx.lineTo(B.x, B.y);
-  ctx.lineTo(P.x, P.y);
-  ctx.closePath();
-  ctx.fill();
-  drawLink(ctx, A, P, COLORS.coupler, 2);
-  drawLink(ctx, B, P, COLORS.coupler, 2);
-  drawLink(ctx, O2, A, COLORS.crank, STROKES.link);
-  drawLink(ctx, A, B, COLORS.coupler, STROKES.link);
-  drawLink(ctx, O4, B, COLORS.rocker, STROKES.link);
-  for (const p of [O2, A, B, O4]) drawJoint(ctx, p, STROKES.jointRadius, COLORS.joint, COLORS.jointStroke);
-  drawJoint(ctx, P, STROKES.jointRadius, COLORS.couplerPoint, COLORS.couplerPoint);
-}
-
 function drawTargets(ctx: DrawContext, v: ViewTransform, scene: PathScene): void {
   ctx.font = `600 ${FONT_SIZES.canvas}px ${FONTS.sans}`;
   ctx.textAlign = 'left';
@@ -133,6 +111,6 @@ export function drawPathScene(ctx: DrawContext, scene: PathScene, v: ViewTransfo
   drawGrid(ctx, v);
   for (const c of scene.curves) if (c.faint) drawCurve(ctx, v, c);
   for (const c of scene.curves) if (!c.faint) drawCurve(ctx, v, c);
-  if (scene.pose) drawLinkagePose(ctx, v, scene.pose);
+  if (scene.pose) drawPlacedPose(ctx, v, scene.pose, { dashedGround: true });
   drawTargets(ctx, v, scene);
 }

@@ -1,5 +1,5 @@
 import { downloadText } from '../../../shared/canvas/download';
-import { drawingSvg, exportDrawingPng, exportDrawingSvg } from '../../../shared/canvas/exportDrawing';
+import { exportDrawingPng, exportDrawingSvg } from '../../../shared/canvas/exportDrawing';
 import type { ViewTransform } from '../../../shared/canvas/view';
 import type { PathSolution } from '../../../synthesis/types';
 import type { PathScene } from './drawPathScene';
@@ -9,11 +9,6 @@ import { resultsToCsv } from './resultsCsv';
 /** Downloads the candidates as synthesis-results.csv (resultsToCsv). */
 export function exportResultsCsv(solutions: readonly PathSolution[]): void {
   downloadText(resultsToCsv(solutions), 'synthesis-results.csv', 'text/csv;charset=utf-8');
-}
-
-/** The synthesis canvas as SVG text: the same drawing through SvgContext, at the view's size (CSS pixels). */
-export function pathSceneSvg(scene: PathScene, view: ViewTransform): string {
-  return drawingSvg((ctx) => drawPathScene(ctx, scene, view), view.width, view.height);
 }
 
 /** Downloads the synthesis canvas as synthesis.svg. */

@@ -2,16 +2,17 @@
  * Drawing primitives of the synthesis page's canvases (Motion and Function modes): the grid, a placed four-bar,
  * markers and polylines, each a pure function of (context, data, view) in CSS pixels.
  */
-import { drawGrid } from '../../../shared/canvas/drawGrid';
-import { drawGroundTriangle, drawJoint, drawLink } from '../../../shared/linkage/linkPrimitives';
-import { TWO_PI } from '../../../solver';
-import type { Point } from '../../../solver';
-import { placedJoints } from '../../../synthesis';
-import type { PlacedFourBar } from '../../../synthesis';
-import type { DrawContext } from '../../../shared/canvas/drawContext';
-import { THEME } from '../../../shared/canvas/canvasTheme';
-import type { ViewTransform } from '../../../shared/canvas/view';
-import { toScreenX, toScreenY } from '../../../shared/canvas/view';
+import { drawGrid } from '../../shared/canvas/drawGrid';
+import { drawPlacedPose } from './drawPlacedPose';
+import { drawLink } from '../../shared/linkage/linkPrimitives';
+import { TWO_PI } from '../../solver';
+import type { Point } from '../../solver';
+import { placedJoints } from '../../synthesis';
+import type { PlacedFourBar } from '../../synthesis';
+import type { DrawContext } from '../../shared/canvas/drawContext';
+import { THEME } from '../../shared/canvas/canvasTheme';
+import type { ViewTransform } from '../../shared/canvas/view';
+import { toScreenX, toScreenY } from '../../shared/canvas/view';
 
 /** A point in CSS pixels. */
 export interface Px {
@@ -172,22 +173,6 @@ export function drawFourBar(
     ctx.globalAlpha = 1;
     return j;
   }
-  drawLink(ctx, O2, O4, THEME.ground, 2);
-  ctx.fillStyle = THEME.couplerFill;
-  ctx.beginPath();
-  ctx.moveTo(A.x, A.y);
-  ctx.lineTo(B.x, B.y);
-  ctx.lineTo(P.x, P.y);
-  ctx.closePath();
-  ctx.fill();
-  drawLink(ctx, A, P, THEME.coupler, 2);
-  drawLink(ctx, B, P, THEME.coupler, 2);
-  drawLink(ctx, O2, A, THEME.crank, THEME.linkWidth);
-  drawLink(ctx, A, B, THEME.coupler, THEME.linkWidth);
-  drawLink(ctx, O4, B, THEME.rocker, THEME.linkWidth);
-  drawGroundTriangle(ctx, O2, 9);
-  drawGroundTriangle(ctx, O4, 9);
-  for (const p of [O2, O4, A, B]) drawJoint(ctx, p, THEME.jointRadius);
-  drawMarker(ctx, v, j.P, 'dot', THEME.couplerPoint, 3.5);
+  drawPlacedPose(ctx, v, j);
   return j;
 }
