@@ -10,7 +10,7 @@ import { designScene } from './designScene';
 export function useDesignScene(state: AppState, local: LocalPose, design: DesignInfo | null, t: Messages): SceneDesign {
   const {
     display: { showDeadCentres, showInstantCentres, muBandLoDeg, muBandHiDeg },
-    forces: { lengthUnit },
+    design: { lengthUnit },
   } = state;
   const centres = showInstantCentres ? local : null;
   return useMemo(

@@ -60,7 +60,7 @@ export function useLinkageScene(
 
   const classification = cycle?.classification ?? null;
   const { warning, warningDetail } = sceneWarning(local.pose !== null, classification, theta2Rad, t);
-  const text = useSceneText(t, warning, warningDetail, state.forces.lengthUnit);
+  const text = useSceneText(t, warning, warningDetail, state.design.lengthUnit);
   const {
     display: { showGrid, showAngles, showGhost, showTrace },
   } = state;

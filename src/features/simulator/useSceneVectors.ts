@@ -15,7 +15,7 @@ export function useSceneVectors(state: AppState, motion: FrameMotion | null, t: 
     motion: { omega2RadPerS: w, alpha2RadPerS2: a },
   } = state;
   const r2 = state.design.linkage.r2;
-  const unit = state.forces.lengthUnit;
+  const unit = state.design.lengthUnit;
   const scales = useMemo(() => vectorScales(r2, w, a), [r2, w, a]);
   const text = useMemo(() => vectorText(t, unit), [t, unit]);
   return useMemo(
