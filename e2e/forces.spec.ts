@@ -138,7 +138,9 @@ test.describe('forces', () => {
     }
   });
 
-  test('the same linkage in mm and in m gives the same torque; the unit shows beside the lengths', async ({ page }) => {
+  test('the same linkage in mm and in m gives the same torque; the unit sits with the lengths and converts them', async ({
+    page,
+  }) => {
     await page.goto(URL_MM);
     await waitReady(page);
     const inMm = await row(page, 'Input torque T12').locator('dd').innerText();
@@ -147,7 +149,7 @@ test.describe('forces', () => {
     await waitReady(page);
     await expect(row(page, 'Input torque T12').locator('dd')).toHaveText(inMm);
     await expect(page.locator('.numctl').filter({ hasText: 'r1 ground' }).locator('.numctl-unit')).toHaveText('m');
-    // Choosing a unit reads the same numbers in it: the angles stay, the lengths keep their numbers.
+    // Choosing a unit converts the lengths (issue 34 item 11): the same machine, so the angles and T12 stay.
     const theta3Cell = page
       .locator('.fact')
       .filter({ has: page.locator('dt', { hasText: /^θ3$/ }) })
@@ -156,9 +158,10 @@ test.describe('forces', () => {
     const theta3 = await theta3Cell.innerText();
     await page.getByRole('group', { name: 'Length unit' }).getByRole('radio', { name: 'mm' }).check();
     await expect(page).toHaveURL(/lu=mm/);
-    await expect(page.getByRole('textbox', { name: 'r1 ground' })).toHaveValue('0.6');
+    await expect(page.getByRole('textbox', { name: 'r1 ground' })).toHaveValue('600');
+    await expect(page.locator('.numctl').filter({ hasText: 'r1 ground' }).locator('.numctl-unit')).toHaveText('mm');
     await expect(theta3Cell).toHaveText(theta3);
-    await expect(row(page, 'Input torque T12').locator('dd')).not.toHaveText(inMm);
+    await expect(row(page, 'Input torque T12').locator('dd')).toHaveText(inMm);
   });
 
   test('a bad mass per length is refused with a message naming the field; Enter or leaving commits a good one', async ({

@@ -53,7 +53,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
         />
       </PanelSection>
       <PanelSection className="card" id="sec-motion-results" title={t.motionPanelTitle}>
-        <MotionPanel motion={motion} theta2Rad={local.theta2Rad} lengthUnit={state.forces.lengthUnit} />
+        <MotionPanel motion={motion} theta2Rad={local.theta2Rad} lengthUnit={state.design.lengthUnit} />
       </PanelSection>
       <ForcesSection state={state} dispatch={dispatch} />
       <section className="card convergence-card">

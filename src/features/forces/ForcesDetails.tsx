@@ -26,7 +26,13 @@ export function ForcesDetails({ state, dispatch, t, withSettings }: ForcesDetail
       </div>
       <ForcesPanel state={state} t={t} />
       {withSettings ? (
-        <ForcesSettings forces={state.forces} linkage={state.design.linkage} dispatch={dispatch} t={t} />
+        <ForcesSettings
+          forces={state.forces}
+          linkage={state.design.linkage}
+          lengthUnit={state.design.lengthUnit}
+          dispatch={dispatch}
+          t={t}
+        />
       ) : null}
     </>
   );

@@ -2,10 +2,7 @@ import './forces.css';
 import type { Dispatch } from 'react';
 import { Suspense, lazy } from 'react';
 import type { Action, AppState } from '../../shared/state/appState';
-import type { LengthUnit } from '../../shared/state/slices/forcesSlice';
-import { LENGTH_UNITS } from '../../shared/state/slices/forcesSlice';
 import { PanelSection } from '../../shared/ui/PanelSection';
-import { Segmented } from '../../shared/ui/Segmented';
 import { Toggle } from '../../shared/ui/Toggle';
 import { forcesMessages } from './forcesMessages';
 
@@ -17,12 +14,12 @@ export interface ForcesSectionProps {
   state: AppState;
   dispatch: Dispatch<Action>;
   className?: string;
-  /** Offer the length unit and the mass, gravity and load settings (default); an embed shows toggles and numbers. */
+  /** Offer the mass, gravity and load settings (default); an embed shows toggles and numbers. */
   withSettings?: boolean;
 }
 
 /**
- * The forces' section: the "Forces" toggle and the app's "Length unit", then, while Forces is on, the mass model,
+ * The forces' section: the "Forces" toggle (the length unit sits with the lengths, LinksSection), then, while Forces is on, the mass model,
  * gravity and loads, the input torque, pin forces and shaking at θ2, and the cycle's torque and flywheel.
  */
 export function ForcesSection({ state, dispatch, className = 'card', withSettings = true }: ForcesSectionProps) {
@@ -37,17 +34,6 @@ export function ForcesSection({ state, dispatch, className = 'card', withSetting
           onChange={(enabled) => dispatch({ type: 'setForces', patch: { enabled } })}
         />
       </div>
-      {withSettings ? (
-        <>
-          <Segmented<LengthUnit>
-            legend={t.lengthUnit}
-            value={f.lengthUnit}
-            options={LENGTH_UNITS.map((u) => ({ value: u, label: t.lengthUnitNames[u] }))}
-            onChange={(lengthUnit) => dispatch({ type: 'setForces', patch: { lengthUnit } })}
-          />
-          <p className="footnote">{t.lengthUnitNote}</p>
-        </>
-      ) : null}
       {f.enabled ? (
         <Suspense fallback={<p className="note">…</p>}>
           <ForcesDetails state={state} dispatch={dispatch} t={t} withSettings={withSettings} />

@@ -2,12 +2,8 @@ import type { Dispatch } from 'react';
 import { memo } from 'react';
 import type { Linkage } from '../../solver/types';
 import type { Action } from '../../shared/state/appState';
-import type {
-  ForcesSettings as Settings,
-  ForcesState,
-  MassModel,
-  MovingLink,
-} from '../../shared/state/slices/forcesSlice';
+import type { LengthUnit } from '../../shared/state/slices/designSlice';
+import type { ForcesSettableFields, ForcesState, MassModel, MovingLink } from '../../shared/state/slices/forcesSlice';
 import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
 import { formatNumber } from '../../shared/format';
 import type { NumberFieldProps } from '../../shared/ui/NumberField';
@@ -16,10 +12,11 @@ import { Segmented } from '../../shared/ui/Segmented';
 import { barSeeds } from './forceModel';
 import type { ForcesMessages } from './forcesMessages';
 
-/** Props of ForcesSettings: the forces slice, the lengths (for the bars' seeds), the dispatcher and the strings. */
+/** Props of ForcesSettings: the forces slice, the lengths and their unit (for the bars' seeds, the CG offsets), the dispatcher and the strings. */
 export interface ForcesSettingsProps {
   forces: ForcesState;
   linkage: Linkage;
+  lengthUnit: LengthUnit;
   dispatch: Dispatch<Action>;
   t: ForcesMessages;
 }
@@ -43,11 +40,16 @@ function forceField(
 }
 
 /** One link's mass, inertia and CG (distance in the length unit, angle in degrees from the link's line). */
-function LinkFields({ link, forces, dispatch, t }: Omit<ForcesSettingsProps, 'linkage'> & { link: MovingLink }) {
+function LinkFields({
+  link,
+  forces,
+  lengthUnit: unit,
+  dispatch,
+  t,
+}: Omit<ForcesSettingsProps, 'linkage'> & { link: MovingLink }) {
   const p = forces[link];
   const set = (props: Partial<typeof p>) => dispatch({ type: 'setLinkMass', link, props });
   const name = t.linkNames[link];
-  const unit = forces.lengthUnit;
   return (
     <fieldset className="forces-link">
       <legend>{name}</legend>
@@ -79,12 +81,12 @@ function LinkFields({ link, forces, dispatch, t }: Omit<ForcesSettingsProps, 'li
   );
 }
 
-function ForcesSettingsImpl({ forces: f, linkage, dispatch, t }: ForcesSettingsProps) {
-  const set = (patch: Partial<Settings>) => dispatch({ type: 'setForces', patch });
+function ForcesSettingsImpl({ forces: f, linkage, lengthUnit, dispatch, t }: ForcesSettingsProps) {
+  const set = (patch: Partial<ForcesSettableFields>) => dispatch({ type: 'setForces', patch });
   const chooseModel = (model: MassModel) => {
     // Per-link values never given start as the bars shown now, so the numbers do not jump.
     const untouched = MOVING_LINKS.every((l) => f[l] === DEFAULT_LINK_MASS);
-    const seed = model === 'links' && untouched ? barSeeds(linkage, f) : undefined;
+    const seed = model === 'links' && untouched ? barSeeds(linkage, lengthUnit, f) : undefined;
     dispatch({ type: 'setMassModel', model, ...(seed ? { seed } : {}) });
   };
   return (
@@ -107,7 +109,9 @@ function ForcesSettingsImpl({ forces: f, linkage, dispatch, t }: ForcesSettingsP
           onCommit={(rhoKgPerM) => set({ rhoKgPerM })}
         />
       ) : (
-        MOVING_LINKS.map((link) => <LinkFields key={link} link={link} forces={f} dispatch={dispatch} t={t} />)
+        MOVING_LINKS.map((link) => (
+          <LinkFields key={link} link={link} forces={f} lengthUnit={lengthUnit} dispatch={dispatch} t={t} />
+        ))
       )}
       <NumberField
         {...forceField(t, t.gravity, 0, FORCES_LIMITS.gravity)}

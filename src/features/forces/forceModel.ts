@@ -7,7 +7,9 @@ import type { Angles, Linkage } from '../../solver/types';
 import type { AppState } from '../../shared/state/appState';
 import { effectiveInputMotion } from '../../shared/state/inputMotion';
 import type { ForcesState, LinkMassProps, MovingLink } from '../../shared/state/slices/forcesSlice';
-import { METRES_PER_UNIT, MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
+import { MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
+import { METRES_PER_UNIT } from '../../shared/state/slices/designSlice';
+import type { LengthUnit } from '../../shared/state/slices/designSlice';
 
 /**
  * Everything the forces solver needs, in SI at the app's edge: the linkage and the coupler point in metres (the
@@ -48,8 +50,8 @@ function givenLink(p: LinkMassProps, metresPerUnit: number): LinkInertia {
  * The three links' mass properties (SI) from the forces slice: uniform bars of rhoKgPerM along each link's line
  * (the coupler's bar runs A→B), or each link's own mass, inertia and CG.
  */
-export function linkInertias(linkage: Linkage, f: ForcesState): LinkInertias {
-  const perMetre = METRES_PER_UNIT[f.lengthUnit];
+export function linkInertias(linkage: Linkage, unit: LengthUnit, f: ForcesState): LinkInertias {
+  const perMetre = METRES_PER_UNIT[unit];
   const one = (link: MovingLink): LinkInertia =>
     f.massModel === 'bars'
       ? slenderBar(linkLength(linkage, link) * perMetre, f.rhoKgPerM)
@@ -58,8 +60,8 @@ export function linkInertias(linkage: Linkage, f: ForcesState): LinkInertias {
 }
 
 /** The per-link values that match the bars now shown (seeds the per-link model when it is first chosen). */
-export function barSeeds(linkage: Linkage, f: ForcesState): Record<MovingLink, LinkMassProps> {
-  const perMetre = METRES_PER_UNIT[f.lengthUnit];
+export function barSeeds(linkage: Linkage, unit: LengthUnit, f: ForcesState): Record<MovingLink, LinkMassProps> {
+  const perMetre = METRES_PER_UNIT[unit];
   const out = {} as Record<MovingLink, LinkMassProps>;
   for (const link of MOVING_LINKS) {
     const length = linkLength(linkage, link);
@@ -71,7 +73,7 @@ export function barSeeds(linkage: Linkage, f: ForcesState): Record<MovingLink, L
 
 /** What a forces setup is made from: the lengths and coupler point, the forces slice and the input motion (an AppState is one). */
 export interface ForceInputs {
-  design: Pick<AppState['design'], 'linkage' | 'coupler'>;
+  design: Pick<AppState['design'], 'linkage' | 'coupler' | 'lengthUnit'>;
   forces: AppState['forces'];
   motion: Pick<AppState['motion'], 'omega2RadPerS' | 'alpha2RadPerS2' | 'direction'>;
 }
@@ -79,7 +81,7 @@ export interface ForceInputs {
 /** The state's forces setup in SI (see ForceSetup). */
 export function forceSetup(state: ForceInputs): ForceSetup {
   const { design, motion, forces: f } = state;
-  const perMetre = METRES_PER_UNIT[f.lengthUnit];
+  const perMetre = METRES_PER_UNIT[design.lengthUnit];
   const l = design.linkage;
   const linkage = { r1: l.r1 * perMetre, r2: l.r2 * perMetre, r3: l.r3 * perMetre, r4: l.r4 * perMetre };
   const g = f.gravityMPerS2;
@@ -96,7 +98,7 @@ export function forceSetup(state: ForceInputs): ForceSetup {
   };
   return {
     linkage,
-    inertia: linkInertias(l, f),
+    inertia: linkInertias(l, design.lengthUnit, f),
     loads,
     input: effectiveInputMotion(motion.omega2RadPerS, motion.alpha2RadPerS2, motion.direction),
     k: f.speedFluctuation,

@@ -1,5 +1,5 @@
 import { messageModule } from '../../shared/i18n/messageModule';
-import type { LengthUnit, MovingLink } from '../../shared/state/slices/forcesSlice';
+import type { MovingLink } from '../../shared/state/slices/forcesSlice';
 import { forcesMessagesEn } from './forcesMessagesEn';
 
 /** The pin forces the panel and the plots name: Fij is the force of link i on link j. */
@@ -16,10 +16,6 @@ export interface ForcesMessages {
   sectionForces: string;
   /** The toggle that turns the forces on (URL frc). */
   forcesToggle: string;
-  lengthUnit: string;
-  lengthUnitNames: Record<LengthUnit, string>;
-  /** One line under the unit: the kinematics are the same numbers in any unit; forces are SI. */
-  lengthUnitNote: string;
   massModel: string;
   massBars: string;
   massLinks: string;

@@ -4,9 +4,6 @@ import type { ForcesMessages } from './forcesMessages';
 export const forcesMessagesEn: ForcesMessages = {
   sectionForces: 'Forces',
   forcesToggle: 'Forces',
-  lengthUnit: 'Length unit',
-  lengthUnitNames: { mm: 'mm', cm: 'cm', m: 'm', in: 'in' },
-  lengthUnitNote: 'Lengths are read in this unit; angles and rates are the same numbers in any unit, forces are SI.',
   massModel: 'Mass model',
   massBars: 'Uniform bars',
   massLinks: 'Per link',

@@ -4,9 +4,6 @@ import type { ForcesMessages } from './forcesMessages';
 export const forcesMessagesZhTw: ForcesMessages = {
   sectionForces: '力分析',
   forcesToggle: '力分析',
-  lengthUnit: '長度單位',
-  lengthUnitNames: { mm: 'mm', cm: 'cm', m: 'm', in: 'in' },
-  lengthUnitNote: '長度以此單位讀取；角度與角速率在任何單位下數值相同，力一律為 SI 單位。',
   massModel: '質量模型',
   massBars: '均勻細桿',
   massLinks: '逐桿設定',

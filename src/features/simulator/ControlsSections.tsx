@@ -16,6 +16,8 @@ import { NumberControl } from '../../shared/ui/NumberControl';
 import { PanelSection } from '../../shared/ui/PanelSection';
 import { Segmented } from '../../shared/ui/Segmented';
 import { SelectMenu } from '../../shared/ui/SelectMenu';
+import type { LengthUnit } from '../../shared/state/slices/designSlice';
+import { LENGTH_UNITS } from '../../shared/state/slices/designSlice';
 import { FlagToggles } from '../../shared/ui/Toggle';
 import type { SliderRange } from './sliderRange';
 import { useTheta2Scrub } from './theta2Scrub';
@@ -68,11 +70,26 @@ export function PresetSection({
   );
 }
 
-/** The four link lengths, each a slider and field on the shared range. */
+/**
+ * The four link lengths, each a slider and field on the shared range, and their unit: choosing one converts the
+ * lengths (the same linkage); not offered while a length is locked.
+ */
 export function LinksSection({ state, dispatch, isLocked, range }: ControlsSectionProps & { range: SliderRange }) {
   const t = useMessages();
+  const from = state.design.lengthUnit;
   return (
     <PanelSection id="sec-links" title={t.sectionLinks}>
+      {LENGTH_FIELDS.some((f) => isLocked(f)) ? null : (
+        <>
+          <Segmented<LengthUnit>
+            legend={t.lengthUnit}
+            value={from}
+            options={LENGTH_UNITS.map((u) => ({ value: u, label: u }))}
+            onChange={(to) => dispatch({ type: 'setLengthUnit', from, to })}
+          />
+          <p className="footnote">{t.lengthUnitNote}</p>
+        </>
+      )}
       {LENGTH_FIELDS.map((f) => (
         <NumberControl
           key={f}
@@ -81,7 +98,7 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
           min={range.min}
           max={range.max}
           step={range.step}
-          unit={state.forces.lengthUnit}
+          unit={state.design.lengthUnit}
           locked={isLocked(f)}
           onCommit={(v) => dispatch({ type: 'setLength', field: f, value: v })}
         />
@@ -257,7 +274,7 @@ export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSec
         min={0}
         max={range.max}
         step={range.step}
-        unit={state.forces.lengthUnit}
+        unit={state.design.lengthUnit}
         locked={isLocked('coupler')}
         onCommit={(v) => dispatch({ type: 'setCoupler', coupler: { distance: v } })}
       />

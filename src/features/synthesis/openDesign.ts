@@ -34,6 +34,7 @@ export function openDesignState(state: AppState, open: OpenDesign): AppState {
   return {
     ...state,
     design: {
+      ...state.design,
       linkage: { ...d.links },
       branch: d.branch,
       coupler: { distance: d.pDist, angleDeg: round9(wrapDeg180(radToDeg(d.pAngle))) },

@@ -14,6 +14,10 @@ export interface Messages {
   languageNames: { en: string; 'zh-TW': string };
 
   sectionLinks: string;
+  /** The unit control beside the lengths (URL lu). */
+  lengthUnit: string;
+  /** One line under the unit: choosing one converts the lengths (the same linkage), forces are SI. */
+  lengthUnitNote: string;
   sectionInput: string;
   sectionCoupler: string;
   sectionAnimation: string;

@@ -9,6 +9,8 @@ export const messagesEn: Messages = {
   languageNames: { en: 'English', 'zh-TW': '繁體中文' },
 
   sectionLinks: 'Link lengths',
+  lengthUnit: 'Length unit',
+  lengthUnitNote: 'Choosing a unit converts the lengths: the same linkage (6 m is 6000 mm). Forces are SI.',
   sectionInput: 'Input angle',
   sectionCoupler: 'Coupler point P',
   sectionAnimation: 'Animation',

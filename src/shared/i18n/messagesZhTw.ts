@@ -9,6 +9,8 @@ export const messagesZhTw: Messages = {
   languageNames: { en: 'English', 'zh-TW': '繁體中文' },
 
   sectionLinks: '桿長',
+  lengthUnit: '長度單位',
+  lengthUnitNote: '選擇單位會換算長度：同一個連桿機構（6 m 即 6000 mm）。力一律為 SI 單位。',
   sectionInput: '輸入角',
   sectionCoupler: '耦點 P',
   sectionAnimation: '動畫',

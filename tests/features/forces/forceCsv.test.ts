@@ -25,12 +25,12 @@ const STATE: AppState = {
     ...DEFAULT_STATE.design,
     linkage: { r1: 600, r2: 200, r3: 500, r4: 500 },
     coupler: { distance: 250, angleDeg: 30 },
+    lengthUnit: 'mm',
   },
   motion: { ...DEFAULT_STATE.motion, omega2RadPerS: 7.5, alpha2RadPerS2: 20, direction: 1 },
   forces: {
     ...DEFAULT_STATE.forces,
     enabled: true,
-    lengthUnit: 'mm',
     rhoKgPerM: 2.5,
     gravityMPerS2: 9.81,
     pointForceXN: 40,

@@ -1,9 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { linkForces } from '../../../src/solver/forces';
 import { solveClosedForm } from '../../../src/solver/closedForm';
-import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import { DEFAULT_STATE, reducer } from '../../../src/shared/state/appState';
+import { parseUrl } from '../../../src/shared/url/url';
 import type { AppState } from '../../../src/shared/state/appState';
-import type { LengthUnit } from '../../../src/shared/state/slices/forcesSlice';
+import type { LengthUnit } from '../../../src/shared/state/slices/designSlice';
 import { localPose } from '../../../src/shared/linkage/localPose';
 import { barSeeds, forceSetup, linkInertias, poseForces, slenderBar } from '../../../src/features/forces/forceModel';
 
@@ -16,8 +17,9 @@ function stateIn(unit: LengthUnit, perDecimetre: number, extra: Partial<AppState
       ...DEFAULT_STATE.design,
       linkage: { r1: 6 * k, r2: 2 * k, r3: 5 * k, r4: 5 * k },
       coupler: { distance: 2.5 * k, angleDeg: 30 },
+      lengthUnit: unit,
     },
-    forces: { ...DEFAULT_STATE.forces, enabled: true, lengthUnit: unit, pointForceXN: 12, loadTorqueNm: -2, ...extra },
+    forces: { ...DEFAULT_STATE.forces, enabled: true, pointForceXN: 12, loadTorqueNm: -2, ...extra },
   };
 }
 
@@ -72,21 +74,60 @@ describe('forceSetup', () => {
 
   it('leaves the kinematics as they are in any unit: the pose is the same numbers', () => {
     const s = stateIn('m', 1);
-    const mm = { ...s, forces: { ...s.forces, lengthUnit: 'mm' as const } };
+    const mm = { ...s, design: { ...s.design, lengthUnit: 'mm' as const } };
     const a = localPose(s.design.linkage, 45, 'open', s.design.coupler, false);
     const b = localPose(mm.design.linkage, 45, 'open', mm.design.coupler, false);
     expect(b.pose).toEqual(a.pose);
   });
 });
 
+describe('the length unit (issue 34 item 11)', () => {
+  it('converts the lengths when switched, m to mm: 6 m is 6000 mm, the same machine, the same T12', () => {
+    const links = {
+      crank: { massKg: 2, inertiaKgM2: 0.1, cgDistance: 1.2, cgAngleDeg: 10 },
+      coupler: { massKg: 3, inertiaKgM2: 0.4, cgDistance: 2.5, cgAngleDeg: -20 },
+      rocker: { massKg: 2.5, inertiaKgM2: 0.3, cgDistance: 2, cgAngleDeg: 0 },
+    };
+    for (const extra of [{}, { massModel: 'links' as const, ...links }]) {
+      const m = stateIn('m', 1, extra);
+      const mm = reducer(m, { type: 'setLengthUnit', from: 'm', to: 'mm' });
+      expect(mm.design.lengthUnit).toBe('mm');
+      expect(mm.design.linkage).toEqual({ r1: 6000, r2: 2000, r3: 5000, r4: 5000 });
+      expect(mm.design.coupler.distance).toBe(2500);
+      // The same machine: T12 agrees to rounding (the SI lengths are the same doubles up to one unit in the last place).
+      expect(torqueAt45(mm)).toBeCloseTo(torqueAt45(m), 9);
+      expect(Math.abs(torqueAt45(mm) - torqueAt45(m))).toBeLessThanOrEqual(1e-12 * Math.abs(torqueAt45(m)));
+      if ('massModel' in extra) expect(mm.forces.coupler.cgDistance).toBe(2500);
+    }
+  });
+
+  it('comes back to the same numbers from inches (no float noise kept)', () => {
+    const m = stateIn('m', 1);
+    const back = reducer(reducer(m, { type: 'setLengthUnit', from: 'm', to: 'in' }), {
+      type: 'setLengthUnit',
+      from: 'in',
+      to: 'm',
+    });
+    expect(back.design.linkage).toEqual(m.design.linkage);
+    expect(back.design.coupler).toEqual(m.design.coupler);
+  });
+
+  it('reads an old link with lu as before: its numbers are already in the unit (lu=mm&r1=600 is 600 mm)', () => {
+    const r = parseUrl('r1=600&r2=200&r3=500&r4=500&lu=mm', DEFAULT_STATE, () => {});
+    expect(r.ignored).toEqual([]);
+    expect(r.state.design.linkage).toEqual({ r1: 600, r2: 200, r3: 500, r4: 500 });
+    expect(r.state.design.lengthUnit).toBe('mm');
+  });
+});
+
 describe('linkInertias and barSeeds', () => {
   it('seeds the per-link model with the bars shown, so switching models keeps the numbers', () => {
     const s = stateIn('cm', 10, { rhoKgPerM: 3 });
-    const bars = linkInertias(s.design.linkage, s.forces);
-    const seeded = linkInertias(s.design.linkage, {
+    const bars = linkInertias(s.design.linkage, s.design.lengthUnit, s.forces);
+    const seeded = linkInertias(s.design.linkage, s.design.lengthUnit, {
       ...s.forces,
       massModel: 'links',
-      ...barSeeds(s.design.linkage, s.forces),
+      ...barSeeds(s.design.linkage, s.design.lengthUnit, s.forces),
     });
     for (const k of ['crank', 'coupler', 'rocker'] as const) {
       expect(seeded[k].mass).toBeCloseTo(bars[k].mass, 14);

@@ -15,7 +15,7 @@ const withForces = (forces: ForcesState) => ({ ...DEFAULT_STATE, forces });
 describe('forcesReducer', () => {
   it('returns the same object for an action it does not handle, or values it already has', () => {
     expect(forcesReducer(DEFAULT_FORCES, { type: 'setTheta2', deg: 10 })).toBe(DEFAULT_FORCES);
-    expect(forcesReducer(DEFAULT_FORCES, { type: 'setForces', patch: { enabled: false, lengthUnit: 'm' } })).toBe(
+    expect(forcesReducer(DEFAULT_FORCES, { type: 'setForces', patch: { enabled: false, gravityMPerS2: 9.81 } })).toBe(
       DEFAULT_FORCES,
     );
     expect(forcesReducer(DEFAULT_FORCES, { type: 'setLinkMass', link: 'crank', props: { massKg: 1 } })).toBe(
@@ -42,10 +42,10 @@ describe('forcesReducer', () => {
   });
 
   it('is composed into the app reducer, leaving the other slices alone', () => {
-    const next = reducer(DEFAULT_STATE, { type: 'setForces', patch: { lengthUnit: 'mm' } });
-    expect(next.forces.lengthUnit).toBe('mm');
+    const next = reducer(DEFAULT_STATE, { type: 'setForces', patch: { rhoKgPerM: 2 } });
+    expect(next.forces.rhoKgPerM).toBe(2);
     expect(next.design).toBe(DEFAULT_STATE.design);
-    expect(reducer(DEFAULT_STATE, { type: 'setForces', patch: { lengthUnit: 'm' } })).toBe(DEFAULT_STATE);
+    expect(reducer(DEFAULT_STATE, { type: 'setForces', patch: { rhoKgPerM: 1 } })).toBe(DEFAULT_STATE);
   });
 });
 
@@ -58,10 +58,10 @@ describe('forces URL keys', () => {
   it('reads the keys the issue names: frc=1, lu, rho, g, fv=1', () => {
     const r = parseUrl('frc=1&lu=mm&rho=2.5&g=0&fv=1', DEFAULT_STATE, quiet);
     expect(r.ignored).toEqual([]);
+    expect(r.state.design.lengthUnit).toBe('mm');
     expect(r.state.forces).toEqual({
       ...DEFAULT_FORCES,
       enabled: true,
-      lengthUnit: 'mm',
       rhoKgPerM: 2.5,
       gravityMPerS2: 0,
       showVectors: true,
@@ -71,7 +71,6 @@ describe('forces URL keys', () => {
   it('round-trips every field, the per-link ones with mass=link', () => {
     const forces: ForcesState = {
       enabled: true,
-      lengthUnit: 'in',
       massModel: 'links',
       rhoKgPerM: 0.75,
       crank: { massKg: 1.25, inertiaKgM2: 0.002, cgDistance: 1.5, cgAngleDeg: 0 },

@@ -3,12 +3,8 @@ import { SWEEP_METHODS } from '../../../src/solver/methods';
 import type { AppState, SliceName } from '../../../src/shared/state/appState';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { OMEGA_UNITS } from '../../../src/shared/state/inputMotion';
-import {
-  LENGTH_UNITS,
-  MOVING_LINKS,
-  DEFAULT_LINK_MASS,
-  FORCES_LIMITS,
-} from '../../../src/shared/state/slices/forcesSlice';
+import { LENGTH_UNITS } from '../../../src/shared/state/slices/designSlice';
+import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../../src/shared/state/slices/forcesSlice';
 import { MAX_TARGETS } from '../../../src/shared/state/slices/synthesisSlice';
 import {
   COORD_MAX,
@@ -61,6 +57,7 @@ const design: fc.Arbitrary<AppState['design']> = fc.record({
   branch: fc.constantFrom('open' as const, 'crossed' as const),
   coupler: fc.record({ distance: double(0, 1e9), angleDeg: angle180 }),
   placement: fc.record({ x: coordinate, y: coordinate, angleDeg: angle180 }),
+  lengthUnit: fc.constantFrom(...LENGTH_UNITS),
 });
 
 const motion: fc.Arbitrary<AppState['motion']> = fc.record({
@@ -157,7 +154,6 @@ const linkMass = fc.record({
 const forces: fc.Arbitrary<AppState['forces']> = fc
   .record({
     enabled: fc.boolean(),
-    lengthUnit: fc.constantFrom(...LENGTH_UNITS),
     massModel: fc.constantFrom('bars' as const, 'links' as const),
     rhoKgPerM: double(0, FORCES_LIMITS.mass),
     crank: linkMass,

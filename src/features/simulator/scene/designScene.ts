@@ -3,7 +3,7 @@ import { degToRad, radToDeg } from '../../../solver/angles';
 import { instantCenters } from '../../../solver/instantCenters';
 import type { SceneDesign } from '../../../shared/linkage/designOverlay';
 import type { AppState } from '../../../shared/state/appState';
-import type { LengthUnit } from '../../../shared/state/slices/forcesSlice';
+import type { LengthUnit } from '../../../shared/state/slices/designSlice';
 import { formatDeg, formatNumber } from '../../../shared/format';
 import type { Messages } from '../../../shared/i18n/messages';
 import type { LocalPose } from '../../../shared/linkage/localPose';

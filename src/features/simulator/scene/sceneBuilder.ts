@@ -68,7 +68,7 @@ export function createSceneBuilder(): SceneBuilder {
       showDeadCentres: boolean,
       muBandLoDeg: number,
       muBandHiDeg: number,
-      unit: AppState['forces']['lengthUnit'],
+      unit: AppState['design']['lengthUnit'],
       centres: LocalPose | null,
       info: DesignInfo | null,
       t: Messages,
@@ -128,7 +128,7 @@ export function createSceneBuilder(): SceneBuilder {
   return ({ state, local, motion, cycle, design: info, t, forceLayer = null }) => {
     const { linkage, coupler, theta2Rad, branch } = local;
     const { display } = state;
-    const unit = state.forces.lengthUnit;
+    const unit = state.design.lengthUnit;
     const p = pose(linkage, local.pose, coupler);
     const g = ghost(linkage, local.ghost, coupler);
     const kept = cycle ? boundsByBranch(cycle, display.showGhost) : null;

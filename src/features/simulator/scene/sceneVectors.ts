@@ -1,7 +1,7 @@
 import type { ArrowScale, SceneVectors, VectorText, WorldVector } from '../../../shared/linkage/motionVectors';
 import { arrowScale } from '../../../shared/linkage/motionVectors';
 import type { AppState } from '../../../shared/state/appState';
-import type { LengthUnit } from '../../../shared/state/slices/forcesSlice';
+import type { LengthUnit } from '../../../shared/state/slices/designSlice';
 import { formatNumber } from '../../../shared/format';
 import type { Messages } from '../../../shared/i18n/messages';
 import type { FrameMotion, PointRates } from '../../../shared/linkage/frameMotion';

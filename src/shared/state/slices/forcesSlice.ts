@@ -1,19 +1,11 @@
 import { boolCodec, enumCodec, numberCodec } from '../../url/urlCodec';
+import { convertLength } from './designSlice';
 import type { Codec } from '../../url/urlCodec';
 import type { UrlKey, UrlTarget } from '../../url/urlKey';
-import { nestedLens, optionalKey, sameText, sliceLens, urlKey } from '../../url/urlKey';
+import { nestedLens, optionalKey, sliceLens, urlKey } from '../../url/urlKey';
 import { URL_ANGLE_DECIMALS } from '../../url/urlPrecision';
 import type { Action } from '../appState';
 import type { Slice } from '../slice';
-
-/** The app's length unit: lengths are numbers in it; the forces convert them to metres (METRES_PER_UNIT). */
-export type LengthUnit = 'mm' | 'cm' | 'm' | 'in';
-
-/** The length units in the order the unit select lists them. */
-export const LENGTH_UNITS: readonly LengthUnit[] = ['mm', 'cm', 'm', 'in'];
-
-/** Metres in one length unit (the inch is 25.4 mm exactly). */
-export const METRES_PER_UNIT: Readonly<Record<LengthUnit, number>> = { mm: 1e-3, cm: 1e-2, m: 1, in: 0.0254 };
 
 /** How the links' mass is given: uniform slender bars of one mass per length, or each link's own properties. */
 export type MassModel = 'bars' | 'links';
@@ -35,12 +27,10 @@ export interface LinkMassProps {
   cgAngleDeg: number;
 }
 
-/** The forces slice: the length unit, whether forces are solved, the mass model, the loads, the force arrows. */
+/** The forces slice: whether forces are solved, the mass model, the loads, the force arrows. */
 export interface ForcesState {
   /** Solve and show the forces (URL frc); default off, and nothing about forces is computed while off. */
   enabled: boolean;
-  /** The unit every length is read in (URL lu); default m. */
-  lengthUnit: LengthUnit;
   massModel: MassModel;
   /** Mass per length of the uniform bars, kg/m (URL rho); default 1. */
   rhoKgPerM: number;
@@ -64,11 +54,11 @@ export interface ForcesState {
 }
 
 /** The fields a setForces patch may change (the links' properties go through setLinkMass). */
-export type ForcesSettings = Omit<ForcesState, MovingLink>;
+export type ForcesSettableFields = Omit<ForcesState, MovingLink>;
 
 /** Actions only the forces slice handles. */
 export type ForcesAction =
-  | { type: 'setForces'; patch: Partial<ForcesSettings> }
+  | { type: 'setForces'; patch: Partial<ForcesSettableFields> }
   | { type: 'setLinkMass'; link: MovingLink; props: Partial<LinkMassProps> }
   /** Per-link properties, seeded with given values (say, the bars' own) when they are first chosen. */
   | { type: 'setMassModel'; model: MassModel; seed?: Record<MovingLink, LinkMassProps> };
@@ -76,10 +66,9 @@ export type ForcesAction =
 /** A link of 1 kg, 0.01 kg·m², its CG at its first joint: the per-link values before any are given. */
 export const DEFAULT_LINK_MASS: LinkMassProps = { massKg: 1, inertiaKgM2: 0.01, cgDistance: 0, cgAngleDeg: 0 };
 
-/** Forces off; metres; uniform bars of 1 kg/m; g = 9.81 m/s² down; no point force or load torque; k = 0.05. */
+/** Forces off; uniform bars of 1 kg/m; g = 9.81 m/s² down; no point force or load torque; k = 0.05. */
 export const DEFAULT_FORCES: ForcesState = {
   enabled: false,
-  lengthUnit: 'm',
   massModel: 'bars',
   rhoKgPerM: 1,
   crank: DEFAULT_LINK_MASS,
@@ -108,6 +97,12 @@ export function forcesReducer(s: ForcesState, action: Action): ForcesState {
       const cur = s[action.link];
       return unchanged(cur, action.props) ? s : { ...s, [action.link]: { ...cur, ...action.props } };
     }
+    case 'setLengthUnit': {
+      // The CG offsets are lengths: the same machine in the new unit.
+      if (action.from === action.to) return s;
+      const moved = (p: LinkMassProps) => ({ ...p, cgDistance: convertLength(p.cgDistance, action.from, action.to) });
+      return { ...s, crank: moved(s.crank), coupler: moved(s.coupler), rocker: moved(s.rocker) };
+    }
     case 'setMassModel': {
       if (action.model === s.massModel && !action.seed) return s;
       const seeded = action.seed
@@ -125,7 +120,11 @@ export const FORCES_LIMITS = { mass: 1e6, inertia: 1e9, force: 1e9, torque: 1e9,
 
 const field = sliceLens('forces');
 /** A forces key written only when its text differs from the default's. */
-function optional<K extends keyof ForcesSettings>(name: string, codec: Codec<ForcesState[K]>, k: K): UrlKey<unknown> {
+function optional<K extends keyof ForcesSettableFields>(
+  name: string,
+  codec: Codec<ForcesState[K]>,
+  k: K,
+): UrlKey<unknown> {
   return optionalKey(name, codec, field(k), DEFAULT_FORCES[k]);
 }
 const angleCodec = numberCodec({ min: -360, max: 360 }, { decimals: URL_ANGLE_DECIMALS });
@@ -145,12 +144,11 @@ function linkKeys(link: MovingLink, n: number): UrlKey<unknown>[] {
 }
 
 /**
- * The forces' URL keys, each written only when it differs from its default: frc, lu, mass (bar | link), rho,
+ * The forces' URL keys, each written only when it differs from its default: frc, mass (bar | link), rho,
  * the per-link m2 i2 c2 ca2, m3 …, m4 … (only with mass=link), g, gd, pfx, pfy, tl, fv, cs.
  */
 export const FORCES_URL_KEYS: readonly UrlKey<unknown>[] = [
   optional('frc', boolCodec, 'enabled'),
-  optional('lu', enumCodec(sameText(LENGTH_UNITS)), 'lengthUnit'),
   optional(
     'mass',
     enumCodec([
@@ -174,7 +172,7 @@ export const FORCES_URL_KEYS: readonly UrlKey<unknown>[] = [
 
 /** The forces slice's registration in SLICES (appState.ts). */
 export const FORCES_SLICE: Slice<ForcesState, ForcesAction> = {
-  summary: 'the length unit, and the forces: on or off, mass model, gravity, loads, force arrows',
+  summary: 'the forces: on or off, mass model, gravity, loads, force arrows',
   defaults: DEFAULT_FORCES,
   reducer: forcesReducer,
   urlKeys: FORCES_URL_KEYS,
