@@ -28,6 +28,8 @@ export const SINGULAR_PIVOT = 1e-12;
 /** A step (input units, relative) below which the continuation gives up: the input cannot go on. */
 const H_MIN = 1e-12;
 const MAX_ITERATIONS = 16;
+/** Continuation steps (accepted or refused) allowed for one input before the point is 'failed'. */
+const MAX_ATTEMPTS = 5000;
 /** The dyad path walks between inputs in steps of at most this (rad), checking that every dyad closes. */
 export const MAX_DYAD_STEP = 0.05;
 const EPS = Number.EPSILON;
@@ -434,7 +436,13 @@ export function sweepWith(
     qSave.set(q);
     const tSave = t;
     let iterations = 0;
+    let attempts = 0;
+    let failed = false;
     while (t !== target) {
+      if (++attempts > MAX_ATTEMPTS) {
+        failed = true;
+        break;
+      }
       let h = target - t;
       if (Math.abs(h) > hMax) h = Math.sign(h) * hMax;
       const slope = maxAbs(ws.tangent);
@@ -465,9 +473,21 @@ export function sweepWith(
       t = tNext;
       det = ws.det;
       tangentFromFactors(ws);
-      hMax = used <= 3 ? Math.abs(h) * 4 : Math.abs(h);
+      hMax = Math.abs(h) * (used <= 3 ? 4 : used <= 6 ? 2 : 1.25);
     }
     out.iterations[i] = Math.min(iterations, 65535);
+    if (failed) {
+      // Too many steps for one input (the corrector converging too slowly to make progress): give up on this
+      // point, keep the last pose.
+      q.set(qSave);
+      t = tSave;
+      ws.qTry.set(q);
+      factorAt(ws, t);
+      tangentFromFactors(ws);
+      hMax = Infinity;
+      out.status[i] = 3;
+      continue;
+    }
     if (blocked !== 0) {
       // Back to the last input reached: the continuation crept up to the fold, where going back is as hard as
       // going on (the tangent is unbounded there).

@@ -64,7 +64,7 @@ export type MechanismStatus = 'ok' | 'limit' | 'singular' | 'failed';
 export interface MechanismSweep {
   /** 1 where the linkage assembled at inputs[i] (on the drawn branch, reached by continuity). */
   ok: Uint8Array;
-  /** Index into MECHANISM_STATUSES: 0 ok, 1 limit (the input cannot go on), 2 singular (drawn pose), 3 failed. */
+  /** Index into MECHANISM_STATUSES: 0 ok, 1 limit (the input cannot go on), 2 singular (drawn pose), 3 failed (no progress). */
   status: Uint8Array;
   /** Every joint; a P joint's point is the block's. */
   joints: Record<string, PointSeries>;

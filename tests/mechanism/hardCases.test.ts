@@ -69,6 +69,16 @@ describe('sweepMechanism: hard cases', () => {
     });
   }
 
+  for (const dyads of [true, false]) {
+    it(`does not jump a gap in the input range (3, 2.5, 4.2, 1.5 from 180 deg; ${dyads ? 'dyads' : 'Newton'})`, () => {
+      // Reachable where |theta2| >= 57.95 deg: from 180 deg, +4.3 rad (426 deg) lies past the gap (302..418 deg),
+      // so the drawn circuit cannot get there by continuity; -1.5 rad (94 deg) can be reached.
+      const spec = fourBarSpec(3, 2.5, 4.2, 1.5, Math.acos(-1));
+      const r = sweepWith(spec, [0.5, 4.3, -1.5], undefined, dyads);
+      expect([...r.status]).toEqual([0, 1, 0]);
+    });
+  }
+
   it('stops a piston-driven crank at its dead centres (input on a P joint)', () => {
     const r = sweepWith(pistonDrivenSpec(), [0, 1, 1.62, 1.7, 3, 1, -2.3, -2.4], undefined, false);
     expect([...r.status]).toEqual([0, 0, 0, 1, 1, 0, 0, 1]);
