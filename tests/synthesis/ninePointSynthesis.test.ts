@@ -122,6 +122,12 @@ describe('ninePointSynthesis', () => {
     expect(ends(same)[0]).toBeCloseTo(ends(KNOWN)[0], 8);
     expect(ends(same)[1]).toBeCloseTo(ends(KNOWN)[1], 8);
     expect(same.links.r3).toBeCloseTo(KNOWN.links.r3, 8);
+    // The hand-built crank-rocker meets the points on one circuit, in order, within one turn.
+    // Driven from its crank, the hand-built crank-rocker meets the points on one assembly, in order, within a turn.
+    expect(same.links.r2).toBeCloseTo(KNOWN.links.r2, 8);
+    expect(same.branches).toEqual(Array(9).fill(KNOWN.branch));
+    const wrap = (t: number) => Math.atan2(Math.sin(t), Math.cos(t));
+    same.theta2.forEach((t, k) => expect(wrap(t - KNOWN_THETA2[k])).toBeCloseTo(0, 8));
     for (const g of got) {
       for (let k = 0; k < 9; k++) {
         const q = placedCouplerPoint({ ...g, branch: g.branches[k] }, g.theta2[k])!;
@@ -129,6 +135,8 @@ describe('ninePointSynthesis', () => {
       }
     }
     expect(r.classes[0].grashof).toBe(true);
+    expect(r.classes[0].cognates[0]).toBe(same);
+    expect(r.classes[0].defects).toEqual([]);
   });
 
   it('merges slices by summing paths and concatenating classes', () => {
