@@ -139,6 +139,25 @@ describe('ninePointSynthesis', () => {
     expect(r.classes[0].defects).toEqual([]);
   });
 
+  it('stops when cancelled, saying how many paths were not tracked', async () => {
+    const r = await ninePointSynthesis(PROBLEM_3, { signal: { aborted: true } });
+    expect(r.paths.total).toBe(1442);
+    expect(r.paths.finished + r.paths.failed).toBe(0);
+    expect(r.classes).toEqual([]);
+  });
+
+  it('reports progress over a slice of the start solutions', async () => {
+    const seen: { done: number; total: number }[] = [];
+    const r = await ninePointSynthesis(PROBLEM_3, {
+      paths: { start: 100, end: 120 },
+      onProgress: (p) => seen.push({ done: p.done, total: p.total }),
+    });
+    expect(r.paths.total).toBe(20);
+    expect(r.paths.finished + r.paths.failed).toBe(20);
+    expect(seen.at(-1)).toEqual({ done: 20, total: 20 });
+    expect(seen.every((p, i) => i === 0 || p.done > seen[i - 1].done)).toBe(true);
+  });
+
   it('merges slices by summing paths and concatenating classes', () => {
     const a: NinePointResult = { classes: [], paths: { total: 3, finished: 2, failed: 1 } };
     const b: NinePointResult = { classes: [], paths: { total: 5, finished: 5, failed: 0 } };
