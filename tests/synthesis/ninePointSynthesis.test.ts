@@ -122,6 +122,12 @@ describe('ninePointSynthesis', () => {
     expect(ends(same)[0]).toBeCloseTo(ends(KNOWN)[0], 8);
     expect(ends(same)[1]).toBeCloseTo(ends(KNOWN)[1], 8);
     expect(same.links.r3).toBeCloseTo(KNOWN.links.r3, 8);
+    // The hand-built crank-rocker meets the points on one circuit, in order, within one turn.
+    // Driven from its crank, the hand-built crank-rocker meets the points on one assembly, in order, within a turn.
+    expect(same.links.r2).toBeCloseTo(KNOWN.links.r2, 8);
+    expect(same.branches).toEqual(Array(9).fill(KNOWN.branch));
+    const wrap = (t: number) => Math.atan2(Math.sin(t), Math.cos(t));
+    same.theta2.forEach((t, k) => expect(wrap(t - KNOWN_THETA2[k])).toBeCloseTo(0, 8));
     for (const g of got) {
       for (let k = 0; k < 9; k++) {
         const q = placedCouplerPoint({ ...g, branch: g.branches[k] }, g.theta2[k])!;
@@ -129,6 +135,27 @@ describe('ninePointSynthesis', () => {
       }
     }
     expect(r.classes[0].grashof).toBe(true);
+    expect(r.classes[0].cognates[0]).toBe(same);
+    expect(r.classes[0].defects).toEqual([]);
+  });
+
+  it('stops when cancelled, saying how many paths were not tracked', async () => {
+    const r = await ninePointSynthesis(PROBLEM_3, { signal: { aborted: true } });
+    expect(r.paths.total).toBe(1442);
+    expect(r.paths.finished + r.paths.failed).toBe(0);
+    expect(r.classes).toEqual([]);
+  });
+
+  it('reports progress over a slice of the start solutions', async () => {
+    const seen: { done: number; total: number }[] = [];
+    const r = await ninePointSynthesis(PROBLEM_3, {
+      paths: { start: 100, end: 120 },
+      onProgress: (p) => seen.push({ done: p.done, total: p.total }),
+    });
+    expect(r.paths.total).toBe(20);
+    expect(r.paths.finished + r.paths.failed).toBe(20);
+    expect(seen.at(-1)).toEqual({ done: 20, total: 20 });
+    expect(seen.every((p, i) => i === 0 || p.done > seen[i - 1].done)).toBe(true);
   });
 
   it('merges slices by summing paths and concatenating classes', () => {

@@ -4,12 +4,12 @@
  */
 import { TWO_PI, classify, inputRange, solveClosedForm, wrapAngle } from '../../solver';
 import type { Branch, Point } from '../../solver';
-import { fourBarFromJoints, placedCouplerPoint } from '../placed';
+import { fourBarFromJoints, placedCouplerPoint, placedJoints } from '../placed';
 import type { AbortSignalLike } from '../pathSynthesis';
 import type { PlacedFourBar } from '../types';
 import { checkArray, checkPoint } from '../validate';
 import { A, AH, B, BH, NV, X, XH, Y, YH, rotation } from './equations';
-import { cognateRoots, orbitKey, sameKey } from './group';
+import { cognateRoots, orbitKey, sameKey, swapDyads } from './group';
 import { norm } from './linear';
 import { decodeRoots } from './startCodec';
 import { Tracker } from './tracker';
@@ -206,10 +206,33 @@ function linkageOf(z: Float64Array, p: Float64Array, points: Point[], size: numb
   return d;
 }
 
-/** 'circuit' when the assembly changes between points, 'order' when one turn of the input does not meet them in order, 'branch' when it must pass a dead centre between two. */
+/**
+ * The circuit of a Grashof linkage at a pose: the side of the joint angle at a joint not on the shortest link (those
+ * joints never go flat on a Grashof linkage, so the sign is constant on a circuit and differs between the two).
+ */
+function circuitOf(d: PlacedFourBar, theta2: number, branch: Branch): number {
+  const j = placedJoints({ ...d, branch }, theta2);
+  if (!j) return 0;
+  const { r1, r2, r3, r4 } = d.links;
+  const shortest = Math.min(r1, r2, r3, r4);
+  // joint (p) with neighbours (u, v): cross(u − p, v − p)
+  const side = (u: Point, q: Point, v: Point) => Math.sign((u.x - q.x) * (v.y - q.y) - (u.y - q.y) * (v.x - q.x));
+  if (shortest === r2) return side(j.A, j.B, j.O4);
+  if (shortest === r3) return side(j.O2, j.O4, j.B);
+  return side(j.O2, j.A, j.B);
+}
+
+/**
+ * Defects of a linkage through the nine points (as pathSynthesis screens them): 'circuit' when a Grashof linkage meets
+ * them on both of its circuits, 'order' when one turn of the input in one direction does not meet them in order,
+ * 'branch' when the input is not a full crank and the motion between two points passes a dead centre.
+ */
 function defectsOf(d: NinePointLinkage): ('circuit' | 'order' | 'branch')[] {
   const out: ('circuit' | 'order' | 'branch')[] = [];
-  if (d.branches.some((b) => b !== d.branches[0])) out.push('circuit');
+  if (classify(d.links).grashof) {
+    const c = d.theta2.map((t, j) => circuitOf(d, t, d.branches[j]));
+    if (c.some((v) => v !== c[0])) out.push('circuit');
+  }
   const steps = d.theta2.slice(1).map((t, i) => wrapAngle(t - d.theta2[i]));
   const fwd = steps.map((s) => (s < 0 ? s + TWO_PI : s));
   const back = steps.map((s) => (s > 0 ? TWO_PI - s : -s));
@@ -218,12 +241,13 @@ function defectsOf(d: NinePointLinkage): ('circuit' | 'order' | 'branch')[] {
   const travel = dir > 0 ? fwd : back;
   if (sum(travel) >= TWO_PI) out.push('order');
   if (!out.includes('circuit') && !inputRange(d.links).full) {
+    // Sampled along the way from each point to the next: the loop must close on one assembly throughout.
     const SAMPLES = 16;
-    let broken = false;
+    let broken = d.branches.some((b) => b !== d.branches[0]);
     for (let i = 0; i < 8 && !broken; i++) {
       for (let k = 1; k < SAMPLES && !broken; k++) {
         const t = d.theta2[i] + (dir * travel[i] * k) / SAMPLES;
-        if (!solveClosedForm(d.links, t, d.branch)) broken = true;
+        if (!solveClosedForm(d.links, t, d.branches[i])) broken = true;
       }
     }
     if (broken) out.push('branch');
@@ -322,8 +346,13 @@ function duplicates(keys: Float64Array[]): number[][] {
 function classOf(w: Float64Array, p: Float64Array, points: Point[], size: number): NinePointClass | null {
   const cognates: NinePointLinkage[] = [];
   for (const v of [w, ...cognateRoots(w)]) {
-    const d = linkageOf(v, p, points, size);
+    let d = linkageOf(v, p, points, size);
     if (!d) return null;
+    // Driven from the pivot that makes the input a crank when one does (the same linkage with the dyads swapped).
+    if (!inputRange(d.links).full) {
+      const other = linkageOf(swapDyads(v), p, points, size);
+      if (other && inputRange(other.links).full) d = other;
+    }
     cognates.push(d);
   }
   const first = cognates[0];
