@@ -16,7 +16,7 @@
  * its real roots, isolated exactly on the equivalent degree-8 polynomial in tan(β2/2), give every real Burmester
  * pair, each polished by Newton on the four circle conditions |Pj + Rj c − m|² = |P1 + R1 c − m|², j = 2..5.
  */
-import { PI, TWO_PI, inputRange, solveClosedForm } from '../solver';
+import { PI, TWO_PI, inputRange, solveClosedForm, wrapAngle } from '../solver';
 import type { Branch, Linkage, Point } from '../solver';
 import { solveSquare } from './dense';
 import { cauchyBound, realRoots } from './realRoots';
@@ -183,6 +183,27 @@ function toPair(n: Normalised, m: Complex, cz: Complex): BurmesterPair {
   };
 }
 
+/**
+ * Throws when two poses are the same (point within 1e-12 of the poses' spread, angle within 1e-12 rad modulo a
+ * turn): five poses with a repeat are a four-pose problem, whose dyads are the curves' one-parameter family.
+ */
+function checkDistinct(poses: readonly Pose[]): void {
+  let spread = 0;
+  for (const p of poses) spread = Math.max(spread, Math.hypot(p.x - poses[0].x, p.y - poses[0].y));
+  for (let i = 0; i < poses.length; i++) {
+    for (let j = i + 1; j < poses.length; j++) {
+      const same =
+        Math.hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) <= 1e-12 * spread &&
+        Math.abs(wrapAngle(poses[i].angle - poses[j].angle)) <= 1e-12;
+      if (same) {
+        throw new Error(
+          `poses[${i}] and poses[${j}] are the same pose: five poses with a repeat are four, whose dyads are a one-parameter family (burmesterCurves), got ${show(poses[j])}`,
+        );
+      }
+    }
+  }
+}
+
 /** Throws unless poses holds exactly `count` valid poses. */
 function checkPoses(poses: readonly Pose[], count: number): void {
   checkArray('poses', poses, count, count);
@@ -212,19 +233,46 @@ export function burmesterCurves(poses: readonly Pose[], options: { samples?: num
     });
     const runs: BurmesterPair[][] = [];
     let run: BurmesterPair[] = [];
-    for (const p of points) {
+    points.forEach((p, i) => {
+      // A branch through the centre's point at infinity is split there, however coarse the sampling: the two
+      // samples either side lie far out in opposite directions and must not be joined by a chord.
+      if (i > 0 && run.length && throughInfinity(k, loop[i - 1], loop[i])) {
+        runs.push(run);
+        run = [];
+      }
       if (p) run.push(p);
       else if (run.length) {
         runs.push(run);
         run = [];
       }
-    }
+    });
     // The last sample closes the loop onto the first: a run reaching the end continues into the first run.
     if (run.length && runs.length && points[0]) runs[0] = [...run, ...runs[0].slice(1)];
     else if (run.length) runs.push(run);
     curves.push(...runs.filter((r) => r.length > 1));
   }
   return curves;
+}
+
+/**
+ * Whether the compatibility linkage passes the centre's point at infinity between two neighbouring samples: the
+ * crank rotation β2 = θ2 − off2 crosses 0 between them, on the branch where β3 = θ3 − off3 is 0 there too (then
+ * every β is 0: the trivial solution of the closure, where the dyad becomes a slider and W, Z are unbounded). On
+ * the other branch β2 = 0 is an ordinary, finite centre.
+ */
+function throughInfinity(
+  k: Compatibility,
+  p: { theta2: number; branch: Branch },
+  q: { theta2: number; branch: Branch },
+): boolean {
+  if (p.branch !== q.branch) return false;
+  const a = wrapAngle(p.theta2 - k.off2);
+  const b = wrapAngle(q.theta2 - k.off2);
+  if (!((a <= 0 && b >= 0) || (a >= 0 && b <= 0)) || Math.abs(a - b) > PI) return false;
+  const s = solveClosedForm(k.links, k.off2, p.branch);
+  // At the trivial solution θ3 − off3 is 0 to rounding of the compatibility linkage's closed form; on the other
+  // branch it is of the order of the linkage's angles.
+  return s !== null && Math.abs(wrapAngle(s.theta3 - k.off3)) < 1e-6;
 }
 
 /**
@@ -257,6 +305,7 @@ const ELIMINANT_SAMPLES = 16;
  */
 export function burmesterPoints(poses: readonly Pose[]): BurmesterPair[] {
   checkPoses(poses, 5);
+  checkDistinct(poses);
   const n = normalise(leadingPair(poses));
   const { a, delta: d } = compatibility(n);
   // The two compatibility equations (rows 2, 3, 4 and rows 2, 3, 5 of the dyad equations):

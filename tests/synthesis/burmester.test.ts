@@ -172,6 +172,21 @@ describe('burmesterPoints', () => {
     const sliding = poses.map((p) => ({ ...p, angle: 0.5 }));
     expect(() => burmesterPoints(sliding)).toThrow(/poses are degenerate for Burmester theory/);
   });
+
+  it('throws for a repeated pose: four poses and a family of dyads, not five (issue 31, 9)', () => {
+    const poses = randomPoses(seeded(36), 5);
+    for (const [i, j] of [
+      [0, 4],
+      [1, 3],
+    ]) {
+      const repeated = poses.slice();
+      // The same pose, its angle a turn on: the coupler is in the same place.
+      repeated[j] = { ...poses[i], angle: poses[i].angle + 2 * PI };
+      expect(() => burmesterPoints(repeated)).toThrow(
+        `poses[${i}] and poses[${j}] are the same pose: five poses with a repeat are four, whose dyads are a one-parameter family (burmesterCurves)`,
+      );
+    }
+  });
 });
 
 describe('burmesterCurves', () => {
@@ -213,6 +228,28 @@ describe('burmesterCurves', () => {
       // Chords of a curve sampled this finely stay within ~1e-4 of the scale of it where it is not near infinity.
       expect(nearest(crank.center), `trial ${trial}: O2`).toBeLessThan(1e-3 * scaleOf(poses));
       expect(nearest(rocker.center), `trial ${trial}: O4`).toBeLessThan(1e-3 * scaleOf(poses));
+    }
+  });
+
+  it('splits a branch where its centre goes to infinity, at any sampling (issue 31, 8)', () => {
+    // The issue's poses: at the default sampling a chord of about 340 joined the two far ends of the asymptote.
+    // A curve crossing infinity between two samples puts them far out on opposite sides of the first pose; a
+    // correct polyline never does (two far neighbours lie on the same side, along the same asymptote end).
+    const poses: Pose[] = [
+      { x: 0, y: 0, angle: 0 },
+      { x: 1, y: 0.2, angle: 0.3 },
+      { x: 1.8, y: 0.9, angle: 0.7 },
+      { x: 2.2, y: 1.8, angle: 1.2 },
+    ];
+    for (const samples of [8, 50, 200, 201, 600, 1000]) {
+      for (const curve of burmesterCurves(poses, { samples })) {
+        for (let i = 1; i < curve.length; i++) {
+          const p = curve[i - 1].center;
+          const q = curve[i].center;
+          const far = Math.hypot(p.x, p.y) > 20 && Math.hypot(q.x, q.y) > 20;
+          expect(far && p.x * q.x + p.y * q.y < 0, `samples ${samples}: ${JSON.stringify([p, q])}`).toBe(false);
+        }
+      }
     }
   });
 

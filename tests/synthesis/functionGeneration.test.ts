@@ -257,6 +257,13 @@ describe('functionGenerator', () => {
     expect(out.maxError / big).toBeCloseTo(unit.maxError, 12);
   });
 
+  it('reports no limit for a non-monotone f whose wiggle the fit does not follow, as the docs say (issue 31, 12)', () => {
+    // log10 x + 0.003 sin 20x turns back (f' < 0 where 0.06 cos 20x < −1/(x ln 10), x > 7.3): the design does not.
+    const out = functionGenerator({ ...log10Task, f: (x) => Math.log10(x) + 0.003 * Math.sin(20 * x), points: 3 });
+    expect(out.defects).toEqual([]);
+    expect(out.maxError).toBeGreaterThan(0.003);
+  });
+
   it('throws for bad tasks, naming the parameter and the value', () => {
     const base = { ...log10Task, points: 3 };
     expect(() => functionGenerator({ ...base, f: 3 as never })).toThrow('f must be a function of one number, got 3');

@@ -150,6 +150,19 @@ describe('pathSynthesis refusals', () => {
     }
   });
 
+  it('rejects with the exception onProgress throws, as the docs say (issue 31, 12)', async () => {
+    const boom = new Error('caller bug');
+    await expect(
+      pathSynthesis(inexactTask, {
+        seed: 1,
+        rounds: 2,
+        onProgress: () => {
+          throw boom;
+        },
+      }),
+    ).rejects.toBe(boom);
+  });
+
   it('names a bad options object or candidate list (issue 31, 10)', async () => {
     await expect(pathSynthesis(ok, null as never)).rejects.toThrow('options must be an object, got null');
     expect(() => mergePathCandidates(ok, null as never)).toThrow('parts must be an array of candidate lists, got null');

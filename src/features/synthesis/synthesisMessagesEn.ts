@@ -78,7 +78,8 @@ export const synthesisMessagesEn: SynthesisMessages = {
   nonGrashof: 'non-Grashof',
   chosenTitle: 'Chosen design',
   cognatesTitle: 'Roberts cognates',
-  cognatesIntro: 'Two other four-bars trace the same coupler curve: alternatives with other pivots and links.',
+  cognatesIntro:
+    'Two other four-bars trace the same coupler curve: alternatives with other pivots and links. For a crank-rocker, one cognate is a double rocker: on one assembly branch it traces only part of the curve.',
   cognateOriginal: 'The candidate',
   cognateName: (n) => `Cognate ${n}`,
   lengths: (r1, r2, r3, r4) => `r1 ${r1}, r2 ${r2}, r3 ${r3}, r4 ${r4}`,

@@ -76,7 +76,8 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   nonGrashof: '非 Grashof',
   chosenTitle: '選定的設計',
   cognatesTitle: 'Roberts 同源機構',
-  cognatesIntro: '另外兩個四連桿描出相同的耦點曲線：樞軸與連桿不同的替代方案。',
+  cognatesIntro:
+    '另外兩個四連桿描出相同的耦點曲線：樞軸與連桿不同的替代方案。若原機構為曲柄搖桿，其中一個同源機構為雙搖桿：在單一組裝分支上只描出曲線的一部分。',
   cognateOriginal: '候選機構本身',
   cognateName: (n) => `同源機構 ${n}`,
   lengths: (r1, r2, r3, r4) => `r1 ${r1}、r2 ${r2}、r3 ${r3}、r4 ${r4}`,
