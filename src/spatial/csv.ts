@@ -74,8 +74,7 @@ export function spatialCsvRows(
       k.rates(p, omega2, alpha2);
       const row = [radToDeg(t2), p.ax * u, p.ay * u, p.az * u, p.bx * u, p.by * u, p.bz * u];
       if (k.coupler) {
-        const c = k.coupler({ x: p.ax, y: p.ay, z: p.az }, { x: p.bx, y: p.by, z: p.bz });
-        row.push(c.x, c.y, c.z);
+        k.coupler(p, row, row.length);
       }
       row.push(radToDeg(p.theta4), p.omega4, p.alpha4);
       rows.push(row);

@@ -2,8 +2,8 @@ import type { InputRange } from '../solver';
 import { rssrInputRange, sphericalInputRange } from './classify';
 import type { Closure, SpatialPoint } from './point';
 import { planRSSR, rssrAt, rssrRates } from './rssr';
-import { couplerPointOf, planSpherical, sphericalAt, sphericalRates } from './spherical';
-import type { SpatialModel, Vec3 } from './types';
+import { couplerPointInto, planSpherical, sphericalAt, sphericalRates } from './spherical';
+import type { SpatialModel } from './types';
 import { describe } from './validate';
 
 /** One planned linkage behind a common face, so sweeps, exports and the output's motion serve both kinds. */
@@ -12,8 +12,8 @@ export interface Kernel {
   rates(p: SpatialPoint, omega2: number, alpha2: number): void;
   /** The user's length unit per working unit (1 on the unit sphere). */
   unit: number;
-  /** The coupler point's construction (spherical with pDist), else null. */
-  coupler: ((A: Vec3, B: Vec3) => Vec3) | null;
+  /** Writes the coupler point of a solved point to out[at..at+2] (spherical with pDist), else null. */
+  coupler: ((p: SpatialPoint, out: Float64Array | number[], at: number) => void) | null;
   inputRange(): InputRange;
 }
 
@@ -25,7 +25,7 @@ export function kernelOf(model: SpatialModel): Kernel {
       at: (t, s, p) => sphericalAt(plan, t, s, p),
       rates: (p, w, a) => sphericalRates(plan, p, w, a),
       unit: 1,
-      coupler: plan.hasP ? (A, B) => couplerPointOf(plan, A, B) : null,
+      coupler: plan.hasP ? (p, out, at) => couplerPointInto(plan, p.ax, p.ay, p.az, p.bx, p.by, p.bz, out, at) : null,
       inputRange: () => sphericalInputRange(model.linkage),
     };
   }

@@ -154,13 +154,47 @@ export function sphericalRates(plan: SphericalPlan, p: SpatialPoint, omega2: num
   outputRates(p, f22, f24, f44, omega2, alpha2);
 }
 
-/** The coupler point P = cos(pd) A + sin(pd) (cos(pa) t + sin(pa) n), n = A x B / |A x B|, t = n x A. */
-export function couplerPointOf(plan: SphericalPlan, A: Vec3, B: Vec3): Vec3 {
+/**
+ * The coupler point P = cos(pd) A + sin(pd) (cos(pa) t + sin(pa) n), n = A x B / |A x B|, t = n x A, written to
+ * out[at..at+2] (unit sphere). Scalar arithmetic, no objects: a sweep calls it once per angle.
+ */
+export function couplerPointInto(
+  plan: SphericalPlan,
+  ax: number,
+  ay: number,
+  az: number,
+  bx: number,
+  by: number,
+  bz: number,
+  out: Float64Array | number[],
+  at: number,
+): void {
   // A x (B - A) = A x B, formed from the chord so a short coupler keeps its digits.
-  const n = cross(A, sub(B, A));
-  const nn = scale(n, 1 / norm(n));
-  const t = cross(nn, A);
-  return add(scale(A, plan.cpd), scale(add(scale(t, plan.cpa), scale(nn, plan.spa)), plan.spd));
+  const dx = bx - ax;
+  const dy = by - ay;
+  const dz = bz - az;
+  let nx = ay * dz - az * dy;
+  let ny = az * dx - ax * dz;
+  let nz = ax * dy - ay * dx;
+  const nn = nx * nx + ny * ny + nz * nz;
+  const k = 1 / (nn > 1e-290 ? Math.sqrt(nn) : Math.hypot(nx, ny, nz));
+  nx *= k;
+  ny *= k;
+  nz *= k;
+  const tx = ny * az - nz * ay;
+  const ty = nz * ax - nx * az;
+  const tz = nx * ay - ny * ax;
+  const { cpd, spd, cpa, spa } = plan;
+  out[at] = cpd * ax + spd * (cpa * tx + spa * nx);
+  out[at + 1] = cpd * ay + spd * (cpa * ty + spa * ny);
+  out[at + 2] = cpd * az + spd * (cpa * tz + spa * nz);
+}
+
+/** couplerPointInto for two pins as vectors. */
+export function couplerPointOf(plan: SphericalPlan, A: Vec3, B: Vec3): Vec3 {
+  const out = [0, 0, 0];
+  couplerPointInto(plan, A.x, A.y, A.z, B.x, B.y, B.z, out, 0);
+  return vec3(out[0], out[1], out[2]);
 }
 
 /**

@@ -93,12 +93,7 @@ export function sweepSpatial(
     out.B[3 * i] = p.bx * u;
     out.B[3 * i + 1] = p.by * u;
     out.B[3 * i + 2] = p.bz * u;
-    if (P && k.coupler) {
-      const c = k.coupler({ x: p.ax, y: p.ay, z: p.az }, { x: p.bx, y: p.by, z: p.bz });
-      P[3 * i] = c.x;
-      P[3 * i + 1] = c.y;
-      P[3 * i + 2] = c.z;
-    }
+    if (P && k.coupler) k.coupler(p, P, 3 * i);
   }
   return out;
 }

@@ -57,17 +57,18 @@ export interface RSSRLengths {
 
 function sphericalModel(l: SphericalArcs): Model {
   const [a1, a2, a3, a4] = [l.a1, l.a2, l.a3, l.a4].map((x) => new D(x));
+  const [sa2, ca2, sa4, ca4, ca3] = [D.sin(a2), D.cos(a2), D.sin(a4), D.cos(a4), D.cos(a3)];
   const O4 = v(D.sin(a1), 0, D.cos(a1));
   const u = v(D.cos(a1), 0, D.sin(a1).neg());
   const y = v(0, 1, 0);
   const model: Model = {
-    A: (t2) => v(D.sin(a2).mul(D.cos(t2)), D.sin(a2).mul(D.sin(t2)), D.cos(a2)),
-    B: (t4) => add(mul(O4, D.cos(a4)), mul(add(mul(u, D.cos(t4)), mul(y, D.sin(t4))), D.sin(a4))),
-    dB: (t4) => mul(add(mul(u, D.sin(t4).neg()), mul(y, D.cos(t4))), D.sin(a4)),
+    A: (t2) => v(sa2.mul(D.cos(t2)), sa2.mul(D.sin(t2)), ca2),
+    B: (t4) => add(mul(O4, ca4), mul(add(mul(u, D.cos(t4)), mul(y, D.sin(t4))), sa4)),
+    dB: (t4) => mul(add(mul(u, D.sin(t4).neg()), mul(y, D.cos(t4))), sa4),
     pqr: (A) => ({
-      P: D.sin(a4).mul(dot(A, u)),
-      Q: D.sin(a4).mul(dot(A, y)),
-      R: D.cos(a3).sub(D.cos(a4).mul(dot(A, O4))),
+      P: sa4.mul(dot(A, u)),
+      Q: sa4.mul(dot(A, y)),
+      R: ca3.sub(ca4.mul(dot(A, O4))),
     }),
   };
   if (l.pDist !== undefined) {
@@ -220,11 +221,13 @@ export function rssrOracle(
   return oracle(rssrModel(l), theta2, branch === 'open', omega2, alpha2);
 }
 
-/** Whether the loop closes at theta2 (50 digits): P^2 + Q^2 >= R^2. */
-export function closes(kind: 'spherical' | 'rssr', l: SphericalArcs | RSSRLengths, theta2: number): boolean {
+/** A 50-digit test of whether the loop closes at theta2 (P^2 + Q^2 >= R^2), the linkage's constants made once. */
+export function closer(kind: 'spherical' | 'rssr', l: SphericalArcs | RSSRLengths): (theta2: number) => boolean {
   const m = kind === 'spherical' ? sphericalModel(l as SphericalArcs) : rssrModel(l as RSSRLengths);
-  const { P, Q, R } = m.pqr(m.A(new D(theta2)));
-  return !P.mul(P).add(Q.mul(Q)).sub(R.mul(R)).isNeg();
+  return (theta2) => {
+    const { P, Q, R } = m.pqr(m.A(new D(theta2)));
+    return !P.mul(P).add(Q.mul(Q)).sub(R.mul(R)).isNeg();
+  };
 }
 
 /** The angle difference a - b wrapped to (-pi, pi] (doubles). */
