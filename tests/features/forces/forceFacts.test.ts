@@ -30,6 +30,33 @@ describe('poseFacts', () => {
     expect(poseReason(p, t)).toBeNull();
   });
 
+  it('shows a pin force or moment that is rounding noise beside the others as 0, without a direction', () => {
+    const P = (x: number, y: number) => ({ x, y });
+    const facts = poseFacts(
+      {
+        status: 'ok',
+        sinMu: 1,
+        forces: {
+          status: 'ok',
+          torque: 40,
+          F12: P(100, 0),
+          F32: P(1e-17, -1e-17),
+          F43: P(0, -50),
+          F14: P(-3, 4),
+          shakingForce: P(2e-15, 0),
+          shakingMoment: -4e-14,
+        },
+      },
+      t,
+    );
+    const value = (k: string) => facts.find((f) => f.key === k)?.value;
+    expect(value('F32')).toBe('0 N');
+    expect(value('shakingForce')).toBe('0 N');
+    expect(value('shakingMoment')).toBe('0 N·m');
+    expect(value('F14')).toMatch(/^5 N, at 126\.9°$/);
+    expect(value('torque')).toBe('40 N·m');
+  });
+
   it('shows "—" with the reason at a limit position, never NaN', () => {
     const p = poseForces(forceSetup(ON), 0.3, { theta3: 1, theta4: 1 });
     const facts = poseFacts(p, t);
