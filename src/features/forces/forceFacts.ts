@@ -70,6 +70,7 @@ export function poseFacts(p: PoseForces, t: ForcesMessages): ForceFact[] {
 export function poseReason(p: PoseForces, t: ForcesMessages): string | null {
   if (p.status === 'limit-position') return t.limitReason;
   if (p.status === 'no-pose') return t.noPoseReason;
+  if (p.status === 'overflow') return t.overflowReason;
   return null;
 }
 
@@ -103,6 +104,7 @@ export interface CycleFacts {
 function cycleGap(c: CycleForcesView | null, omega2: number): CycleGap | null {
   if (!c || c.status === 'crank-does-not-turn') return 'crank-does-not-turn';
   if (c.status === 'limit-position') return 'limit-position';
+  if (c.status === 'overflow') return 'overflow';
   return omega2 === 0 ? 'omega-zero' : null;
 }
 
