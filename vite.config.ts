@@ -25,6 +25,11 @@ export default defineConfig({
   worker: { format: 'es' },
   build: {
     target: 'es2022',
+    // kB, minified. The largest chunk is 'app' (534 kB, 180 kB gzip, on 2026-12-04): every module of the first load
+    // merged on purpose (sharedInitial above), so its size is one file's, not twenty's. Its budget is the ready time
+    // on a phone profile (bench:ui), not bytes; the lazy pages and the workers are far below this. 600 still warns if
+    // the first load grows by a sixth.
+    chunkSizeWarningLimit: 600,
     rollupOptions: {
       input: {
         main: resolve(import.meta.dirname, 'index.html'),

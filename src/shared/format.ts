@@ -15,14 +15,26 @@ export function fieldText(x: number, decimals?: number): string {
   return s === '-0' ? '0' : s;
 }
 
-/** Formats a number for display with sig significant digits (default 6), exponent form outside [1e-4, 1e6); '—' when not finite. */
-export function formatNumber(x: number, sig = 6): string {
+/** Share of a panel's scale at or below which a value is rounding noise of a zero (about 4500 ulps of the scale). */
+export const ROUNDING_NOISE = 1e-12;
+
+/** x, or 0 when |x| is at most ROUNDING_NOISE × |scale| (the size of the values computed beside it); scale 0 keeps x. */
+export function roundingNoiseToZero(x: number, scale: number): number {
+  return Math.abs(x) <= ROUNDING_NOISE * Math.abs(scale) ? 0 : x;
+}
+
+/**
+ * Formats a number for display with sig significant digits (default 6), exponent form outside [1e-4, 1e6); '—'
+ * when not finite; 0 when it is rounding noise beside scale (default 0: never); every minus sign is U+2212.
+ */
+export function formatNumber(x: number, sig = 6, scale = 0): string {
   if (!Number.isFinite(x)) return '—';
+  x = roundingNoiseToZero(x, scale);
   if (x === 0) return '0';
   const a = Math.abs(x);
   const s =
     a >= 1e-4 && a < 1e6 ? trimZeros(x.toPrecision(sig)) : trimZeros(x.toExponential(sig - 1)).replace('e+', 'e');
-  return s.replace('-', MINUS);
+  return s.replace(/-/g, MINUS);
 }
 
 /** Formats an angle in degrees with a fixed number of decimals (default 2); '—' when not finite; never '-0'. */

@@ -8,6 +8,7 @@ import {
   formatDeg,
   formatNumber,
   formatSci,
+  roundingNoiseToZero,
   truncateText,
 } from '../../src/shared/format';
 import { lengthSliderRange, needsNewRange, niceCeil } from '../../src/features/simulator/sliderRange';
@@ -23,6 +24,27 @@ describe('formatNumber', () => {
     expect(formatNumber(12345678)).toBe('1.23457e7');
     expect(formatNumber(-0.5)).toBe('\u22120.5');
     expect(formatNumber(Number.NaN)).toBe('—');
+  });
+});
+
+describe('formatNumber signs and rounding noise', () => {
+  it('writes every minus, in the exponent too, as U+2212', () => {
+    expect(formatNumber(-1.5e-7)).toBe('\u22121.5e\u22127');
+    expect(formatSci(-1.5e-7)).toBe('\u22121.50e\u22127');
+    for (const x of [-1.5e-7, 2e-9, -3e12, -0.25]) {
+      expect(formatNumber(x)).not.toContain('-');
+      expect(formatSci(x)).not.toContain('-');
+    }
+  });
+
+  it('shows a value 1e-12 or less of the scale beside it as 0, and a larger one as itself', () => {
+    expect(roundingNoiseToZero(1e-17, 1)).toBe(0);
+    expect(roundingNoiseToZero(-1e-12, 1)).toBe(0);
+    expect(roundingNoiseToZero(2e-12, 1)).toBe(2e-12);
+    expect(roundingNoiseToZero(1e-17, 1e-17)).toBe(1e-17);
+    expect(formatNumber(1e-17, 6, 1)).toBe('0');
+    expect(formatNumber(-3e-15, 6, 10)).toBe('0');
+    expect(formatNumber(1e-17)).toBe('1e\u221217');
   });
 });
 

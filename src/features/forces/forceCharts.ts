@@ -158,11 +158,14 @@ export function pinForceMarker(theta2Deg: number, p: PoseForces, u: PlotUnit): R
   return { theta2Deg, values: f ? [mag(f.F12), mag(f.F32), mag(f.F43), mag(f.F14)] : [] };
 }
 
-/** The bearing diagram's marker: a line at this pose's F12x, a dot at its F12y, in the plot unit (none if undetermined). */
+/**
+ * The bearing diagram's θ2 cursor: a radius from the crank bearing's centre (the origin) to this pose's F12 and a
+ * dot there, in the plot unit (none if undetermined). A vertical line at F12x would cross the curve elsewhere too.
+ */
 export function bearingMarker(p: PoseForces, u: PlotUnit): MarkerAt {
   const f = p.forces;
   return f
-    ? { x: f.F12.x * u.factor, dots: [{ y: f.F12.y * u.factor, color: PIN_COLORS.F12 }] }
+    ? { x: f.F12.x * u.factor, dots: [{ y: f.F12.y * u.factor, color: PIN_COLORS.F12 }], from: { x: 0, y: 0 } }
     : { x: Number.NaN, dots: [] };
 }
 

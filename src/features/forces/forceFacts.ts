@@ -1,7 +1,7 @@
 import { radToDeg, radToDeg360 } from '../../solver/angles';
 import type { Point } from '../../solver/kinematics';
 import type { TorqueCycleStats } from '../../solver/forcesCycle';
-import { formatDeg, formatNumber } from '../../shared/format';
+import { formatDeg, formatNumber, roundingNoiseToZero } from '../../shared/format';
 import type { CycleForcesView } from './forceCycleData';
 import type { PoseForces } from './forceModel';
 import type { CycleGap, ForcesMessages, PinForce } from './forcesMessages';
@@ -15,15 +15,18 @@ export const TOGGLE_NOTE_SIN_MU = 0.26;
 /** The text of a missing number: never NaN. */
 export const MISSING = '—';
 
-/** A value with its unit, or MISSING when not finite. */
-export function quantityText(x: number, unit: string): string {
-  return Number.isFinite(x) ? `${formatNumber(x, FORCE_DIGITS)} ${unit}` : MISSING;
+/** A value with its unit (0 when rounding noise beside scale, default 0: never), or MISSING when not finite. */
+export function quantityText(x: number, unit: string, scale = 0): string {
+  return Number.isFinite(x) ? `${formatNumber(x, FORCE_DIGITS, scale)} ${unit}` : MISSING;
 }
 
-/** A force's magnitude (N) and direction (degrees CCW from +x in [0, 360)); MISSING when not finite. */
-export function forceText(f: Point, t: Pick<ForcesMessages, 'directionDeg'>): string {
+/**
+ * A force's magnitude (N) and direction (degrees CCW from +x in [0, 360)); MISSING when not finite; 0 without a
+ * direction when the magnitude is rounding noise beside scale (N, default 0: never).
+ */
+export function forceText(f: Point, t: Pick<ForcesMessages, 'directionDeg'>, scale = 0): string {
   if (!Number.isFinite(f.x) || !Number.isFinite(f.y)) return MISSING;
-  const m = Math.hypot(f.x, f.y);
+  const m = roundingNoiseToZero(Math.hypot(f.x, f.y), scale);
   const magnitude = `${formatNumber(m, FORCE_DIGITS)} N`;
   return m > 0 ? `${magnitude}, ${t.directionDeg(formatDeg(radToDeg360(Math.atan2(f.y, f.x)), 1))}` : magnitude;
 }
@@ -35,18 +38,31 @@ export interface ForceFact {
   value: string;
 }
 
+/** The largest finite |value| (0 when none). */
+function largest(values: readonly number[]): number {
+  return values.reduce((m, v) => (Number.isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0);
+}
+
 /** The panel's lines at a pose: T12, F12, F32, F43, F14, the shaking force and moment (MISSING where undetermined). */
 export function poseFacts(p: PoseForces, t: ForcesMessages): ForceFact[] {
   const f = p.forces;
-  const pin = (k: PinForce): ForceFact => ({ key: k, label: t.pinNames[k], value: f ? forceText(f[k], t) : MISSING });
+  // Forces beside forces and moments beside moments: a value 1e-12 of its group's largest is rounding of a zero.
+  const forceScale = f ? largest([f.F12, f.F32, f.F43, f.F14, f.shakingForce].map((v) => Math.hypot(v.x, v.y))) : 0;
+  const momentScale = f ? largest([f.torque, f.shakingMoment]) : 0;
+  const force = (v: Point) => (f ? forceText(v, t, forceScale) : MISSING);
+  const pin = (k: PinForce): ForceFact => ({ key: k, label: t.pinNames[k], value: f ? force(f[k]) : MISSING });
   return [
-    { key: 'torque', label: t.inputTorque, value: f ? quantityText(f.torque, 'N·m') : MISSING },
+    { key: 'torque', label: t.inputTorque, value: f ? quantityText(f.torque, 'N·m', momentScale) : MISSING },
     pin('F12'),
     pin('F32'),
     pin('F43'),
     pin('F14'),
-    { key: 'shakingForce', label: t.shakingForce, value: f ? forceText(f.shakingForce, t) : MISSING },
-    { key: 'shakingMoment', label: t.shakingMoment, value: f ? quantityText(f.shakingMoment, 'N·m') : MISSING },
+    { key: 'shakingForce', label: t.shakingForce, value: f ? force(f.shakingForce) : MISSING },
+    {
+      key: 'shakingMoment',
+      label: t.shakingMoment,
+      value: f ? quantityText(f.shakingMoment, 'N·m', momentScale) : MISSING,
+    },
   ];
 }
 
@@ -54,6 +70,7 @@ export function poseFacts(p: PoseForces, t: ForcesMessages): ForceFact[] {
 export function poseReason(p: PoseForces, t: ForcesMessages): string | null {
   if (p.status === 'limit-position') return t.limitReason;
   if (p.status === 'no-pose') return t.noPoseReason;
+  if (p.status === 'overflow') return t.overflowReason;
   return null;
 }
 
@@ -87,6 +104,7 @@ export interface CycleFacts {
 function cycleGap(c: CycleForcesView | null, omega2: number): CycleGap | null {
   if (!c || c.status === 'crank-does-not-turn') return 'crank-does-not-turn';
   if (c.status === 'limit-position') return 'limit-position';
+  if (c.status === 'overflow') return 'overflow';
   return omega2 === 0 ? 'omega-zero' : null;
 }
 

@@ -105,8 +105,11 @@ export function forceSetup(state: ForceInputs): ForceSetup {
   };
 }
 
-/** Why the forces at a pose are missing: no pose at theta2, or a limit position (coupler and rocker in line). */
-export type PoseForcesStatus = 'ok' | 'no-pose' | 'limit-position';
+/**
+ * Why the forces at a pose are missing: no pose at theta2, a limit position (coupler and rocker in line), or an
+ * overflow (finite rates, but a force past the double range, about 1.8e308).
+ */
+export type PoseForcesStatus = 'ok' | 'no-pose' | 'limit-position' | 'overflow';
 
 /** The forces at one pose (SI) and sin μ there (the pin forces grow like 1 / |sin μ| near a toggle). */
 export interface PoseForces {
@@ -126,6 +129,7 @@ export function poseForces(setup: ForceSetup, theta2Rad: number, pose: Angles | 
     // The state holds validated values; a throw means a pose the solver does not take (a non-finite angle).
     return { status: 'no-pose', forces: null, sinMu };
   }
+  if (forces.status === 'overflow') return { status: 'overflow', forces: null, sinMu };
   if (!Number.isFinite(forces.torque)) return { status: 'limit-position', forces: null, sinMu };
   return { status: 'ok', forces, sinMu };
 }

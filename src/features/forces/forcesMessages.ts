@@ -6,7 +6,7 @@ import { forcesMessagesEn } from './forcesMessagesEn';
 export type PinForce = 'F12' | 'F32' | 'F43' | 'F14';
 
 /** Why a cycle quantity is missing (solver ForceCycleStatus, and a crank at rest). */
-export type CycleGap = 'crank-does-not-turn' | 'limit-position' | 'omega-zero';
+export type CycleGap = 'crank-does-not-turn' | 'limit-position' | 'overflow' | 'omega-zero';
 
 /**
  * The forces feature's strings, apart from the app's: English in the first load (the section's toggle and unit
@@ -51,6 +51,8 @@ export interface ForcesMessages {
   /** The reason the numbers are "—" at this pose. */
   limitReason: string;
   noPoseReason: string;
+  /** A force at this pose passes the double range (status 'overflow'). */
+  overflowReason: string;
   /** Near a toggle: μ in degrees and 1 / |sin μ|. */
   toggleNote: (muDeg: string, factor: string) => string;
   conventionNote: string;

@@ -39,6 +39,8 @@ export const forcesMessagesEn: ForcesMessages = {
   directionDeg: (deg) => `at ${deg}°`,
   limitReason: 'limit position: the coupler and rocker are in line, so the forces are unbounded',
   noPoseReason: 'the linkage does not assemble at this θ2',
+  overflowReason:
+    'a force here is past the number range of the computation (about 1.8 × 10³⁰⁸): lower ω2, the masses or the loads',
   toggleNote: (mu, factor) =>
     `Near a toggle (μ = ${mu}°): the pin forces grow like 1/sin μ, here ${factor} times their size at μ = 90°.`,
   conventionNote:
@@ -53,6 +55,8 @@ export const forcesMessagesEn: ForcesMessages = {
   cycleGaps: {
     'crank-does-not-turn': 'the crank does not make a full turn',
     'limit-position': 'the turn passes a limit position, where the forces are unbounded',
+    overflow:
+      'a force over the turn is past the number range of the computation (about 1.8 × 10³⁰⁸): lower ω2, the masses or the loads',
     'omega-zero': 'ω2 is 0: a crank at rest has no speed to steady',
   },
   plotTorque: 'Torque',

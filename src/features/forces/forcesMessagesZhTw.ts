@@ -39,6 +39,7 @@ export const forcesMessagesZhTw: ForcesMessages = {
   directionDeg: (deg) => `方向 ${deg}°`,
   limitReason: '極限位置：連桿與搖桿共線，力為無界',
   noPoseReason: '此 θ2 無法組裝',
+  overflowReason: '此處的力超出計算的數值範圍（約 1.8 × 10³⁰⁸）：請降低 ω2、質量或負載',
   toggleNote: (mu, factor) => `接近肘節位置（μ = ${mu}°）：銷力隨 1/sin μ 增長，此處為 μ = 90° 時的 ${factor} 倍。`,
   conventionNote:
     'Fij 為桿 i 作用於桿 j 的力（1 機架、2 曲柄、3 連桿、4 搖桿）；SI 單位，逆時針為正。接近肘節位置時銷力隨 1/sin μ 增長。',
@@ -52,6 +53,7 @@ export const forcesMessagesZhTw: ForcesMessages = {
   cycleGaps: {
     'crank-does-not-turn': '曲柄無法轉動一整圈',
     'limit-position': '這一圈經過極限位置，該處力為無界',
+    overflow: '這一圈中有力超出計算的數值範圍（約 1.8 × 10³⁰⁸）：請降低 ω2、質量或負載',
     'omega-zero': 'ω2 為 0：靜止的曲柄沒有需要穩定的轉速',
   },
   plotTorque: '扭矩',

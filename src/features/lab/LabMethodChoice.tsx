@@ -5,7 +5,7 @@ import { LAB_TOLERANCES } from '../../study/options';
 import { SWEEP_METHODS } from '../../solver/methods';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { LabMessages } from './labMessages';
-import { formatTol } from './workPrecisionChart';
+import { shownTol } from './workPrecisionChart';
 import { SelectMenu } from '../../shared/ui/SelectMenu';
 
 /** Props of LabMethodChoice: the chosen method and tolerance, their dispatch, the lab's strings. */
@@ -40,7 +40,7 @@ export function LabMethodChoice({ method, tol, lt, dispatch }: LabMethodChoicePr
           disabled={method === 'closed-form' || method === 'closed-form-polish'}
           options={[
             { value: 'default', label: lt.labToleranceDefault },
-            ...LAB_TOLERANCES.map((x) => ({ value: String(x), label: formatTol(x) })),
+            ...LAB_TOLERANCES.map((x) => ({ value: String(x), label: shownTol(x) })),
           ]}
           onChange={(v) => dispatch({ type: 'setMethod', method, tol: v === 'default' ? null : Number(v) })}
         />

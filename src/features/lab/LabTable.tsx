@@ -2,7 +2,7 @@ import type { LabPoint, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { LabMessages } from './labMessages';
-import { formatMaxError, formatTol } from './workPrecisionChart';
+import { formatMaxError, shownTol } from './workPrecisionChart';
 
 /** Props of LabTable: the study's series, the chosen method and tolerance, the lab's strings. */
 export interface LabTableProps {
@@ -46,7 +46,7 @@ export function LabTable({ series, method, tol, lt }: LabTableProps) {
               <tr key={`${s.method}-${p.tol}`} className={chosen ? 'chosen' : undefined}>
                 <th scope="row">
                   {t.methodNames[s.method]}
-                  {p.tol !== null ? `, tol ${formatTol(p.tol)}` : ''}
+                  {p.tol !== null ? `, tol ${shownTol(p.tol)}` : ''}
                 </th>
                 <td className="mono">{p.nsPerPoint.toFixed(0)}</td>
                 <td className="mono">{p.itersPerPoint.toFixed(2)}</td>

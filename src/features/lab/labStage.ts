@@ -1,6 +1,7 @@
 import { LAB_METHODS } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import type { LabMessages } from './labMessages';
+import { shownTol } from './workPrecisionChart';
 import type { Messages } from '../../shared/i18n/messages';
 
 /** The strings the lab's progress line needs: the method names and the lab's own. */
@@ -54,7 +55,7 @@ export function parseLabStage(text: string): LabStage {
 }
 
 function tolText(tol: number | null): string | null {
-  return tol === null ? null : tol.toExponential().replace('e+', 'e');
+  return tol === null ? null : shownTol(tol);
 }
 
 /** The stage in the UI's language, with the method's translated name; unknown text is shown as it came. */

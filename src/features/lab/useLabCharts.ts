@@ -1,6 +1,6 @@
 import { useCallback, useMemo } from 'react';
 import { drawCycleChart } from './cycleChart';
-import { drawWorkPrecisionChart, formatMaxError, formatTol } from './workPrecisionChart';
+import { drawWorkPrecisionChart, formatMaxError, shownTol } from './workPrecisionChart';
 import type { WorkPrecisionChartOptions, WorkPrecisionHighlight } from './workPrecisionChart';
 import type { LabPoint, LabResult, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
@@ -28,7 +28,7 @@ function diagramOptions(t: Messages, lt: LabMessages, highlight: WorkPrecisionHi
     tooltip: (s: LabSeries, p: LabPoint) =>
       lt.labPointTooltip(
         t.methodNames[s.method],
-        formatTol(p.tol, lt.labToleranceDefault),
+        shownTol(p.tol, lt.labToleranceDefault),
         p.nsPerPoint.toFixed(0),
         formatMaxError(p.maxError),
       ),

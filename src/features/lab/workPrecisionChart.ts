@@ -81,6 +81,11 @@ export function formatTol(tol: number | null, defaultText = 'default'): string {
   return tol.toExponential().replace('e+', 'e');
 }
 
+/** A tolerance as shown on the page (table, choices, tooltips, stage): formatTol with U+2212, as formatSci writes. */
+export function shownTol(tol: number | null, defaultText = 'default'): string {
+  return minus(formatTol(tol, defaultText));
+}
+
 /** A max error for the lab's table and tooltips: two significant digits, a dash when it is not finite. */
 export function formatMaxError(x: number): string {
   return Number.isFinite(x) ? formatSci(x, 2) : '—';
@@ -331,8 +336,8 @@ interface Marker {
 }
 
 function defaultTooltip(label: string, p: LabPoint, defaultTolText: string): string {
-  const err = p.maxError === 0 ? '0' : p.maxError.toExponential(2);
-  return `${label}\ntol ${formatTol(p.tol, defaultTolText)}\n${p.nsPerPoint.toFixed(0)} ns/pt\nmax error ${err} rad`;
+  const err = p.maxError === 0 ? '0' : minus(p.maxError.toExponential(2));
+  return `${label}\ntol ${shownTol(p.tol, defaultTolText)}\n${p.nsPerPoint.toFixed(0)} ns/pt\nmax error ${err} rad`;
 }
 
 type Curve = { sr: LabSeries } & ReturnType<typeof orderedCurvePoints>;
@@ -493,7 +498,7 @@ function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Mar
     ...chosen.filter((mk) => !mk.isDefault),
     ...markers.filter((mk) => !mk.isDefault && !chosen.includes(mk)),
   ];
-  const texts = labelled.map((mk) => minus(formatTol(mk.point.tol)));
+  const texts = labelled.map((mk) => shownTol(mk.point.tol));
   const obstacles: LabelBox[] = markers.map((mk) => {
     const r = chosen.includes(mk) ? 11 : mk.isDefault ? 7 : 4;
     return { x0: mk.x - r, y0: mk.y - r, x1: mk.x + r, y1: mk.y + r };

@@ -114,6 +114,11 @@ export interface Frame {
 export interface MarkerAt {
   x: number;
   dots: readonly { y: number; color: string }[];
+  /**
+   * When given, the line runs from this point (data units) to (x, the first dot's y) instead of the full height at x:
+   * a polar plot's radius from its centre.
+   */
+  from?: { x: number; y: number };
 }
 
 /** A group of the plot the spec draws itself: under the grid (a band) or over the curves (clip marks). */
@@ -263,7 +268,10 @@ export function curvePath(curve: Pick<Curve, 'x' | 'y' | 'wrapped'>, frame: Pick
   );
 }
 
-/** Where the marker goes in plot pixels: its line at x clamped to the x domain, a dot for each finite y in the y domain. */
+/**
+ * Where the marker goes in plot pixels: its line at x clamped to the x domain, a dot for each finite y in the y
+ * domain; with at.from, the line is the segment from that point to the first dot (hidden when either is not finite).
+ */
 export function markerPlacement(at: MarkerAt | null, frame: Pick<Frame, 'x' | 'y'>): MarkerPlacement {
   if (!at || !Number.isFinite(at.x)) return { x: null, dots: [] };
   const [x0, x1] = frame.x.domain();
@@ -272,7 +280,14 @@ export function markerPlacement(at: MarkerAt | null, frame: Pick<Frame, 'x' | 'y
   const dots: MarkerDotPx[] = at.dots
     .filter((d) => Number.isFinite(d.y) && d.y >= Math.min(y0, y1) && d.y <= Math.max(y0, y1))
     .map((d) => ({ cx, cy: frame.y(d.y), color: d.color }));
-  return { x: cx, dots };
+  const end = at.dots[0];
+  if (!at.from) return { x: cx, dots };
+  // A radius needs both ends; without its far end (an undetermined pose) the marker hides rather than mislead.
+  if (!end || !Number.isFinite(end.y) || !Number.isFinite(at.from.x) || !Number.isFinite(at.from.y)) {
+    return { x: null, dots: [] };
+  }
+  const segment = { x1: frame.x(at.from.x), y1: frame.y(at.from.y), x2: frame.x(at.x), y2: frame.y(end.y) };
+  return { x: cx, dots, segment };
 }
 
 /** Plain number labels with a typographic minus. */

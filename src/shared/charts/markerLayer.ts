@@ -9,10 +9,27 @@ export interface MarkerDotPx {
   color: string;
 }
 
-/** Where a chart's marker goes, in plot pixels: the line's x (null hides the marker) and the dots. */
+/** A marker line's ends in plot pixels. */
+export interface MarkerSegmentPx {
+  x1: number;
+  y1: number;
+  x2: number;
+  y2: number;
+}
+
+/**
+ * Where a chart's marker goes, in plot pixels: the line's x (null hides the marker) and the dots; segment, when
+ * given, replaces the full-height line at x (a polar plot's radius).
+ */
 export interface MarkerPlacement {
   x: number | null;
   dots: readonly MarkerDotPx[];
+  segment?: MarkerSegmentPx;
+}
+
+/** The marker's line: its segment, or the full plot height at x. */
+function lineOf(x: number, segment: MarkerSegmentPx | undefined, height: number): MarkerSegmentPx {
+  return segment ?? { x1: x, y1: 0, x2: x, y2: height };
 }
 
 /** The plot area inside the chart's SVG: its top-left corner and its height, CSS pixels. */
@@ -38,8 +55,9 @@ const LINE_WIDTH = 1.25;
  * Draws a chart's current-θ2 marker (a line and a dot per series) on a canvas in host, a box laid over the
  * chart's SVG at the same size. Play moves the marker every frame: inside the SVG each move repainted the
  * whole chart, curves and axes included, and re-layered the page; a canvas only redraws its own pixels.
- * host carries the plot-pixel placement for tests and tools: data-x (empty when hidden) and data-dots, a
- * JSON list of { cx, cy, color } (the numbers an SVG marker's circles have).
+ * host carries the plot-pixel placement for tests and tools: data-x (empty when hidden), data-dots, a
+ * JSON list of { cx, cy, color } (the numbers an SVG marker's circles have), and data-segment, the line's
+ * { x1, y1, x2, y2 } when it is a segment (empty otherwise).
  */
 export function createMarkerLayer(host: HTMLElement): MarkerLayer {
   host.setAttribute('aria-hidden', 'true');
@@ -51,7 +69,7 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
   host.append(canvas);
   let drawn = false;
   return {
-    draw({ x, dots }, box, width, height) {
+    draw({ x, dots, segment }, box, width, height) {
       const view = host.ownerDocument.defaultView;
       const dpr = Math.max(1, Math.min(4, view?.devicePixelRatio ?? 1));
       const pw = Math.round(width * dpr);
@@ -64,6 +82,7 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
       const ctx = canvas.getContext('2d');
       host.dataset.x = x === null ? '' : String(x);
       host.dataset.dots = JSON.stringify(x === null ? [] : dots);
+      host.dataset.segment = x === null || !segment ? '' : JSON.stringify(segment);
       if (!ctx) return;
       ctx.setTransform(1, 0, 0, 1, 0, 0);
       if (drawn) ctx.clearRect(0, 0, pw, ph);
@@ -72,9 +91,10 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
       ctx.setTransform(dpr, 0, 0, dpr, dpr * box.left, dpr * box.top);
       ctx.strokeStyle = CHART_STYLE.marker;
       ctx.lineWidth = LINE_WIDTH;
+      const l = lineOf(x, segment, box.height);
       ctx.beginPath();
-      ctx.moveTo(x, 0);
-      ctx.lineTo(x, box.height);
+      ctx.moveTo(l.x1, l.y1);
+      ctx.lineTo(l.x2, l.y2);
       ctx.stroke();
       ctx.lineWidth = DOT_RING;
       ctx.strokeStyle = CHART_STYLE.background;
@@ -95,15 +115,13 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
  */
 export function createSvgMarker(plot: SVGGElement): MarkerLayer {
   const g = child(select(plot), 'g', 'marker');
-  const line = child(g, 'line', 'mline')
-    .attr('y1', 0)
-    .attr('stroke', CHART_STYLE.marker)
-    .attr('stroke-width', LINE_WIDTH);
+  const line = child(g, 'line', 'mline').attr('stroke', CHART_STYLE.marker).attr('stroke-width', LINE_WIDTH);
   return {
-    draw({ x, dots }, box) {
+    draw({ x, dots, segment }, box) {
       g.attr('display', x === null ? 'none' : null);
       if (x === null) return;
-      line.attr('x1', x).attr('x2', x).attr('y2', box.height);
+      const l = lineOf(x, segment, box.height);
+      line.attr('x1', l.x1).attr('y1', l.y1).attr('x2', l.x2).attr('y2', l.y2);
       g.selectAll<SVGCircleElement, MarkerDotPx>('circle')
         .data(dots)
         .join('circle')

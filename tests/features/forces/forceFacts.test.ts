@@ -3,6 +3,7 @@ import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { AppState } from '../../../src/shared/state/appState';
 import { localPose } from '../../../src/shared/linkage/localPose';
 import { forcesMessagesEn as t } from '../../../src/features/forces/forcesMessagesEn';
+import { forcesMessagesZhTw as zh } from '../../../src/features/forces/forcesMessagesZhTw';
 import {
   MISSING,
   cycleFacts,
@@ -28,6 +29,33 @@ describe('poseFacts', () => {
     expect(Number(facts[0].value.replace('−', '-').split(' ')[0])).toBeCloseTo(p.forces!.torque, 3);
     expect(facts.find((f) => f.key === 'F12')?.value).toMatch(/^\d[\d.]* N, at \d+(\.\d)?°$/);
     expect(poseReason(p, t)).toBeNull();
+  });
+
+  it('shows a pin force or moment that is rounding noise beside the others as 0, without a direction', () => {
+    const P = (x: number, y: number) => ({ x, y });
+    const facts = poseFacts(
+      {
+        status: 'ok',
+        sinMu: 1,
+        forces: {
+          status: 'ok',
+          torque: 40,
+          F12: P(100, 0),
+          F32: P(1e-17, -1e-17),
+          F43: P(0, -50),
+          F14: P(-3, 4),
+          shakingForce: P(2e-15, 0),
+          shakingMoment: -4e-14,
+        },
+      },
+      t,
+    );
+    const value = (k: string) => facts.find((f) => f.key === k)?.value;
+    expect(value('F32')).toBe('0 N');
+    expect(value('shakingForce')).toBe('0 N');
+    expect(value('shakingMoment')).toBe('0 N·m');
+    expect(value('F14')).toMatch(/^5 N, at 126\.9°$/);
+    expect(value('torque')).toBe('40 N·m');
   });
 
   it('shows "—" with the reason at a limit position, never NaN', () => {
@@ -103,5 +131,49 @@ describe('createForceLayer', () => {
     expect(f?.pins).toEqual({ O2: p.F12, A: p.F32, B: p.F43, O4: p.F14 });
     expect(f?.scale?.value).toBeGreaterThan(0);
     expect(f?.text.label.O2).toBe('F12');
+  });
+});
+
+describe('forces past the double range (status overflow)', () => {
+  const MASSLESS = { mass: 0, inertia: 0, cg: { dist: 0, angle: 0 } };
+  const base = forceSetup(ON);
+
+  it('says at a pose that a force passes the number range, in English and zh-TW, never a limit position', () => {
+    // An unbalanced crank: |F12| = m d ω2² = 1e300 · 0.15 · 1e20, past 1.8e308 (tests/solver/forcesOverflow.test.ts).
+    const crank = { mass: 1e300, inertia: 0, cg: { dist: 0.15, angle: 0 } };
+    const setup = {
+      ...base,
+      linkage: { r1: 0.6, r2: 0.3, r3: 0.4, r4: 0.5 },
+      inertia: { crank, coupler: MASSLESS, rocker: MASSLESS },
+      loads: {},
+      input: { omega2: 1e10, alpha2: 0 },
+    };
+    const local = localPose(setup.linkage, 40, 'open', ON.design.coupler, false);
+    const p = poseForces(setup, local.theta2Rad, local.pose);
+    expect(p.status).toBe('overflow');
+    for (const f of poseFacts(p, t)) expect(f.value).toBe(MISSING);
+    expect(poseReason(p, t)).toBe(t.overflowReason);
+    expect(poseReason(p, zh)).toBe(zh.overflowReason);
+    expect(t.overflowReason).toMatch(/number range/);
+    expect(zh.overflowReason).toMatch(/[\u4e00-\u9fff]/);
+    expect(zh.overflowReason).not.toBe(t.overflowReason);
+  });
+
+  it('says why the cycle numbers are missing when the turn overflows', () => {
+    const coupler = { mass: 1e300, inertia: 1e300, cg: { dist: 0.2, angle: 0.1 } };
+    const setup = {
+      ...base,
+      linkage: { r1: 0.6, r2: 0.2, r3: 0.5, r4: 0.45 },
+      inertia: { crank: MASSLESS, coupler, rocker: MASSLESS },
+      loads: {},
+      input: { omega2: 1e6, alpha2: 0 },
+    };
+    const c = cycleForces(setup, 'open', 360);
+    expect(c?.status).toBe('overflow');
+    const f = cycleFacts(c, 1e6, t);
+    expect(f.mean).toBe(MISSING);
+    expect(f.reason).toBe(t.cycleGaps.overflow);
+    expect(cycleFacts(c, 1e6, zh).reason).toBe(zh.cycleGaps.overflow);
+    expect(zh.cycleGaps.overflow).toMatch(/[\u4e00-\u9fff]/);
   });
 });

@@ -81,8 +81,8 @@ describe('labStageText', () => {
 
   it('uses the translated method name and the tolerance', () => {
     const s = parseLabStage('timing 1/3: NR + predictor, tol 0.000001');
-    expect(labStageText(s, messagesZhTw)).toBe('第 1/3 輪計時：牛頓法延續 + 預測，容許誤差 1e-6');
-    expect(labStageText(s, messagesEn)).toBe('timing pass 1 of 3: NR continuation + predictor, tolerance 1e-6');
+    expect(labStageText(s, messagesZhTw)).toBe('第 1/3 輪計時：牛頓法延續 + 預測，容許誤差 1e\u22126');
+    expect(labStageText(s, messagesEn)).toBe('timing pass 1 of 3: NR continuation + predictor, tolerance 1e\u22126');
     for (const m of LAB_METHODS)
       expect(labStageText(parseLabStage(m.label), messagesZhTw)).toBe(messagesZhTw.methodNames[m.method]);
   });

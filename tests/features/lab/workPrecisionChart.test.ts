@@ -6,6 +6,7 @@ import {
   formatErrorTick,
   formatTimeTick,
   formatTol,
+  shownTol,
   hasTrouble,
   legendLayout,
   orderedCurvePoints,
@@ -38,6 +39,15 @@ describe('formatTol', () => {
     expect(formatTol(1e-15)).toBe('1e-15');
     expect(formatTol(2.5e-9)).toBe('2.5e-9');
     expect(formatTol(1e3)).toBe('1e3');
+  });
+});
+
+describe('shownTol', () => {
+  it('writes a shown tolerance with U+2212 in its exponent, like the max errors beside it (formatSci)', () => {
+    expect(shownTol(1e-6)).toBe('1e\u22126');
+    expect(shownTol(2.5e-9)).toBe('2.5e\u22129');
+    expect(shownTol(null, 'Vorgabe')).toBe('Vorgabe');
+    expect(shownTol(1e-12)).not.toContain('-');
   });
 });
 

@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_STATE, reducer } from '../../../src/shared/state/appState';
 import {
@@ -98,6 +99,26 @@ describe('synthesis URL keys', () => {
     ]);
     expect(r.state.synPath.timing).toBe('step');
     expect(r.state.synPath.timingStepDeg).toBe(20);
+  });
+
+  it('reads syn=function as syn=fn and writes the canonical syn=fn back', () => {
+    for (const text of ['fn', 'function']) {
+      const r = parseUrl(`page=syn&syn=${text}`, DEFAULT_STATE, quiet);
+      expect(r.ignored).toEqual([]);
+      expect(r.state.synPath.mode).toBe('function');
+      expect(new URLSearchParams(serializeState(r.state)).get('syn')).toBe('fn');
+    }
+  });
+
+  it('lists every syn value in docs/instructors.md', () => {
+    const docs = readFileSync(new URL('../../../docs/instructors.md', import.meta.url), 'utf8');
+    const line = /`syn` \(([^)]*)\)/.exec(docs)?.[1] ?? '';
+    const listed = line.split(/[^a-z]+/);
+    const syn = SYN_PATH_URL_KEYS.find((k) => k.name === 'syn');
+    for (const text of ['path', 'motion', 'fn', 'function']) {
+      expect(syn?.parse(text).ok).toBe(true);
+      expect(listed).toContain(text);
+    }
   });
 
   it('ignores a bad value with the reason, keeping the default', () => {

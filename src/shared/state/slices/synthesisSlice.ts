@@ -186,7 +186,8 @@ const pivotBoxCodec: Codec<PivotBox> = {
 const field = sliceLens('synPath');
 
 /**
- * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn),
+ * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn;
+ * function is read as fn),
  * tg (targets x,y;x,y;…), tm (free | step | given), ts (step, degrees), tt (given θ2 per target, degrees),
  * bl (longest link), bc (coupler offset), bp (pivot box x0,y0,x1,y1), in (crank | any), sd (seed).
  */
@@ -197,6 +198,8 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
       ['path', 'path'],
       ['motion', 'motion'],
       ['fn', 'function'],
+      // Read as fn, the mode's own name; enumCodec writes the first text for a value, so links keep syn=fn.
+      ['function', 'function'],
     ] as const),
     field('mode'),
     DEFAULT_SYN_PATH.mode,
