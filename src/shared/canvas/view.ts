@@ -33,7 +33,7 @@ export interface Frame {
 }
 
 /** The frame with origin (x, y) turned by angleRad; undefined for the identity (nothing to transform). */
-export function frameOf(x: number, y: number, angleRad: number): Frame | undefined {
+export function placementTransform(x: number, y: number, angleRad: number): Frame | undefined {
   if (x === 0 && y === 0 && angleRad === 0) return undefined;
   return { x, y, cos: Math.cos(angleRad), sin: Math.sin(angleRad) };
 }
