@@ -2,7 +2,7 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
 import type { Selection } from 'd3-selection';
 import type { Margins } from './chartFrame';
-import type { Frame } from './chart';
+import type { ChartScales } from './chart';
 import {
   CHART_STYLE,
   child,
@@ -117,7 +117,7 @@ interface ConvergenceSize {
 }
 
 /** The plot area (pixels inside the margins), the scales and the ticks of the convergence chart. */
-export interface ConvergenceFrame extends Omit<Frame, 'y'> {
+export interface ConvergenceFrame extends Omit<ChartScales, 'y'> {
   /** Residual (log) to plot pixels. */
   y: ScaleContinuousNumeric<number, number>;
 }

@@ -1,6 +1,6 @@
 import { quantileSorted } from 'd3-array';
 import { scaleLinear } from 'd3-scale';
-import type { ChartSpec, Frame, GSel } from './chart';
+import type { ChartSpec, ChartScales, GSel } from './chart';
 import { createChart } from './chart';
 import { minus } from './chartFrame';
 import type { AngleChartOptions, Theta2Chart, Theta2ChartData } from './theta2Chart';
@@ -116,7 +116,7 @@ export function clipMarks(
 }
 
 /** A small triangle on the edge each solid curve leaves the plot through, pointing outwards (clipMarks). */
-function drawClipMarks(g: GSel, data: RateChartData, frame: Frame): void {
+function drawClipMarks(g: GSel, data: RateChartData, frame: ChartScales): void {
   const { x, ih } = frame;
   const domain = frame.y.domain() as [number, number];
   const marks = data.series
