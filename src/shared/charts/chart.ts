@@ -13,7 +13,7 @@ import {
   legendBoxes,
   minus,
   prepareSvg,
-  sameText,
+  sameChartTexts,
   styleAxis,
 } from './chartFrame';
 import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
@@ -525,7 +525,7 @@ export function createChart<D, M, T extends ChartTexts>(
       drawAll();
     },
     setText(next) {
-      if (sameText(next, st.text)) return;
+      if (sameChartTexts(next, st.text)) return;
       st.text = { ...next };
       if (!laidOut()) return;
       drawTexts(parts, st.text, st.frame, st.size);

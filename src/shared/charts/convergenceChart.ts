@@ -12,7 +12,7 @@ import {
   estimateTextWidth,
   minus,
   prepareSvg,
-  sameText,
+  sameChartTexts,
   styleAxis,
 } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
@@ -336,7 +336,7 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
       drawAll();
     },
     setText(next) {
-      if (sameText(next, text)) return;
+      if (sameChartTexts(next, text)) return;
       const labelChanged = next.toleranceLabel !== text.toleranceLabel;
       text = { ...next };
       if (!laidOut()) return;
