@@ -19,7 +19,7 @@ export function rateText(x: number, unit: string, t: Pick<Messages, 'limitPositi
 }
 
 /** A vector's magnitude with its unit and direction (degrees counter-clockwise from +x in [0, 360)); limit text when not finite. */
-export function vectorText(
+export function magnitudeDirectionText(
   x: number,
   y: number,
   unit: string,
@@ -39,7 +39,7 @@ export function motionFacts(m: FrameMotion, t: Messages, lengthUnit?: string): M
   const r = m.rates;
   const unitSpeed = lengthUnit ? `${lengthUnit}/s` : t.unitSpeed;
   const unitAcceleration = lengthUnit ? `${lengthUnit}/s²` : t.unitAcceleration;
-  const speed = (p: PointRates) => vectorText(p.vx, p.vy, unitSpeed, t);
+  const speed = (p: PointRates) => magnitudeDirectionText(p.vx, p.vy, unitSpeed, t);
   return [
     { key: 'omega3', label: `${t.angularVelocity}3`, value: rateText(r.omega3, 'rad/s', t) },
     { key: 'omega4', label: `${t.angularVelocity}4`, value: rateText(r.omega4, 'rad/s', t) },
@@ -48,6 +48,6 @@ export function motionFacts(m: FrameMotion, t: Messages, lengthUnit?: string): M
     { key: 'vA', label: t.pointSpeed('A'), value: speed(m.A) },
     { key: 'vB', label: t.pointSpeed('B'), value: speed(m.B) },
     { key: 'vP', label: t.pointSpeed('P'), value: speed(m.P) },
-    { key: 'aP', label: t.pointAcceleration('P'), value: vectorText(m.P.ax, m.P.ay, unitAcceleration, t) },
+    { key: 'aP', label: t.pointAcceleration('P'), value: magnitudeDirectionText(m.P.ax, m.P.ay, unitAcceleration, t) },
   ];
 }
