@@ -1,7 +1,7 @@
 import type { ChartExport } from '../../shared/charts/exportChart';
 import { specDrawing } from '../../shared/charts/exportChart';
 import type { MarkerAt } from '../../shared/charts/chart';
-import type { RateChartData, RateMarker, RateSeries } from '../../shared/charts/rateChart';
+import type { RateChartData, RateMarker, RateCurve } from '../../shared/charts/rateChart';
 import { rateSpec } from '../../shared/charts/rateChart';
 import type { XYChartData } from '../../shared/charts/xyChart';
 import { xySpec } from '../../shared/charts/xyChart';
@@ -74,7 +74,7 @@ const EMPTY = new Float64Array(0);
 export function torqueInputs(c: CycleForcesView | null, t: ForcesMessages): Theta2Inputs {
   const unit = plotUnit(c ? c.forces.torque : EMPTY);
   const torqueUnit = `${unit.prefix}N·m`;
-  const series: RateSeries[] = [
+  const series: RateCurve[] = [
     { label: 'T12', values: c ? scaled(c.forces.torque, unit) : EMPTY, color: COLORS.force },
   ];
   if (c && Number.isFinite(c.stats.mean)) {
@@ -100,7 +100,7 @@ export function pinForceInputs(c: CycleForcesView | null, t: ForcesMessages): Th
   const m = c?.magnitudes ?? null;
   const unit = m ? plotUnit(m.f12, m.f32, m.f43, m.f14) : plotUnit();
   const v = (a: Float64Array | undefined) => (a ? scaled(a, unit) : EMPTY);
-  const series: RateSeries[] = [
+  const series: RateCurve[] = [
     { label: '|F12|', values: v(m?.f12), color: PIN_COLORS.F12 },
     { label: '|F32|', values: v(m?.f32), color: PIN_COLORS.F32 },
     { label: '|F43|', values: v(m?.f43), color: PIN_COLORS.F43 },

@@ -90,7 +90,7 @@ export function shownMean(s: Pick<TorqueCycleStats, 'mean' | 'peak'>): number {
 }
 
 /** The cycle's lines: mean, RMS and peak torque (N·m), ΔE (J) and the flywheel inertia (kg·m²) for k. */
-export interface CycleFacts {
+export interface TorqueCycleFacts {
   mean: string;
   rms: string;
   peak: string;
@@ -109,7 +109,7 @@ function cycleGap(c: CycleForcesView | null, omega2: number): CycleGap | null {
 }
 
 /** The cycle's facts for the input speed omega2 (rad/s). */
-export function cycleFacts(c: CycleForcesView | null, omega2: number, t: ForcesMessages): CycleFacts {
+export function cycleFacts(c: CycleForcesView | null, omega2: number, t: ForcesMessages): TorqueCycleFacts {
   const s: TorqueCycleStats | null = c && c.status === 'ok' ? c.stats : null;
   const gap = cycleGap(c, omega2);
   return {

@@ -5,11 +5,11 @@ import { Segmented } from '../../shared/ui/Segmented';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { LabMessages } from './labMessages';
 import { labProgressStatus } from './labStage';
-import type { LabState } from './useLab';
+import type { LabStudy } from './useLab';
 
 /** Props of LabToolbar: the study's state and controls, the step, whether a client can run it, the lab's strings. */
 export interface LabToolbarProps {
-  lab: LabState & { run: () => void; cancel: () => void };
+  lab: LabStudy & { run: () => void; cancel: () => void };
   stepDeg: number;
   canRun: boolean;
   lt: LabMessages;

@@ -5,7 +5,7 @@ import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { LabJobs } from './jobs';
 
 /** State of the solver lab's study: the last finished result, and progress while one runs. */
-export interface LabState {
+export interface LabStudy {
   result: LabResult | null;
   running: boolean;
   /** Fraction done in [0, 1] and the stage label, while running. */
@@ -27,8 +27,8 @@ export function useLab(
   linkage: Linkage,
   branch: Branch,
   stepDeg: number,
-): LabState & { run: () => void; cancel: () => void } {
-  const [state, setState] = useState<LabState>({
+): LabStudy & { run: () => void; cancel: () => void } {
+  const [state, setState] = useState<LabStudy>({
     result: null,
     running: false,
     progress: null,
@@ -57,7 +57,7 @@ export function useLab(
       },
     );
     token.cancel = job.cancel;
-    const finish = (next: (s: LabState) => LabState) => {
+    const finish = (next: (s: LabStudy) => LabStudy) => {
       if (jobRef.current !== token) return;
       jobRef.current = null;
       setState(next);

@@ -198,7 +198,7 @@ const LABEL_AIR = 3;
  * (per item, else defaultGap), and keeps the first spot inside [0, width] x [0, height] whose box (with
  * LABEL_AIR around it) overlaps neither an obstacle nor an earlier label; null when every spot is taken.
  */
-export function placeLabels(
+export function placePointLabels(
   items: ReadonlyArray<{ x: number; y: number; w: number; h: number; gap?: number }>,
   obstacles: readonly LabelBox[],
   width: number,
@@ -490,7 +490,7 @@ function drawHighlight(plot: G, chosen: readonly Marker[]): void {
     .attr('pointer-events', 'none');
 }
 
-/** Labels traced markers with their tolerance where placeLabels finds room, the chosen ones first. */
+/** Labels traced markers with their tolerance where placePointLabels finds room, the chosen ones first. */
 function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Marker[], iw: number, ih: number): void {
   const labelSize = 9.5;
   // The chosen point is labelled first so it is never the one crowded out.
@@ -503,7 +503,7 @@ function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Mar
     const r = chosen.includes(mk) ? 11 : mk.isDefault ? 7 : 4;
     return { x0: mk.x - r, y0: mk.y - r, x1: mk.x + r, y1: mk.y + r };
   });
-  const spots = placeLabels(
+  const spots = placePointLabels(
     labelled.map((mk, i) => ({
       x: mk.x,
       y: mk.y,

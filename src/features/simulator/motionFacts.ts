@@ -27,7 +27,7 @@ export function rateText(x: number, unit: string, t: Pick<Messages, 'limitPositi
  * A vector's magnitude with its unit and direction (degrees counter-clockwise from +x in [0, 360)); limit text when
  * not finite; 0 without a direction when the magnitude is rounding noise beside scale (default 0: never).
  */
-export function vectorText(
+export function magnitudeDirectionText(
   x: number,
   y: number,
   unit: string,
@@ -55,7 +55,7 @@ export function motionFacts(m: FrameMotion, t: Messages, lengthUnit?: string): M
   const alphaScale = scaleOf([alpha2, omega2 * omega2, r.alpha3, r.alpha4]);
   const points = [m.A, m.B, m.P];
   const speedScale = scaleOf(points.map((p) => Math.hypot(p.vx, p.vy)));
-  const speed = (p: PointRates) => vectorText(p.vx, p.vy, unitSpeed, t, speedScale);
+  const speed = (p: PointRates) => magnitudeDirectionText(p.vx, p.vy, unitSpeed, t, speedScale);
   const accelerationScale = scaleOf(points.map((p) => Math.hypot(p.ax, p.ay)));
   return [
     { key: 'omega3', label: `${t.angularVelocity}3`, value: rateText(r.omega3, 'rad/s', t, omegaScale) },
@@ -68,7 +68,7 @@ export function motionFacts(m: FrameMotion, t: Messages, lengthUnit?: string): M
     {
       key: 'aP',
       label: t.pointAcceleration('P'),
-      value: vectorText(m.P.ax, m.P.ay, unitAcceleration, t, accelerationScale),
+      value: magnitudeDirectionText(m.P.ax, m.P.ay, unitAcceleration, t, accelerationScale),
     },
   ];
 }

@@ -6,7 +6,7 @@ import type { InputRangeDeg } from '../../shared/state/animation';
 import type { Action, AppState } from '../../shared/state/appState';
 import { normalizeTheta2Deg } from '../../shared/state/appState';
 import type { PlayFrame, Playhead } from '../../shared/state/playhead';
-import { frameOf, playBase, sameFrame } from '../../shared/state/playhead';
+import { playFrameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
 import { ExternalValue } from '../../shared/state/externalValue';
 import type { LiveStage } from '../../shared/linkage/liveStage';
@@ -106,7 +106,7 @@ export function useAnimation(
   useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
     if (!rangeDeg || !state.motion.playing) return;
-    const own = frameOf(state);
+    const own = playFrameOf(state);
     const i = committed.current.findIndex((c) => sameFrame(c, own));
     const base = playBase(own, seen.current, playhead.get(), committed.current);
     if (i >= 0) committed.current = committed.current.slice(i + 1);
@@ -138,7 +138,7 @@ export function useAnimation(
     lastSet.current = null;
     if (dragging.current) return;
     stage?.stop();
-    const own = frameOf(state);
+    const own = playFrameOf(state);
     const edited =
       seen.current !== null && !sameFrame(own, seen.current) && !committed.current.some((c) => sameFrame(c, own));
     seen.current = null;
@@ -150,14 +150,14 @@ export function useAnimation(
       return;
     }
     // Compared as the reducer stores it, so a frame the state cannot hold more exactly still hands back.
-    if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, frameOf(state))) playhead.set(null);
+    if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, playFrameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
   }, [state, playhead, dispatch, stage]);
   const step = useCallback(
     (sign: 1 | -1) =>
       dispatch({
         type: 'animate',
-        ...stepTheta2({ ...frameOf(state), samples: state.solver.samples }, rangeDeg, sign),
+        ...stepTheta2({ ...playFrameOf(state), samples: state.solver.samples }, rangeDeg, sign),
       }),
     [state, rangeDeg, dispatch],
   );
@@ -206,11 +206,11 @@ function useTheta2Scrub(
         stage?.stop();
       });
       const shown = { ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) };
-      if (playhead.get() === frame && sameFrame(shown, frameOf(latest.current.state))) playhead.set(null);
+      if (playhead.get() === frame && sameFrame(shown, playFrameOf(latest.current.state))) playhead.set(null);
     };
     const move = (deg: number, stopPlay = false) => {
       const { state: s, commit: commitNow } = latest.current;
-      const next = { ...(playhead.get() ?? frameOf(s)), theta2Deg: normalizeTheta2Deg(deg) };
+      const next = { ...(playhead.get() ?? playFrameOf(s)), theta2Deg: normalizeTheta2Deg(deg) };
       if (stopPlay && s.motion.playing) dispatch({ type: 'setPlaying', playing: false });
       playhead.set(next);
       dragged.set(next.theta2Deg);

@@ -5,7 +5,7 @@ import type { LocalPose } from '../../shared/linkage/localPose';
 import { localPose, poseAsPoint } from '../../shared/linkage/localPose';
 
 /** This render's pose, and the same pose as a point answer for the plots' marker. */
-export interface FramePose {
+export interface LinkagePose {
   local: LocalPose;
   marker: PointResponse;
 }
@@ -15,7 +15,7 @@ export interface FramePose {
  * formulas): the canvas and the plot markers never wait for a worker round trip. The ghost (the other
  * branch) is solved only when it is drawn.
  */
-export function useLinkagePose(state: AppState, ghostShown: boolean): FramePose {
+export function useLinkagePose(state: AppState, ghostShown: boolean): LinkagePose {
   const {
     design: { linkage, branch, coupler },
     motion: { theta2Deg },

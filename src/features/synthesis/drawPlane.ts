@@ -12,13 +12,8 @@ import type { PlacedFourBar } from '../../synthesis';
 import type { DrawContext } from '../../shared/canvas/drawContext';
 import { THEME } from '../../shared/canvas/canvasTheme';
 import type { ViewTransform } from '../../shared/canvas/view';
+import type { Px } from '../../shared/canvas/rect';
 import { toScreenX, toScreenY } from '../../shared/canvas/view';
-
-/** A point in CSS pixels. */
-export interface Px {
-  x: number;
-  y: number;
-}
 
 /** The CSS pixel of a world point. */
 export function px(v: ViewTransform, p: Point): Px {

@@ -20,7 +20,7 @@ export interface LabelRequest<Id extends string> {
 }
 
 /** Where a label went: its box and centre (CSS pixels), which candidate and how much obstacle weight it covers. */
-export interface Placement<Id extends string> {
+export interface LabelPlacement<Id extends string> {
   id: Id;
   box: ScreenRect;
   centre: Px;
@@ -30,7 +30,7 @@ export interface Placement<Id extends string> {
 
 /** Placed labels in placement order, and the ids of labels that found no free spot. */
 export interface PlacementResult<Id extends string> {
-  placed: Placement<Id>[];
+  placed: LabelPlacement<Id>[];
   dropped: Id[];
 }
 
@@ -79,10 +79,10 @@ export function placeLabels<Id extends string>(
   exclusions: readonly ScreenRect[],
   obstacles: readonly Obstacle[],
 ): PlacementResult<Id> {
-  const placed: Placement<Id>[] = [];
+  const placed: LabelPlacement<Id>[] = [];
   const dropped: Id[] = [];
   for (const req of requests) {
-    let best: Placement<Id> | null = null;
+    let best: LabelPlacement<Id> | null = null;
     const hw = req.width / 2;
     const hh = req.height / 2;
     for (let i = 0; i < req.candidates.length; i++) {

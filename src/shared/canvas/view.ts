@@ -21,11 +21,11 @@ export interface ViewTransform {
   panXPx: number;
   panYPx: number;
   /** Where the linkage's own frame (O2 at its origin, ground along its +x) sits in the world; absent: the world's. */
-  frame?: Frame;
+  frame?: PlacementTransform;
 }
 
 /** A rigid placement of the linkage's frame in the world: its origin and the cosine and sine of its rotation. */
-export interface Frame {
+export interface PlacementTransform {
   x: number;
   y: number;
   cos: number;
@@ -33,7 +33,7 @@ export interface Frame {
 }
 
 /** The frame with origin (x, y) turned by angleRad; undefined for the identity (nothing to transform). */
-export function frameOf(x: number, y: number, angleRad: number): Frame | undefined {
+export function placementTransform(x: number, y: number, angleRad: number): PlacementTransform | undefined {
   if (x === 0 && y === 0 && angleRad === 0) return undefined;
   return { x, y, cos: Math.cos(angleRad), sin: Math.sin(angleRad) };
 }
@@ -44,13 +44,13 @@ export function frameAngle(v: ViewTransform): number {
 }
 
 /** A point of the linkage's frame in world coordinates (unchanged without a frame). */
-export function placePoint(f: Frame | undefined, p: { x: number; y: number }): { x: number; y: number } {
+export function placePoint(f: PlacementTransform | undefined, p: { x: number; y: number }): { x: number; y: number } {
   if (!f) return p;
   return { x: f.x + f.cos * p.x - f.sin * p.y, y: f.y + f.sin * p.x + f.cos * p.y };
 }
 
 /** A world point in the linkage's frame (the inverse of placePoint). */
-export function unplacePoint(f: Frame | undefined, p: { x: number; y: number }): { x: number; y: number } {
+export function unplacePoint(f: PlacementTransform | undefined, p: { x: number; y: number }): { x: number; y: number } {
   if (!f) return p;
   const dx = p.x - f.x;
   const dy = p.y - f.y;
@@ -64,7 +64,7 @@ export function frameToScreen(v: ViewTransform, p: { x: number; y: number }): { 
 }
 
 /** The world box holding bounds given in a frame (its four corners placed). */
-export function placeBounds(b: Bounds, f: Frame | undefined): Bounds {
+export function placeBounds(b: Bounds, f: PlacementTransform | undefined): Bounds {
   if (!f) return { ...b };
   const out = emptyBounds();
   for (const [x, y] of [

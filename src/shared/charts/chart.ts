@@ -13,7 +13,7 @@ import {
   legendBoxes,
   minus,
   prepareSvg,
-  sameText,
+  sameChartTexts,
   styleAxis,
 } from './chartFrame';
 import type { MarkerDotPx, MarkerPlacement } from './markerLayer';
@@ -101,7 +101,7 @@ export interface PlotArea {
 }
 
 /** The plot area, the scales (data to plot pixels) and the ticks of a chart. */
-export interface Frame {
+export interface ChartScales {
   iw: number;
   ih: number;
   x: ScaleLinear<number, number>;
@@ -126,19 +126,19 @@ export interface ChartLayer<D> {
   /** Class of the layer's group. */
   className: string;
   /** Draws the layer for these data in plot pixels; defs is the SVG's defs (for clip paths). */
-  draw(g: GSel, data: D, frame: Frame, defs: DefsSel): void;
+  draw(g: GSel, data: D, frame: ChartScales, defs: DefsSel): void;
 }
 
 /** What makes a chart an angle, rate, transmission or x–y chart; the skeleton does the rest. */
 export interface ChartSpec<D, M, T extends ChartTexts = ChartTexts> {
   /** The scales and ticks for these data on this plot area (x, y and their ticks). */
-  frame(data: D, plot: PlotArea): Omit<Frame, 'iw' | 'ih'>;
+  frame(data: D, plot: PlotArea): Omit<ChartScales, 'iw' | 'ih'>;
   /** The curves of these data. */
   curves(data: D): Curve[];
   /** x tick labels; default the number as d3 writes it, typographic minus. */
-  xTickFormat?: (frame: Frame) => (value: number) => string;
+  xTickFormat?: (frame: ChartScales) => (value: number) => string;
   /** y tick labels; default the number as d3 writes it, typographic minus. */
-  yTickFormat?: (frame: Frame) => (value: number) => string;
+  yTickFormat?: (frame: ChartScales) => (value: number) => string;
   /** The legend; default one entry per curve. */
   legend?: (curves: readonly Curve[], text: T) => LegendItem[];
   /** Where the marker goes, in data units (null hides it); default no marker. */
@@ -195,7 +195,7 @@ export function plotArea(size: ChartSize): PlotArea {
 }
 
 /** The frame of a spec's data at a size: the plot area with the spec's scales and ticks. */
-export function chartFrame<D>(spec: Pick<ChartSpec<D, unknown>, 'frame'>, data: D, size: ChartSize): Frame {
+export function chartFrame<D>(spec: Pick<ChartSpec<D, unknown>, 'frame'>, data: D, size: ChartSize): ChartScales {
   const area = plotArea(size);
   return { ...spec.frame(data, area), iw: area.iw, ih: area.ih };
 }
@@ -252,7 +252,10 @@ export function wrappedSegments(x: ArrayLike<number>, yDeg: ArrayLike<number>): 
 }
 
 /** SVG path data of a curve in plot pixels: gaps where x or y is NaN, breaks at wraps, at most two samples per pixel. */
-export function curvePath(curve: Pick<Curve, 'x' | 'y' | 'wrapped'>, frame: Pick<Frame, 'x' | 'y' | 'iw'>): string {
+export function curvePath(
+  curve: Pick<Curve, 'x' | 'y' | 'wrapped'>,
+  frame: Pick<ChartScales, 'x' | 'y' | 'iw'>,
+): string {
   // At most two samples per horizontal pixel: n = 3600 on a 300 px chart would only cost time.
   const idx = plotIndices(curve.y, Math.max(64, Math.round(2 * frame.iw)));
   const xs = idx.map((i) => curve.x[i]);
@@ -272,7 +275,7 @@ export function curvePath(curve: Pick<Curve, 'x' | 'y' | 'wrapped'>, frame: Pick
  * Where the marker goes in plot pixels: its line at x clamped to the x domain, a dot for each finite y in the y
  * domain; with at.from, the line is the segment from that point to the first dot (hidden when either is not finite).
  */
-export function markerPlacement(at: MarkerAt | null, frame: Pick<Frame, 'x' | 'y'>): MarkerPlacement {
+export function markerPlacement(at: MarkerAt | null, frame: Pick<ChartScales, 'x' | 'y'>): MarkerPlacement {
   if (!at || !Number.isFinite(at.x)) return { x: null, dots: [] };
   const [x0, x1] = frame.x.domain();
   const cx = frame.x(Math.min(Math.max(x0, x1), Math.max(Math.min(x0, x1), at.x)));
@@ -326,7 +329,7 @@ function chartParts(svg: SVGSVGElement, spec: PartsPlan, clipId: string) {
 type ChartParts = ReturnType<typeof chartParts>;
 
 /** Draws the lines (one path per curve with a line) and the point marks (one circle per finite point). */
-function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: Frame): void {
+function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: ChartScales): void {
   parts.lines
     .selectAll<SVGPathElement, Curve>('path')
     .data(curves.filter((c) => c.line !== false))
@@ -365,7 +368,7 @@ function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: Frame): 
 }
 
 /** Draws the x axis and its grid. */
-function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => string): void {
+function drawXAxis(parts: ChartParts, frame: ChartScales, format: (v: number) => string): void {
   const { ih, x, xTicks } = frame;
   drawGridX(parts.gridX, ih, xTicks, x);
   parts.ax.attr('transform', `translate(0,${ih})`).call(
@@ -378,7 +381,7 @@ function drawXAxis(parts: ChartParts, frame: Frame, format: (v: number) => strin
 }
 
 /** Draws the y axis and its grid. */
-function drawYAxis(parts: ChartParts, frame: Frame, format: (v: number) => string): void {
+function drawYAxis(parts: ChartParts, frame: ChartScales, format: (v: number) => string): void {
   const { iw, y, yTicks } = frame;
   drawGridY(parts.gridY, iw, yTicks, y);
   parts.ay.call(
@@ -391,7 +394,7 @@ function drawYAxis(parts: ChartParts, frame: Frame, format: (v: number) => strin
 }
 
 /** Draws the title, the x label and the y label centred on the plot. */
-function drawTexts(parts: ChartParts, text: ChartTexts, frame: Frame, size: ChartSize): void {
+function drawTexts(parts: ChartParts, text: ChartTexts, frame: ChartScales, size: ChartSize): void {
   const m = size.margins;
   const yLabels = [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }];
   drawChartText(
@@ -412,7 +415,7 @@ interface ChartState<D, M, T extends ChartTexts> {
   curves: readonly Curve[];
   marker: M | null;
   xMarks: readonly XMark[];
-  frame: Frame;
+  frame: ChartScales;
   /** What the axes, legend and x rules were last drawn for: each is redrawn only when its key changes. */
   keys: { x: string; y: string; legend: string; marks: string };
 }
@@ -537,7 +540,7 @@ export function createChart<D, M, T extends ChartTexts>(
       drawAll();
     },
     setText(next) {
-      if (sameText(next, st.text)) return;
+      if (sameChartTexts(next, st.text)) return;
       st.text = { ...next };
       if (!laidOut()) return;
       drawTexts(parts, st.text, st.frame, st.size);

@@ -258,7 +258,7 @@ export function drawChartText(
 }
 
 /** Whether two sets of chart texts are equal: the same keys with the same values. */
-export function sameText<T extends object>(a: T, b: T): boolean {
+export function sameChartTexts<T extends object>(a: T, b: T): boolean {
   const ka = Object.keys(a) as (keyof T)[];
   return ka.length === Object.keys(b).length && ka.every((k) => a[k] === b[k]);
 }

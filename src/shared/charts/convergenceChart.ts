@@ -2,7 +2,7 @@ import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
 import type { Selection } from 'd3-selection';
 import type { Margins } from './chartFrame';
-import type { Frame } from './chart';
+import type { ChartScales } from './chart';
 import {
   CHART_STYLE,
   child,
@@ -12,7 +12,7 @@ import {
   estimateTextWidth,
   minus,
   prepareSvg,
-  sameText,
+  sameChartTexts,
   styleAxis,
 } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain, tickCount } from './ticks';
@@ -117,7 +117,7 @@ interface ConvergenceSize {
 }
 
 /** The plot area (pixels inside the margins), the scales and the ticks of the convergence chart. */
-export interface ConvergenceFrame extends Omit<Frame, 'y'> {
+export interface ConvergenceFrame extends Omit<ChartScales, 'y'> {
   /** Residual (log) to plot pixels. */
   y: ScaleContinuousNumeric<number, number>;
 }
@@ -336,7 +336,7 @@ export function createConvergenceChart(svg: SVGSVGElement, options: ConvergenceC
       drawAll();
     },
     setText(next) {
-      if (sameText(next, text)) return;
+      if (sameChartTexts(next, text)) return;
       const labelChanged = next.toleranceLabel !== text.toleranceLabel;
       text = { ...next };
       if (!laidOut()) return;

@@ -1,13 +1,13 @@
 import { quantileSorted } from 'd3-array';
 import { scaleLinear } from 'd3-scale';
-import type { ChartSpec, Frame, GSel } from './chart';
+import type { ChartSpec, ChartScales, GSel } from './chart';
 import { createChart } from './chart';
 import { minus } from './chartFrame';
 import type { AngleChartOptions, Theta2Chart, Theta2ChartData } from './theta2Chart';
 import { NO_THETA2_DATA, solidMarker, theta2Frame } from './theta2Chart';
 
 /** One curve of a rate (rad/s or rad/s², NaN where not assembled or at a limit) against theta2. */
-export interface RateSeries {
+export interface RateCurve {
   label: string;
   values: ArrayLike<number>;
   color: string;
@@ -16,7 +16,7 @@ export interface RateSeries {
 }
 
 /** Data of a rate chart: theta2 samples in degrees (0 to 360), the curves and where the y axis may start. */
-export interface RateChartData extends Theta2ChartData<RateSeries> {
+export interface RateChartData extends Theta2ChartData<RateCurve> {
   /** The y domain's fixed lower end, for values that cannot fall below it (magnitudes: 0); default from the data. */
   yFloor?: number;
 }
@@ -31,7 +31,7 @@ export interface RateMarker {
 }
 
 /** A live rate chart: the θ2 chart's handle for rate curves. */
-export type RateChart = Theta2Chart<RateSeries, RateMarker>;
+export type RateChart = Theta2Chart<RateCurve, RateMarker>;
 
 /** Quantiles the clipped domain is built on, and how many of their spreads it may reach beyond them. */
 export const ROBUST_QUANTILES = [0.05, 0.95] as const;
@@ -43,7 +43,7 @@ export const ROBUST_REACH = 1;
  * 6 % and made nice for about count ticks. [-1, 1] with no finite data; a constant curve gets +-10 % (or +-1).
  * With a floor the domain starts at exactly floor (no padding below it) and only its top is padded and made nice.
  */
-export function rateDomain(series: readonly RateSeries[], count = 6, floor?: number): [number, number] {
+export function rateDomain(series: readonly RateCurve[], count = 6, floor?: number): [number, number] {
   const vals: number[] = [];
   for (const s of series) {
     for (let i = 0; i < s.values.length; i++) {
@@ -116,7 +116,7 @@ export function clipMarks(
 }
 
 /** A small triangle on the edge each solid curve leaves the plot through, pointing outwards (clipMarks). */
-function drawClipMarks(g: GSel, data: RateChartData, frame: Frame): void {
+function drawClipMarks(g: GSel, data: RateChartData, frame: ChartScales): void {
   const { x, ih } = frame;
   const domain = frame.y.domain() as [number, number];
   const marks = data.series

@@ -1,5 +1,5 @@
 import { scaleLinear } from 'd3-scale';
-import type { Chart, ChartOptions, ChartSpec, ChartTexts, Curve, Frame, MarkerAt, PlotArea } from './chart';
+import type { Chart, ChartOptions, ChartSpec, ChartTexts, Curve, ChartScales, MarkerAt, PlotArea } from './chart';
 import { createChart } from './chart';
 import { estimateTextWidth } from './chartFrame';
 import type { AngleAxis } from './ticks';
@@ -54,7 +54,7 @@ export type AngleChart = Theta2Chart<AngleSeries, AngleMarker>;
 export const NO_THETA2_DATA: Theta2ChartData<never> = { theta2Deg: [], series: [] };
 
 /** The θ2 axis of a plot area: 0..360 degrees across iw, ticks on the angle lattice whose labels fit (about xCount). */
-function theta2XAxis(plot: PlotArea): Pick<Frame, 'x' | 'xTicks'> {
+function theta2XAxis(plot: PlotArea): Pick<ChartScales, 'x' | 'xTicks'> {
   const x = scaleLinear().domain([0, 360]).range([0, plot.iw]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
@@ -66,7 +66,7 @@ function theta2XAxis(plot: PlotArea): Pick<Frame, 'x' | 'xTicks'> {
 }
 
 /** The frame of a θ2 chart: the θ2 axis and a y axis of this domain and ticks over ih. */
-export function theta2Frame(plot: PlotArea, yAxis: AngleAxis): Omit<Frame, 'iw' | 'ih'> {
+export function theta2Frame(plot: PlotArea, yAxis: AngleAxis): Omit<ChartScales, 'iw' | 'ih'> {
   const y = scaleLinear().domain(yAxis.domain).range([plot.ih, 0]);
   return { ...theta2XAxis(plot), y, yTicks: yAxis.ticks };
 }

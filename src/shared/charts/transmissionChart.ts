@@ -1,5 +1,5 @@
 import { COLORS } from '../theme/tokens';
-import type { Chart, ChartOptions, ChartSpec, ChartTexts, DefsSel, Frame, GSel } from './chart';
+import type { Chart, ChartOptions, ChartSpec, ChartTexts, DefsSel, ChartScales, GSel } from './chart';
 import { createChart } from './chart';
 import { child } from './chartFrame';
 import type { AngleMarker } from './theta2Chart';
@@ -94,7 +94,7 @@ export function outsideBandRuns(
 let clipCounter = 0;
 
 /** The band shaded across the plot (data-lo, data-hi), and the clip of the warning-coloured curve to above and below it. */
-function drawBandAndClip(g: GSel, defs: DefsSel, band: MuBand, frame: Frame, clipId: string): void {
+function drawBandAndClip(g: GSel, defs: DefsSel, band: MuBand, frame: ChartScales, clipId: string): void {
   const { iw, ih, y } = frame;
   const yHi = y(band.hiDeg);
   const yLo = y(band.loDeg);
@@ -120,7 +120,7 @@ function drawBandAndClip(g: GSel, defs: DefsSel, band: MuBand, frame: Frame, cli
 }
 
 /** The stretches of θ2 where mu is outside the band, shaded down the plot (data-x0, data-x1 in degrees). */
-function drawOutsideRuns(g: GSel, data: TransmissionChartData, band: MuBand, frame: Frame): void {
+function drawOutsideRuns(g: GSel, data: TransmissionChartData, band: MuBand, frame: ChartScales): void {
   const { x, ih } = frame;
   const runs = outsideBandRuns(data.theta2Deg, data.muDeg, band.loDeg, band.hiDeg);
   child(g, 'g', 'mu-outside-runs')

@@ -1,7 +1,7 @@
 import { extent } from 'd3-array';
 import { scaleLinear } from 'd3-scale';
 import type { ScaleLinear } from 'd3-scale';
-import type { Chart, ChartOptions, ChartSpec, ChartTexts, Frame, MarkerAt, PlotArea } from './chart';
+import type { Chart, ChartOptions, ChartSpec, ChartTexts, ChartScales, MarkerAt, PlotArea } from './chart';
 import { createChart } from './chart';
 import { estimateTextWidth, minus } from './chartFrame';
 import { fittedTicks } from './ticks';
@@ -104,7 +104,7 @@ function fittedLinearTicks(
  * The x–y frame: both domains from the data (paddedExtent), made nice by d3 for about the ticks that fit,
  * or, with equalAspect, widened to equal units per pixel instead (a nice domain would undo it).
  */
-export function xyFrame(data: XYChartData, plot: PlotArea, fit: XYFit = {}): Omit<Frame, 'iw' | 'ih'> {
+export function xyFrame(data: XYChartData, plot: PlotArea, fit: XYFit = {}): Omit<ChartScales, 'iw' | 'ih'> {
   let xd = paddedExtent(finiteValues(data.series, 'x'), fit.includeOrigin);
   let yd = paddedExtent(finiteValues(data.series, 'y'), fit.includeOrigin);
   if (fit.equalAspect) ({ x: xd, y: yd } = equalAspectDomains(xd, yd, plot.iw, plot.ih));

@@ -6,7 +6,7 @@ import type { SceneVectors } from './motionVectors';
 import type { SceneForces } from './forceVectors';
 import type { CouplerCurve, PoseAngles } from '../solution';
 import type { SceneDesign } from './designOverlay';
-import type { Bounds, Frame, ViewTransform } from '../canvas/view';
+import type { Bounds, PlacementTransform, ViewTransform } from '../canvas/view';
 import { emptyBounds, extendBounds, extendBoundsCircle, fitView, placeBounds } from '../canvas/view';
 import type { ViewOffset } from '../state/appState';
 
@@ -66,7 +66,7 @@ export interface LinkageScene {
   /** Pin-force arrows with their scale legend (fed by the app when Forces and its arrows are on); absent or null: none. */
   forces?: SceneForces | null;
   /** Where the linkage's frame sits in the task's plane (a synthesised design's O2 and ground); absent: the world's. */
-  placement?: Frame;
+  placement?: PlacementTransform;
   /** Points of the task to mark (synthesis targets, world coordinates). */
   markers?: readonly Point[];
 }

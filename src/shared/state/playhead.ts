@@ -9,7 +9,7 @@ export interface PlayFrame {
 }
 
 /** The frame fields of a state. */
-export function frameOf(state: Pick<AppState, 'motion' | 'design'>): PlayFrame {
+export function playFrameOf(state: Pick<AppState, 'motion' | 'design'>): PlayFrame {
   return { theta2Deg: state.motion.theta2Deg, direction: state.motion.direction, branch: state.design.branch };
 }
 
@@ -20,7 +20,7 @@ export function sameFrame(a: PlayFrame, b: PlayFrame): boolean {
 
 /** The state with a frame's fields, or the state itself when the frame is null or already its own. */
 export function withFrame(state: AppState, frame: PlayFrame | null): AppState {
-  if (!frame || sameFrame(frame, frameOf(state))) return state;
+  if (!frame || sameFrame(frame, playFrameOf(state))) return state;
   const { theta2Deg, direction, branch } = frame;
   return { ...state, motion: { ...state.motion, theta2Deg, direction }, design: { ...state.design, branch } };
 }

@@ -10,7 +10,7 @@ import {
   hasTrouble,
   legendLayout,
   orderedCurvePoints,
-  placeLabels,
+  placePointLabels,
   plottedError,
   workPrecisionDomains,
   drawWorkPrecisionChart,
@@ -151,19 +151,19 @@ describe('tick formats', () => {
   });
 });
 
-describe('placeLabels', () => {
+describe('placePointLabels', () => {
   const inside = (b: { x: number; w: number }, W: number) => b.x >= 0 && b.x + b.w <= W;
 
   it('puts a label to the right of its point when there is room', () => {
-    const [p] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [], 200, 100);
+    const [p] = placePointLabels([{ x: 50, y: 50, w: 20, h: 10 }], [], 200, 100);
     expect(p).toEqual({ x: 57, y: 53.75, anchor: 'start' });
   });
 
   it('moves to the left at the right edge and skips spots taken by earlier labels', () => {
-    const [a] = placeLabels([{ x: 195, y: 50, w: 20, h: 10 }], [], 200, 100);
+    const [a] = placePointLabels([{ x: 195, y: 50, w: 20, h: 10 }], [], 200, 100);
     expect(a?.anchor).toBe('end');
     expect(inside({ x: (a?.x ?? 0) - 20, w: 20 }, 200)).toBe(true);
-    const [b, c] = placeLabels(
+    const [b, c] = placePointLabels(
       [
         { x: 50, y: 50, w: 20, h: 10 },
         { x: 50, y: 50, w: 20, h: 10 },
@@ -177,9 +177,9 @@ describe('placeLabels', () => {
   });
 
   it('avoids obstacles and gives up when every spot is blocked', () => {
-    const [p] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 52, y0: 40, x1: 80, y1: 60 }], 200, 100);
+    const [p] = placePointLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 52, y0: 40, x1: 80, y1: 60 }], 200, 100);
     expect(p?.anchor).not.toBe('start');
-    const [q] = placeLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 0, y0: 0, x1: 200, y1: 100 }], 200, 100);
+    const [q] = placePointLabels([{ x: 50, y: 50, w: 20, h: 10 }], [{ x0: 0, y0: 0, x1: 200, y1: 100 }], 200, 100);
     expect(q).toBeNull();
   });
 });
@@ -222,7 +222,7 @@ function referencePlace(
   });
 }
 
-describe('placeLabels against the rule written out (random crowds of labels and obstacles)', () => {
+describe('placePointLabels against the rule written out (random crowds of labels and obstacles)', () => {
   it('places every label where the rule does, or drops it where the rule does', () => {
     let seed = 12345;
     const rand = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
@@ -240,7 +240,7 @@ describe('placeLabels against the rule written out (random crowds of labels and 
         const y0 = H * rand();
         return { x0, y0, x1: x0 + 30 * rand(), y1: y0 + 20 * rand() };
       });
-      const got = placeLabels(items, obstacles, W, H);
+      const got = placePointLabels(items, obstacles, W, H);
       const want = referencePlace(items, obstacles, W, H);
       for (let i = 0; i < items.length; i++) {
         if (want[i] === null) expect(got[i]).toBeNull();

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { crankAngleAt, couplerAt } from '../../../src/shared/canvas/canvasGestures';
-import { frameOf, toScreenX, toScreenY } from '../../../src/shared/canvas/view';
+import { placementTransform, toScreenX, toScreenY } from '../../../src/shared/canvas/view';
 import { fitScene } from '../../../src/shared/linkage/scene';
 import { layoutScene } from '../../../src/shared/linkage/sceneLayout';
 import { LINKAGES, measureModel, sweepScenes } from './fixtures';
@@ -14,7 +14,7 @@ describe('a placed scene (URL ox, oy, og)', () => {
   const scenes = sweepScenes(report, 'open', 'en', 15);
   const g = (35 * Math.PI) / 180;
   const O = { x: 12, y: -4 };
-  const placement = frameOf(O.x, O.y, g)!;
+  const placement = placementTransform(O.x, O.y, g)!;
 
   it('is the unplaced scene without a placement or markers', () => {
     const s = scenes[3];

@@ -2,7 +2,7 @@ import { withFields } from './stateFixtures';
 import { describe, expect, it, vi } from 'vitest';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import type { PlayFrame } from '../../../src/shared/state/playhead';
-import { Playhead, frameOf, playBase, sameFrame, withFrame } from '../../../src/shared/state/playhead';
+import { Playhead, playFrameOf, playBase, sameFrame, withFrame } from '../../../src/shared/state/playhead';
 
 const f = (theta2Deg: number, direction: 1 | -1 = 1, branch: 'open' | 'crossed' = 'open'): PlayFrame => ({
   theta2Deg,
@@ -38,11 +38,11 @@ describe('playBase', () => {
 describe('withFrame', () => {
   it('returns the state itself when the frame is null or already its own', () => {
     expect(withFrame(DEFAULT_STATE, null)).toBe(DEFAULT_STATE);
-    expect(withFrame(DEFAULT_STATE, frameOf(DEFAULT_STATE))).toBe(DEFAULT_STATE);
+    expect(withFrame(DEFAULT_STATE, playFrameOf(DEFAULT_STATE))).toBe(DEFAULT_STATE);
   });
   it('puts the frame over the state and keeps everything else', () => {
     const s = withFrame(DEFAULT_STATE, f(123.5, -1, 'crossed'));
-    expect(frameOf(s)).toEqual(f(123.5, -1, 'crossed'));
+    expect(playFrameOf(s)).toEqual(f(123.5, -1, 'crossed'));
     expect(s.design.linkage).toBe(DEFAULT_STATE.design.linkage);
     expect(withFields(s, { theta2Deg: 45, direction: 1, branch: 'open' })).toEqual(DEFAULT_STATE);
   });

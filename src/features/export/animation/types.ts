@@ -1,7 +1,8 @@
 import type { AnimationFrame } from './animationFrames';
+import type { FrameContext } from '../../../shared/linkage/linkageFrame';
 
-/** A 2D context a frame is drawn on: a detached canvas's or an OffscreenCanvas's. */
-export type FrameContext = CanvasRenderingContext2D | OffscreenCanvasRenderingContext2D;
+/** A 2D context a frame is drawn on (the linkage drawer's): a detached canvas's or an OffscreenCanvas's. */
+export type { FrameContext };
 
 /**
  * Draws one frame. ctx is already scaled and letterboxed so that the drawing uses viewWidth x viewHeight

@@ -2,7 +2,7 @@
 import { degToRad } from '../../../solver/angles';
 import type { Branch } from '../../../solver/types';
 import type { Bounds } from '../../../shared/canvas/view';
-import { frameOf } from '../../../shared/canvas/view';
+import { placementTransform } from '../../../shared/canvas/view';
 import type { Messages } from '../../../shared/i18n/messages';
 import type { ForceLayer } from '../../../shared/linkage/forceVectors';
 import type { FrameMotion } from '../../../shared/linkage/frameMotion';
@@ -62,7 +62,7 @@ export function createSceneBuilder(): SceneBuilder {
     sceneBounds(l, [], [], [p, g]),
   );
   const text = memoLast(sceneText);
-  const placement = memoLast((x: number, y: number, angleDeg: number) => frameOf(x, y, degToRad(angleDeg)));
+  const placement = memoLast((x: number, y: number, angleDeg: number) => placementTransform(x, y, degToRad(angleDeg)));
   const design = memoLast(
     (
       showDeadCentres: boolean,

@@ -14,7 +14,7 @@ import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { emptyBounds, extendBounds } from '../../../shared/canvas/view';
 import type { PivotChoice } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionOutcome, PivotConstruction } from './motionSolve';
-import type { Px } from '../drawPlane';
+import type { Px } from '../../../shared/canvas/rect';
 import { drawBackground, drawFourBar, drawLabel, drawMarker, drawPolyline, drawWorldCircle, px } from '../drawPlane';
 
 /** Everything the Motion canvas draws. */

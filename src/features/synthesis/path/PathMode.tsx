@@ -9,7 +9,7 @@ import type { ViewOffset } from '../../../shared/state/appState';
 import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import { CandidateList } from './CandidateList';
-import { candidateFacts, designFacts } from './candidateFacts';
+import { candidateFacts, placedFourBarFacts } from './candidateFacts';
 import type { DesignChoice } from './ChosenDesign';
 import { ChosenDesign } from './ChosenDesign';
 import type { PathCurve, PathScene } from './drawPathScene';
@@ -47,7 +47,10 @@ function useChoices(
     } catch {
       // A coupler point at a pin has no cognates with positive links: offer the candidate alone.
     }
-    return [first, ...cognates.map((c) => ({ ...c, facts: designFacts(c.design, c.theta2, sol.maxDistance, size) }))];
+    return [
+      first,
+      ...cognates.map((c) => ({ ...c, facts: placedFourBarFacts(c.design, c.theta2, sol.maxDistance, size) })),
+    ];
   }, [solutions, chosen, facts, size]);
   return { choices, facts };
 }

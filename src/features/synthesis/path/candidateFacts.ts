@@ -85,7 +85,12 @@ function minTransmissionDeg(design: PlacedFourBar, m: MotionRange): number {
  * defects (an input that cannot turn fully, μ below 30°, a target missed by more than 1 % of the targets' size) and
  * its coupler curve over the motion.
  */
-export function designFacts(design: PlacedFourBar, theta2: number, maxDistance: number, size: number): CandidateFacts {
+export function placedFourBarFacts(
+  design: PlacedFourBar,
+  theta2: number,
+  maxDistance: number,
+  size: number,
+): CandidateFacts {
   const c = classify(design.links);
   const motion = motionRange(design, theta2);
   const muMinDeg = minTransmissionDeg(design, motion);
@@ -96,7 +101,7 @@ export function designFacts(design: PlacedFourBar, theta2: number, maxDistance: 
   return { type: c.type, grashof: c.grashof, muMinDeg, defects, motion, curve: couplerCurve(design, motion) };
 }
 
-/** The facts of a path solution (see designFacts); size is the targets' size (length unit). */
+/** The facts of a path solution (see placedFourBarFacts); size is the targets' size (length unit). */
 export function candidateFacts(s: PathSolution, size: number): CandidateFacts {
-  return designFacts(s.design, s.theta2[0] ?? 0, s.maxDistance, size);
+  return placedFourBarFacts(s.design, s.theta2[0] ?? 0, s.maxDistance, size);
 }
