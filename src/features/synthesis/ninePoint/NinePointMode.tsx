@@ -1,4 +1,5 @@
 import { useMemo, useRef, useState } from 'react';
+import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import { fitView } from '../../../shared/canvas/view';
 import { downloadText } from '../../../shared/canvas/download';
@@ -11,6 +12,8 @@ import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import type { DesignChoice } from '../path/ChosenDesign';
 import { ChosenDesign } from '../path/ChosenDesign';
+import type { MotionRange } from '../path/candidateFacts';
+import { couplerCurve } from '../path/candidateFacts';
 import type { PathCurve, PathScene } from '../path/drawPathScene';
 import { pathSceneBounds } from '../path/drawPathScene';
 import { exportPathPng, exportPathSvg } from '../path/pathExports';
@@ -46,6 +49,11 @@ export const WMS_PROBLEM_3: Point[] = [
   [0.2, 1.0],
   [0.02, 0.4],
 ].map(([x, y]) => ({ x, y }));
+
+const BRANCHES = ['open', 'crossed'] as const;
+const FULL_TURN: MotionRange = { full: true, lo: 0, hi: TWO_PI };
+/** Samples of the whole coupler curve drawn (each assembly). */
+const CURVE_SAMPLES = 720;
 
 /** Why the targets cannot be solved, as a sentence naming the points, or null when they can. */
 export function nineRefusalText(targets: readonly Point[], nt: NinePointMessages): string | null {
@@ -87,15 +95,32 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
   const shown = useMemo(() => filterClasses(classes, facts, filters), [classes, facts, filters]);
   const chosen = shown.includes(chosenClass) ? chosenClass : (shown[0] ?? -1);
   const cls = chosen >= 0 ? classes[chosen] : null;
-  const choices: (DesignChoice & { theta2: number })[] = cls
-    ? cls.cognates.map((d, k) => ({ design: cognateDesign(d), facts: facts[chosen].cognates[k], theta2: d.theta2[0] }))
-    : [];
+  const choices: (DesignChoice & { theta2: number })[] = useMemo(
+    () =>
+      cls
+        ? cls.cognates.map((d, k) => ({
+            design: cognateDesign(d),
+            facts: facts[chosen].cognates[k],
+            theta2: d.theta2[0],
+          }))
+        : [],
+    [cls, facts, chosen],
+  );
   const choice = choices[Math.min(shownCognate, choices.length - 1)] ?? null;
   const refusal = nineRefusalText(s.targets, nt);
 
-  const curves: PathCurve[] = choice
-    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: c !== choice }))
-    : [];
+  // The whole coupler curve, both assemblies over a full turn: the points may lie on either (a circuit or branch
+  // defect), and every one of the nine is on it. The assembly the linkage moves on is drawn strong.
+  const curves: PathCurve[] = useMemo(
+    () =>
+      choice
+        ? BRANCHES.map((b) => ({
+            ...couplerCurve({ ...choice.design, branch: b }, FULL_TURN, CURVE_SAMPLES),
+            faint: b !== choice.design.branch,
+          }))
+        : [],
+    [choice],
+  );
   const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
   const content = pathSceneBounds({
     targets: s.targets,
