@@ -44,8 +44,14 @@ export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
 export type { RobertsCognate } from './cognates';
-export { mergeNinePoint, ninePointSynthesis } from './ninePoint';
-export type { NinePointClass, NinePointLinkage, NinePointOptions, NinePointResult } from './ninePoint';
+export { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from './ninePoint';
+export type {
+  NinePointClass,
+  NinePointLinkage,
+  NinePointOptions,
+  NinePointRefusal,
+  NinePointResult,
+} from './ninePoint';
 // Limits of the synthesis contracts (issue 31; docs/synthesis.md "Limits and refusals").
 export { MAX_SEED } from './pathSynthesis';
 export { MAX_PATH_TARGETS, MAX_TARGET_SIZE, MIN_TARGET_SIZE } from './pathTask';

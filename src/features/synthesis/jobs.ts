@@ -1,6 +1,8 @@
 import type { PathCandidate } from '../../synthesis/globalSearch';
 import type { PathSynthesisPartResult } from '../../synthesis/pathSynthesis';
 import type { PathSolution, PathTask } from '../../synthesis/types';
+import type { NinePointResult } from '../../synthesis/ninePoint/ninePointSynthesis';
+import type { Point } from '../../solver/kinematics';
 import { job } from '../../shared/jobs/jobTable';
 
 /** One part of a path synthesis's global stage (pathSynthesisPart): rounds part, part + parts, … of a seed's run. */
@@ -21,6 +23,16 @@ export interface PathMergeParams {
   parts: PathCandidate[][];
 }
 
+/** A slice [start, end) of the nine-point start paths, tracked to the nine points (ninePointSynthesis). */
+export interface NinePointPartParams {
+  points: Point[];
+  start: number;
+  end: number;
+}
+
+/** Time allowed between two progress reports of a nine-point slice (ms): 16 paths on a slow phone, with room. */
+export const NINE_POINT_PART_MS = 60_000;
+
 /** Time allowed between two progress reports of a part (ms): one round on a slow phone, with room to spare. */
 export const PATH_ROUND_MS = 30_000;
 /** Time allowed for the merge (ms): the polish of 24 candidates on a slow phone. */
@@ -34,6 +46,7 @@ export const PATH_MERGE_MS = 60_000;
 export const synthesisJobs = {
   pathPart: job<PathPartParams, PathSynthesisPartResult>({ mode: 'queue', budgetMs: () => PATH_ROUND_MS }),
   pathMerge: job<PathMergeParams, PathSolution[]>({ mode: 'queue', budgetMs: () => PATH_MERGE_MS }),
+  ninePointPart: job<NinePointPartParams, NinePointResult>({ mode: 'queue', budgetMs: () => NINE_POINT_PART_MS }),
 };
 
 /** The synthesis page's job table. */

@@ -21,4 +21,14 @@ export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
     const { mergePathCandidates } = await import('../../synthesis');
     return mergePathCandidates(params.task, params.parts);
   },
+  async ninePointPart(params, { signal, progress }) {
+    const { ninePointSynthesis } = await import('../../synthesis');
+    const { points, start, end } = params;
+    // The stage is the real roots found so far (a number as text).
+    return ninePointSynthesis(points, {
+      signal,
+      paths: { start, end },
+      onProgress: ({ done, total, found }) => progress(done / total, String(found)),
+    });
+  },
 };

@@ -18,6 +18,8 @@ export interface SynthesisMessages {
   modePath: string;
   modeMotion: string;
   modeFunction: string;
+  /** The exact nine-point mode (九點精確合成). */
+  modeNine: string;
   /** Shown while a mode's code loads. */
   modeLoading: string;
   pathIntro: string;

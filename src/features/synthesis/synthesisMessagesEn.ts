@@ -8,6 +8,7 @@ export const synthesisMessagesEn: SynthesisMessages = {
   modePath: 'Path',
   modeMotion: 'Motion',
   modeFunction: 'Function',
+  modeNine: 'Nine points',
   modeLoading: 'Loading…',
   pathIntro:
     'Path generation: place target points; the search finds four-bars whose coupler point passes through them (or nearest, in Σd²).',

@@ -8,6 +8,7 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   modePath: '路徑生成',
   modeMotion: '運動生成',
   modeFunction: '函數生成',
+  modeNine: '九點精確合成',
   modeLoading: '載入中…',
   pathIntro: '路徑生成：放置目標點；搜尋會找出耦點通過這些點（或以 Σd² 最接近）的四連桿。',
   canvasLabel: '目標點',

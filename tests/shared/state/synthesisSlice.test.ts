@@ -115,7 +115,7 @@ describe('synthesis URL keys', () => {
     const line = /`syn` \(([^)]*)\)/.exec(docs)?.[1] ?? '';
     const listed = line.split(/[^a-z]+/);
     const syn = SYN_PATH_URL_KEYS.find((k) => k.name === 'syn');
-    for (const text of ['path', 'motion', 'fn', 'function']) {
+    for (const text of ['path', 'motion', 'fn', 'function', 'nine']) {
       expect(syn?.parse(text).ok).toBe(true);
       expect(listed).toContain(text);
     }

@@ -42,6 +42,11 @@ const IDLE: PathRunState = {
 /** The last finished run, kept across the page's unmounts (switching to the simulator and back). */
 let lastRun: PathRunState = IDLE;
 
+/** The last finished path synthesis (the Nine points mode compares its answer with the exact ones). */
+export function lastPathRun(): PathRunState {
+  return lastRun;
+}
+
 /**
  * Runs a path synthesis on a pool of workers: the global stage's rounds dealt to pool.size parts (pathPart, seed and
  * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() aborts every

@@ -7,8 +7,8 @@ import type { Action } from '../appState';
 import { plainDecimal } from '../../decimal';
 import type { Slice } from '../slice';
 
-/** The synthesis page's modes: path, motion or function generation. */
-export type SynthesisMode = 'path' | 'motion' | 'function';
+/** The synthesis page's modes: path, motion or function generation, or every linkage through nine points. */
+export type SynthesisMode = 'path' | 'motion' | 'function' | 'nine';
 
 /** How the targets are timed: free input angles (in order), equal steps of θ2, or a given θ2 per target. */
 export type PathTiming = 'free' | 'step' | 'given';
@@ -186,8 +186,8 @@ const pivotBoxCodec: Codec<PivotBox> = {
 const field = sliceLens('synPath');
 
 /**
- * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn;
- * function is read as fn),
+ * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn |
+ * nine; function is read as fn),
  * tg (targets x,y;x,y;…), tm (free | step | given), ts (step, degrees), tt (given θ2 per target, degrees),
  * bl (longest link), bc (coupler offset), bp (pivot box x0,y0,x1,y1), in (crank | any), sd (seed).
  */
@@ -200,6 +200,7 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
       ['fn', 'function'],
       // Read as fn, the mode's own name; enumCodec writes the first text for a value, so links keep syn=fn.
       ['function', 'function'],
+      ['nine', 'nine'],
     ] as const),
     field('mode'),
     DEFAULT_SYN_PATH.mode,
