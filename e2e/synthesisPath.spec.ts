@@ -155,7 +155,7 @@ test.describe('the synthesis page, Path mode', () => {
     expect(Number(await first.getAttribute('data-error'))).toBeLessThan(1e-12 * SIZE * SIZE);
   });
 
-  test('Cancel stops a run: the progress bar goes, the status says so, and a new run starts', async ({ page }) => {
+  test('Stop ends a run at once and keeps the best candidates found so far (issue 34, 4)', async ({ page }) => {
     // Twelve points on a figure eight: no four-bar passes them exactly, so the search runs its whole budget.
     const eight = Array.from({ length: 12 }, (_, k) => {
       const t = (2 * Math.PI * k) / 12;
@@ -169,8 +169,10 @@ test.describe('the synthesis page, Path mode', () => {
     await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
     const bar = page.getByRole('progressbar', { name: 'Synthesis progress' });
     await expect(bar).toBeVisible();
-    await expect(bar).toHaveAttribute('aria-valuetext', /best Σd²/);
-    // The run's pool: the workers made by Synthesize. Cancel terminates them (a worker sees an abort only between
+    // A round has reported a candidate: its Σd² is the bar's best.
+    await expect(bar).toHaveAttribute('aria-valuetext', /best Σd² \d/, { timeout: 30_000 });
+    const bestText = (await bar.getAttribute('aria-valuetext'))!.replace(/.*best Σd² /, '').replace('−', '-');
+    // The run's pool: the workers made by Synthesize. Stop terminates them (a worker sees an abort only between
     // rounds of the search, which can take hundreds of ms on a phone); the time it takes is in bench:ui (synCancel).
     // Playwright hears of a new worker through the DevTools protocol, which can come after the page's first progress
     // on a busy machine: wait for it.
@@ -179,14 +181,48 @@ test.describe('the synthesis page, Path mode', () => {
     const pool = newWorkers();
     const closed = new Set<unknown>();
     for (const w of pool) w.once('close', () => closed.add(w));
-    await page.getByRole('button', { name: 'Cancel' }).click();
-    await expect(page.getByTestId('synthesis-status')).toHaveText('Cancelled.');
-    await expect.poll(() => closed.size, { message: "Cancel terminates the pool's workers" }).toBe(pool.length);
+    await page.getByRole('button', { name: 'Stop' }).click();
+    await expect(page.getByTestId('synthesis-status')).toContainText('Stopped');
+    await expect.poll(() => closed.size, { message: "Stop terminates the pool's workers" }).toBe(pool.length);
     await expect(bar).toBeHidden();
+    // What was found is kept: the candidates, the best no worse than the best the bar showed (3 digits shown).
+    await expect(page.getByTestId('synthesis-status')).toContainText('best candidate', { timeout: 30_000 });
+    const first = page.getByTestId('candidates').getByRole('button').first();
+    await expect(first).toBeVisible();
+    expect(Number(await first.getAttribute('data-error'))).toBeLessThanOrEqual(Number(bestText) * 1.001);
     await expect(page.getByRole('button', { name: 'Synthesize', exact: true })).toBeEnabled();
     // A new run makes a new pool, and an easy task is answered.
     await paste(page, TARGETS.map((p) => `${p.x}, ${p.y}`).join('\n'));
     await synthesize(page);
+  });
+
+  test('results of an earlier task are marked out of date and not opened with new targets (issue 34, 1)', async ({
+    page,
+  }) => {
+    await page.goto('./?page=syn');
+    await paste(page, TARGETS.map((p) => `${p.x}, ${p.y}`).join('\n'));
+    await synthesize(page);
+    const list = page.getByTestId('candidates');
+    const open = page.getByRole('button', { name: 'Open in simulator' });
+    await expect(list).toHaveAttribute('data-stale', 'false');
+    await expect(page.getByTestId('stale-note')).toBeHidden();
+    await expect(open).toBeEnabled();
+    // Moving one target makes every candidate's Σd² a claim about another task.
+    const x1 = page.getByRole('textbox', { name: 'T1 x' });
+    await x1.fill(String(TARGETS[0].x + 0.5));
+    await x1.press('Enter');
+    await expect(list).toHaveAttribute('data-stale', 'true');
+    await expect(page.getByTestId('stale-note')).toContainText('Out of date');
+    await expect(open).toBeDisabled();
+    // Putting the target back makes them current again; the input is part of the task too.
+    await x1.fill(String(TARGETS[0].x));
+    await x1.press('Enter');
+    await expect(list).toHaveAttribute('data-stale', 'false');
+    await page.getByRole('radio', { name: 'Any' }).check();
+    await expect(list).toHaveAttribute('data-stale', 'true');
+    await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
+    await expect(list).toHaveAttribute('data-stale', 'false', { timeout: 90_000 });
+    await expect(open).toBeEnabled();
   });
 
   test('a bad paste names its line and keeps the last good targets', async ({ page }) => {

@@ -74,6 +74,13 @@ export interface SynthesisMessages {
   statusDone: (count: number, ms: string, workers: number) => string;
   statusNone: string;
   statusFailed: (why: string) => string;
+  /** After Stop, while the candidates found so far are merged. */
+  statusStopping: string;
+  /** After Stop: candidates found before it, in seconds, on workers. */
+  statusStopped: (count: number, ms: string, workers: number) => string;
+  /** The candidates and the chosen design after the task was edited since the run. */
+  staleResults: string;
+  staleOpen: string;
   resultsTitle: string;
   /** One candidate's summary line (all numbers formatted). */
   candidateName: (rank: number) => string;

@@ -15,7 +15,7 @@ import { ChosenDesign } from './ChosenDesign';
 import type { PathCurve, PathScene } from './drawPathScene';
 import { pathSceneBounds } from './drawPathScene';
 import { exportPathPng, exportPathSvg, exportResultsCsv } from './pathExports';
-import { pathTaskOf, targetsExtent } from './pathTaskOf';
+import { pathTaskOf, samePathTask, targetsExtent } from './pathTaskOf';
 import { RunControls } from './RunControls';
 import { TargetCanvas } from './TargetCanvas';
 import { TargetsCard } from './TargetsCard';
@@ -74,14 +74,17 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
   const chosen = Math.min(s.chosen, Math.max(0, solutions.length - 1));
   const { choices, facts } = useChoices(run, chosen);
   const choice = choices[Math.min(shown, choices.length - 1)] ?? null;
+  const task = useMemo(() => pathTaskOf(s), [s]);
+  // The answers belong to the task they were computed for: after an edit they are drawn faint and not opened.
+  const stale = run.task !== null && !samePathTask(run.task, task);
 
   const curves: PathCurve[] = choice
-    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: c !== choice }))
+    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: stale || c !== choice }))
     : [];
-  const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  const moving = choice && !stale ? { design: choice.design, motion: choice.facts.motion } : null;
   const content = pathSceneBounds({
     targets: s.targets,
-    curves: curves.filter((c) => !c.faint),
+    curves: choice ? [curves[Math.min(shown, curves.length - 1)]] : [],
     pose: null,
     design: choice?.design ?? null,
   });
@@ -142,7 +145,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           onRun={() => {
             dispatch({ type: 'chooseCandidate', index: 0 });
             setShown(0);
-            void run.run(pathTaskOf(s), s.seed);
+            void run.run(task, s.seed);
           }}
           onCancel={run.cancel}
           st={st}
@@ -152,6 +155,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           facts={facts}
           targets={run.task?.targets ?? s.targets}
           chosen={chosen}
+          stale={stale}
           dispatch={(a) => {
             setShown(0);
             dispatch(a);
@@ -166,6 +170,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
             choices={choices}
             shown={Math.min(shown, choices.length - 1)}
             onShow={setShown}
+            stale={stale}
             onOpen={() => onOpen({ design: choice.design, markers: s.targets, theta2: choice.theta2 })}
             onExportCsv={() => exportResultsCsv(solutions)}
             onExportSvg={() => {

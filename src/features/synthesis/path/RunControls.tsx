@@ -18,6 +18,12 @@ function statusText(run: PathRunState, st: SynthesisMessages): string | null {
       return st.statusRunning(run.workers);
     case 'cancelled':
       return st.statusCancelled;
+    case 'stopping':
+      return st.statusStopping;
+    case 'stopped':
+      return run.solutions && run.solutions.length > 0
+        ? st.statusStopped(run.solutions.length, formatNumber(run.elapsedMs / 1000, 2), run.workers)
+        : st.statusCancelled;
     case 'failed':
       return st.statusFailed(run.error ?? '');
     case 'done':
