@@ -63,6 +63,19 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   statusStopped: (count, ms, workers) =>
     `已於 ${ms} 秒後停止（${workers} 個工作執行緒）：目前找到的最佳 ${count} 個候選。`,
   staleResults: '已過時：目標點或任務在這次合成後已變更。請重新合成以取得符合的結果。',
+  mustBePositive: (field) => `${field}必須大於 0。`,
+  mustBeMore: (more, less, lessValue) => `${more}必須大於${less}（${lessValue}）。`,
+  stepRule: '步距必須是 −180° 到 180° 之間的非零角度。',
+  fieldsInError: (names) => `請先修正${names}。`,
+  missingTheta2: (target) => `請填入 ${target} 的 θ2（指定 θ2），或改用其他時序。`,
+  noFit: (size) => `沒有候選機構能在目標點尺寸（${size}）的 1 % 內通過每個目標點。`,
+  reasonSpan: (reach, span) =>
+    `最長連桿加上耦點偏移使耦點離曲柄樞軸不超過 ${reach}：無法到達相距 ${span} 的目標點。請放寬範圍。`,
+  reasonPivotFar: (target, distance, reach) =>
+    `${target} 離曲柄樞軸範圍 ${distance}，超過最長連桿加耦點偏移（${reach}）。請移動或放大範圍。`,
+  reasonSameTheta2: (a, b, theta2) =>
+    `${a} 與 ${b} 指定了相同的 θ2（${theta2}°）卻在不同位置：同一輸入角只對應一個耦點位置。`,
+  reasonUnknown: '請放寬範圍、允許任意輸入，或改用其他時序。',
   staleOpen: '這個設計是為先前的目標點找到的：請重新合成，再開啟符合這些目標點的設計。',
   resultsTitle: '候選機構',
   candidateName: (rank) => `候選 ${rank}`,
