@@ -394,9 +394,10 @@ async function measureSynCancel(browser: Browser, rate: number): Promise<{ pageM
           const status = document.querySelector('[data-testid="synthesis-status"]')!;
           const t0 = performance.now();
           new MutationObserver(() => {
-            if (status.textContent === 'Cancelled.') resolve(performance.now() - t0);
+            // Stop says at once that it stopped (issue 34 item 4: it then keeps the candidates found so far).
+            if (status.textContent?.startsWith('Stopped')) resolve(performance.now() - t0);
           }).observe(status, { childList: true, subtree: true, characterData: true });
-          [...document.querySelectorAll('button')].find((b) => b.textContent === 'Cancel')!.click();
+          [...document.querySelectorAll('button')].find((b) => b.textContent === 'Stop')!.click();
         }),
     );
     const workersMs = Math.max(...(await closed)) - clickedAt;

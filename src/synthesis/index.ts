@@ -7,12 +7,14 @@ export { checkPlaced, fourBarFromJoints, placedCouplerPoint, placedJoints } from
 export {
   DEFAULT_BUDGET_MS,
   DEFAULT_ROUNDS,
+  PROGRESS_CANDIDATES,
   mergePathCandidates,
   pathSynthesis,
   pathSynthesisPart,
 } from './pathSynthesis';
 export type {
   AbortSignalLike,
+  PathProgress,
   PathSynthesisOptions,
   PathSynthesisPartOptions,
   PathSynthesisPartResult,

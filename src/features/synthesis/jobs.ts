@@ -1,5 +1,5 @@
 import type { PathCandidate } from '../../synthesis/globalSearch';
-import type { PathSynthesisPartResult } from '../../synthesis/pathSynthesis';
+import type { PathProgress, PathSynthesisPartResult } from '../../synthesis/pathSynthesis';
 import type { PathSolution, PathTask } from '../../synthesis/types';
 import type { NinePointResult } from '../../synthesis/ninePoint/ninePointSynthesis';
 import type { Point } from '../../solver/kinematics';
@@ -41,7 +41,7 @@ export const PATH_MERGE_MS = 60_000;
 /**
  * The synthesis page's jobs, served by the solver worker. Both are queue jobs: a pool sends one part to each of its
  * workers at once; the page cancels a run through one AbortSignal. A part reports progress after each round, its
- * stage being the best Σd² so far (a number as text).
+ * stage being the best Σd² so far and its best candidates so far, as JSON (pathStageText): a stopped run merges them.
  */
 export const synthesisJobs = {
   pathPart: job<PathPartParams, PathSynthesisPartResult>({ mode: 'queue', budgetMs: () => PATH_ROUND_MS }),
@@ -51,3 +51,27 @@ export const synthesisJobs = {
 
 /** The synthesis page's job table. */
 export type SynthesisJobs = typeof synthesisJobs;
+
+/** A part's progress as its stage text: JSON of the best Σd² (null for none yet) and the candidates so far. */
+export function pathStageText(p: PathProgress): string {
+  return JSON.stringify({ best: Number.isFinite(p.best) ? p.best : null, candidates: p.candidates ?? [] });
+}
+
+/**
+ * The best Σd² (Infinity for none) and candidates of a part's stage text; a bare number is a best alone, any other
+ * text nothing found.
+ */
+export function readPathStage(stage: string): { best: number; candidates: PathCandidate[] } {
+  try {
+    const v = JSON.parse(stage) as unknown;
+    if (typeof v === 'number') return { best: v, candidates: [] };
+    if (typeof v !== 'object' || v === null) return { best: Infinity, candidates: [] };
+    const o = v as { best?: unknown; candidates?: unknown };
+    return {
+      best: typeof o.best === 'number' ? o.best : Infinity,
+      candidates: Array.isArray(o.candidates) ? (o.candidates as PathCandidate[]) : [],
+    };
+  } catch {
+    return { best: Infinity, candidates: [] };
+  }
+}

@@ -1,5 +1,6 @@
 import type { JobHandlers } from '../../shared/jobs/jobTable';
 import type { SynthesisJobs } from './jobs';
+import { pathStageText } from './jobs';
 
 /** The synthesis page's handlers: a part of a path synthesis's global stage, and the merge of the parts. */
 export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
@@ -14,7 +15,7 @@ export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
       rounds,
       budgetMs,
       signal,
-      onProgress: ({ fraction, best }) => progress(fraction, String(best)),
+      onProgress: (p) => progress(p.fraction, pathStageText(p)),
     });
   },
   async pathMerge(params) {
