@@ -24,6 +24,7 @@ export { MODEL_SIZE, couplerLocal } from './pathModel';
 export {
   MAX_PAIRS,
   MAX_PRECISION_POINTS,
+  NoLinkageError,
   chebyshevPoints,
   freudenstein,
   functionGenerator,
@@ -34,6 +35,7 @@ export type {
   FunctionDefect,
   FunctionGeneratorResult,
   FunctionTask,
+  NoLinkageReason,
 } from './functionGeneration';
 export { motionDesign, threePositionConstruction, threePositionSynthesis } from './motionGeneration';
 export type { MotionDesign, PivotConstruction, PivotName, ThreePositionGiven } from './motionGeneration';
