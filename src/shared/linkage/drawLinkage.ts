@@ -3,6 +3,7 @@ import { drawGroundTriangle, drawJoint, drawLink } from './linkPrimitives';
 import { TWO_PI } from '../../solver/angles';
 import { STROKES } from '../theme/tokens';
 import { drawDesignOver, drawDesignUnder } from './designOverlay';
+import { SIMULATOR_POSE, drawFourBarPose } from './drawFourBarPose';
 import type { DrawContext } from '../canvas/drawContext';
 import { drawPanelBox } from '../canvas/drawContext';
 import { drawVectorArrows, drawVectorLegend, vectorOverlay } from './motionVectors';
@@ -149,29 +150,7 @@ function drawGhost(ctx: Ctx, v: ViewTransform, pose: ScenePose): void {
 function drawPose(ctx: Ctx, layout: SceneLayout): void {
   const { O2, O4, A, B, P } = layout.joints;
   if (!B || !P) return;
-  // The coupler is a rigid plate: shade the triangle A-B-P so P reads as part of it.
-  ctx.fillStyle = THEME.couplerFill;
-  ctx.strokeStyle = THEME.coupler;
-  ctx.lineWidth = STROKES.couplerPlate;
-  ctx.beginPath();
-  ctx.moveTo(A.x, A.y);
-  ctx.lineTo(B.x, B.y);
-  ctx.lineTo(P.x, P.y);
-  ctx.closePath();
-  ctx.fill();
-  ctx.stroke();
-  drawLink(ctx, O2, A, THEME.crank, STROKES.link);
-  drawLink(ctx, A, B, THEME.coupler, STROKES.link);
-  drawLink(ctx, B, O4, THEME.rocker, STROKES.link);
-  drawJoint(ctx, A, STROKES.jointRadius);
-  drawJoint(ctx, B, STROKES.jointRadius);
-  ctx.fillStyle = THEME.trace;
-  ctx.strokeStyle = THEME.couplerPoint;
-  ctx.lineWidth = STROKES.ground;
-  ctx.beginPath();
-  ctx.arc(P.x, P.y, STROKES.couplerPointRadius, 0, TWO_PI);
-  ctx.fill();
-  ctx.stroke();
+  drawFourBarPose(ctx, { O2, A, B, O4, P }, SIMULATOR_POSE);
   ctx.strokeStyle = THEME.reference;
   ctx.setLineDash(STROKES.referenceDash);
   ctx.lineWidth = STROKES.reference;

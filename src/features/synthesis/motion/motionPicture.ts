@@ -13,7 +13,7 @@ import { THEME } from '../../../shared/canvas/canvasTheme';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { emptyBounds, extendBounds } from '../../../shared/canvas/view';
 import type { PivotChoice } from '../../../shared/state/slices/synMotionSlice';
-import type { MotionOutcome, PivotConstruction } from './motionSolve';
+import type { MotionOutcome, ThreePoseOutcome } from './motionSolve';
 import type { Px } from '../../../shared/canvas/rect';
 import { drawBackground, drawFourBar, drawLabel, drawMarker, drawPolyline, drawWorldCircle, px } from '../drawPlane';
 
@@ -170,7 +170,7 @@ function drawBisector(ctx: DrawContext, v: ViewTransform, a: Point, b: Point, ce
   drawPolyline(ctx, v, [m, beyond], CONSTRUCTION_COLOR, 1, [5, 4]);
 }
 
-function drawConstruction(ctx: DrawContext, v: ViewTransform, construction: readonly PivotConstruction[]): void {
+function drawConstruction(ctx: DrawContext, v: ViewTransform, construction: ThreePoseOutcome['construction']): void {
   for (const c of construction) {
     const [p1, p2, p3] = c.points;
     drawWorldCircle(ctx, v, c.centre, Math.hypot(p1.x - c.centre.x, p1.y - c.centre.y), THEME.reference, [2, 3]);

@@ -17,6 +17,7 @@ import {
 import type {
   BurmesterPair,
   MotionDefect,
+  PivotConstruction,
   PlacedFourBar,
   Pose,
   ThreePositionGiven,
@@ -46,12 +47,6 @@ export type MotionProblem =
   | { code: 'noBurmester' }
   | { code: 'pickTwo'; picked: number };
 
-/** One pivot's construction: its three positions, and the centre of the circle through them (the pivot found). */
-export interface PivotConstruction {
-  points: [Point, Point, Point];
-  centre: Point;
-}
-
 /** Two poses: the pole they turn about (the rocker pivot O4) and the crank-rockers that swing it between them. */
 export interface TwoPoseOutcome {
   count: 2;
@@ -63,10 +58,10 @@ export interface TwoPoseOutcome {
   problem: MotionProblem | null;
 }
 
-/** Three poses: the two constructions (in the plane at pose 1) and the design. */
+/** Three poses: the two constructions (in the plane at pose 1, each with its circle's centre found) and the design. */
 export interface ThreePoseOutcome {
   count: 3;
-  construction: PivotConstruction[];
+  construction: (PivotConstruction & { centre: Point })[];
   chosen: MotionCandidate | null;
   problem: MotionProblem | null;
 }
@@ -116,13 +111,13 @@ const candidate = (design: PlacedFourBar, theta2: number[], defects: MotionDefec
 export function threePoseConstruction(
   poses: readonly [Pose, Pose, Pose],
   given: ThreePositionGiven,
-): { construction: PivotConstruction[]; problem: MotionProblem | null } {
-  const construction: PivotConstruction[] = [];
+): Pick<ThreePoseOutcome, 'construction' | 'problem'> {
+  const construction: ThreePoseOutcome['construction'] = [];
   // The fixed pivots' construction is in the coupler frame: drawn in the plane at pose 1.
   const shown = (q: Point) => ('moving' in given ? q : toPlane(poses[0], q));
   for (const c of threePositionConstruction(poses, given)) {
     if (!c.centre) return { construction, problem: { code: 'collinear', pivot: c.given } };
-    construction.push({ points: c.points.map(shown) as [Point, Point, Point], centre: shown(c.centre) });
+    construction.push({ ...c, points: c.points.map(shown) as [Point, Point, Point], centre: shown(c.centre) });
   }
   return { construction, problem: null };
 }

@@ -238,6 +238,7 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
             choices={choices}
             shown={Math.min(shownCognate, choices.length - 1)}
             onShow={setShownCognate}
+            stale={run.points !== null && run.points !== undefined && !samePoints(run.points, s.targets)}
             onOpen={() => onOpen({ design: choice.design, markers: points, theta2: choice.theta2 })}
             onExportCsv={() => downloadText(ninePointCsv(classes), 'nine-point-classes.csv', 'text/csv;charset=utf-8')}
             onExportSvg={() => {
