@@ -25,8 +25,10 @@ export interface MechCanvasProps {
   onGrab: (id: string | null) => void;
   /** The taken joint follows the pointer to p (length unit, the view's world). */
   onDrag: (id: string, p: Pt) => void;
-  /** A tap where nothing was taken (world point): places a new part when a tool is armed. */
+  /** A tap where nothing was taken (world point; snapped to the joint under it, if any, while a tool is armed). */
   onTap: (p: Pt) => void;
+  /** A tool is armed: a press on a joint does not take it (the tap places the new part there). */
+  placing: boolean;
   /** Arrow keys on the canvas: move the chosen joint by (dx, dy) CSS pixels' worth of length. */
   onNudge: (dx: number, dy: number) => void;
   /** Lets the page draw the same picture into an export: the view as on screen. */
@@ -46,6 +48,7 @@ export function MechCanvas({
   onDrag,
   onTap,
   onNudge,
+  placing,
   viewRef,
 }: MechCanvasProps) {
   const wrapRef = useRef<HTMLDivElement>(null);
@@ -53,7 +56,7 @@ export function MechCanvas({
   const { width, height } = useElementSize(wrapRef);
   const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
   const transform = fitView(bounds, width, height, view);
-  const grab = (p: ScreenPoint, pointerType: string): string | null => {
+  const nearest = (p: ScreenPoint, pointerType: string): string | null => {
     const r = pointerType === 'touch' || pointerType === 'pen' ? GRAB_PX.touch : GRAB_PX.mouse;
     let best: string | null = null;
     let bestD = r;
@@ -73,10 +76,13 @@ export function MechCanvas({
     onViewChange: setView,
     width,
     height,
-    grab,
+    grab: (p, pointerType) => (placing ? null : nearest(p, pointerType)),
     onGrab,
     onDrag: (id, p) => onDrag(id, toWorld(transform, p.x, p.y)),
-    onTap: (p) => onTap(toWorld(transform, p.x, p.y)),
+    onTap: (p) => {
+      const id = placing ? nearest(p, 'touch') : null;
+      onTap(id ? (picture.pose.joints[id] ?? picture.pose.points[id]) : toWorld(transform, p.x, p.y));
+    },
   });
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
@@ -112,6 +118,7 @@ export function MechCanvas({
         aria-keyshortcuts="ArrowLeft ArrowRight ArrowUp ArrowDown + - 0"
         tabIndex={0}
         data-testid="mech-canvas"
+        data-view={`${transform.scale} ${transform.centerX} ${transform.centerY} ${transform.panXPx} ${transform.panYPx}`}
         {...pointerHandlers}
         onKeyDown={onKeyDown}
       />

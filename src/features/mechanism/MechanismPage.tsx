@@ -6,7 +6,7 @@ import type { MechanismSpec, MechanismSweep } from '../../mechanism';
 import { degToRad, radToDeg } from '../../solver/angles';
 import type { Action, AppState } from '../../shared/state/appState';
 import type { MechTemplateKey } from '../../shared/state/slices/mechSlice';
-import { templateUrlValue } from '../../shared/state/slices/mechSlice';
+import { mechSpecCodec, templateUrlValue } from '../../shared/state/slices/mechSlice';
 import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { Bounds, ViewTransform } from '../../shared/canvas/view';
 import { emptyBounds, extendBounds, fitView } from '../../shared/canvas/view';
@@ -54,12 +54,22 @@ export interface MechanismPageProps {
 export function MechanismPage({ state, dispatch, client }: MechanismPageProps) {
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited } = state.mech;
+  // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
+  const [refused, setRefused] = useState(linkRefusal);
   return (
     <div className="mech" data-testid="mechanism-page">
       <div className="mech-head">
         <h2 className="section-title">{m.pageTitle}</h2>
         <p className="note mech-intro">{m.intro}</p>
       </div>
+      {refused && (
+        <p className="mech-error mech-refused" role="alert" data-testid="mech-refused">
+          {m.linkRefused(refused)}{' '}
+          <button type="button" className="btn btn-small" onClick={() => setRefused(null)}>
+            {m.dismiss}
+          </button>
+        </p>
+      )}
       <section className="mech-gallery-card" aria-label={m.galleryTitle}>
         <TemplateGallery
           current={template}
@@ -72,6 +82,15 @@ export function MechanismPage({ state, dispatch, client }: MechanismPageProps) {
       <MechWorkspace key={template} template={template} edited={edited} dispatch={dispatch} client={client} m={m} />
     </div>
   );
+}
+
+/** Why the mech= of the address the page was opened at is refused, or null (none, or a good one). */
+function linkRefusal(): string | null {
+  if (typeof window === 'undefined') return null;
+  const raw = new URLSearchParams(window.location.search).get('mech');
+  if (raw === null) return null;
+  const r = mechSpecCodec.parse(raw);
+  return r.ok ? null : r.why;
 }
 
 /** Props of MechWorkspace. */
@@ -130,7 +149,7 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
-  const analysis = useMemo(() => analyseMechanism(spec, template), [spec, template]);
+  const analysis = useMemo(() => analyseMechanism(spec), [spec]);
   const range = runRange(analysis);
   const kind = analysis.grid?.kind ?? 'R';
   const span = range ? range[1] - range[0] : 0;
@@ -293,7 +312,12 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
   const canRun = range !== null;
 
   return (
-    <div className="mech-workspace" data-mech-state={analysis.problem ? analysis.problem.code : 'ok'}>
+    <div
+      className="mech-workspace"
+      data-mech-state={analysis.problem ? analysis.problem.code : 'ok'}
+      data-trace={traceDigest(traces)}
+      data-input={input}
+    >
       <div className="mech-stage-col">
         <div className="mech-stage-head">
           <h3 className="mech-name-title">{shownName}</h3>
@@ -315,6 +339,7 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
             } else setFrozenBounds(null);
           }}
           onDrag={(id, p) => edit((s) => moveJoint(s, id, p.x, p.y))}
+          placing={placing !== null}
           onTap={(p) => placing && place(placing, p)}
           onNudge={(dx, dy) => {
             if (!selected) return;
@@ -496,6 +521,13 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
       </section>
     </div>
   );
+}
+
+/** A short fingerprint of the traced paths (their points' sum, 6 digits), for tests to see a curve change. */
+function traceDigest(traces: { x: ArrayLike<number>; y: ArrayLike<number> }[]): string {
+  let sum = 0;
+  for (const t of traces) for (let i = 0; i < t.x.length; i++) if (Number.isFinite(t.x[i])) sum += t.x[i] + 2 * t.y[i];
+  return sum.toPrecision(6);
 }
 
 /** The status line: what stops the linkage, or how its input moves. */

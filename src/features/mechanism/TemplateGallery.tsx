@@ -7,8 +7,8 @@ import { MECH_TEMPLATE_KEYS } from '../../shared/state/slices/mechSlice';
 import { drawMechanism, pictureBounds } from './drawMechanism';
 import { drawnPose } from './mechPose';
 
-const THUMB_W = 112;
-const THUMB_H = 72;
+const THUMB_W = 96;
+const THUMB_H = 56;
 
 /** A template's thumbnail: its drawn configuration, fitted, without grid or names. */
 function Thumb({ template }: { template: MechTemplateKey }) {

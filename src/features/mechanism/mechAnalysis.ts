@@ -1,7 +1,6 @@
-import { GROUND, MECHANISM_TEMPLATES, mobility, sweepMechanism, validateSpec } from '../../mechanism';
+import { GROUND, mobility, sweepMechanism, validateSpec } from '../../mechanism';
 import type { MechanismSpec, MechanismSweep } from '../../mechanism';
 import { PI } from '../../solver/angles';
-import type { MechTemplateKey } from '../../shared/state/slices/mechSlice';
 
 /** Input step of the drawn grid: 1° for a pin input (so the CSV's rows are on it), 1/360 of the range for a slider. */
 export const STEPS_PER_TURN = 360;
@@ -49,25 +48,15 @@ export function specSize(spec: MechanismSpec): number {
 }
 
 /**
- * The input grid of a spec: a pin input over [−π, π] in 1° steps (the sweep finds a rocker's limits itself); a
- * slider input over its template's range when the template's input is the same joint, else over ± the linkage's
- * size, in 360 steps.
+ * The input grid of a spec: a pin input over [−π, π] in 1° steps, a slider input over ± the linkage's size in 360
+ * steps; the sweep finds a rocking input's limits itself, to within a step.
  */
-export function inputGrid(spec: MechanismSpec, template: MechTemplateKey): InputGrid | null {
+export function inputGrid(spec: MechanismSpec): InputGrid | null {
   const kind = inputKind(spec);
   if (!kind) return null;
-  let lo: number;
-  let hi: number;
-  let step: number;
-  if (kind === 'R') {
-    step = PI / 180;
-    lo = -PI;
-    hi = PI;
-  } else {
-    const t = MECHANISM_TEMPLATES[template];
-    [lo, hi] = t.spec.input.joint === spec.input.joint ? t.inputRange : [-specSize(spec), specSize(spec)];
-    step = (hi - lo) / STEPS_PER_TURN;
-  }
+  const lo = kind === 'R' ? -PI : -specSize(spec);
+  const hi = -lo;
+  const step = kind === 'R' ? PI / 180 : (hi - lo) / STEPS_PER_TURN;
   // Rounded so that the ends land on whole steps despite rounding (−π/(π/180) is −180 give or take an ulp).
   const kLo = Math.ceil(lo / step - 1e-9);
   const kHi = Math.floor(hi / step + 1e-9);
@@ -103,12 +92,12 @@ export function assembledRun(ok: ArrayLike<number>, i0: number): [number, number
  * Analyses a spec for the page: its mobility and what stops it, and when it runs, its poses on the input grid
  * (positions only: the rates come from the worker) and the run Play moves over.
  */
-export function analyseMechanism(spec: MechanismSpec, template: MechTemplateKey): MechAnalysis {
+export function analyseMechanism(spec: MechanismSpec): MechAnalysis {
   const m = spec.links.includes(GROUND) ? mobility(spec) : NaN;
   const problem = mechProblem(spec);
   const none = { spec, mobility: m, grid: null, sweep: null, run: null, fullTurn: false };
   if (problem) return { ...none, problem };
-  const grid = inputGrid(spec, template)!;
+  const grid = inputGrid(spec)!;
   const sweep = sweepMechanism(spec, grid.inputs);
   const run = assembledRun(sweep.ok, -grid.kLo);
   if (!run) return { ...none, grid, sweep, problem: { code: 'singular' } };

@@ -2,6 +2,8 @@
 export const mechMessagesEn = {
   pageTitle: 'Mechanisms',
   intro: 'Any planar linkage of pins and sliders: open a template, drag its joints, build your own, and drive it.',
+  linkRefused: (why: string) => `The link’s linkage (mech=) was refused: ${why}. The last good linkage is shown.`,
+  dismiss: 'Dismiss',
   galleryTitle: 'Templates',
   galleryLabel: 'Open a template',
   templateNames: {

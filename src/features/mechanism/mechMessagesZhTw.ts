@@ -4,6 +4,8 @@ import type { MechMessages } from './mechMessagesEn';
 export const mechMessagesZhTw: MechMessages = {
   pageTitle: '機構',
   intro: '任何由銷接頭與滑塊組成的平面連桿：開啟範本、拖曳接頭、自行組裝，並驅動它。',
+  linkRefused: (why) => `連結中的連桿（mech=）不被接受：${why}。顯示最後一個有效的連桿。`,
+  dismiss: '關閉',
   galleryTitle: '範本',
   galleryLabel: '開啟範本',
   templateNames: {
