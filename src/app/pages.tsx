@@ -11,6 +11,8 @@ const SynthesisPage = lazy(() =>
   import('../features/synthesis/SynthesisPage').then((m) => ({ default: m.SynthesisPage })),
 );
 
+const SpatialPage = lazy(() => import('../features/spatial/SpatialPage').then((m) => ({ default: m.SpatialPage })));
+
 /** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
 const createSynthesisPool = () => createSolverPool();
 
@@ -40,6 +42,7 @@ function loading(label: Record<Locale, string>, locale: Locale, view: ReactNode)
 
 const LAB_LABEL = { en: 'Solver lab', 'zh-TW': '求解器實驗室' };
 const SYNTHESIS_LABEL = { en: 'Synthesis', 'zh-TW': '機構合成' };
+const SPATIAL_LABEL = { en: 'Spatial', 'zh-TW': '空間機構' };
 
 /**
  * Every page of the app, registered once, in the tabs' order: the tabs (PageTabs), the page's view and layout
@@ -69,6 +72,13 @@ export const PAGES: Readonly<Record<Page, PageEntry>> = {
       ),
     sideColumns: false,
     layoutClass: 'synthesis',
+  },
+  spatial: {
+    label: SPATIAL_LABEL,
+    view: ({ session: s }) =>
+      loading(SPATIAL_LABEL, s.state.shell.locale, <SpatialPage state={s.state} dispatch={s.dispatch} />),
+    sideColumns: false,
+    layoutClass: 'spatial',
   },
 };
 

@@ -9,6 +9,7 @@ import { SYN_PATH_SLICE } from './slices/synthesisSlice';
 import { FORCES_SLICE } from './slices/forcesSlice';
 import { SYN_MOTION_SLICE } from './slices/synMotionSlice';
 import { SYN_FUNCTION_SLICE } from './slices/synFunctionSlice';
+import { SPATIAL_SLICE } from './slices/spatialSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -29,6 +30,7 @@ export { NOMINAL_FPS, SPEED_MAX, SPEED_MIN, SPEED_STEP, clamp, normalizeTheta2De
 export type { Locale, Page, ShellState } from './slices/shellSlice';
 export type { NrStart, SolverState } from './slices/solverSlice';
 export { SAMPLES_MAX, SAMPLES_MIN, SAMPLE_CHOICES } from './slices/solverSlice';
+export type { SpatialKind, SpatialState } from './slices/spatialSlice';
 export type { PathInput, PathTiming, PivotBox, SynPathState, SynthesisMode } from './slices/synthesisSlice';
 
 /**
@@ -48,6 +50,7 @@ export const SLICES = {
   forces: FORCES_SLICE,
   synMotion: SYN_MOTION_SLICE,
   synFunction: SYN_FUNCTION_SLICE,
+  spatial: SPATIAL_SLICE,
 };
 
 /** The slices' names in SLICES's order (the URL table's order). */
