@@ -107,7 +107,7 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
           </PanelSection>
         </div>
         <div className="spatial-results">
-          <PanelSection id="spatial-numbers-title" title={sm.numbersTitle}>
+          <PanelSection id="spatial-numbers-title" title={sm.numbersSection}>
             {analysis ? (
               <SpatialNumbers analysis={analysis} pose={pose} muRad={muRad} theta2Deg={s.theta2Deg} sm={sm} />
             ) : (

@@ -35,6 +35,8 @@ export interface SceneLinkage {
   radius: number;
   /** Pin radius in scene units. */
   pinRadius: number;
+  /** Direction from the view's centre to the first camera (unit). */
+  viewDir: Vec3;
 }
 
 /** The moving pins in scene units. */
@@ -46,6 +48,7 @@ export interface ScenePose {
 
 const vec = (x: number, y: number, z: number): Vec3 => ({ x, y, z });
 const scaled = (p: Vec3, s: number): Vec3 => vec(p.x * s, p.y * s, p.z * s);
+const unit = (p: Vec3): Vec3 => scaled(p, 1 / Math.hypot(p.x, p.y, p.z));
 
 /** Segments (pairs of points) between consecutive valid samples of an interleaved x y z column, scaled. */
 export function pathSegments(xyz: Float64Array, valid: Uint8Array, s: number): number[] {
@@ -109,8 +112,10 @@ export function sceneLinkage(model: SpatialModel, sweep: SpatialSweep): SceneLin
       ],
       floorZ: null,
       centre: vec(0, 0, 0),
-      radius: 1.4,
+      radius: 1.35,
       pinRadius: 0.04,
+      // Towards the ground arc's middle, turned aside and raised a little: the linkage faces the camera.
+      viewDir: unit(vec(Math.sin(a1 / 2) + 0.55, -0.95, Math.cos(a1 / 2) + 0.45)),
     };
   }
   const { r2, r3, r4, a, beta, h2, h4 } = model.linkage;
@@ -165,6 +170,7 @@ export function sceneLinkage(model: SpatialModel, sweep: SpatialSweep): SceneLin
     centre,
     radius,
     pinRadius: 0.035,
+    viewDir: unit(vec(0.9, -2.0, 1.1)),
   };
 }
 

@@ -40,7 +40,8 @@ export interface SpatialMessages {
   noWebglDetail: string;
   viewLoading: string;
   cannotClose: (theta2: string) => string;
-  /** Numbers panel. */
+  /** Numbers panel: its title, the heading of the values at θ2. */
+  numbersSection: string;
   numbersTitle: string;
   typeNames: Record<SpatialLinkageType, string>;
   typeLabel: string;

@@ -54,6 +54,7 @@ export const spatialMessagesEn: SpatialMessages = {
   noWebglDetail: 'The numbers, the plots and the CSV below still work.',
   viewLoading: 'Loading the 3D view…',
   cannotClose: (t) => `The loop cannot close at θ2 = ${t}.`,
+  numbersSection: 'Numbers',
   numbersTitle: 'At θ2',
   typeNames: {
     'crank-rocker': 'crank-rocker',

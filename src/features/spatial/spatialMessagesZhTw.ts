@@ -54,6 +54,7 @@ export const spatialMessagesZhTw: SpatialMessages = {
   noWebglDetail: '下方的數值、圖表與 CSV 仍可使用。',
   viewLoading: '正在載入 3D 視圖…',
   cannotClose: (t) => `θ2 = ${t} 時迴路無法閉合。`,
+  numbersSection: '數值',
   numbersTitle: '目前 θ2',
   typeNames: {
     'crank-rocker': '曲柄搖桿',

@@ -1,5 +1,7 @@
 import {
   AmbientLight,
+  BufferGeometry,
+  Float32BufferAttribute,
   Color,
   CylinderGeometry,
   DirectionalLight,
@@ -59,8 +61,6 @@ export interface SpatialScene {
 }
 
 const Z_UP = new Vector3(0, 0, 1);
-/** First view direction: from the front right, a little above (z up). */
-const VIEW_DIR = new Vector3(1.1, -2.2, 1.05).normalize();
 const FOV_DEG = 32;
 
 const v3 = (p: Vec3) => new Vector3(p.x, p.y, p.z);
@@ -84,6 +84,35 @@ function setLine(line: Line2, pts: number[]): void {
   line.visible = true;
   line.geometry.setPositions(pts);
   line.computeLineDistances();
+}
+
+/** Segments of a link's fan; arcPoints gives FAN_STEPS + 1 points. */
+const FAN_STEPS = 32;
+
+/** A translucent fan from the sphere's centre to a link's arc: the link seen as the rigid body it is. */
+function fan(color: string): Mesh {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * (FAN_STEPS + 2)), 3));
+  const index: number[] = [];
+  for (let i = 1; i <= FAN_STEPS; i++) index.push(0, i, i + 1);
+  g.setIndex(index);
+  const m = new Mesh(
+    g,
+    new MeshBasicMaterial({ color, transparent: true, opacity: 0.16, side: DoubleSide, depthWrite: false }),
+  );
+  m.frustumCulled = false;
+  return m;
+}
+
+/** Puts a fan on the arc's points (x y z flat; the centre is the origin). */
+function setFan(m: Mesh, arc: number[]): void {
+  m.visible = arc.length > 0;
+  if (!arc.length) return;
+  const pos = m.geometry.getAttribute('position') as Float32BufferAttribute;
+  const a = pos.array as Float32Array;
+  a[0] = a[1] = a[2] = 0;
+  a.set(arc, 3);
+  pos.needsUpdate = true;
 }
 
 function ball(color: string, radius: number): Mesh {
@@ -139,6 +168,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
   let fit = { centre: new Vector3(), radius: 1.3 };
+  let viewDir = new Vector3(0.4, -0.8, 0.5).normalize();
 
   const render = () => {
     pending = 0;
@@ -164,15 +194,18 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     l.material.resolution.copy(size);
     return l;
   };
-  const crank = track(fatLine(COLORS.crank, 6));
-  const coupler = track(fatLine(COLORS.coupler, 6));
-  const rocker = track(fatLine(COLORS.rocker, 6));
+  const crank = track(fatLine(COLORS.crank, 7));
+  const coupler = track(fatLine(COLORS.coupler, 7));
+  const rocker = track(fatLine(COLORS.rocker, 7));
   const pArm = track(fatLine(COLORS.coupler, 3));
   const pinA = ball(COLORS.crank, 0.045);
   const pinB = ball(COLORS.rocker, 0.045);
   const pinP = ball(COLORS.couplerPoint, 0.04);
+  const crankFan = fan(COLORS.crank);
+  const couplerFan = fan(COLORS.coupler);
+  const rockerFan = fan(COLORS.rocker);
   const moving = new Group();
-  moving.add(crank, coupler, rocker, pArm, pinA, pinB, pinP);
+  moving.add(crankFan, couplerFan, rockerFan, crank, coupler, rocker, pArm, pinA, pinB, pinP);
   scene.add(moving);
   let linkage: SceneLinkage | null = null;
   let lastFitKey = '';
@@ -196,7 +229,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     ortho.zoom = 1;
     perspective.updateProjectionMatrix();
     updateOrtho();
-    place(VIEW_DIR, viewDistance());
+    place(viewDir, viewDistance());
     controls.update();
     invalidate();
   };
@@ -217,9 +250,9 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       const sphere = new Mesh(
         new SphereGeometry(1, 64, 40),
         new MeshPhongMaterial({
-          color: '#c9d6e8',
+          color: '#b8c9e0',
           transparent: true,
-          opacity: 0.28,
+          opacity: 0.2,
           depthWrite: false,
           side: DoubleSide,
           shininess: 10,
@@ -254,7 +287,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       orient(b, v3(ax.bearing), to.clone().sub(from));
       add(b);
     }
-    const ground = track(fatLine(COLORS.ground, 5));
+    const ground = track(fatLine(COLORS.ground, 4, 0.85));
     setLine(ground, l.ground);
     add(ground);
     for (const p of l.groundPins) {
@@ -309,6 +342,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       buildFixed(l);
       const b = sceneBounds(l);
       fit = { centre: v3(b.centre), radius: b.radius };
+      viewDir = v3(l.viewDir);
       const key = `${l.kind}:${b.radius.toPrecision(3)}:${b.centre.x.toPrecision(3)},${b.centre.y.toPrecision(3)},${b.centre.z.toPrecision(3)}`;
       if (key !== lastFitKey) {
         lastFitKey = key;
@@ -324,11 +358,16 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       }
       const l = linkage;
       if (l.kind === 'spherical') {
-        setLine(crank, arcPoints(l.crankPivot, p.A));
-        setLine(coupler, arcPoints(p.A, p.B));
-        setLine(rocker, arcPoints(l.rockerPivot, p.B));
+        const arcs = [arcPoints(l.crankPivot, p.A), arcPoints(p.A, p.B), arcPoints(l.rockerPivot, p.B)];
+        setLine(crank, arcs[0]);
+        setLine(coupler, arcs[1]);
+        setLine(rocker, arcs[2]);
+        setFan(crankFan, arcs[0]);
+        setFan(couplerFan, arcs[1]);
+        setFan(rockerFan, arcs[2]);
         setLine(pArm, p.P ? arcPoints(p.A, p.P) : []);
       } else {
+        for (const f of [crankFan, couplerFan, rockerFan]) setFan(f, []);
         setLine(crank, [l.crankPivot.x, l.crankPivot.y, l.crankPivot.z, p.A.x, p.A.y, p.A.z]);
         setLine(coupler, [p.A.x, p.A.y, p.A.z, p.B.x, p.B.y, p.B.z]);
         setLine(rocker, [l.rockerPivot.x, l.rockerPivot.y, l.rockerPivot.z, p.B.x, p.B.y, p.B.z]);
