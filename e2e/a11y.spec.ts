@@ -50,6 +50,8 @@ test.describe('accessibility', () => {
     const sim = page.getByRole('tab', { name: 'Simulator' });
     const lab = page.getByRole('tab', { name: 'Solver lab' });
     const syn = page.getByRole('tab', { name: 'Synthesis' });
+    const mech = page.getByRole('tab', { name: 'Mechanisms' });
+    const spatial = page.getByRole('tab', { name: 'Spatial' });
     // One Tab stop: the selected tab only.
     await expect(sim).toHaveAttribute('tabindex', '0');
     await expect(lab).toHaveAttribute('tabindex', '-1');
@@ -67,10 +69,16 @@ test.describe('accessibility', () => {
     await expect(syn).toBeFocused();
     await expect(syn).toHaveAttribute('aria-selected', 'true');
     await page.keyboard.press('ArrowRight');
+    await expect(mech).toBeFocused();
+    await expect(mech).toHaveAttribute('aria-selected', 'true');
+    await page.keyboard.press('ArrowRight');
+    await expect(spatial).toBeFocused();
+    await expect(spatial).toHaveAttribute('aria-selected', 'true');
+    await page.keyboard.press('ArrowRight');
     await expect(sim).toBeFocused();
     await expect(sim).toHaveAttribute('aria-selected', 'true');
     await page.keyboard.press('End');
-    await expect(syn).toBeFocused();
+    await expect(spatial).toBeFocused();
     await page.keyboard.press('Home');
     await expect(sim).toBeFocused();
     await expect(sim).toHaveAttribute('aria-selected', 'true');

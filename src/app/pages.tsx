@@ -14,6 +14,7 @@ const SynthesisPage = lazy(() =>
 const MechanismPage = lazy(() =>
   import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
 );
+const SpatialPage = lazy(() => import('../features/spatial/SpatialPage').then((m) => ({ default: m.SpatialPage })));
 
 /** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
 const createSynthesisPool = () => createSolverPool();
@@ -45,6 +46,7 @@ function loading(label: Record<Locale, string>, locale: Locale, view: ReactNode)
 const LAB_LABEL = { en: 'Solver lab', 'zh-TW': '求解器實驗室' };
 const SYNTHESIS_LABEL = { en: 'Synthesis', 'zh-TW': '機構合成' };
 const MECHANISM_LABEL = { en: 'Mechanisms', 'zh-TW': '機構' };
+const SPATIAL_LABEL = { en: 'Spatial', 'zh-TW': '空間機構' };
 
 /**
  * Every page of the app, registered once, in the tabs' order: the tabs (PageTabs), the page's view and layout
@@ -85,6 +87,13 @@ export const PAGES: Readonly<Record<Page, PageEntry>> = {
       ),
     sideColumns: false,
     layoutClass: 'mechanism',
+  },
+  spatial: {
+    label: SPATIAL_LABEL,
+    view: ({ session: s }) =>
+      loading(SPATIAL_LABEL, s.state.shell.locale, <SpatialPage state={s.state} dispatch={s.dispatch} />),
+    sideColumns: false,
+    layoutClass: 'spatial',
   },
 };
 

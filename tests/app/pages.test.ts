@@ -14,8 +14,14 @@ describe('PAGES', () => {
     }
   });
 
-  it('gives every page its URL value: page=sim, page=lab, page=syn, page=mech', () => {
-    expect(PAGE_URL_VALUES).toEqual({ simulator: 'sim', lab: 'lab', synthesis: 'syn', mechanism: 'mech' });
+  it('gives every page its URL value: page=sim, page=lab, page=syn, page=mech, page=3d', () => {
+    expect(PAGE_URL_VALUES).toEqual({
+      simulator: 'sim',
+      lab: 'lab',
+      synthesis: 'syn',
+      mechanism: 'mech',
+      spatial: '3d',
+    });
     for (const page of PAGE_ORDER) {
       const q = serializeState({ ...DEFAULT_STATE, shell: { ...DEFAULT_STATE.shell, page } });
       expect(parseUrl(q, DEFAULT_STATE, () => {}).state.shell.page).toBe(page);
@@ -25,10 +31,12 @@ describe('PAGES', () => {
 
   it('orders the tabs for the arrow keys (wrapping), Home and End', () => {
     expect(pageForKey('simulator', 'ArrowRight')).toBe('lab');
-    expect(pageForKey('mechanism', 'ArrowRight')).toBe('simulator');
-    expect(pageForKey('simulator', 'ArrowLeft')).toBe('mechanism');
+    expect(pageForKey('synthesis', 'ArrowRight')).toBe('mechanism');
+    expect(pageForKey('mechanism', 'ArrowRight')).toBe('spatial');
+    expect(pageForKey('spatial', 'ArrowRight')).toBe('simulator');
+    expect(pageForKey('simulator', 'ArrowLeft')).toBe('spatial');
     expect(pageForKey('lab', 'Home')).toBe('simulator');
-    expect(pageForKey('lab', 'End')).toBe('mechanism');
+    expect(pageForKey('lab', 'End')).toBe('spatial');
     expect(pageForKey('lab', 'a')).toBeNull();
   });
 });

@@ -10,6 +10,7 @@ import { FORCES_SLICE } from './slices/forcesSlice';
 import { SYN_MOTION_SLICE } from './slices/synMotionSlice';
 import { SYN_FUNCTION_SLICE } from './slices/synFunctionSlice';
 import { MECH_SLICE } from './slices/mechSlice';
+import { SPATIAL_SLICE } from './slices/spatialSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -30,6 +31,7 @@ export { NOMINAL_FPS, SPEED_MAX, SPEED_MIN, SPEED_STEP, clamp, normalizeTheta2De
 export type { Locale, Page, ShellState } from './slices/shellSlice';
 export type { NrStart, SolverState } from './slices/solverSlice';
 export { SAMPLES_MAX, SAMPLES_MIN, SAMPLE_CHOICES } from './slices/solverSlice';
+export type { SpatialKind, SpatialState } from './slices/spatialSlice';
 export type { PathInput, PathTiming, PivotBox, SynPathState, SynthesisMode } from './slices/synthesisSlice';
 
 /**
@@ -50,6 +52,7 @@ export const SLICES = {
   synMotion: SYN_MOTION_SLICE,
   synFunction: SYN_FUNCTION_SLICE,
   mech: MECH_SLICE,
+  spatial: SPATIAL_SLICE,
 };
 
 /** The slices' names in SLICES's order (the URL table's order). */

@@ -1,10 +1,11 @@
-import type { AppState } from '../state/appState';
+import type { AppState, Page } from '../state/appState';
 import { DEFAULT_STATE } from '../state/appState';
 import type { EmbedOptions } from './embedOptions';
 import { DEFAULT_EMBED } from './embedOptions';
 import { truncateText } from '../format';
+import { PAGE_URL_VALUES } from '../state/slices/shellSlice';
 import type { UrlTarget } from './urlKeys';
-import { URL_CONSTRAINTS, URL_KEYS } from './urlKeys';
+import { URL_CONSTRAINTS, URL_KEYS, linkKeysOf, urlKeysOn } from './urlKeys';
 
 export type { EmbedOptions, EmbedPanel, LockableParam } from './embedOptions';
 export { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
@@ -31,8 +32,16 @@ export interface ParsedUrl {
   ignored: IgnoredParam[];
 }
 
+/** The page a query string opens: its page parameter when that reads, else base's page. */
+function pageOf(params: URLSearchParams, base: AppState): Page {
+  const raw = params.get('page');
+  const r = raw === null ? null : URL_KEYS.find((x) => x.name === 'page')?.parse(raw);
+  return r?.ok ? (r.value as Page) : base.shell.page;
+}
+
 /**
- * Parses a query string (with or without '?') into the app state on top of base, walking URL_KEYS. A bad
+ * Parses a query string (with or without '?') into the app state on top of base, walking the URL table of the page
+ * it opens (urlKeysOn: a page's own keys shadow the others' of the same name). A bad
  * or unknown parameter is ignored and base's value kept; each is listed in `ignored` and passed to warn
  * (console.warn by default). Rules between keys (URL_CONSTRAINTS) revert the keys that break them. Never throws.
  */
@@ -60,10 +69,12 @@ export function parseUrl(
     warn(message);
   };
   const given = new Map<string, string>();
+  const keys = urlKeysOn(pageOf(params, base));
   for (const [name, value] of params) {
-    const k = URL_KEYS.find((x) => x.name === name);
+    const k = keys.find((x) => x.name === name);
     if (!k) {
-      bad(name, value, 'unknown parameter');
+      const other = URL_KEYS.find((x) => x.name === name)?.page;
+      bad(name, value, other ? `read only on page=${PAGE_URL_VALUES[other]}` : 'unknown parameter');
       continue;
     }
     const r = k.parse(value);
@@ -75,7 +86,7 @@ export function parseUrl(
   for (const c of URL_CONSTRAINTS) {
     if (c.holds(target.state)) continue;
     for (const name of c.keys) {
-      const k = URL_KEYS.find((x) => x.name === name);
+      const k = keys.find((x) => x.name === name);
       const value = given.get(name);
       if (!k || value === undefined) continue;
       target = k.set(target, k.get(start));
@@ -86,13 +97,14 @@ export function parseUrl(
 }
 
 /**
- * Serialises the state (and the embed options when given) to a query string without '?', walking URL_KEYS;
- * parseUrl gives the state back (angles to 1e-9 degree, view to 6 digits, everything else exactly).
+ * Serialises the state (and the embed options when given) to a query string without '?', walking the keys a link of
+ * keysOf writes (default the state's page; linkKeysOf: a page=3d link holds the language, the page and the spatial
+ * keys); parseUrl gives the state back (angles to 1e-9 degree, view to 6 digits, everything else exactly).
  */
-export function serializeState(state: AppState, embed?: EmbedOptions): string {
+export function serializeState(state: AppState, embed?: EmbedOptions, keysOf: Page = state.shell.page): string {
   const target: UrlTarget = { state, embed: embed ?? DEFAULT_EMBED };
   const p = new URLSearchParams();
-  for (const k of URL_KEYS) {
+  for (const k of linkKeysOf(keysOf)) {
     if (k.scope === 'embed' && !embed) continue;
     if (k.include && !k.include(target)) continue;
     p.set(k.name, k.format(k.get(target)));

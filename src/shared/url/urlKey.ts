@@ -1,4 +1,4 @@
-import type { AppState } from '../state/appState';
+import type { AppState, Page } from '../state/appState';
 import type { EmbedOptions } from './embedOptions';
 import type { Codec } from './urlCodec';
 
@@ -25,6 +25,11 @@ export interface UrlKey<T> extends Codec<T>, Lens<T> {
   scope: 'state' | 'embed';
   /** Whether serializeState writes the key for this target; absent means always. */
   include?(target: UrlTarget): boolean;
+  /**
+   * The page whose links alone read and write the key; absent means every page. On its page the key shadows a key of
+   * the same name with no page (the spatial page's r2 is its RSSR crank, not the simulator's), elsewhere it is unknown.
+   */
+  page?: Page;
 }
 
 /** A rule between keys checked after every key is parsed; the keys that break it are reverted and reported. */
@@ -92,4 +97,9 @@ export function optionalKey<T>(name: string, codec: Codec<T>, lens: Lens<T>, def
 /** An enum codec's pairs where the URL text is the value itself. */
 export function sameText<T extends string>(values: readonly T[]): (readonly [string, T])[] {
   return values.map((v) => [v, v] as const);
+}
+
+/** The keys, each read and written only on this page (see UrlKey.page). */
+export function onPage(page: Page, keys: readonly UrlKey<unknown>[]): UrlKey<unknown>[] {
+  return keys.map((k) => ({ ...k, page }));
 }

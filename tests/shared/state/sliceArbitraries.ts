@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { SWEEP_METHODS } from '../../../src/solver/methods';
-import type { AppState, SliceName } from '../../../src/shared/state/appState';
+import type { AppState, Page, SliceName } from '../../../src/shared/state/appState';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { OMEGA_UNITS } from '../../../src/shared/state/inputMotion';
 import { LENGTH_UNITS } from '../../../src/shared/state/slices/designSlice';
@@ -23,6 +23,7 @@ import {
 import { MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
 import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import type { MechanismSpec } from '../../../src/mechanism';
+import { SPATIAL_LENGTH_MAX } from '../../../src/shared/state/slices/spatialSlice';
 import { ALPHA_ABS_MAX, OMEGA_ABS_MAX } from '../../../src/shared/ui/validateNumber';
 import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../../src/study/options';
 
@@ -255,6 +256,30 @@ const mech: fc.Arbitrary<AppState['mech']> = fc.record({
   spec: fc.option(mechSpec, { nil: null }),
 });
 
+/** A value on the spatial page's degree grid (9 decimals) strictly inside (lo, hi) or in [lo, hi) as asked. */
+const degrees = (lo: number, hi: number) => onDecimalGrid(lo, hi, 9);
+/** Any RSSR length the spatial page accepts (exact text), from 1e-300 to 1e300. */
+const spatialLength = double(1e-300, SPATIAL_LENGTH_MAX).filter((x) => x > 0);
+
+const spatial: fc.Arbitrary<AppState['spatial']> = fc.record({
+  kind: fc.constantFrom('sph' as const, 'rssr' as const),
+  a1Deg: degrees(1e-9, 179.999999999),
+  a2Deg: degrees(1e-9, 179.999999999),
+  a3Deg: degrees(1e-9, 179.999999999),
+  a4Deg: degrees(1e-9, 179.999999999),
+  pDistDeg: degrees(0, 179.999999999),
+  pAngleDeg: angle180,
+  r2: spatialLength,
+  r3: spatialLength,
+  r4: spatialLength,
+  a: fc.oneof(fc.constant(0), spatialLength),
+  h2: double(-SPATIAL_LENGTH_MAX, SPATIAL_LENGTH_MAX),
+  h4: double(-SPATIAL_LENGTH_MAX, SPATIAL_LENGTH_MAX),
+  betaDeg: angle180,
+  theta2Deg: degrees(0, 359.999999999),
+  branch: fc.constantFrom('open' as const, 'crossed' as const),
+});
+
 /** One generator per slice of SLICES: a new slice without one here does not typecheck. */
 export const SLICE_ARBITRARIES: { [K in SliceName]: fc.Arbitrary<AppState[K]> } = {
   design,
@@ -268,14 +293,35 @@ export const SLICE_ARBITRARIES: { [K in SliceName]: fc.Arbitrary<AppState[K]> } 
   synMotion,
   synFunction,
   mech,
+  spatial,
 };
 
-/** Any valid state a link can hold exactly: every field of every slice random. */
-export const anyLinkState: fc.Arbitrary<AppState> = fc.record(SLICE_ARBITRARIES);
+/**
+ * The page whose links alone hold a slice's keys (UrlKey.page): its random states are on that page. The spatial
+ * page's keys shadow the simulator's r2, r3, r4, t2, br, pd, pa and a2, so its state is only in page=3d links.
+ */
+export const SLICE_PAGE: Partial<Record<SliceName, Page>> = { spatial: 'spatial' };
 
-/** Any valid state with one slice random and the others at their defaults (shrinks to the slice at fault). */
+/**
+ * Any valid state a link can hold exactly: every field of every slice random, on the pages without keys of their own
+ * (a slice of SLICE_PAGE at its default).
+ */
+export const anyLinkState: fc.Arbitrary<AppState> = fc
+  .record(SLICE_ARBITRARIES)
+  .map((s) => ({ ...s, spatial: DEFAULT_STATE.spatial }));
+
+/**
+ * Any valid state with one slice random and the others at their defaults (shrinks to the slice at fault); a slice of
+ * SLICE_PAGE on its page.
+ */
 export function oneSliceState(name: SliceName): fc.Arbitrary<AppState> {
+  const page = SLICE_PAGE[name];
   return (SLICE_ARBITRARIES[name] as fc.Arbitrary<unknown>).map(
-    (slice) => ({ ...DEFAULT_STATE, [name]: slice }) as AppState,
+    (slice) =>
+      ({
+        ...DEFAULT_STATE,
+        ...(page ? { shell: { ...DEFAULT_STATE.shell, page } } : {}),
+        [name]: slice,
+      }) as AppState,
   );
 }

@@ -2,7 +2,9 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { DEFAULT_EMBED, appUrl, embedUrl, parseUrl, serializeState } from '../../../src/shared/url/url';
-import { DEFAULT_TARGET, URL_KEYS } from '../../../src/shared/url/urlKeys';
+import { DEFAULT_TARGET, URL_KEYS, urlKeysOn } from '../../../src/shared/url/urlKeys';
+import type { Page } from '../../../src/shared/state/appState';
+import { PAGE_URL_VALUES } from '../../../src/shared/state/slices/shellSlice';
 import type { FlatState } from '../state/stateFixtures';
 import { withFields } from '../state/stateFixtures';
 import { anyLinkState, oneSliceState } from '../state/sliceArbitraries';
@@ -93,8 +95,11 @@ describe('serializeState and parseUrl', () => {
   });
 
   it('has a codec per key that reads back its own text for the default target', () => {
-    const names = URL_KEYS.map((k) => k.name);
-    expect(new Set(names).size).toBe(names.length);
+    // Names are unique within a page's table; a page's own keys (the spatial page's r2) shadow the others'.
+    for (const page of Object.keys(PAGE_URL_VALUES) as Page[]) {
+      const names = urlKeysOn(page).map((k) => k.name);
+      expect(new Set(names).size, page).toBe(names.length);
+    }
     for (const k of URL_KEYS) {
       const v = k.get(DEFAULT_TARGET);
       const r = k.parse(k.format(v));
@@ -394,6 +399,42 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['cs', '0', false],
 ];
 
+/** The spatial page's keys, read only on page=3d (where r2, r3, r4, t2, br, pd, pa and a2 are its own). */
+const SPATIAL_RANGE_CASES: [string, string, boolean][] = [
+  ['sk', 'rssr', true],
+  ['sk', 'cone', false],
+  ['a1', '60', true],
+  ['a1', '180', false],
+  ['a2', '0.5', true],
+  ['a2', '0', false],
+  ['a3', '179.9', true],
+  ['a3', '-5', false],
+  ['a4', '45', true],
+  ['a4', 'abc', false],
+  ['pd', '0', true],
+  ['pd', '180', false],
+  ['pa', '-90', true],
+  ['pa', 'x', false],
+  ['r2', '1e-200', true],
+  ['r2', '0', false],
+  ['r3', '4', true],
+  ['r3', '-4', false],
+  ['r4', '2', true],
+  ['r4', '1e301', false],
+  ['a', '0', true],
+  ['a', '-1', false],
+  ['beta', '270', true],
+  ['beta', 'inf', false],
+  ['h2', '-3', true],
+  ['h2', 'abc', false],
+  ['h4', '1e300', true],
+  ['h4', '2e300', false],
+  ['t2', '400', true],
+  ['t2', 'x', false],
+  ['br', 'crossed', true],
+  ['br', 'up', false],
+];
+
 describe('parseUrl range checks', () => {
   it.each(RANGE_CASES)('%s=%s is accepted: %s', (key, text, accepted) => {
     const r = parseUrl(`${key}=${encodeURIComponent(text)}`, DEFAULT_STATE, quiet);
@@ -410,13 +451,60 @@ describe('parseUrl range checks', () => {
     }
   });
 
+  it.each(SPATIAL_RANGE_CASES)('page=3d&%s=%s is accepted: %s', (key, text, accepted) => {
+    const r = parseUrl(`page=3d&${key}=${encodeURIComponent(text)}`, DEFAULT_STATE, quiet);
+    const onPage = { ...DEFAULT_STATE, shell: { ...DEFAULT_STATE.shell, page: 'spatial' as const } };
+    if (accepted) {
+      expect(r.ignored).toEqual([]);
+      const k = urlKeysOn('spatial').find((x) => x.name === key)!;
+      expect(k.page).toBe('spatial');
+      const d = k.parse(text);
+      expect(d.ok).toBe(true);
+      if (d.ok) expect(k.get({ state: r.state, embed: r.embed })).toEqual(d.value);
+      // The simulator's values of the same names are untouched.
+      expect(r.state.design).toBe(DEFAULT_STATE.design);
+      expect(r.state.motion).toBe(DEFAULT_STATE.motion);
+    } else {
+      expect(r.ignored.map((p) => [p.key, p.value])).toEqual([[key, text]]);
+      expect(r.state).toEqual(onPage);
+    }
+  });
+
   it('tests a rejected and an accepted value of every key', () => {
     for (const k of URL_KEYS.filter((x) => !['panels', 'lock', 'play', 'ang', 'ghost', 'trace'].includes(x.name))) {
+      const cases = k.page === 'spatial' ? SPATIAL_RANGE_CASES : RANGE_CASES;
       expect(
-        RANGE_CASES.some(([key, , ok]) => key === k.name && !ok),
+        cases.some(([key, , ok]) => key === k.name && !ok),
         k.name,
       ).toBe(true);
     }
+  });
+
+  it("reads the spatial page's keys only on page=3d, and the simulator's of the same names elsewhere", () => {
+    const sim = parseUrl('r2=3&a1=70&t2=10', DEFAULT_STATE, quiet);
+    expect(sim.state.design.linkage.r2).toBe(3);
+    expect(sim.state.motion.theta2Deg).toBe(10);
+    expect(sim.state.spatial).toBe(DEFAULT_STATE.spatial);
+    expect(sim.ignored.map((p) => [p.key, p.why])).toEqual([['a1', 'read only on page=3d']]);
+    const spatial = parseUrl('r2=3&page=3d&a1=70&t2=10', DEFAULT_STATE, quiet);
+    expect(spatial.ignored).toEqual([]);
+    expect(spatial.state.spatial).toMatchObject({ r2: 3, a1Deg: 70, theta2Deg: 10 });
+    expect(spatial.state.design).toBe(DEFAULT_STATE.design);
+    expect(spatial.state.motion).toBe(DEFAULT_STATE.motion);
+  });
+
+  it("writes a page=3d link with the language, the page and the spatial keys only (the shown kind's always)", () => {
+    const s = {
+      ...DEFAULT_STATE,
+      shell: { ...DEFAULT_STATE.shell, page: 'spatial' as const },
+      spatial: { ...DEFAULT_STATE.spatial, kind: 'rssr' as const, a3Deg: 50 },
+    };
+    const q = Object.fromEntries(new URLSearchParams(serializeState(s)));
+    expect(q).toMatchObject({ page: '3d', sk: 'rssr', r2: '1', r3: '4', r4: '2', a: '3', beta: '60', a3: '50' });
+    expect(q).not.toHaveProperty('a1');
+    expect(q).not.toHaveProperty('r1');
+    expect(q).not.toHaveProperty('play');
+    expect(parseUrl(serializeState(s), DEFAULT_STATE, quiet).state).toEqual(s);
   });
 
   it('refuses a transmission band whose edges cross, reverting the keys that broke it', () => {

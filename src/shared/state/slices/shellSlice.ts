@@ -10,10 +10,16 @@ export type Locale = 'en' | 'zh-TW';
 
 /**
  * Every page of the app and its value in the URL (page=…): the simulator, the solver lab (work-precision study of
- * the current linkage), synthesis. src/app/pages.tsx gives each its tab and view (a page missing there is a type
+ * the current linkage), synthesis, spatial (spherical and RSSR four-bars in 3D). src/app/pages.tsx gives each its tab and view (a page missing there is a type
  * error); docs/ARCHITECTURE.md "To add a page".
  */
-export const PAGE_URL_VALUES = { simulator: 'sim', lab: 'lab', synthesis: 'syn', mechanism: 'mech' } as const;
+export const PAGE_URL_VALUES = {
+  simulator: 'sim',
+  lab: 'lab',
+  synthesis: 'syn',
+  mechanism: 'mech',
+  spatial: '3d',
+} as const;
 
 /** Which page the app shows. */
 export type Page = keyof typeof PAGE_URL_VALUES;

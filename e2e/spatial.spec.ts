@@ -1,0 +1,243 @@
+import { readFileSync } from 'node:fs';
+import { expect, test } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import Decimal from 'decimal.js';
+import { artifact, pngFacts } from './helpers';
+
+// The Spatial page (issue 32). Oracles are computed here with decimal.js at 40 digits from the conventions of
+// docs/spatial.md, not taken from the app: A = Rz(θ2)·(sin a2, 0, cos a2), B on the rocker's circle about O4 with
+// A·B = cos a3, the open branch where (A − B)·∂B/∂θ4 > 0, rates from the differentiated constraint.
+
+const D = Decimal.clone({ precision: 40 });
+type V = [Decimal, Decimal, Decimal];
+const d = (x: number | string) => new D(x);
+const rad = (deg: number) => d(deg).times(D.acos(-1)).div(180);
+const dot = (a: V, b: V) => a[0].times(b[0]).plus(a[1].times(b[1])).plus(a[2].times(b[2]));
+const add = (a: V, b: V): V => [a[0].plus(b[0]), a[1].plus(b[1]), a[2].plus(b[2])];
+const mul = (k: Decimal, a: V): V => [a[0].times(k), a[1].times(k), a[2].times(k)];
+const cross = (a: V, b: V): V => [
+  a[1].times(b[2]).minus(a[2].times(b[1])),
+  a[2].times(b[0]).minus(a[0].times(b[2])),
+  a[0].times(b[1]).minus(a[1].times(b[0])),
+];
+
+/** The open-branch pose of a spherical four-bar (degrees in), with rates for ω2 = 1 rad/s, α2 = 0. */
+function sphericalOracle(a1Deg: number, a2Deg: number, a3Deg: number, a4Deg: number, t2Deg: number) {
+  const [a1, a2, a3, a4, t2] = [rad(a1Deg), rad(a2Deg), rad(a3Deg), rad(a4Deg), rad(t2Deg)];
+  const A: V = [a2.sin().times(t2.cos()), a2.sin().times(t2.sin()), a2.cos()];
+  const dA: V = [a2.sin().times(t2.sin()).neg(), a2.sin().times(t2.cos()), d(0)];
+  const ddA: V = [a2.sin().times(t2.cos()).neg(), a2.sin().times(t2.sin()).neg(), d(0)];
+  const O4: V = [a1.sin(), d(0), a1.cos()];
+  const u: V = [a1.cos(), d(0), a1.sin().neg()];
+  const y: V = [d(0), d(1), d(0)];
+  // A·B = cos a3 as P cos θ4 + Q sin θ4 = R.
+  const P = a4.sin().times(dot(A, u));
+  const Q = a4.sin().times(dot(A, y));
+  const R = a3.cos().minus(a4.cos().times(dot(A, O4)));
+  const phi = D.atan2(Q, P);
+  const psi = D.acos(R.div(P.pow(2).plus(Q.pow(2)).sqrt()));
+  const at = (t4: Decimal) => {
+    const B = add(mul(a4.cos(), O4), mul(a4.sin(), add(mul(t4.cos(), u), mul(t4.sin(), y))));
+    const dB = mul(a4.sin(), add(mul(t4.sin().neg(), u), mul(t4.cos(), y)));
+    const ddB = mul(a4.sin(), add(mul(t4.cos().neg(), u), mul(t4.sin().neg(), y)));
+    return { t4, B, dB, ddB };
+  };
+  const open = [at(phi.minus(psi)), at(phi.plus(psi))].find((c) => dot(add(A, mul(d(-1), c.B)), c.dB).gt(0))!;
+  const { B, dB, ddB } = open;
+  const F2 = dot(dA, B);
+  const F4 = dot(A, dB);
+  const omega4 = F2.neg().div(F4);
+  const alpha4 = dot(ddA, B)
+    .plus(dot(dA, dB).times(omega4).times(2))
+    .plus(dot(A, ddB).times(omega4.pow(2)))
+    .neg()
+    .div(F4);
+  // θ4 wrapped to (−180, 180] degrees.
+  let t4Deg = open.t4.times(180).div(D.acos(-1));
+  while (t4Deg.gt(180)) t4Deg = t4Deg.minus(360);
+  while (t4Deg.lte(-180)) t4Deg = t4Deg.plus(360);
+  return { A, B, t4Deg, omega4, alpha4 };
+}
+
+/** The coupler point at arc pd from A, turned by pa about A from the arc A→B (degrees in). */
+function couplerOracle(A: V, B: V, pdDeg: number, paDeg: number): V {
+  const n0 = cross(A, B);
+  const n = mul(d(1).div(dot(n0, n0).sqrt()), n0);
+  const t = cross(n, A);
+  const [pd, pa] = [rad(pdDeg), rad(paDeg)];
+  return add(mul(pd.cos(), A), mul(pd.sin(), add(mul(pa.cos(), t), mul(pa.sin(), n))));
+}
+
+/** The pin's shown x, y, z (seven significant digits). */
+async function shownPin(page: Page, pin: 'A' | 'B' | 'P'): Promise<number[]> {
+  const out: number[] = [];
+  for (const axis of ['x', 'y', 'z']) {
+    const text = await page.getByTestId(`pin-${pin}-${axis}`).innerText();
+    out.push(Number(text.replace('−', '-')));
+  }
+  return out;
+}
+
+/** Expects the shown values to be the oracle's to the seven digits shown. */
+function expectNear(shown: number[], oracle: V, what: string): void {
+  oracle.forEach((v, i) => expect(Math.abs(shown[i] - v.toNumber()), `${what}[${i}]`).toBeLessThan(6e-7));
+}
+
+async function openSpatial(page: Page, query = 'page=3d'): Promise<void> {
+  await page.goto(`./?${query}`);
+  await expect(page.getByTestId('spatial-page')).toBeVisible({ timeout: 20_000 });
+}
+
+test.describe('Spatial page', () => {
+  test('opens from its tab, draws the sphere with WebGL and shows the numbers of the oracle', async ({ page }) => {
+    await page.goto('./');
+    await page.getByRole('tab', { name: 'Spatial' }).click();
+    await expect(page.getByRole('heading', { name: 'Spatial four-bars' })).toBeVisible({ timeout: 20_000 });
+    await expect.poll(() => new URL(page.url()).searchParams.get('page')).toBe('3d');
+    // Headless Chromium here has --disable-gpu: WebGL comes from SwiftShader; the view must reach "ready".
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    const o = sphericalOracle(60, 20, 55, 45, 30);
+    expectNear(await shownPin(page, 'A'), o.A, 'A');
+    expectNear(await shownPin(page, 'B'), o.B, 'B');
+    expectNear(await shownPin(page, 'P'), couplerOracle(o.A, o.B, 25, 40), 'P');
+    await expect(page.getByTestId('spatial-type')).toHaveText('crank-rocker');
+    // The canvas is drawn: not one colour.
+    const colours = await page.getByTestId('spatial-canvas').evaluate((c: HTMLCanvasElement) => {
+      const url = c.toDataURL('image/png');
+      return url.length;
+    });
+    expect(colours).toBeGreaterThan(5000);
+    await page.screenshot({ path: artifact('spatial-desktop.png') });
+  });
+
+  test('a typed arc moves the pins to the oracle; a bad value is named and refused', async ({ page }) => {
+    await openSpatial(page, 'page=3d&t2=75');
+    const a2 = page.getByRole('textbox', { name: 'Crank arc a2' });
+    await a2.fill('35');
+    const o = sphericalOracle(60, 35, 55, 45, 75);
+    await expect.poll(async () => (await shownPin(page, 'A'))[0]).toBeCloseTo(o.A[0].toNumber(), 6);
+    expectNear(await shownPin(page, 'A'), o.A, 'A');
+    expectNear(await shownPin(page, 'B'), o.B, 'B');
+    await expect(page.getByTestId('spatial-theta4')).toHaveText(`${o.t4Deg.toFixed(4).replace('-', '−')}°`);
+    await expect.poll(() => new URL(page.url()).searchParams.get('a2')).toBe('35');
+    const a1 = page.getByRole('textbox', { name: 'Ground arc a1' });
+    await a1.fill('200');
+    await expect(page.getByRole('alert')).toContainText('Ground arc a1');
+    await expect(page.getByRole('alert')).toContainText('200');
+    // The last valid value is kept.
+    expectNear(await shownPin(page, 'B'), o.B, 'B kept');
+  });
+
+  test('each preset opens, with its kind, type and keys in the link', async ({ page }) => {
+    await openSpatial(page);
+    const preset = page.getByRole('combobox', { name: 'Preset' });
+    const cases = [
+      ['Spherical drag link', 'double crank (drag link)', { sk: 'sph', a1: '20', a2: '45', pd: '0' }],
+      ['Universal joint (90° arcs)', null, { a1: '30', a2: '90', a3: '90', a4: '90' }],
+      ['RSSR skew drive', null, { sk: 'rssr', r2: '1', r3: '4', r4: '2', a: '3', beta: '60' }],
+      ['RSSR = planar 6-2-5-5', 'crank-rocker', { sk: 'rssr', r2: '2', r3: '5', r4: '5', a: '6', beta: '0', h2: '0' }],
+      ['Spherical crank-rocker', 'crank-rocker', { sk: 'sph', a1: '60', pd: '25', r2: '2' }],
+    ] as const;
+    for (const [name, type, keys] of cases) {
+      await preset.selectOption({ label: name });
+      if (type) await expect(page.getByTestId('spatial-type')).toHaveText(type);
+      for (const [k, v] of Object.entries(keys)) {
+        await expect.poll(() => new URL(page.url()).searchParams.get(k), `${name}: ${k}`).toBe(v);
+      }
+      await expect(page.getByTestId('pin-A-x')).not.toHaveText('—');
+    }
+    await preset.selectOption({ label: 'RSSR skew drive' });
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready');
+    await page.waitForTimeout(300);
+    await page.screenshot({ path: artifact('spatial-rssr.png') });
+  });
+
+  test("exports the CSV with the issue's columns; its first row is the oracle's", async ({ page }) => {
+    await openSpatial(page);
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export CSV' }).click(),
+    ]);
+    expect(download.suggestedFilename()).toBe('spatial_sph_60-20-55-45_open.csv');
+    const lines = readFileSync(await download.path(), 'utf8')
+      .trim()
+      .split('\n');
+    expect(lines[0]).toBe('theta2_deg,A_x,A_y,A_z,B_x,B_y,B_z,P_x,P_y,P_z,theta4_deg,omega4_rad_s,alpha4_rad_s2');
+    expect(lines.length).toBe(1 + 361);
+    const row = lines[1].split(',').map(Number);
+    const o = sphericalOracle(60, 20, 55, 45, 0);
+    const P = couplerOracle(o.A, o.B, 25, 40);
+    const want = [d(0), ...o.A, ...o.B, ...P, o.t4Deg, o.omega4, o.alpha4];
+    // Full precision: each number within a few ulps of its size (1e-13 relative, 1e-15 absolute near 0).
+    want.forEach((w, i) => {
+      const x = w.toNumber();
+      expect(Math.abs(row[i] - x), `column ${i}`).toBeLessThanOrEqual(1e-13 * Math.max(1, Math.abs(x)));
+    });
+  });
+
+  test('exports a PNG of the 3D view', async ({ page }) => {
+    await openSpatial(page);
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export 3D view PNG' }).click(),
+    ]);
+    const png = await pngFacts(download);
+    expect(png.signatureOk).toBe(true);
+    const box = (await page.getByTestId('spatial-canvas').boundingBox())!;
+    expect(png.width).toBe(Math.round(box.width) * 2);
+    expect(png.bytes).toBeGreaterThan(10_000);
+  });
+
+  test('reads in Traditional Chinese', async ({ page }) => {
+    await openSpatial(page, 'page=3d&lang=zh-TW');
+    await expect(page.getByRole('tab', { name: '空間機構' })).toHaveAttribute('aria-selected', 'true');
+    await expect(page.getByRole('heading', { name: '空間四連桿' })).toBeVisible();
+    await expect(page.getByRole('button', { name: '匯出 CSV' })).toBeVisible();
+    await expect(page.getByTestId('spatial-type')).toHaveText('曲柄搖桿');
+    await page.screenshot({ path: artifact('spatial-zh-TW.png') });
+  });
+
+  test('without WebGL: a clear message, and the numbers, plots and CSV still work', async ({ page }) => {
+    await page.addInitScript(() => {
+      const original = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, id: string, ...rest: unknown[]) {
+        if (/webgl/i.test(id)) return null;
+        return (original as (...a: unknown[]) => RenderingContext | null).call(this, id, ...rest);
+      } as typeof original;
+    });
+    await openSpatial(page);
+    await expect(page.getByTestId('spatial-no-webgl')).toContainText('WebGL', { timeout: 20_000 });
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'no-webgl');
+    const o = sphericalOracle(60, 20, 55, 45, 30);
+    expectNear(await shownPin(page, 'B'), o.B, 'B');
+    await expect(page.getByTestId('spatial-plot-theta4').locator('path').first()).toBeAttached();
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export CSV' }).click(),
+    ]);
+    expect(download.suggestedFilename()).toMatch(/\.csv$/);
+    await page.screenshot({ path: artifact('spatial-no-webgl.png') });
+  });
+
+  for (const v of [
+    { width: 390, height: 844 },
+    { width: 360, height: 740 },
+  ]) {
+    test(`a ${v.width}x${v.height} phone: one column, the view first, no horizontal scroll`, async ({ browser }) => {
+      const context = await browser.newContext({ viewport: v, deviceScaleFactor: 2, hasTouch: true, isMobile: true });
+      const page = await context.newPage();
+      await openSpatial(page);
+      await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+      const scroll = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+      expect(scroll).toBeLessThanOrEqual(0);
+      const view = (await page.getByTestId('spatial-canvas').boundingBox())!;
+      const field = (await page.getByRole('textbox', { name: 'Ground arc a1' }).boundingBox())!;
+      expect(field.y).toBeGreaterThan(view.y + view.height);
+      expect(view.width).toBeGreaterThan(v.width - 60);
+      await page.screenshot({ path: artifact(`spatial-phone-${v.width}.png`) });
+      await page.screenshot({ path: artifact(`spatial-phone-${v.width}-full.png`), fullPage: true });
+      await context.close();
+    });
+  }
+});

@@ -1,0 +1,124 @@
+import type { Dispatch } from 'react';
+import type { Action, SpatialState } from '../../shared/state/appState';
+import type { SpatialField } from '../../shared/state/slices/spatialSlice';
+import { Segmented } from '../../shared/ui/Segmented';
+import type { SpatialPreset } from '../../spatial';
+import type { SliderRange } from './SpatialFieldControl';
+import { SpatialFieldControl } from './SpatialFieldControl';
+import type { SpatialMessages } from './spatialMessages';
+import { PRESET_IDS, presetById, presetOf, presetPatch } from './spatialModel';
+
+/** Props of SpatialControls: the state, dispatch, Play and the step, and the strings. */
+export interface SpatialControlsProps {
+  s: SpatialState;
+  dispatch: Dispatch<Action>;
+  playing: boolean;
+  onPlay: (playing: boolean) => void;
+  onStep: (deltaDeg: number) => void;
+  sm: SpatialMessages;
+}
+
+const ARC: SliderRange = { min: 0.5, max: 179.5, step: 0.5 };
+const TURN: SliderRange = { min: -180, max: 180, step: 1 };
+const LENGTH: SliderRange = { min: 0.1, max: 10, step: 0.1 };
+
+/** Each kind's fields and their sliders, in the panel's order. */
+const FIELDS: Record<SpatialState['kind'], [SpatialField, SliderRange][]> = {
+  sph: [
+    ['a1Deg', ARC],
+    ['a2Deg', ARC],
+    ['a3Deg', ARC],
+    ['a4Deg', ARC],
+    ['pDistDeg', { min: 0, max: 179, step: 0.5 }],
+    ['pAngleDeg', TURN],
+  ],
+  rssr: [
+    ['r2', LENGTH],
+    ['r3', LENGTH],
+    ['r4', LENGTH],
+    ['a', { min: 0, max: 10, step: 0.1 }],
+    ['betaDeg', TURN],
+    ['h2', { min: -5, max: 5, step: 0.1 }],
+    ['h4', { min: -5, max: 5, step: 0.1 }],
+  ],
+};
+
+/** The linkage's controls: kind, preset, its values, θ2 with Play and Step, and the branch. */
+export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: SpatialControlsProps) {
+  const set = (field: SpatialField) => (value: number) => dispatch({ type: 'setSpatialField', field, value });
+  const preset = presetOf(s);
+  return (
+    <div className="spatial-controls">
+      <Segmented
+        legend={sm.kindLegend}
+        value={s.kind}
+        options={[
+          { value: 'sph', label: sm.kindSpherical },
+          { value: 'rssr', label: sm.kindRssr },
+        ]}
+        onChange={(kind) => dispatch({ type: 'setSpatial', patch: { kind } })}
+      />
+      <label className="spatial-preset">
+        <span className="numctl-label">{sm.presetLabel}</span>
+        <select
+          className="select select-small"
+          value={preset ?? ''}
+          onChange={(e) => {
+            if (!e.target.value) return;
+            const p = presetById(e.target.value as SpatialPreset['id']);
+            dispatch({ type: 'setSpatial', patch: presetPatch(p) });
+          }}
+        >
+          {preset === null ? <option value="">{sm.presetCustom}</option> : null}
+          {PRESET_IDS.map((id) => (
+            <option key={id} value={id}>
+              {sm.presetNames[id]}
+            </option>
+          ))}
+        </select>
+      </label>
+      <div className="spatial-fields">
+        {FIELDS[s.kind].map(([field, slider]) => (
+          <SpatialFieldControl
+            key={`${s.kind}-${field}`}
+            field={field}
+            value={s[field]}
+            slider={slider}
+            onCommit={set(field)}
+            sm={sm}
+          />
+        ))}
+      </div>
+      <div className="spatial-input">
+        <SpatialFieldControl
+          field="theta2Deg"
+          value={s.theta2Deg}
+          slider={{ min: 0, max: 359.5, step: 0.5 }}
+          onCommit={set('theta2Deg')}
+          sm={sm}
+          decimals={2}
+        />
+        <div className="spatial-play">
+          <button type="button" className="btn btn-small" onClick={() => onStep(-1)} aria-label={sm.stepBack}>
+            <span aria-hidden="true">◀ 1°</span>
+          </button>
+          <button type="button" className="btn btn-primary btn-small" onClick={() => onPlay(!playing)}>
+            {playing ? sm.pause : sm.play}
+          </button>
+          <button type="button" className="btn btn-small" onClick={() => onStep(1)} aria-label={sm.stepForward}>
+            <span aria-hidden="true">1° ▶</span>
+          </button>
+        </div>
+        <Segmented
+          legend={sm.branchLegend}
+          value={s.branch}
+          options={[
+            { value: 'open', label: sm.branchOpen },
+            { value: 'crossed', label: sm.branchCrossed },
+          ]}
+          onChange={(branch) => dispatch({ type: 'setSpatial', patch: { branch } })}
+        />
+      </div>
+    </div>
+  );
+}

@@ -1,0 +1,469 @@
+import {
+  AmbientLight,
+  BufferGeometry,
+  Float32BufferAttribute,
+  Color,
+  CylinderGeometry,
+  DirectionalLight,
+  DoubleSide,
+  Group,
+  Mesh,
+  MeshBasicMaterial,
+  MeshPhongMaterial,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Quaternion,
+  Scene,
+  SphereGeometry,
+  Spherical,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import type { Material, Object3D } from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { Line2 } from 'three/addons/lines/Line2.js';
+import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
+import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
+import { LineSegments2 } from 'three/addons/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/addons/lines/LineSegmentsGeometry.js';
+import { COLORS } from '../../shared/theme/tokens';
+import { PI, TWO_PI, degToRad } from '../../solver';
+import type { Vec3 } from '../../spatial';
+import type { SceneLinkage, ScenePose } from './sceneData';
+import { arcPoints, sceneBounds } from './sceneData';
+
+/** How the 3D view projects: perspective (default) or orthographic. */
+export type Projection = 'perspective' | 'orthographic';
+
+/** A live three.js view of a spatial linkage on a canvas; every call renders at most once per frame. */
+export interface SpatialScene {
+  /** The fixed parts (sphere or axes, ground, paths, coupler curve); fits the view when the linkage's size changed. */
+  setLinkage(l: SceneLinkage): void;
+  /** The moving parts at one pose (null: the loop does not close, the links hidden). */
+  setPose(p: ScenePose | null): void;
+  setProjection(p: Projection): void;
+  /** Back to the first view of this linkage. */
+  resetView(): void;
+  /** Turns the view about its target (radians: azimuth, then elevation). */
+  orbitBy(dAzimuth: number, dElevation: number): void;
+  /** Zooms by a factor (> 1 closer). */
+  zoomBy(factor: number): void;
+  /** Pans by a fraction of the view's height (x right, y up). */
+  panBy(dx: number, dy: number): void;
+  /** Resizes the drawing buffer to the canvas' CSS size (times devicePixelRatio). */
+  resize(widthPx: number, heightPx: number): void;
+  /** PNG bytes of the view at scale × its CSS size. */
+  pngBytes(scale: number): Promise<Uint8Array>;
+  /** Frames rendered so far (for tests and bench). */
+  frames(): number;
+  dispose(): void;
+}
+
+const Z_UP = new Vector3(0, 0, 1);
+const FOV_DEG = 32;
+
+const v3 = (p: Vec3) => new Vector3(p.x, p.y, p.z);
+
+/** A fat line (pixels wide) through points (x y z flat). */
+function fatLine(color: string, widthPx: number, opacity = 1): Line2 {
+  const m = new LineMaterial({
+    color: new Color(color).getHex(),
+    linewidth: widthPx,
+    transparent: opacity < 1,
+    opacity,
+  });
+  return new Line2(new LineGeometry(), m);
+}
+
+function setLine(line: Line2, pts: number[]): void {
+  if (pts.length < 6) {
+    line.visible = false;
+    return;
+  }
+  line.visible = true;
+  line.geometry.setPositions(pts);
+  line.computeLineDistances();
+}
+
+/** Segments of a link's fan; arcPoints gives FAN_STEPS + 1 points. */
+const FAN_STEPS = 32;
+
+/** A translucent fan from the sphere's centre to a link's arc: the link seen as the rigid body it is. */
+function fan(color: string): Mesh {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * (FAN_STEPS + 2)), 3));
+  const index: number[] = [];
+  for (let i = 1; i <= FAN_STEPS; i++) index.push(0, i, i + 1);
+  g.setIndex(index);
+  const m = new Mesh(
+    g,
+    new MeshBasicMaterial({ color, transparent: true, opacity: 0.16, side: DoubleSide, depthWrite: false }),
+  );
+  m.frustumCulled = false;
+  return m;
+}
+
+/** Puts a fan on the arc's points (x y z flat; the centre is the origin). */
+function setFan(m: Mesh, arc: number[]): void {
+  m.visible = arc.length > 0;
+  if (!arc.length) return;
+  const pos = m.geometry.getAttribute('position') as Float32BufferAttribute;
+  const a = pos.array as Float32Array;
+  a[0] = a[1] = a[2] = 0;
+  a.set(arc, 3);
+  pos.needsUpdate = true;
+}
+
+function ball(color: string, radius: number): Mesh {
+  return new Mesh(new SphereGeometry(radius, 20, 14), new MeshPhongMaterial({ color, shininess: 40 }));
+}
+
+/** A short cylinder along axis at centre: a bearing, the ground symbol of a revolute joint. */
+function bearing(radius: number, length: number): Mesh {
+  const m = new Mesh(
+    new CylinderGeometry(radius, radius, length, 24),
+    new MeshPhongMaterial({ color: COLORS.ground, shininess: 20 }),
+  );
+  return m;
+}
+
+function orient(mesh: Object3D, centre: Vector3, axis: Vector3): void {
+  mesh.position.copy(centre);
+  mesh.quaternion.copy(new Quaternion().setFromUnitVectors(new Vector3(0, 1, 0), axis.clone().normalize()));
+}
+
+function disposeTree(root: Object3D): void {
+  root.traverse((o) => {
+    const m = o as Partial<Mesh>;
+    m.geometry?.dispose();
+    const mat = m.material as Material | Material[] | undefined;
+    if (Array.isArray(mat)) mat.forEach((x) => x.dispose());
+    else mat?.dispose();
+  });
+}
+
+/**
+ * Makes the view on canvas: throws when WebGL cannot start (the caller shows its fallback). Orbit, zoom and pan by
+ * mouse and touch come from three's OrbitControls; the keys from the caller (orbitBy, zoomBy, panBy).
+ */
+export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
+  const renderer = new WebGLRenderer({ canvas, antialias: true, alpha: false });
+  renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
+  renderer.setClearColor(new Color(COLORS.surface), 1);
+  const scene = new Scene();
+  scene.add(new AmbientLight(0xffffff, 1.6));
+  const sun = new DirectionalLight(0xffffff, 1.4);
+  sun.position.set(2, -3, 5);
+  scene.add(sun);
+
+  const perspective = new PerspectiveCamera(FOV_DEG, 1, 0.01, 100);
+  const ortho = new OrthographicCamera(-1, 1, 1, -1, -100, 100);
+  perspective.up.copy(Z_UP);
+  ortho.up.copy(Z_UP);
+  let camera: PerspectiveCamera | OrthographicCamera = perspective;
+  let controls: OrbitControls<PerspectiveCamera | OrthographicCamera> = new OrbitControls(camera, canvas);
+  let frameCount = 0;
+  let pending = 0;
+  let size = new Vector2(1, 1);
+  /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
+  let fit = { centre: new Vector3(), radius: 1.3 };
+  let viewDir = new Vector3(0.4, -0.8, 0.5).normalize();
+
+  const render = () => {
+    pending = 0;
+    renderer.render(scene, camera);
+    frameCount++;
+  };
+  const invalidate = () => {
+    if (!pending) pending = requestAnimationFrame(render);
+  };
+  const wire = (c: OrbitControls<PerspectiveCamera | OrthographicCamera>) => {
+    c.enableDamping = false;
+    c.zoomToCursor = false;
+    c.addEventListener('change', invalidate);
+  };
+  wire(controls);
+
+  // Fixed parts are rebuilt per linkage; moving parts are made once and moved.
+  let fixed = new Group();
+  scene.add(fixed);
+  const lineMaterials: LineMaterial[] = [];
+  const track = <T extends Line2 | LineSegments2>(l: T): T => {
+    lineMaterials.push(l.material);
+    l.material.resolution.copy(size);
+    return l;
+  };
+  const crank = track(fatLine(COLORS.crank, 7));
+  const coupler = track(fatLine(COLORS.coupler, 7));
+  const rocker = track(fatLine(COLORS.rocker, 7));
+  const pArm = track(fatLine(COLORS.coupler, 3));
+  const pinA = ball(COLORS.crank, 0.045);
+  const pinB = ball(COLORS.rocker, 0.045);
+  const pinP = ball(COLORS.couplerPoint, 0.04);
+  const crankFan = fan(COLORS.crank);
+  const couplerFan = fan(COLORS.coupler);
+  const rockerFan = fan(COLORS.rocker);
+  const moving = new Group();
+  moving.add(crankFan, couplerFan, rockerFan, crank, coupler, rocker, pArm, pinA, pinB, pinP);
+  scene.add(moving);
+  let linkage: SceneLinkage | null = null;
+  let lastFitKey = '';
+
+  const place = (dir: Vector3, dist: number) => {
+    camera.position.copy(fit.centre).addScaledVector(dir, dist);
+    controls.target.copy(fit.centre);
+  };
+  const viewDistance = () => fit.radius / Math.sin(degToRad(FOV_DEG / 2));
+  const updateOrtho = () => {
+    const aspect = size.x / Math.max(1, size.y);
+    const h = fit.radius * 1.05;
+    ortho.left = -h * aspect;
+    ortho.right = h * aspect;
+    ortho.top = h;
+    ortho.bottom = -h;
+    ortho.updateProjectionMatrix();
+  };
+  const resetView = () => {
+    perspective.zoom = 1;
+    ortho.zoom = 1;
+    perspective.updateProjectionMatrix();
+    updateOrtho();
+    place(viewDir, viewDistance());
+    controls.update();
+    invalidate();
+  };
+
+  const buildFixed = (l: SceneLinkage) => {
+    scene.remove(fixed);
+    disposeTree(fixed);
+    for (let i = lineMaterials.length - 1; i >= 0; i--) {
+      if (!moving.children.some((c) => (c as Line2).material === lineMaterials[i])) lineMaterials.splice(i, 1);
+    }
+    fixed = new Group();
+    const r = l.pinRadius;
+    pinA.scale.setScalar(r / 0.045);
+    pinB.scale.setScalar(r / 0.045);
+    pinP.scale.setScalar((0.9 * r) / 0.045);
+    const add = (o: Object3D) => fixed.add(o);
+    if (l.kind === 'spherical') {
+      const sphere = new Mesh(
+        new SphereGeometry(1, 64, 40),
+        new MeshPhongMaterial({
+          color: '#b8c9e0',
+          transparent: true,
+          opacity: 0.2,
+          depthWrite: false,
+          side: DoubleSide,
+          shininess: 10,
+        }),
+      );
+      sphere.renderOrder = -1;
+      add(sphere);
+      // Three great circles, faint, for depth.
+      for (const [u, w] of [
+        [new Vector3(1, 0, 0), new Vector3(0, 1, 0)],
+        [new Vector3(1, 0, 0), new Vector3(0, 0, 1)],
+        [new Vector3(0, 1, 0), new Vector3(0, 0, 1)],
+      ]) {
+        const pts: number[] = [];
+        for (let i = 0; i <= 96; i++) {
+          const t = (TWO_PI * i) / 96;
+          pts.push(...u.clone().multiplyScalar(Math.cos(t)).addScaledVector(w, Math.sin(t)).toArray());
+        }
+        const c = track(fatLine(COLORS.gridAxis, 1, 0.7));
+        setLine(c, pts);
+        add(c);
+      }
+    }
+    // Ground: the axes (thin), the ground link (thick), a bearing on each axis.
+    for (const ax of l.axes) {
+      const c = track(fatLine(COLORS.ground, 1.5));
+      const from = v3(ax.from);
+      const to = v3(ax.to);
+      setLine(c, [...from.toArray(), ...to.toArray()]);
+      add(c);
+      const b = bearing(r * 0.9, r * 3.2);
+      orient(b, v3(ax.bearing), to.clone().sub(from));
+      add(b);
+    }
+    const ground = track(fatLine(COLORS.ground, 4, 0.85));
+    setLine(ground, l.ground);
+    add(ground);
+    for (const p of l.groundPins) {
+      const g = ball(COLORS.ground, r * 0.8);
+      g.position.copy(v3(p));
+      add(g);
+    }
+    if (l.curve.length) {
+      const seg = new LineSegments2(
+        new LineSegmentsGeometry(),
+        new LineMaterial({ color: new Color(COLORS.trace).getHex(), linewidth: 2.5 }),
+      );
+      track(seg);
+      seg.geometry.setPositions(l.curve);
+      add(seg);
+    }
+    for (const path of l.paths) {
+      const seg = new LineSegments2(
+        new LineSegmentsGeometry(),
+        new LineMaterial({
+          color: new Color(path.color).getHex(),
+          linewidth: 1.5,
+          dashed: true,
+          dashSize: 0.04 * l.radius,
+          gapSize: 0.03 * l.radius,
+          transparent: true,
+          opacity: 0.75,
+        }),
+      );
+      track(seg);
+      seg.geometry.setPositions(path.segments);
+      seg.computeLineDistances();
+      add(seg);
+    }
+    // A floor below an RSSR, for depth.
+    if (l.floorZ !== null) {
+      const floor = new Mesh(
+        new CylinderGeometry(l.radius * 1.05, l.radius * 1.05, 0.001, 64),
+        new MeshBasicMaterial({ color: COLORS.groundFill, transparent: true, opacity: 0.6, depthWrite: false }),
+      );
+      floor.rotation.x = PI / 2;
+      floor.position.set(l.centre.x, l.centre.y, l.floorZ);
+      floor.renderOrder = -2;
+      add(floor);
+    }
+    scene.add(fixed);
+  };
+
+  const api: SpatialScene = {
+    setLinkage(l) {
+      linkage = l;
+      buildFixed(l);
+      const b = sceneBounds(l);
+      fit = { centre: v3(b.centre), radius: b.radius };
+      viewDir = v3(l.viewDir);
+      const key = `${l.kind}:${b.radius.toPrecision(3)}:${b.centre.x.toPrecision(3)},${b.centre.y.toPrecision(3)},${b.centre.z.toPrecision(3)}`;
+      if (key !== lastFitKey) {
+        lastFitKey = key;
+        resetView();
+      }
+      invalidate();
+    },
+    setPose(p) {
+      moving.visible = p !== null && linkage !== null;
+      if (!p || !linkage) {
+        invalidate();
+        return;
+      }
+      const l = linkage;
+      if (l.kind === 'spherical') {
+        const arcs = [arcPoints(l.crankPivot, p.A), arcPoints(p.A, p.B), arcPoints(l.rockerPivot, p.B)];
+        setLine(crank, arcs[0]);
+        setLine(coupler, arcs[1]);
+        setLine(rocker, arcs[2]);
+        setFan(crankFan, arcs[0]);
+        setFan(couplerFan, arcs[1]);
+        setFan(rockerFan, arcs[2]);
+        setLine(pArm, p.P ? arcPoints(p.A, p.P) : []);
+      } else {
+        for (const f of [crankFan, couplerFan, rockerFan]) setFan(f, []);
+        setLine(crank, [l.crankPivot.x, l.crankPivot.y, l.crankPivot.z, p.A.x, p.A.y, p.A.z]);
+        setLine(coupler, [p.A.x, p.A.y, p.A.z, p.B.x, p.B.y, p.B.z]);
+        setLine(rocker, [l.rockerPivot.x, l.rockerPivot.y, l.rockerPivot.z, p.B.x, p.B.y, p.B.z]);
+        setLine(pArm, []);
+      }
+      pinA.position.copy(v3(p.A));
+      pinB.position.copy(v3(p.B));
+      pinP.visible = p.P !== undefined;
+      if (p.P) pinP.position.copy(v3(p.P));
+      invalidate();
+    },
+    setProjection(p) {
+      const next = p === 'orthographic' ? ortho : perspective;
+      if (next === camera) return;
+      const target = controls.target.clone();
+      const dir = camera.position.clone().sub(target);
+      controls.dispose();
+      next.position.copy(target).add(dir);
+      next.zoom = camera.zoom;
+      // Orthographic zoom has no distance: keep the framing by matching the perspective's distance to the fit.
+      if (next === ortho) next.zoom = (viewDistance() / dir.length()) * perspective.zoom;
+      else next.position.copy(target).addScaledVector(dir.normalize(), viewDistance() / ortho.zoom);
+      if (next === perspective) next.zoom = 1;
+      camera = next;
+      updateOrtho();
+      camera.updateProjectionMatrix();
+      controls = new OrbitControls(camera, canvas);
+      wire(controls);
+      controls.target.copy(target);
+      controls.update();
+      invalidate();
+    },
+    resetView,
+    orbitBy(dAz, dEl) {
+      const offset = camera.position.clone().sub(controls.target);
+      // Spherical coordinates about z (three's Spherical is about y: swap y and z).
+      const s = new Spherical().setFromCartesianCoords(offset.x, offset.z, offset.y);
+      s.theta += dAz;
+      s.phi = Math.min(PI - 1e-3, Math.max(1e-3, s.phi - dEl));
+      const v = new Vector3().setFromSpherical(s);
+      camera.position.copy(controls.target).add(new Vector3(v.x, v.z, v.y));
+      controls.update();
+      invalidate();
+    },
+    zoomBy(f) {
+      if (camera === perspective) {
+        const offset = camera.position.clone().sub(controls.target).divideScalar(f);
+        camera.position.copy(controls.target).add(offset);
+      } else {
+        ortho.zoom *= f;
+        ortho.updateProjectionMatrix();
+      }
+      controls.update();
+      invalidate();
+    },
+    panBy(dx, dy) {
+      const dist = camera.position.distanceTo(controls.target);
+      const h = camera === perspective ? 2 * dist * Math.tan(degToRad(FOV_DEG / 2)) : (2 * fit.radius) / ortho.zoom;
+      const right = new Vector3().setFromMatrixColumn(camera.matrix, 0).multiplyScalar(dx * h);
+      const up = new Vector3().setFromMatrixColumn(camera.matrix, 1).multiplyScalar(dy * h);
+      const shift = right.add(up).negate();
+      camera.position.add(shift);
+      controls.target.add(shift);
+      controls.update();
+      invalidate();
+    },
+    resize(w, h) {
+      const wPx = Math.max(1, Math.round(w));
+      const hPx = Math.max(1, Math.round(h));
+      renderer.setSize(wPx, hPx, false);
+      size = new Vector2(wPx, hPx);
+      for (const m of lineMaterials) m.resolution.copy(size);
+      perspective.aspect = wPx / hPx;
+      perspective.updateProjectionMatrix();
+      updateOrtho();
+      render();
+    },
+    async pngBytes(scale) {
+      const ratio = renderer.getPixelRatio();
+      renderer.setPixelRatio(scale);
+      renderer.setSize(size.x, size.y, false);
+      renderer.render(scene, camera);
+      const blob = await new Promise<Blob | null>((resolve) => canvas.toBlob(resolve, 'image/png'));
+      renderer.setPixelRatio(ratio);
+      renderer.setSize(size.x, size.y, false);
+      render();
+      if (!blob) throw new Error('could not encode the 3D view as PNG');
+      return new Uint8Array(await blob.arrayBuffer());
+    },
+    frames: () => frameCount,
+    dispose() {
+      if (pending) cancelAnimationFrame(pending);
+      controls.dispose();
+      disposeTree(scene);
+      renderer.dispose();
+    },
+  };
+  return api;
+}
