@@ -71,6 +71,92 @@ export function solveInPlace(M: Float64Array, rhs: Float64Array, n: number): boo
   return true;
 }
 
+/**
+ * Factors an n×n complex M (row-major) in place into L U with partial pivoting, the row swaps in piv; false when a
+ * pivot is exactly zero or not finite. luSolve then solves with it as many times as needed (a chord corrector).
+ */
+export function luFactor(M: Float64Array, piv: Int32Array, n: number): boolean {
+  for (let k = 0; k < n; k++) {
+    let best = -1;
+    let bestAbs = -1;
+    for (let i = k; i < n; i++) {
+      const m = M[2 * (i * n + k)] ** 2 + M[2 * (i * n + k) + 1] ** 2;
+      if (m > bestAbs) {
+        bestAbs = m;
+        best = i;
+      }
+    }
+    if (!(bestAbs > 0) || !Number.isFinite(bestAbs)) return false;
+    piv[k] = best;
+    if (best !== k) {
+      for (let c = 0; c < 2 * n; c++) {
+        const t = M[2 * k * n + c];
+        M[2 * k * n + c] = M[2 * best * n + c];
+        M[2 * best * n + c] = t;
+      }
+    }
+    const ir = M[2 * (k * n + k)] / bestAbs;
+    const ii = -M[2 * (k * n + k) + 1] / bestAbs;
+    for (let i = k + 1; i < n; i++) {
+      const ar = M[2 * (i * n + k)];
+      const ai = M[2 * (i * n + k) + 1];
+      const fr = ar * ir - ai * ii;
+      const fi = ar * ii + ai * ir;
+      // The multiplier stays in L's place below the diagonal.
+      M[2 * (i * n + k)] = fr;
+      M[2 * (i * n + k) + 1] = fi;
+      if (fr === 0 && fi === 0) continue;
+      for (let c = k + 1; c < n; c++) {
+        const br = M[2 * (k * n + c)];
+        const bi = M[2 * (k * n + c) + 1];
+        M[2 * (i * n + c)] -= fr * br - fi * bi;
+        M[2 * (i * n + c) + 1] -= fr * bi + fi * br;
+      }
+    }
+  }
+  return true;
+}
+
+/** Solves L U w = rhs with luFactor's factors and swaps; w overwrites rhs. */
+export function luSolve(M: Float64Array, piv: Int32Array, rhs: Float64Array, n: number): void {
+  // The swaps first, in order (whole rows were swapped while factoring, as LAPACK's getrf/getrs do), then L and U.
+  for (let k = 0; k < n; k++) {
+    const b = piv[k];
+    if (b !== k) {
+      for (let c = 0; c < 2; c++) {
+        const t = rhs[2 * k + c];
+        rhs[2 * k + c] = rhs[2 * b + c];
+        rhs[2 * b + c] = t;
+      }
+    }
+  }
+  for (let k = 0; k < n; k++) {
+    const rr = rhs[2 * k];
+    const ri = rhs[2 * k + 1];
+    for (let i = k + 1; i < n; i++) {
+      const fr = M[2 * (i * n + k)];
+      const fi = M[2 * (i * n + k) + 1];
+      rhs[2 * i] -= fr * rr - fi * ri;
+      rhs[2 * i + 1] -= fr * ri + fi * rr;
+    }
+  }
+  for (let k = n - 1; k >= 0; k--) {
+    let sr = rhs[2 * k];
+    let si = rhs[2 * k + 1];
+    for (let c = k + 1; c < n; c++) {
+      const mr = M[2 * (k * n + c)];
+      const mi = M[2 * (k * n + c) + 1];
+      sr -= mr * rhs[2 * c] - mi * rhs[2 * c + 1];
+      si -= mr * rhs[2 * c + 1] + mi * rhs[2 * c];
+    }
+    const pr = M[2 * (k * n + k)];
+    const pi = M[2 * (k * n + k) + 1];
+    const m = pr * pr + pi * pi;
+    rhs[2 * k] = (sr * pr + si * pi) / m;
+    rhs[2 * k + 1] = (si * pr - sr * pi) / m;
+  }
+}
+
 /** Euclidean norm of a complex vector stored as 2n floats. */
 export function norm(v: Float64Array): number {
   let s = 0;

@@ -297,7 +297,7 @@ export async function ninePointSynthesis(points: Point[], options: NinePointOpti
   const trackOne = (index: number, careful: boolean) => {
     const z = start.roots[index].slice();
     const r = careful
-      ? tracker.track(z, { hMax: 0.01, h0: 1e-3, maxSteps: 40000, tol: 1e-10 })
+      ? tracker.track(z, { hMax: 0.01, h0: 1e-3, maxSteps: 40000, tol: 1e-10, eta: 1e-5 })
       : tracker.track(z, { hMax: 0.1 });
     return { z, status: r.status };
   };

@@ -1,5 +1,5 @@
 import { NV, evaluate } from './equations';
-import { norm, solveInPlace } from './linear';
+import { luFactor, luSolve, norm, solveInPlace } from './linear';
 
 /** How a tracked path ended: at a finite regular root, lost (step underflow, singular end), or off to infinity. */
 export type PathStatus = 'finished' | 'failed' | 'diverged';
@@ -12,20 +12,28 @@ export interface TrackOptions {
   h0?: number;
   /** Give up after this many steps (default 4000). */
   maxSteps?: number;
-  /** Newton's tolerance along the path, relative to |z| (default 1e-8). */
+  /** The corrector's tolerance along the path, relative to |z| (default 1e-6; the end is polished to 1e-12). */
   tol?: number;
+  /**
+   * The prediction error aimed at, relative to |z| (default 1e-3): each step's size is set from the corrector's first
+   * update as for an order-5 local error (RK4), so the corrector converges in two or three iterations.
+   */
+  eta?: number;
 }
 
 /** |z| beyond this (in units of the normalised points) counts as a path going to infinity. */
 export const DIVERGED_NORM = 1e7;
-const TRACK_TOL = 1e-8;
+const TRACK_TOL = 1e-6;
+const ETA = 1e-3;
 const END_TOL = 1e-12;
 const END_FLOOR = 1e-9;
 
 /**
  * A predictor–corrector tracker for the parameter homotopy p(s) = w p0 + (1 − w) p1, w = (1 − s)γ / ((1 − s)γ + s)
- * (the γ trick keeps the path off the discriminant for almost every complex γ): RK4 predictor on J ż = −∂F/∂s,
- * Newton corrector with contraction test, step halved on failure and grown after easy steps. Owns its scratch.
+ * (the γ trick keeps the path off the discriminant for almost every complex γ): RK4 predictor on J ż = −∂F/∂s, a
+ * Newton corrector with a contraction test whose last Jacobian also gives the next step's first tangent (and a
+ * rejected step keeps it: z has not moved), the step halved on failure and otherwise set from the size of the
+ * corrector's first update (RK4's local error is of order 5). Owns its scratch.
  */
 export class Tracker {
   private readonly p = new Float64Array(4 * NV);
@@ -34,6 +42,12 @@ export class Tracker {
   private readonly F = new Float64Array(2 * NV);
   private readonly Fp = new Float64Array(2 * NV);
   private readonly J = new Float64Array(2 * NV * NV);
+  /** LU factors of the corrector's Jacobian, and the tangent it leaves for the next step. */
+  private readonly JL = new Float64Array(2 * NV * NV);
+  private readonly piv = new Int32Array(NV);
+  private readonly kNext = new Float64Array(2 * NV);
+  /** Size of the last corrector's first update, relative to 1 + |z|. */
+  private first = 0;
   private readonly k = [0, 1, 2, 3].map(() => new Float64Array(2 * NV));
   private readonly zt = new Float64Array(2 * NV);
   private readonly zp = new Float64Array(2 * NV);
@@ -90,6 +104,38 @@ export class Tracker {
   }
 
   /**
+   * The corrector: Newton at s from z (in place), at most maxIt iterations, each evaluating ∂F/∂s too; returns the
+   * iterations used, or −1 when it does not contract to tol·(1 + |z|). On success the tangent at the last iterate
+   * (within tol of the new point) is left in kNext, so the next step's predictor starts without a new evaluation.
+   * Records the first update's size relative to 1 + |z| (the prediction's error).
+   */
+  private correct(z: Float64Array, s: number, maxIt: number, tol: number): number {
+    this.params(s);
+    let last = Infinity;
+    const { dz, JL, piv, F, Fp, kNext } = this;
+    for (let it = 1; it <= maxIt; it++) {
+      evaluate(z, this.p, F, JL, this.dp, Fp);
+      if (!luFactor(JL, piv, NV)) return -1;
+      for (let i = 0; i < dz.length; i++) dz[i] = -F[i];
+      luSolve(JL, piv, dz, NV);
+      const n = norm(dz);
+      if (!Number.isFinite(n)) return -1;
+      const scale = 1 + norm(z);
+      if (it === 1) this.first = n / scale;
+      if (n <= tol * scale) {
+        for (let i = 0; i < z.length; i++) z[i] += dz[i];
+        for (let i = 0; i < kNext.length; i++) kNext[i] = -Fp[i];
+        luSolve(JL, piv, kNext, NV);
+        return it;
+      }
+      if (it > 1 && n > 0.5 * last) return -1;
+      for (let i = 0; i < z.length; i++) z[i] += dz[i];
+      last = n;
+    }
+    return -1;
+  }
+
+  /**
    * Newton at s from z (in place), at most maxIt iterations; returns the iterations used, or −1 when it does not
    * contract to tol·(1 + |z|).
    */
@@ -118,41 +164,48 @@ export class Tracker {
   track(z: Float64Array, opts: TrackOptions = {}): { status: PathStatus; steps: number } {
     const hMax = opts.hMax ?? 0.1;
     const maxSteps = opts.maxSteps ?? 4000;
+    const tol = opts.tol ?? TRACK_TOL;
+    const eta = opts.eta ?? ETA;
     let h = Math.min(opts.h0 ?? 0.02, hMax);
     let s = 0;
     let steps = 0;
     const [k1, k2, k3, k4] = this.k;
     const { zt, zp } = this;
     const n = z.length;
+    // k1 is the tangent at (z, s): kept through a rejected step, taken from the corrector after an accepted one.
+    let k1Valid = false;
     while (s < 1) {
       if (++steps > maxSteps || h < 1e-13) return { status: 'failed', steps };
       if (s + h > 1) h = 1 - s;
       // RK4 predictor
-      let ok = this.tangent(z, s, k1);
+      if (!k1Valid) k1Valid = this.tangent(z, s, k1);
+      let ok = k1Valid;
       for (let i = 0; ok && i < n; i++) zt[i] = z[i] + 0.5 * h * k1[i];
       ok = ok && this.tangent(zt, s + 0.5 * h, k2);
       for (let i = 0; ok && i < n; i++) zt[i] = z[i] + 0.5 * h * k2[i];
       ok = ok && this.tangent(zt, s + 0.5 * h, k3);
       for (let i = 0; ok && i < n; i++) zt[i] = z[i] + h * k3[i];
-      ok = ok && this.tangent(zt, s + h, k4);
+      const sNew = s + h >= 1 - 1e-15 ? 1 : s + h;
+      ok = ok && this.tangent(zt, sNew, k4);
       if (!ok) {
         h *= 0.5;
         continue;
       }
       for (let i = 0; i < n; i++) zp[i] = z[i] + (h / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-      const sNew = s + h >= 1 - 1e-15 ? 1 : s + h;
-      const it = this.newton(zp, sNew, 3, opts.tol ?? TRACK_TOL);
+      const it = this.correct(zp, sNew, 3, tol);
       if (it < 0) {
         h *= 0.5;
         continue;
       }
       z.set(zp);
       s = sNew;
+      k1.set(this.kNext);
       const size = norm(z);
       if (!Number.isFinite(size)) return { status: 'failed', steps };
       if (size > DIVERGED_NORM) return { status: 'diverged', steps };
-      if (it === 1) h = Math.min(2 * h, hMax);
-      else if (it === 2) h = Math.min(1.25 * h, hMax);
+      // RK4's local error goes as h⁵: aim the next prediction's error at eta, changing h by at most 2× either way.
+      const grow = this.first > 0 ? 0.9 * Math.pow(eta / this.first, 0.2) : 2;
+      h = Math.min(hMax, h * Math.min(2, Math.max(0.5, grow)));
     }
     // Polish at the target; a root that will not converge quadratically is singular (or the path jumped).
     const zEnd = z.slice();

@@ -3,11 +3,11 @@ import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import { fitView } from '../../../shared/canvas/view';
 import { downloadText } from '../../../shared/canvas/download';
-import { formatNumber, formatSci } from '../../../shared/format';
+import { formatSci } from '../../../shared/format';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
 import type { ViewOffset } from '../../../shared/state/appState';
 import { placedJoints } from '../../../synthesis/placed';
-import { RECHECK_TOL, ninePointRefusal } from '../../../synthesis/ninePoint/ninePointSynthesis';
+import { RECHECK_TOL } from '../../../synthesis/ninePoint/ninePointSynthesis';
 import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import type { DesignChoice } from '../path/ChosenDesign';
@@ -27,8 +27,8 @@ import { NineClassList } from './NineClassList';
 import type { NineFilters } from './nineClassFacts';
 import { NO_FILTERS, cognateDesign, filterClasses, nineClassFacts } from './nineClassFacts';
 import { ninePointCsv } from './nineCsv';
-import type { NinePointMessages } from './ninePointMessages';
 import { ninePointMessagesFor } from './ninePointMessages';
+import { WMS_PROBLEM_3, nineRefusalText } from './nineInput';
 import { NineRunControls } from './NineRunControls';
 import { useNinePointSynthesis } from './useNinePointSynthesis';
 
@@ -37,33 +37,10 @@ export interface NinePointModeProps extends SynthesisModeProps {
   createPool: () => SynthesisPool;
 }
 
-/** Problem 3 of Wampler, Morgan and Sommese (1992): 64 real linkage classes pass through these nine points. */
-export const WMS_PROBLEM_3: Point[] = [
-  [0.25, 0.0],
-  [0.52, 0.1],
-  [0.8, 0.7],
-  [1.2, 1.0],
-  [1.4, 1.3],
-  [1.1, 1.48],
-  [0.7, 1.4],
-  [0.2, 1.0],
-  [0.02, 0.4],
-].map(([x, y]) => ({ x, y }));
-
 const BRANCHES = ['open', 'crossed'] as const;
 const FULL_TURN: MotionRange = { full: true, lo: 0, hi: TWO_PI };
 /** Samples of the whole coupler curve drawn (each assembly). */
 const CURVE_SAMPLES = 720;
-
-/** Why the targets cannot be solved, as a sentence naming the points, or null when they can. */
-export function nineRefusalText(targets: readonly Point[], nt: NinePointMessages): string | null {
-  if (targets.length !== 9) return nt.needNine(targets.length);
-  const r = ninePointRefusal(targets);
-  if (!r) return null;
-  if (r.kind === 'coincide')
-    return nt.refusalCoincide(r.i + 1, r.j + 1, formatNumber(r.point.x), formatNumber(r.point.y));
-  return r.kind === 'line' ? nt.refusalLine : nt.refusalCircle;
-}
 
 function samePoints(a: readonly Point[], b: readonly Point[]): boolean {
   return a.length === b.length && a.every((p, i) => p.x === b[i].x && p.y === b[i].y);
