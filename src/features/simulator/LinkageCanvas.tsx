@@ -147,7 +147,7 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
         e.preventDefault();
       }}
       zoomLabels={t}
-      hint={{ text: hint, className: 'canvas-hint' }}
+      hint={hint}
       overlay={stage ? <StageCanvas stage={stage} width={width} height={height} /> : null}
     >
       {scene.text.warning ? (

@@ -2,6 +2,7 @@ import { useId } from 'react';
 import type { CanvasHTMLAttributes, KeyboardEvent, ReactNode, RefObject } from 'react';
 import type { PanZoom } from './usePanZoom';
 import { ZoomTools } from './ZoomTools';
+import './PanZoomCanvas.css';
 import type { ZoomToolsProps } from './ZoomTools';
 
 /** The canvas element's own attributes (its role, label, class, test id, data-*), all but what PanZoomCanvas sets. */
@@ -21,8 +22,8 @@ export interface PanZoomCanvasProps {
   /** Keys other than the zoom keys (+ - 0, which PanZoomCanvas takes and prevents). */
   onKeyDown?: (e: KeyboardEvent<HTMLCanvasElement>) => void;
   zoomLabels: ZoomToolsProps['labels'];
-  /** The pointer and keyboard hint: the canvas's title and description, shown while the canvas has focus. */
-  hint?: { text: string; className: string };
+  /** The pointer and keyboard hint: the canvas's title and description, shown while the canvas has keyboard focus. */
+  hint?: string;
   /** Laid over the canvas under the zoom buttons (the live stage's canvas). */
   overlay?: ReactNode;
   /** After the zoom buttons, before the hint (an empty canvas's message). */
@@ -40,12 +41,12 @@ export function PanZoomCanvas(props: PanZoomCanvasProps) {
   const { wrapRef, canvasRef, wrapClassName, panZoom, canvas, onKeyDown, zoomLabels, hint } = props;
   const hintId = useId();
   return (
-    <div className={wrapClassName} ref={wrapRef}>
+    <div className={`pan-zoom-wrap ${wrapClassName}`} ref={wrapRef}>
       <canvas
         ref={canvasRef}
         {...canvas}
         aria-describedby={hint ? hintId : undefined}
-        title={hint?.text}
+        title={hint}
         tabIndex={0}
         {...panZoom.pointerHandlers}
         onKeyDown={(e) => {
@@ -60,8 +61,8 @@ export function PanZoomCanvas(props: PanZoomCanvasProps) {
       <ZoomTools zoomBy={panZoom.zoomBy} resetView={panZoom.resetView} labels={zoomLabels} />
       {props.beforeHint}
       {hint ? (
-        <p id={hintId} className={hint.className}>
-          {hint.text}
+        <p id={hintId} className="pan-zoom-hint">
+          {hint}
         </p>
       ) : null}
       {props.children}

@@ -178,7 +178,7 @@ export function MotionCanvas(props: MotionCanvasProps) {
       }}
       onKeyDown={onKeyDown}
       zoomLabels={labels}
-      hint={{ text: labels.hint, className: 'syn-canvas-hint' }}
+      hint={labels.hint}
     >
       <CanvasExports
         draw={(ctx) => drawMotion(ctx, picture, fitView(bounds, width, height, view))}

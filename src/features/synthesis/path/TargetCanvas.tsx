@@ -160,7 +160,7 @@ export function TargetCanvas(props: TargetCanvasProps) {
         }
       }}
       zoomLabels={st}
-      hint={{ text: st.canvasHint, className: 'syn-canvas-hint' }}
+      hint={st.canvasHint}
       beforeHint={targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
     />
   );
