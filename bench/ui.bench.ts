@@ -49,7 +49,7 @@ const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
  * BENCH_OVERLAYS_QUERY replaces the query (say, without frc=1&fv=1) for a comparison on the same machine.
  */
 const ALL_OVERLAYS_URL = `${BASE}?${process.env.BENCH_OVERLAYS_QUERY ?? 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel'}`;
-/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel (default all), for quick checks. */
+/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel, ninePoint (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
@@ -67,6 +67,8 @@ const TARGETS = {
   overlaysTheta2P95Ms6x: 50,
   /** Issue 21: Cancel stops the run (the workers too) within 200 ms. */
   synCancelMs: 200,
+  /** Issue 30: every linkage through Problem 3's nine points on a pool of 4 workers, within 10 s. */
+  ninePointS: 10,
 };
 /** Cold loads on the phone profile (bench/phoneLoad.ts); the target is their median. */
 const PHONE_RUNS = 3;
@@ -392,13 +394,48 @@ async function measureSynCancel(browser: Browser, rate: number): Promise<{ pageM
           const status = document.querySelector('[data-testid="synthesis-status"]')!;
           const t0 = performance.now();
           new MutationObserver(() => {
-            if (status.textContent === 'Cancelled.') resolve(performance.now() - t0);
+            // Stop says at once that it stopped (issue 34 item 4: it then keeps the candidates found so far).
+            if (status.textContent?.startsWith('Stopped')) resolve(performance.now() - t0);
           }).observe(status, { childList: true, subtree: true, characterData: true });
-          [...document.querySelectorAll('button')].find((b) => b.textContent === 'Cancel')!.click();
+          [...document.querySelectorAll('button')].find((b) => b.textContent === 'Stop')!.click();
         }),
     );
     const workersMs = Math.max(...(await closed)) - clickedAt;
     return { pageMs, workersMs };
+  } finally {
+    await context.close();
+  }
+}
+
+/** Problem 3 of Wampler, Morgan and Sommese (1992) as the tg key: 64 real classes pass through these nine points. */
+const PROBLEM_3 = '0.25,0;0.52,0.1;0.8,0.7;1.2,1;1.4,1.3;1.1,1.48;0.7,1.4;0.2,1;0.02,0.4';
+/** Workers of the nine-point row's pool: the page makes cores − 1, so it is told of NINE_POINT_WORKERS + 1 cores. */
+const NINE_POINT_WORKERS = Number(process.env.BENCH_NINE_WORKERS ?? 4);
+
+/**
+ * Issue 30: the Nine points mode on Problem 3 at `rate`x CPU (the page's thread; CDP does not slow workers) with a pool
+ * of NINE_POINT_WORKERS: seconds from "Find every linkage" to the count of classes, the paths per second, and what the
+ * page reports (the classes, the paths finished). Run once per bench: it takes a minute or more on a small machine.
+ */
+async function measureNinePoint(browser: Browser, rate: number) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
+  await context.addInitScript((cores: number) => {
+    Object.defineProperty(navigator, 'hardwareConcurrency', { get: () => cores });
+  }, NINE_POINT_WORKERS + 1);
+  const page = await context.newPage();
+  try {
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate });
+    await page.goto(`${BASE}?page=syn&syn=nine&tg=${encodeURIComponent(PROBLEM_3)}`);
+    await page.getByRole('button', { name: 'Find every linkage' }).click();
+    const t0 = Date.now();
+    await page.getByTestId('nine-count').waitFor({ timeout: 900_000 });
+    const seconds = (Date.now() - t0) / 1000;
+    const status = (await page.getByTestId('nine-status').textContent()) ?? '';
+    const classes = Number((await page.getByTestId('nine-count').getAttribute('data-classes')) ?? NaN);
+    const m = /^(\d+) of (\d+) paths/.exec(status);
+    const total = m ? Number(m[2]) : NaN;
+    return { seconds, pathsPerS: total / seconds, classes, finished: m ? Number(m[1]) : NaN, total, status };
   } finally {
     await context.close();
   }
@@ -469,6 +506,9 @@ async function main(): Promise<void> {
       }
       console.log(`run ${run + 1}/${RUNS} done`);
     }
+    // Issue 30: the nine-point run, once (a minute or more), at 4x on a pool of NINE_POINT_WORKERS.
+    const ninePoint = wanted('ninePoint') ? await measureNinePoint(browser, 4) : null;
+    if (ninePoint) console.log(`nine points: ${ninePoint.status}`);
     const pick = <T>(xs: T[], f: (x: T) => number) => spread(xs.map(f));
     const play = (xs: typeof play1) => ({
       redrawFps: pick(xs, (p) => p.redrawFps),
@@ -507,6 +547,8 @@ async function main(): Promise<void> {
         x4: { pageMs: pick(cancel4, (c) => c.pageMs), workersMs: pick(cancel4, (c) => c.workersMs) },
         x6: { pageMs: pick(cancel6, (c) => c.pageMs), workersMs: pick(cancel6, (c) => c.workersMs) },
       },
+      // Issue 30: Problem 3 in the Nine points mode, once, 4x CPU (page thread), NINE_POINT_WORKERS workers.
+      ninePoint: ninePoint && { rate: 4, workers: NINE_POINT_WORKERS, ...ninePoint },
       firstLoad,
       phone: {
         profile: PHONE_PROFILE,
@@ -617,6 +659,14 @@ async function main(): Promise<void> {
         `${s(result.synCancel.x6.pageMs)} / ${s(result.synCancel.x6.workersMs)}`,
         `<= ${TARGETS.synCancelMs}`,
         ok(result.synCancel.x6.workersMs.median <= TARGETS.synCancelMs),
+      ),
+      row(
+        `nine points, Problem 3: s to every class, ${NINE_POINT_WORKERS} workers, 4x CPU (paths/s; classes)`,
+        ninePoint
+          ? `${f(ninePoint.seconds)} (${f(ninePoint.pathsPerS)} paths/s; ${ninePoint.classes} classes, ${ninePoint.finished}/${ninePoint.total} paths)`
+          : '—',
+        `<= ${TARGETS.ninePointS}`,
+        ninePoint ? ok(ninePoint.seconds <= TARGETS.ninePointS) : '',
       ),
       row(
         'frame time with those views on / off, 4x',

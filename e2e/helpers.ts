@@ -16,9 +16,12 @@ export function artifact(name: string): string {
   return join(ARTIFACTS, name);
 }
 
-/** Waits until the app has its first cycle and pose (data-ready on the root layout). */
-export async function waitReady(page: Page | FrameLocator): Promise<void> {
-  await expect(page.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+/**
+ * Waits until the app has its first cycle and pose (data-ready on the root layout); a test that throttles the CPU
+ * from the first load gives a longer bound (a 6x page on a busy machine takes tens of seconds).
+ */
+export async function waitReady(page: Page | FrameLocator, timeout = 20_000): Promise<void> {
+  await expect(page.locator('[data-ready="true"]')).toHaveCount(1, { timeout });
 }
 
 /**

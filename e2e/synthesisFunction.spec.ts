@@ -164,3 +164,28 @@ test.describe('synthesis: function generation in zh-TW and on a phone', () => {
     await context.close();
   });
 });
+
+test.describe('synthesis: function generation says what is wrong (issue 34, item 10)', () => {
+  test('sin on [−2, 2]: not monotone and a large error, never a green "No defects"', async ({ page }) => {
+    await page.goto('./?page=syn&syn=fn&fx=sin(x)&xr=-2,2');
+    await precisionRows(page);
+    const checks = page.getByTestId('function-defects');
+    await expect(checks).not.toContainText('No defects');
+    await expect(checks.locator('[data-defect="notMonotone"]')).toContainText(/turns back near x = −1\.5\d/);
+    await expect(checks.locator('[data-defect="largeError"]')).toContainText(/over 5 %/);
+    await page.screenshot({ path: artifact('synthesis-function-checks-1280.png') });
+  });
+
+  test('no real linkage: a plain message with a range to try, in zh-TW too', async ({ page }) => {
+    await page.goto('./?page=syn&syn=fn&fx=exp(x)&xr=0,3');
+    const problem = page.getByTestId('function-problem');
+    await expect(problem).toHaveText(
+      /^No real four-bar fits these ranges: the crank would have to point opposite to θ2\. Try θ[24] from −?\d+° to −?\d+°/,
+    );
+    await expect(problem).not.toHaveText(/\d{6,}|\(.*\(/);
+    await page.goto('./?page=syn&syn=fn&fx=exp(x)&xr=0,3&lang=zh-TW');
+    await expect(problem).toHaveText(/^沒有實際的四連桿符合這些範圍：曲柄必須指向 θ2 的反方向。請試試 θ[24] 從/);
+    await expect(problem).not.toHaveText(/[A-Za-z]{2,}/);
+    await page.screenshot({ path: artifact('synthesis-function-nolinkage-zh-TW.png') });
+  });
+});

@@ -248,3 +248,53 @@ test.describe('synthesis: motion generation in zh-TW and on a phone', () => {
     await context.close();
   });
 });
+
+test.describe('synthesis: motion, the Burmester curves in view (issue 34, item 8)', () => {
+  const defaults = [
+    { x: -0.9, y: 0.6, angleDeg: 34 },
+    { x: -2, y: 1.3, angleDeg: 26 },
+    { x: -3.8, y: 0.8, angleDeg: 24 },
+    { x: -5.4, y: -0.6, angleDeg: 27 },
+    { x: -6.1, y: -2.3, angleDeg: 36 },
+  ];
+
+  /** The curve slider's mark (the sample nearest the poses) on the canvas, CSS pixels, and the canvas's size. */
+  async function cursorOnCanvas(page: Page): Promise<{ x: number; y: number; width: number; height: number }> {
+    const canvas = page.getByTestId('motion-canvas');
+    await expect(canvas).toHaveAttribute('data-cursor', /,/);
+    const box = await canvas.boundingBox();
+    const [x, y] = ((await canvas.getAttribute('data-cursor')) ?? '').split(',').map(Number);
+    return { x, y, width: box!.width, height: box!.height };
+  }
+
+  for (const viewport of [
+    { width: 1280, height: 800 },
+    { width: 390, height: 844 },
+  ]) {
+    test(`four poses at ${viewport.width}×${viewport.height}: the curves near the poses are in view, and again after Fit the view`, async ({
+      page,
+    }) => {
+      await page.setViewportSize(viewport);
+      await page.goto(motionUrl(defaults.slice(0, 4)));
+      const inView = async () => {
+        const c = await cursorOnCanvas(page);
+        expect(c.x).toBeGreaterThan(0);
+        expect(c.x).toBeLessThan(c.width);
+        expect(c.y).toBeGreaterThan(0);
+        expect(c.y).toBeLessThan(c.height);
+      };
+      await inView();
+      await page.screenshot({ path: artifact(`synthesis-motion-four-fit-${viewport.width}.png`), fullPage: true });
+      for (let k = 0; k < 4; k++) await page.getByRole('button', { name: 'Zoom in' }).first().click();
+      await page.getByRole('button', { name: 'Fit the view' }).first().click();
+      await inView();
+    });
+  }
+
+  test('five poses: the Burmester points are in view, numbered as the four-bars name them', async ({ page }) => {
+    await page.goto(motionUrl(defaults));
+    await expect(page.getByTestId('burmester-count')).toHaveText(/^4 Burmester points/);
+    await expect(page.getByTestId('burmester-fourbars')).toContainText('+');
+    await page.screenshot({ path: artifact('synthesis-motion-five-fit-1280.png') });
+  });
+});

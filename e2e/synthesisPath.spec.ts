@@ -155,7 +155,7 @@ test.describe('the synthesis page, Path mode', () => {
     expect(Number(await first.getAttribute('data-error'))).toBeLessThan(1e-12 * SIZE * SIZE);
   });
 
-  test('Cancel stops a run: the progress bar goes, the status says so, and a new run starts', async ({ page }) => {
+  test('Stop ends a run at once and keeps the best candidates found so far (issue 34, 4)', async ({ page }) => {
     // Twelve points on a figure eight: no four-bar passes them exactly, so the search runs its whole budget.
     const eight = Array.from({ length: 12 }, (_, k) => {
       const t = (2 * Math.PI * k) / 12;
@@ -169,8 +169,10 @@ test.describe('the synthesis page, Path mode', () => {
     await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
     const bar = page.getByRole('progressbar', { name: 'Synthesis progress' });
     await expect(bar).toBeVisible();
-    await expect(bar).toHaveAttribute('aria-valuetext', /best Σd²/);
-    // The run's pool: the workers made by Synthesize. Cancel terminates them (a worker sees an abort only between
+    // A round has reported a candidate: its Σd² is the bar's best.
+    await expect(bar).toHaveAttribute('aria-valuetext', /best Σd² \d/, { timeout: 30_000 });
+    const bestText = (await bar.getAttribute('aria-valuetext'))!.replace(/.*best Σd² /, '').replace('−', '-');
+    // The run's pool: the workers made by Synthesize. Stop terminates them (a worker sees an abort only between
     // rounds of the search, which can take hundreds of ms on a phone); the time it takes is in bench:ui (synCancel).
     // Playwright hears of a new worker through the DevTools protocol, which can come after the page's first progress
     // on a busy machine: wait for it.
@@ -179,14 +181,48 @@ test.describe('the synthesis page, Path mode', () => {
     const pool = newWorkers();
     const closed = new Set<unknown>();
     for (const w of pool) w.once('close', () => closed.add(w));
-    await page.getByRole('button', { name: 'Cancel' }).click();
-    await expect(page.getByTestId('synthesis-status')).toHaveText('Cancelled.');
-    await expect.poll(() => closed.size, { message: "Cancel terminates the pool's workers" }).toBe(pool.length);
+    await page.getByRole('button', { name: 'Stop' }).click();
+    await expect(page.getByTestId('synthesis-status')).toContainText('Stopped');
+    await expect.poll(() => closed.size, { message: "Stop terminates the pool's workers" }).toBe(pool.length);
     await expect(bar).toBeHidden();
+    // What was found is kept: the candidates, the best no worse than the best the bar showed (3 digits shown).
+    await expect(page.getByTestId('synthesis-status')).toContainText('best candidate', { timeout: 30_000 });
+    const first = page.getByTestId('candidates').getByRole('button').first();
+    await expect(first).toBeVisible();
+    expect(Number(await first.getAttribute('data-error'))).toBeLessThanOrEqual(Number(bestText) * 1.001);
     await expect(page.getByRole('button', { name: 'Synthesize', exact: true })).toBeEnabled();
     // A new run makes a new pool, and an easy task is answered.
     await paste(page, TARGETS.map((p) => `${p.x}, ${p.y}`).join('\n'));
     await synthesize(page);
+  });
+
+  test('results of an earlier task are marked out of date and not opened with new targets (issue 34, 1)', async ({
+    page,
+  }) => {
+    await page.goto('./?page=syn');
+    await paste(page, TARGETS.map((p) => `${p.x}, ${p.y}`).join('\n'));
+    await synthesize(page);
+    const list = page.getByTestId('candidates');
+    const open = page.getByRole('button', { name: 'Open in simulator' });
+    await expect(list).toHaveAttribute('data-stale', 'false');
+    await expect(page.getByTestId('stale-note')).toBeHidden();
+    await expect(open).toBeEnabled();
+    // Moving one target makes every candidate's Σd² a claim about another task.
+    const x1 = page.getByRole('textbox', { name: 'T1 x' });
+    await x1.fill(String(TARGETS[0].x + 0.5));
+    await x1.press('Enter');
+    await expect(list).toHaveAttribute('data-stale', 'true');
+    await expect(page.getByTestId('stale-note')).toContainText('Out of date');
+    await expect(open).toBeDisabled();
+    // Putting the target back makes them current again; the input is part of the task too.
+    await x1.fill(String(TARGETS[0].x));
+    await x1.press('Enter');
+    await expect(list).toHaveAttribute('data-stale', 'false');
+    await page.getByRole('radio', { name: 'Any' }).check();
+    await expect(list).toHaveAttribute('data-stale', 'true');
+    await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
+    await expect(list).toHaveAttribute('data-stale', 'false', { timeout: 90_000 });
+    await expect(open).toBeEnabled();
   });
 
   test('a bad paste names its line and keeps the last good targets', async ({ page }) => {
@@ -206,7 +242,7 @@ test.describe('the synthesis page, Path mode', () => {
     const step = page.getByRole('textbox', { name: 'Step of θ2 (°)' });
     await step.fill('0');
     await step.press('Enter');
-    await expect(page.getByRole('alert')).toHaveText('“0” is not a number.');
+    await expect(page.getByRole('alert')).toHaveText('The step must be a nonzero angle from −180° to 180°.');
     await expect(step).toHaveAttribute('aria-invalid', 'true');
     // The step kept is 40 until a good one leaves the field (30 is the default, which the URL leaves out).
     await expect(page).toHaveURL(/ts=40(&|$)/);
@@ -222,6 +258,67 @@ test.describe('the synthesis page, Path mode', () => {
     await bound.press('Tab');
     await expect(bound).toHaveValue('');
     await expect(page).not.toHaveURL(/bl=/);
+  });
+
+  test('bounds fields say their rule and hold Synthesize while one is in error (issue 34, 5)', async ({ page }) => {
+    await page.goto('./?page=syn&tg=0,0;1,1;2,0');
+    const run = page.getByRole('button', { name: 'Synthesize', exact: true });
+    await expect(run).toBeEnabled();
+    const bound = page.getByRole('textbox', { name: 'Longest link' });
+    await bound.fill('0');
+    await bound.press('Enter');
+    await expect(page.getByRole('alert')).toHaveText('Longest link must be above 0.');
+    await expect(run).toBeDisabled();
+    await expect(page.getByTestId('run-hold')).toHaveText('Correct Longest link first.');
+    await bound.fill('5');
+    await bound.press('Enter');
+    await expect(run).toBeEnabled();
+    // The pivot box: x max below the x min shown (the auto box's, as the placeholder says).
+    const xMin = page.getByRole('textbox', { name: 'x min' });
+    await xMin.fill('-3');
+    await xMin.press('Enter');
+    const xMax = page.getByRole('textbox', { name: 'x max' });
+    await xMax.fill('-4');
+    await xMax.press('Enter');
+    await expect(page.getByRole('alert')).toHaveText('x max must be more than x min (−3).');
+    await expect(run).toBeDisabled();
+    await xMax.press('Escape');
+    await expect(run).toBeEnabled();
+  });
+
+  test('an empty given θ2 holds the run and names the target; an ill-posed task says why (issue 34, 3)', async ({
+    page,
+  }) => {
+    await page.goto('./?page=syn&tg=0,0;1,1;2,0&tm=given&tt=0,30');
+    const run = page.getByRole('button', { name: 'Synthesize', exact: true });
+    await expect(page.getByRole('textbox', { name: 'T3 θ2 (°)' })).toHaveValue('');
+    await expect(run).toBeDisabled();
+    await expect(page.getByTestId('run-hold')).toHaveText('Give θ2 for T3 (given timing), or choose another timing.');
+    await page.getByRole('textbox', { name: 'T3 θ2 (°)' }).fill('60');
+    await page.getByRole('textbox', { name: 'T3 θ2 (°)' }).press('Enter');
+    await expect(run).toBeEnabled();
+    // Links of at most 1 and a coupler offset of at most 1 cannot reach targets 141 apart.
+    await page.goto('./?page=syn&tg=0,0;100,100&bl=1&bc=1&bp=-1,-1,1,1');
+    await run.click();
+    await expect(page.getByTestId('synthesis-status')).not.toHaveText(/Searching/, { timeout: 90_000 });
+    await expect(page.getByTestId('no-fit-summary')).toContainText('No candidate passes within 1 %');
+    await expect(page.getByTestId('no-fit-summary')).toContainText('cannot reach targets 141.4 apart');
+  });
+
+  test('the paste takes the app’s own CSV, and removing a target is one undo step (issue 34, 7)', async ({ page }) => {
+    await page.goto('./?page=syn&tg=0,0;1,1;2,0&tm=given&tt=10,20,30');
+    await paste(page, 'x,y,theta2_deg\n0,0,10\n1,1,20\n2,0,30\n3,1,40');
+    await expect(page.getByTestId('paste-error')).toBeHidden();
+    const canvas = page.getByTestId('synthesis-canvas');
+    await expect(canvas).toHaveAttribute('data-targets', '4');
+    await expect(page.getByRole('textbox', { name: 'T4 θ2 (°)' })).toHaveValue('40');
+    await page.getByRole('button', { name: 'Remove target T2' }).press('Enter');
+    await expect(canvas).toHaveAttribute('data-targets', '3');
+    await expect(page.getByRole('textbox', { name: 'T2 θ2 (°)' })).toHaveValue('30');
+    await page.getByRole('button', { name: 'Undo', exact: true }).click();
+    await expect(canvas).toHaveAttribute('data-targets', '4');
+    await expect(page.getByRole('textbox', { name: 'T2 θ2 (°)' })).toHaveValue('20');
+    await expect(page.getByRole('textbox', { name: 'T4 θ2 (°)' })).toHaveValue('40');
   });
 
   test('adds, moves and removes targets on the canvas with the mouse and the keyboard', async ({ page }) => {

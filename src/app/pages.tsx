@@ -11,6 +11,10 @@ const SynthesisPage = lazy(() =>
   import('../features/synthesis/SynthesisPage').then((m) => ({ default: m.SynthesisPage })),
 );
 
+const MechanismPage = lazy(() =>
+  import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
+);
+
 /** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
 const createSynthesisPool = () => createSolverPool();
 
@@ -40,6 +44,7 @@ function loading(label: Record<Locale, string>, locale: Locale, view: ReactNode)
 
 const LAB_LABEL = { en: 'Solver lab', 'zh-TW': '求解器實驗室' };
 const SYNTHESIS_LABEL = { en: 'Synthesis', 'zh-TW': '機構合成' };
+const MECHANISM_LABEL = { en: 'Mechanisms', 'zh-TW': '機構' };
 
 /**
  * Every page of the app, registered once, in the tabs' order: the tabs (PageTabs), the page's view and layout
@@ -69,6 +74,17 @@ export const PAGES: Readonly<Record<Page, PageEntry>> = {
       ),
     sideColumns: false,
     layoutClass: 'synthesis',
+  },
+  mechanism: {
+    label: MECHANISM_LABEL,
+    view: ({ session: s }) =>
+      loading(
+        MECHANISM_LABEL,
+        s.state.shell.locale,
+        <MechanismPage state={s.state} dispatch={s.dispatch} client={s.client} />,
+      ),
+    sideColumns: false,
+    layoutClass: 'mechanism',
   },
 };
 

@@ -13,7 +13,7 @@ export type {
   SliderSeries,
   TracerSpec,
 } from './types';
-export { GROUND, mobility, validateSpec } from './validate';
+export { GROUND, mobility, validateSpec, validateStructure } from './validate';
 export { MAX_MOVE, MECHANISM_STATUSES, SINGULAR_PIVOT, sweepMechanism } from './sweep';
 export {
   MECHANISM_TEMPLATES,

@@ -33,6 +33,41 @@ function checkName(name: string, v: unknown): asserts v is string {
  * the ground through joints.
  */
 export function validateSpec(spec: unknown): asserts spec is MechanismSpec {
+  validateStructure(spec);
+  const s = spec as MechanismSpec;
+  const input = s.input as unknown as Record<string, unknown> | undefined;
+  if (typeof input !== 'object' || input === null) throw new Error(`input must be { joint }, got ${describe(input)}`);
+  if (!s.joints.some((j) => j.id === input.joint))
+    throw new Error(`input.joint: unknown joint ${describe(input.joint)}`);
+  const m = mobility(s);
+  if (m !== 1) throw new Error(mobilityMessage(m));
+  // Every link must reach the ground through joints, or it floats free (and another part is over-constrained).
+  const reached = new Set<string>([GROUND]);
+  let grew = true;
+  while (grew) {
+    grew = false;
+    for (const j of s.joints) {
+      const [a, b] = j.links;
+      if (reached.has(a) !== reached.has(b)) {
+        reached.add(a);
+        reached.add(b);
+        grew = true;
+      }
+    }
+  }
+  const loose = s.links.filter((l) => !reached.has(l));
+  if (loose.length > 0) {
+    throw new Error(`links ${loose.map((l) => describe(l)).join(', ')} are disconnected from the ground`);
+  }
+}
+
+/**
+ * Throws an Error naming the offending id or field unless spec is a well-formed drawing of pins and sliders: known
+ * links with 'ground' among them, unique ids, finite coordinates, a P joint's angle, tracers on known links. The
+ * input, the mobility and the connection to the ground are validateSpec's (an editor holds linkages still being
+ * built: mobility 2, no input yet).
+ */
+export function validateStructure(spec: unknown): asserts spec is Omit<MechanismSpec, 'input'> {
   if (typeof spec !== 'object' || spec === null) throw new Error(`spec must be an object, got ${describe(spec)}`);
   const s = spec as Record<string, unknown>;
   if (!Array.isArray(s.links)) throw new Error(`links must be an array of link names, got ${describe(s.links)}`);
@@ -83,28 +118,5 @@ export function validateSpec(spec: unknown): asserts spec is MechanismSpec {
       checkFiniteField(`point ${describe(pr.id)}: x`, pr.x);
       checkFiniteField(`point ${describe(pr.id)}: y`, pr.y);
     });
-  }
-  const input = s.input as Record<string, unknown> | undefined;
-  if (typeof input !== 'object' || input === null) throw new Error(`input must be { joint }, got ${describe(input)}`);
-  if (!joints.has(input.joint as string)) throw new Error(`input.joint: unknown joint ${describe(input.joint)}`);
-  const m = mobility(spec as MechanismSpec);
-  if (m !== 1) throw new Error(mobilityMessage(m));
-  // Every link must reach the ground through joints, or it floats free (and another part is over-constrained).
-  const reached = new Set<string>([GROUND]);
-  let grew = true;
-  while (grew) {
-    grew = false;
-    for (const j of joints.values()) {
-      const [a, b] = j.links as [string, string];
-      if (reached.has(a) !== reached.has(b)) {
-        reached.add(a);
-        reached.add(b);
-        grew = true;
-      }
-    }
-  }
-  const loose = [...links].filter((l) => !reached.has(l));
-  if (loose.length > 0) {
-    throw new Error(`links ${loose.map((l) => describe(l)).join(', ')} are disconnected from the ground`);
   }
 }

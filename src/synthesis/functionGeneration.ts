@@ -28,14 +28,36 @@ export interface FreudensteinDesign {
   residual: number;
 }
 
+/**
+ * Why no real linkage fits: the crank (r2) or the rocker (r4) would point opposite its angle, the coupler's r3² is
+ * not a positive real, or the equations are singular (the pairs do not determine the K's).
+ */
+export type NoLinkageReason = 'crank' | 'rocker' | 'coupler' | 'singular';
+
+/**
+ * What freudenstein and functionGenerator throw when no real linkage fits the pairs: the reason and the length
+ * that came out wrong in units of r1 (r2 or r4; r3² for 'coupler'; NaN for 'singular'), so a page can say it in
+ * its own words.
+ */
+export class NoLinkageError extends Error {
+  readonly reason: NoLinkageReason;
+  readonly value: number;
+  constructor(reason: NoLinkageReason, value: number, message: string) {
+    super(message);
+    this.name = 'NoLinkageError';
+    this.reason = reason;
+    this.value = value;
+  }
+}
+
 /** Most pairs freudenstein accepts (a least-squares fit of more is no better conditioned). */
 export const MAX_PAIRS = 10000;
 
 /**
  * The four-bar whose θ4 meets each pair's θ4 at its θ2 (radians): exact for three pairs, least squares on
  * Freudenstein's equation for more; lengths scaled so r1 = options.r1 (default 1). Throws for bad pairs, for
- * pairs that do not determine the K's (repeated or degenerate pairs), and when no real linkage fits (a length
- * that would be negative, zero, infinite or imaginary).
+ * pairs that do not determine the K's (repeated or degenerate pairs) and when no real linkage fits (a length
+ * that would be negative, zero, infinite or imaginary): those two as a NoLinkageError.
  */
 export function freudenstein(pairs: readonly AnglePair[], options: { r1?: number } = {}): FreudensteinDesign {
   checkArray('pairs', pairs, 3, MAX_PAIRS);
@@ -56,7 +78,9 @@ export function freudenstein(pairs: readonly AnglePair[], options: { r1?: number
   const rhs = pairs.map((p) => Math.cos(angleDiff(p.theta2, p.theta4)));
   const fit = leastSquares(rows, rhs);
   if (!fit) {
-    throw new Error(
+    throw new NoLinkageError(
+      'singular',
+      NaN,
       'pairs do not determine a linkage: Freudenstein’s equations are singular (repeated pairs, or all θ2 or all θ4 with the same cosine)',
     );
   }
@@ -81,13 +105,13 @@ function linksFromK(K1: number, K2: number, K3: number, r1: number): Linkage {
   const r4 = r1 / K2;
   // A negative r2 (or r4) is a crank (rocker) pointing opposite the prescribed angle: it fits only with θ2 (θ4)
   // shifted by π, which is another set of pairs, so no linkage with the prescribed angles exists.
-  const bad = (name: string, v: number, why: string): never => {
-    throw new Error(`no real linkage fits these pairs: ${name} would be ${show(v)} (${why})`);
+  const bad = (reason: NoLinkageReason, name: string, v: number, why: string): never => {
+    throw new NoLinkageError(reason, v, `no real linkage fits these pairs: ${name} would be ${show(v)} (${why})`);
   };
-  if (!(r2 > 0) || !Number.isFinite(r2)) bad('r2', r2, 'the crank would have to point opposite θ2');
-  if (!(r4 > 0) || !Number.isFinite(r4)) bad('r4', r4, 'the rocker would have to point opposite θ4');
+  if (!(r2 > 0) || !Number.isFinite(r2)) bad('crank', 'r2', r2, 'the crank would have to point opposite θ2');
+  if (!(r4 > 0) || !Number.isFinite(r4)) bad('rocker', 'r4', r4, 'the rocker would have to point opposite θ4');
   const r3sq = r1 * r1 + r2 * r2 + r4 * r4 - 2 * r2 * r4 * K3;
-  if (!(r3sq > 0) || !Number.isFinite(r3sq)) bad('r3²', r3sq, 'the coupler length is not a positive real');
+  if (!(r3sq > 0) || !Number.isFinite(r3sq)) bad('coupler', 'r3²', r3sq, 'the coupler length is not a positive real');
   return { r1, r2, r3: Math.sqrt(r3sq), r4 };
 }
 

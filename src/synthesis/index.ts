@@ -7,12 +7,14 @@ export { checkPlaced, fourBarFromJoints, placedCouplerPoint, placedJoints } from
 export {
   DEFAULT_BUDGET_MS,
   DEFAULT_ROUNDS,
+  PROGRESS_CANDIDATES,
   mergePathCandidates,
   pathSynthesis,
   pathSynthesisPart,
 } from './pathSynthesis';
 export type {
   AbortSignalLike,
+  PathProgress,
   PathSynthesisOptions,
   PathSynthesisPartOptions,
   PathSynthesisPartResult,
@@ -22,6 +24,7 @@ export { MODEL_SIZE, couplerLocal } from './pathModel';
 export {
   MAX_PAIRS,
   MAX_PRECISION_POINTS,
+  NoLinkageError,
   chebyshevPoints,
   freudenstein,
   functionGenerator,
@@ -32,6 +35,7 @@ export type {
   FunctionDefect,
   FunctionGeneratorResult,
   FunctionTask,
+  NoLinkageReason,
 } from './functionGeneration';
 export { motionDesign, threePositionConstruction, threePositionSynthesis } from './motionGeneration';
 export type { MotionDesign, PivotConstruction, PivotName, ThreePositionGiven } from './motionGeneration';
@@ -44,8 +48,14 @@ export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
 export type { RobertsCognate } from './cognates';
-export { mergeNinePoint, ninePointSynthesis } from './ninePoint';
-export type { NinePointClass, NinePointLinkage, NinePointOptions, NinePointResult } from './ninePoint';
+export { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from './ninePoint';
+export type {
+  NinePointClass,
+  NinePointLinkage,
+  NinePointOptions,
+  NinePointRefusal,
+  NinePointResult,
+} from './ninePoint';
 // Limits of the synthesis contracts (issue 31; docs/synthesis.md "Limits and refusals").
 export { MAX_SEED } from './pathSynthesis';
 export { MAX_PATH_TARGETS, MAX_TARGET_SIZE, MIN_TARGET_SIZE } from './pathTask';

@@ -28,11 +28,25 @@ export interface PathSynthesisOptions {
   budgetMs?: number;
   /** Aborting returns the best so far at the next check (every few tens of milliseconds). */
   signal?: AbortSignalLike;
-  /** Called after each round and at the end: fraction of the work done (0 … 1) and the best Σd² so far. */
-  onProgress?: (p: { fraction: number; best: number }) => void;
+  /**
+   * Called after each round and at the end: fraction of the work done (0 … 1), the best Σd² so far and, from a part
+   * after a round, its best candidates so far (at most PROGRESS_CANDIDATES, best first): a caller that stops the run
+   * can merge them into answers (mergePathCandidates) instead of losing the work.
+   */
+  onProgress?: (p: PathProgress) => void;
   /** Most rounds of the global stage (default 400); a run that ends by this or by an exact fit is reproducible. */
   rounds?: number;
 }
+
+/** A progress report of pathSynthesis and pathSynthesisPart (see PathSynthesisOptions.onProgress). */
+export interface PathProgress {
+  fraction: number;
+  best: number;
+  candidates?: PathCandidate[];
+}
+
+/** Candidates a part's progress report carries: enough to merge into ten answers after a stop. */
+export const PROGRESS_CANDIDATES = 24;
 
 /** Options of pathSynthesisPart: pathSynthesis's, plus which slice of the rounds this part runs. */
 export interface PathSynthesisPartOptions extends PathSynthesisOptions {
@@ -172,7 +186,11 @@ export async function pathSynthesisPart(
       Math.min(1, rounds / myRounds, 1),
       Math.min(1, (Date.now() - start) / Math.max(1, budgetMs)),
     );
-    options.onProgress?.({ fraction: Math.min(1, fraction), best });
+    options.onProgress?.({
+      fraction: Math.min(1, fraction),
+      best,
+      candidates: candidates.slice(0, PROGRESS_CANDIDATES),
+    });
   }
   if (signal?.aborted || Date.now() > deadline) complete = false;
   return { candidates, rounds, evaluations, complete };

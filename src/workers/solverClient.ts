@@ -7,9 +7,10 @@ import { createWorkerPool } from '../shared/jobs/workerPool';
 import { labJobs } from '../features/lab/jobs';
 import { simulatorJobs } from '../features/simulator/jobs';
 import { synthesisJobs } from '../features/synthesis/jobs';
+import { mechanismJobs } from '../features/mechanism/jobs';
 
 /** Every job of the solver worker: the simulator's, the lab's and synthesis's tables (handlers: solverHandlers.ts). */
-export const solverJobs = combineJobs(combineJobs(simulatorJobs, labJobs), synthesisJobs);
+export const solverJobs = combineJobs(combineJobs(combineJobs(simulatorJobs, labJobs), synthesisJobs), mechanismJobs);
 
 /** The solver worker's job table. */
 export type SolverJobs = typeof solverJobs;

@@ -52,8 +52,10 @@ function markStageFrame(m: Extract<StageReply, { type: 'drawn' }>): void {
 
 /**
  * The page's side of the live stage (shared/linkage/liveStage.ts). Its worker starts at the first play(), show() or
- * warm(), when it is handed the attached canvas: a page that never plays or drags never loads it. The canvas element
- * shows the frames the worker draws; the page keeps the newest one for its playhead (stageRun.ts), and the canvas's
+ * warm(), or as soon as the page's first draws show it draws slowly (warmIfSlow), and is then handed the attached
+ * canvas: a quick page that never plays or drags never loads it. The canvas's data-stage is "attached" once handed
+ * over and "ready" once the worker has started and drawn once (tests wait on it). The canvas element shows the
+ * frames the worker draws; the page keeps the newest one for its playhead (stageRun.ts), and the canvas's
  * data-theta2 names the θ2 it shows. Marks each drawn frame for bench:ui. Null where a worker cannot draw; a worker
  * that fails or says it cannot animate turns the stage off for good (the page draws as before).
  */
@@ -61,6 +63,8 @@ export function createLiveStage(): LiveStage | null {
   if (!canTransfer()) return null;
   let worker: Worker | null = null;
   let broken = false;
+  /** Whether the worker said it is ready (canvas data-stage="ready"). */
+  let ready = false;
   /** The page's canvas for the stage, handed to the worker when it starts (or at once, once it has). */
   let element: HTMLCanvasElement | null = null;
   const run = createStageRun();
@@ -83,6 +87,12 @@ export function createLiveStage(): LiveStage | null {
       breakDown();
       return;
     }
+    if (m.type === 'ready') {
+      // For tests and tools: the worker has started and drawn once, so a run's frames come without its start-up.
+      ready = true;
+      if (element) element.dataset.stage = 'ready';
+      return;
+    }
     if (!run.receive(m.id, m.frame)) return;
     // The pose on screen, for tests and tools (the page's canvas's label names the committed pose meanwhile).
     if (element) element.dataset.theta2 = String(m.frame.theta2Deg);
@@ -91,9 +101,9 @@ export function createLiveStage(): LiveStage | null {
   };
   /** Hands the worker the canvas element (once per element: a remounted canvas view is a new one). */
   const handOver = (canvas: HTMLCanvasElement) => {
-    if (canvas.dataset.stage === 'attached') return;
+    if (canvas.dataset.stage) return;
     const offscreen = canvas.transferControlToOffscreen();
-    canvas.dataset.stage = 'attached';
+    canvas.dataset.stage = ready ? 'ready' : 'attached';
     post({ type: 'canvas', canvas: offscreen }, [offscreen]);
   };
   /** Starts the worker and hands it the canvas and what it draws from; false where it cannot. */
@@ -112,10 +122,23 @@ export function createLiveStage(): LiveStage | null {
       return false;
     }
   };
+  /** Whether the page draws the linkage too slowly for a drag: the lower median of its latest draws. */
+  function prefersStage(): boolean {
+    return !broken && element !== null && pageDraws.slow();
+  }
+  /**
+   * On a page that draws slowly the worker starts as soon as that is known (its first draws), not at the first Play
+   * or drag: its start-up (script, first scene, fonts; seconds at 6x CPU) is then over before the student's first
+   * drag, whose route is decided from its first move.
+   */
+  const warmIfSlow = () => {
+    if (!worker && prefersStage()) start();
+  };
   return {
     attach(canvas) {
       if (element === canvas) return;
       element = canvas;
+      warmIfSlow();
       if (!worker || broken) return;
       try {
         handOver(canvas);
@@ -149,8 +172,11 @@ export function createLiveStage(): LiveStage | null {
       post({ type: 'stop' });
       shown.set(false);
     },
-    notePageDraw: (ms) => pageDraws.note(ms),
-    prefersStage: () => !broken && element !== null && pageDraws.slow(),
+    notePageDraw(ms) {
+      pageDraws.note(ms);
+      warmIfSlow();
+    },
+    prefersStage,
     latest: () => run.newest(),
     showing: () => shown.get(),
     subscribe: (listener) => shown.subscribe(listener),

@@ -14,8 +14,8 @@ describe('PAGES', () => {
     }
   });
 
-  it('gives every page its URL value: page=sim, page=lab, page=syn', () => {
-    expect(PAGE_URL_VALUES).toEqual({ simulator: 'sim', lab: 'lab', synthesis: 'syn' });
+  it('gives every page its URL value: page=sim, page=lab, page=syn, page=mech', () => {
+    expect(PAGE_URL_VALUES).toEqual({ simulator: 'sim', lab: 'lab', synthesis: 'syn', mechanism: 'mech' });
     for (const page of PAGE_ORDER) {
       const q = serializeState({ ...DEFAULT_STATE, shell: { ...DEFAULT_STATE.shell, page } });
       expect(parseUrl(q, DEFAULT_STATE, () => {}).state.shell.page).toBe(page);
@@ -25,10 +25,10 @@ describe('PAGES', () => {
 
   it('orders the tabs for the arrow keys (wrapping), Home and End', () => {
     expect(pageForKey('simulator', 'ArrowRight')).toBe('lab');
-    expect(pageForKey('synthesis', 'ArrowRight')).toBe('simulator');
-    expect(pageForKey('simulator', 'ArrowLeft')).toBe('synthesis');
+    expect(pageForKey('mechanism', 'ArrowRight')).toBe('simulator');
+    expect(pageForKey('simulator', 'ArrowLeft')).toBe('mechanism');
     expect(pageForKey('lab', 'Home')).toBe('simulator');
-    expect(pageForKey('lab', 'End')).toBe('synthesis');
+    expect(pageForKey('lab', 'End')).toBe('mechanism');
     expect(pageForKey('lab', 'a')).toBeNull();
   });
 });

@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Branch, Linkage } from '../../src/solver';
 import { PI, designMetrics, inputRange, solveClosedForm } from '../../src/solver';
-import { chebyshevPoints, freudenstein, functionGenerator } from '../../src/synthesis';
+import { NoLinkageError, chebyshevPoints, freudenstein, functionGenerator } from '../../src/synthesis';
 import { angleDiff, referenceAngles } from '../oracle/reference';
 import { randomCrankRocker, seeded, sigmaOf } from './motionFixtures';
 
@@ -92,6 +92,21 @@ describe('freudenstein', () => {
     expect(() => freudenstein(pairs)).toThrow(/no real linkage fits these pairs: r4 would be -/);
     const crank = [0.3, 1.4, 2.9].map((t) => ({ theta2: t + PI, theta4: theta4(l, t, 'open') + PI }));
     expect(() => freudenstein(crank)).toThrow(/no real linkage fits these pairs: r2 would be -/);
+    // The same as a NoLinkageError, the reason and the length (the oracle's −r2, −r4 in units of r1) for a page.
+    const caught = (pp: typeof pairs) => {
+      try {
+        freudenstein(pp);
+      } catch (e) {
+        return e;
+      }
+      throw new Error('no throw');
+    };
+    const rocker = caught(pairs);
+    expect(rocker).toBeInstanceOf(NoLinkageError);
+    expect(rocker).toMatchObject({ reason: 'rocker', value: expect.closeTo(-5 / 6, 9) });
+    expect(caught(crank)).toMatchObject({ reason: 'crank', value: expect.closeTo(-2 / 6, 9) });
+    const same = [0.3, 1.4, 2.9].map((t) => ({ theta2: t, theta4: t }));
+    expect(caught(same)).toMatchObject({ reason: 'singular' });
   });
 
   it('gives the same linkage, scaled, for r1 from 1e-300 to 1e300 (issue 31, 3)', () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Point } from '../../src/solver';
-import { mergeNinePoint, ninePointSynthesis } from '../../src/synthesis';
+import { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from '../../src/synthesis';
 import type { NinePointResult } from '../../src/synthesis';
 import { robertsCognates } from '../../src/synthesis/cognates';
 import { orbit, orbitKey, sameKey } from '../../src/synthesis/ninePoint/group';
@@ -156,6 +156,37 @@ describe('ninePointSynthesis', () => {
     expect(r.paths.finished + r.paths.failed).toBe(20);
     expect(seen.at(-1)).toEqual({ done: 20, total: 20 });
     expect(seen.every((p, i) => i === 0 || p.done > seen[i - 1].done)).toBe(true);
+  });
+
+  it('ships as many start paths as NINE_POINT_PATHS says (the page deals them to its workers by that count)', async () => {
+    expect((await loadStartSystem()).roots.length).toBe(NINE_POINT_PATHS);
+  });
+
+  it('words a refusal as data: the coinciding pair, a line, a circle; null for solvable points', () => {
+    expect(ninePointRefusal(PROBLEM_3)).toBeNull();
+    expect(ninePointRefusal([...PROBLEM_3.slice(0, 8), { ...PROBLEM_3[4] }])).toEqual({
+      kind: 'coincide',
+      i: 4,
+      j: 8,
+      point: PROBLEM_3[4],
+    });
+    expect(ninePointRefusal(Array.from({ length: 9 }, (_, k) => ({ x: k, y: 2 * k })))?.kind).toBe('line');
+    const circle = Array.from({ length: 9 }, (_, k) => ({ x: Math.cos(k), y: Math.sin(k) }));
+    expect(ninePointRefusal(circle)?.kind).toBe('circle');
+  });
+
+  it('keeps a class two slices both found once, counting the second path failed', async () => {
+    const i = await startIndexOf(KNOWN_POINTS, KNOWN, KNOWN_THETA2[0]);
+    const r = await ninePointSynthesis(KNOWN_POINTS, { paths: { start: i, end: i + 1 } });
+    const other: NinePointResult = { classes: [], paths: { total: 2, finished: 2, failed: 0 } };
+    // The same class again, its cognates listed in another order (the key is the set of ground pivots).
+    const again: NinePointResult = {
+      classes: [{ ...r.classes[0], cognates: [...r.classes[0].cognates].reverse() }],
+      paths: { total: 1, finished: 1, failed: 0 },
+    };
+    const m = mergeNinePoint([r, other, again]);
+    expect(m.classes.length).toBe(1);
+    expect(m.paths).toEqual({ total: 4, finished: 3, failed: 1 });
   });
 
   it('merges slices by summing paths and concatenating classes', () => {

@@ -6,8 +6,14 @@
  */
 import { describe, expect, it } from 'vitest';
 import { PI, classify } from '../../src/solver';
-import type { PathSolution, PathTask } from '../../src/synthesis';
-import { mergePathCandidates, pathSynthesis, pathSynthesisPart, placedCouplerPoint } from '../../src/synthesis';
+import type { PathProgress, PathSolution, PathTask } from '../../src/synthesis';
+import {
+  PROGRESS_CANDIDATES,
+  mergePathCandidates,
+  pathSynthesis,
+  pathSynthesisPart,
+  placedCouplerPoint,
+} from '../../src/synthesis';
 import { EXACT_DESIGN, exactTargets, targetSize } from './benchmarkCases';
 
 const EXACT_REL = 1e-20;
@@ -179,6 +185,36 @@ describe('pathSynthesis', () => {
     // The search checks the signal every ~25 ms of work; the merge then polishes at most 24 candidates.
     expect(Date.now() - t0).toBeLessThan(1500);
     expect(sols.length).toBeGreaterThan(0);
+  });
+
+  it('reports a part’s best candidates after each round: merged after a stop they are honest answers (issue 34, 4)', async () => {
+    // Twelve points on a figure eight: no exact fit, so the part would run its rounds; it is stopped after three.
+    const task: PathTask = {
+      targets: Array.from({ length: 12 }, (_, k) => {
+        const t = (2 * PI * k) / 12;
+        return { x: 3 * Math.sin(t), y: 1.5 * Math.sin(2 * t) };
+      }),
+      timing: { kind: 'free' },
+    };
+    const controller = new AbortController();
+    const seen: PathProgress[] = [];
+    const run = await pathSynthesisPart(task, {
+      seed: 3,
+      budgetMs: 60_000,
+      signal: controller.signal,
+      onProgress: (p) => {
+        seen.push(p);
+        if (seen.length === 3) controller.abort();
+      },
+    });
+    expect(run.complete).toBe(false);
+    const last = seen[seen.length - 1];
+    // The report is the part's own list, best first, cut to PROGRESS_CANDIDATES: what a stopped part had found.
+    expect(last.candidates!.length).toBeGreaterThan(0);
+    expect(last.candidates).toEqual(run.candidates.slice(0, PROGRESS_CANDIDATES));
+    const sols = expectHonest(task, mergePathCandidates(task, [last.candidates!]));
+    // The merge polishes them: its best is no worse than the best the part reported (1e-12 relative: rounding).
+    expect(sols[0].error).toBeLessThanOrEqual(last.best * (1 + 1e-12));
   });
 
   it('honours budgetMs and reports progress in [0, 1] with a non-increasing best', async () => {

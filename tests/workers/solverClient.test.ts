@@ -65,8 +65,16 @@ afterEach(() => {
 });
 
 describe('solver jobs', () => {
-  it('are the simulator’s, the lab’s and synthesis’s tables, each name once', () => {
-    expect(Object.keys(solverJobs).sort()).toEqual(['cycle', 'lab', 'pathMerge', 'pathPart', 'point', 'table']);
+  it('are the simulator’s, the lab’s, synthesis’s and the mechanism page’s tables, each name once', () => {
+    expect(Object.keys(solverJobs).sort()).toEqual([
+      'cycle',
+      'lab',
+      'mechSweep',
+      'pathMerge',
+      'pathPart',
+      'point',
+      'table',
+    ]);
     expect(Object.keys(solverHandlers).sort()).toEqual(Object.keys(solverJobs).sort());
   });
 

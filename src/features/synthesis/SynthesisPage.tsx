@@ -19,9 +19,10 @@ export interface SynthesisPageProps {
 // The Motion and Function modes (built beside this page in motion/ and function/) load when first chosen.
 const MotionMode = lazy(() => import('./motion/MotionMode').then((m) => ({ default: m.MotionMode })));
 const FunctionMode = lazy(() => import('./function/FunctionMode').then((m) => ({ default: m.FunctionMode })));
+const NinePointMode = lazy(() => import('./ninePoint/NinePointMode').then((m) => ({ default: m.NinePointMode })));
 
 /**
- * The synthesis page: Path, Motion and Function modes behind one segmented control (URL syn), each handing its
+ * The synthesis page: Path, Motion, Function and Nine points modes behind one segmented control (URL syn), each handing its
  * chosen design to "Open in simulator", which puts the design, its placement and its markers into the app state
  * and turns to the simulator.
  */
@@ -40,6 +41,7 @@ export function SynthesisPage({ state, dispatch, createPool }: SynthesisPageProp
     { value: 'path', label: st.modePath },
     { value: 'motion', label: st.modeMotion },
     { value: 'function', label: st.modeFunction },
+    { value: 'nine', label: st.modeNine },
   ];
   const Other = mode === 'motion' ? MotionMode : FunctionMode;
   return (
@@ -56,6 +58,10 @@ export function SynthesisPage({ state, dispatch, createPool }: SynthesisPageProp
       </div>
       {mode === 'path' ? (
         <PathMode state={state} dispatch={dispatch} onOpen={onOpen} createPool={createPool} />
+      ) : mode === 'nine' ? (
+        <Suspense fallback={<p className="note">{st.modeLoading}</p>}>
+          <NinePointMode state={state} dispatch={dispatch} onOpen={onOpen} createPool={createPool} />
+        </Suspense>
       ) : (
         <Suspense fallback={<p className="note">{st.modeLoading}</p>}>
           <Other state={state} dispatch={dispatch} onOpen={onOpen} />

@@ -1,5 +1,6 @@
 import type { JobHandlers } from '../../shared/jobs/jobTable';
 import type { SynthesisJobs } from './jobs';
+import { pathStageText } from './jobs';
 
 /** The synthesis page's handlers: a part of a path synthesis's global stage, and the merge of the parts. */
 export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
@@ -14,11 +15,21 @@ export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
       rounds,
       budgetMs,
       signal,
-      onProgress: ({ fraction, best }) => progress(fraction, String(best)),
+      onProgress: (p) => progress(p.fraction, pathStageText(p)),
     });
   },
   async pathMerge(params) {
     const { mergePathCandidates } = await import('../../synthesis');
     return mergePathCandidates(params.task, params.parts);
+  },
+  async ninePointPart(params, { signal, progress }) {
+    const { ninePointSynthesis } = await import('../../synthesis');
+    const { points, start, end } = params;
+    // The stage is the real roots found so far (a number as text).
+    return ninePointSynthesis(points, {
+      signal,
+      paths: { start, end },
+      onProgress: ({ done, total, found }) => progress(done / total, String(found)),
+    });
   },
 };

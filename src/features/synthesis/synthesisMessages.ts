@@ -18,6 +18,8 @@ export interface SynthesisMessages {
   modePath: string;
   modeMotion: string;
   modeFunction: string;
+  /** The exact nine-point mode (九點精確合成). */
+  modeNine: string;
   /** Shown while a mode's code loads. */
   modeLoading: string;
   pathIntro: string;
@@ -74,6 +76,28 @@ export interface SynthesisMessages {
   statusDone: (count: number, ms: string, workers: number) => string;
   statusNone: string;
   statusFailed: (why: string) => string;
+  /** After Stop, while the candidates found so far are merged. */
+  statusStopping: string;
+  /** After Stop: candidates found before it, in seconds, on workers. */
+  statusStopped: (count: number, ms: string, workers: number) => string;
+  /** The candidates and the chosen design after the task was edited since the run. */
+  staleResults: string;
+  staleOpen: string;
+  /** A bound's rule: the field's name. */
+  mustBePositive: (field: string) => string;
+  /** The pivot box's rule: the larger field's name, the smaller's, and the smaller's value. */
+  mustBeMore: (more: string, less: string, lessValue: string) => string;
+  stepRule: string;
+  /** Synthesize waits: the names of the fields in error. */
+  fieldsInError: (names: string) => string;
+  /** Synthesize waits: the target (T3) with no θ2 under given timing. */
+  missingTheta2: (target: string) => string;
+  /** No candidate within 1 % of the targets' size (the size, formatted), and why where it is known. */
+  noFit: (size: string) => string;
+  reasonSpan: (reach: string, span: string) => string;
+  reasonPivotFar: (target: string, distance: string, reach: string) => string;
+  reasonSameTheta2: (a: string, b: string, theta2: string) => string;
+  reasonUnknown: string;
   resultsTitle: string;
   /** One candidate's summary line (all numbers formatted). */
   candidateName: (rank: number) => string;

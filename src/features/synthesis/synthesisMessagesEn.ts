@@ -8,6 +8,7 @@ export const synthesisMessagesEn: SynthesisMessages = {
   modePath: 'Path',
   modeMotion: 'Motion',
   modeFunction: 'Function',
+  modeNine: 'Nine points',
   modeLoading: 'Loading…',
   pathIntro:
     'Path generation: place target points; the search finds four-bars whose coupler point passes through them (or nearest, in Σd²).',
@@ -51,16 +52,35 @@ export const synthesisMessagesEn: SynthesisMessages = {
   inputCrank: 'Crank',
   inputAny: 'Any',
   synthesize: 'Synthesize',
-  cancel: 'Cancel',
+  cancel: 'Stop',
   needTargets: 'Add at least one target first.',
   progressLabel: 'Synthesis progress',
   progressText: (percent, best) => `${percent} %, best Σd² ${best}`,
   statusRunning: (workers) => `Searching on ${workers} worker${workers === 1 ? '' : 's'}…`,
-  statusCancelled: 'Cancelled.',
+  statusCancelled: 'Stopped before any candidate was found.',
   statusDone: (count, ms, workers) =>
     `${count} candidate${count === 1 ? '' : 's'} in ${ms} s on ${workers} worker${workers === 1 ? '' : 's'}.`,
   statusNone: 'No four-bar in the bounds fits these targets. Widen the bounds or allow any input.',
   statusFailed: (why) => `The search failed: ${why}`,
+  statusStopping: 'Stopped: keeping the candidates found so far…',
+  statusStopped: (count, ms, workers) =>
+    `Stopped after ${ms} s on ${workers} worker${workers === 1 ? '' : 's'}: the ${count} best candidate${count === 1 ? '' : 's'} found so far.`,
+  staleResults:
+    'Out of date: the targets or the task changed since this run. Synthesize again for results that fit them.',
+  mustBePositive: (field) => `${field} must be above 0.`,
+  mustBeMore: (more, less, lessValue) => `${more} must be more than ${less} (${lessValue}).`,
+  stepRule: 'The step must be a nonzero angle from −180° to 180°.',
+  fieldsInError: (names) => `Correct ${names} first.`,
+  missingTheta2: (target) => `Give θ2 for ${target} (given timing), or choose another timing.`,
+  noFit: (size) => `No candidate passes within 1 % of the targets’ size (${size}) of every target.`,
+  reasonSpan: (reach, span) =>
+    `The longest link plus the coupler offset keep the coupler point within ${reach} of the crank pivot: it cannot reach targets ${span} apart. Raise the bounds.`,
+  reasonPivotFar: (target, distance, reach) =>
+    `${target} is ${distance} from the crank pivot’s box, farther than the longest link plus the coupler offset (${reach}). Move or widen the box.`,
+  reasonSameTheta2: (a, b, theta2) =>
+    `${a} and ${b} are given the same θ2 (${theta2}°) at different places: one input angle puts the coupler point in one place.`,
+  reasonUnknown: 'Widen the bounds, allow any input, or try another timing.',
+  staleOpen: 'This design was found for the earlier targets: synthesize again to open one for these.',
   resultsTitle: 'Candidates',
   candidateName: (rank) => `Candidate ${rank}`,
   errorSum: 'Σd²',

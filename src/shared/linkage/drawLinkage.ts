@@ -90,7 +90,8 @@ function drawCurves(ctx: Ctx, scene: LinkageScene, v: ViewTransform): void {
   ctx.setLineDash([]);
 }
 
-function drawGroundPivot(ctx: Ctx, p: Px): void {
+/** The sign of a fixed pivot at p (CSS pixels): triangle, base and hatching. */
+export function drawGroundPivot(ctx: Ctx, p: Px): void {
   // Triangle, base and hatching: the conventional sign for the fixed frame (groundSymbolRect bounds it).
   const s = 11;
   drawGroundTriangle(ctx, p, s);

@@ -9,6 +9,7 @@ import { SYN_PATH_SLICE } from './slices/synthesisSlice';
 import { FORCES_SLICE } from './slices/forcesSlice';
 import { SYN_MOTION_SLICE } from './slices/synMotionSlice';
 import { SYN_FUNCTION_SLICE } from './slices/synFunctionSlice';
+import { MECH_SLICE } from './slices/mechSlice';
 import type { Branch, Linkage } from '../../solver/types';
 import type { CouplerPoint } from './slices/designSlice';
 
@@ -48,6 +49,7 @@ export const SLICES = {
   forces: FORCES_SLICE,
   synMotion: SYN_MOTION_SLICE,
   synFunction: SYN_FUNCTION_SLICE,
+  mech: MECH_SLICE,
 };
 
 /** The slices' names in SLICES's order (the URL table's order). */

@@ -1,5 +1,5 @@
 import './NumberField.css';
-import { useId, useState } from 'react';
+import { useEffect, useEffectEvent, useId, useState } from 'react';
 import { fieldText, formatNumber } from '../format';
 import { readNumberText } from './validateNumber';
 
@@ -30,6 +30,8 @@ export interface NumberFieldProps {
    */
   unit?: string;
   placeholder?: string;
+  /** Told when the field's message appears (with it) or goes (null), so a form can hold its action meanwhile. */
+  onErrorChange?: (error: string | null) => void;
   /** Hide the label visually (it stays the accessible name); default false. */
   hideLabel?: boolean;
   /** Extra class of the root, for a page's layout; the field's own are num-field and num-field-*. */
@@ -52,6 +54,7 @@ export function NumberField({
   decimals,
   unit,
   placeholder,
+  onErrorChange,
   hideLabel = false,
   className,
 }: NumberFieldProps) {
@@ -61,6 +64,10 @@ export function NumberField({
   const [draft, setDraft] = useState<string | null>(null);
   const [error, setError] = useState<string | null>(null);
   const [focused, setFocused] = useState(false);
+  const tell = useEffectEvent((e: string | null) => onErrorChange?.(e));
+  useEffect(() => tell(error), [error]);
+  // A field that goes (a row removed, a mode left) takes its message with it.
+  useEffect(() => () => tell(null), []);
   const [lastValue, setLastValue] = useState(value);
   if (value !== lastValue) {
     // Follow outside changes (a drag, an undo, the URL) unless the person is typing; adjusted while rendering, not

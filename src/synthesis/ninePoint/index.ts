@@ -1,2 +1,14 @@
-export { RECHECK_TOL, mergeNinePoint, ninePointSynthesis } from './ninePointSynthesis';
-export type { NinePointClass, NinePointLinkage, NinePointOptions, NinePointResult } from './ninePointSynthesis';
+export {
+  NINE_POINT_PATHS,
+  RECHECK_TOL,
+  mergeNinePoint,
+  ninePointRefusal,
+  ninePointSynthesis,
+} from './ninePointSynthesis';
+export type {
+  NinePointClass,
+  NinePointLinkage,
+  NinePointOptions,
+  NinePointRefusal,
+  NinePointResult,
+} from './ninePointSynthesis';

@@ -71,22 +71,29 @@ export function loadStartSystem(): Promise<StartSystem> {
   return startCache;
 }
 
-function checkPoints(points: unknown): asserts points is Point[] {
-  checkArray('points', points, 9, 9);
-  points.forEach((p, i) => checkPoint(`points[${i}]`, p));
-  const ps = points as Point[];
+/** Start paths the shipped start system holds (one per orbit of six roots: 8652 roots in all). */
+export const NINE_POINT_PATHS = 1442;
+
+/**
+ * Why nine finite points cannot be solved, as data the page words in its language: two coincide (indices, 0-based),
+ * or they lie on one line or one circle (the roots go to infinity); null when they can.
+ */
+export type NinePointRefusal =
+  { kind: 'coincide'; i: number; j: number; point: Point } | { kind: 'line' } | { kind: 'circle' };
+
+/** The refusal of nine finite points (see NinePointRefusal), or null when the problem is solvable. */
+export function ninePointRefusal(ps: readonly Point[]): NinePointRefusal | null {
   const size = Math.max(...ps.map((p) => Math.hypot(p.x - ps[0].x, p.y - ps[0].y)));
-  for (let i = 0; i < 9; i++)
-    for (let j = i + 1; j < 9; j++) {
+  for (let i = 0; i < ps.length; i++)
+    for (let j = i + 1; j < ps.length; j++) {
       if (Math.hypot(ps[i].x - ps[j].x, ps[i].y - ps[j].y) <= 1e-12 * size || size === 0) {
-        throw new Error(
-          `points[${i}] and points[${j}] coincide at (${ps[i].x}, ${ps[i].y}): nine distinct points needed`,
-        );
+        return { kind: 'coincide', i, j, point: { x: ps[i].x, y: ps[i].y } };
       }
     }
   // Collinear: the smaller principal axis of the points is zero.
-  const cx = ps.reduce((s, p) => s + p.x, 0) / 9;
-  const cy = ps.reduce((s, p) => s + p.y, 0) / 9;
+  const n = ps.length;
+  const cx = ps.reduce((s, p) => s + p.x, 0) / n;
+  const cy = ps.reduce((s, p) => s + p.y, 0) / n;
   let sxx = 0,
     syy = 0,
     sxy = 0;
@@ -97,13 +104,26 @@ function checkPoints(points: unknown): asserts points is Point[] {
   }
   const tr = sxx + syy;
   const lmin = tr / 2 - Math.sqrt(((sxx - syy) / 2) ** 2 + sxy * sxy);
-  if (Math.sqrt(Math.max(0, lmin) / 9) <= 1e-9 * size) {
-    throw new Error('points lie on one line: the solutions of the nine-point problem go to infinity there');
-  }
+  if (Math.sqrt(Math.max(0, lmin) / n) <= 1e-9 * size) return { kind: 'line' };
   // Concyclic: the circle through three of them passes through all (Kåsa's algebraic fit would do; this is exact).
   const circle = circleThrough(ps[0], ps[3], ps[6]);
   if (circle && ps.every((p) => Math.abs(Math.hypot(p.x - circle.x, p.y - circle.y) - circle.r) <= 1e-9 * size)) {
-    throw new Error('points lie on one circle: the solutions of the nine-point problem go to infinity there');
+    return { kind: 'circle' };
+  }
+  return null;
+}
+
+function checkPoints(points: unknown): asserts points is Point[] {
+  checkArray('points', points, 9, 9);
+  points.forEach((p, i) => checkPoint(`points[${i}]`, p));
+  const r = ninePointRefusal(points as Point[]);
+  if (r?.kind === 'coincide') {
+    throw new Error(
+      `points[${r.i}] and points[${r.j}] coincide at (${r.point.x}, ${r.point.y}): nine distinct points needed`,
+    );
+  }
+  if (r) {
+    throw new Error(`points lie on one ${r.kind}: the solutions of the nine-point problem go to infinity there`);
   }
 }
 
@@ -359,14 +379,50 @@ function classOf(w: Float64Array, p: Float64Array, points: Point[], size: number
   return { cognates, grashof: classify(first.links).grashof, defects: defectsOf(first) };
 }
 
-/** The union of slices' results: classes concatenated, path counts summed. */
+/** Two classes are one when their three ground pivots agree to this (relative to the pivots' size). */
+const SAME_CLASS = 1e-7;
+
+/** The three ground pivots of a class (the cognates share them two by two), sorted by x then y. */
+function classPivots(c: NinePointClass): Point[] {
+  const out: Point[] = [];
+  for (const d of c.cognates) {
+    const g = d.groundAngle;
+    const O4 = { x: d.O2.x + d.links.r1 * Math.cos(g), y: d.O2.y + d.links.r1 * Math.sin(g) };
+    for (const p of [d.O2, O4]) {
+      if (!out.some((q) => Math.hypot(q.x - p.x, q.y - p.y) <= SAME_CLASS * (1 + Math.hypot(p.x, p.y)))) out.push(p);
+    }
+  }
+  return out.sort((a, b) => a.x - b.x || a.y - b.y);
+}
+
+/**
+ * The union of slices' results: path counts summed, classes concatenated. A class found by two slices (a path that
+ * jumped to an orbit another slice also reached; one slice alone re-tracks such paths) is kept once and the later
+ * path counted failed, so a jump is said, not hidden.
+ */
 export function mergeNinePoint(parts: NinePointResult[]): NinePointResult {
+  const classes: NinePointClass[] = [];
+  const keys: Point[][] = [];
+  let dropped = 0;
+  for (const c of parts.flatMap((r) => r.classes)) {
+    const k = classPivots(c);
+    const same = keys.some(
+      (q) =>
+        q.length === k.length &&
+        q.every((p, i) => Math.hypot(p.x - k[i].x, p.y - k[i].y) <= SAME_CLASS * (1 + Math.hypot(p.x, p.y))),
+    );
+    if (same) dropped++;
+    else {
+      classes.push(c);
+      keys.push(k);
+    }
+  }
   return {
-    classes: parts.flatMap((r) => r.classes),
+    classes,
     paths: {
       total: parts.reduce((s, r) => s + r.paths.total, 0),
-      finished: parts.reduce((s, r) => s + r.paths.finished, 0),
-      failed: parts.reduce((s, r) => s + r.paths.failed, 0),
+      finished: parts.reduce((s, r) => s + r.paths.finished, 0) - dropped,
+      failed: parts.reduce((s, r) => s + r.paths.failed, 0) + dropped,
     },
   };
 }

@@ -20,6 +20,9 @@ import {
   RANGE_DEG_MAX,
   X_ABS_MAX,
 } from '../../../src/shared/state/slices/synFunctionSlice';
+import { MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
+import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
+import type { MechanismSpec } from '../../../src/mechanism';
 import { ALPHA_ABS_MAX, OMEGA_ABS_MAX } from '../../../src/shared/ui/validateNumber';
 import { LAB_STEPS_DEG, LAB_TOLERANCES } from '../../../src/study/options';
 
@@ -218,6 +221,40 @@ const synFunction: fc.Arbitrary<AppState['synFunction']> = fc.record({
   precisionPoints: fc.integer({ min: 3, max: MAX_FN_POINTS }),
 });
 
+/** Any text a person may type as a name (the separator *, %, spaces, CJK), made unique by a suffix. */
+const anyName = fc.string({ unit: fc.constantFrom(...'aZ0_*%~ .-!中文'), minLength: 1, maxLength: 6 });
+
+/**
+ * An edited linkage: a template's, its joints renamed to any text (suffixed to stay unique), moved by any finite
+ * offset, and its input sometimes unchosen (a linkage still being built).
+ */
+const mechSpec: fc.Arbitrary<MechanismSpec> = fc
+  .tuple(
+    fc.constantFrom(...MECH_TEMPLATE_KEYS),
+    fc.array(anyName, { minLength: 20, maxLength: 20 }),
+    fc.array(double(-1e6, 1e6), { minLength: 40, maxLength: 40 }),
+    fc.boolean(),
+  )
+  .map(([key, names, offsets, noInput]) => {
+    const spec = MECHANISM_TEMPLATES[key].spec;
+    const rename = new Map(spec.joints.map((j, i) => [j.id, `${names[i % 20]}#${i}`]));
+    return {
+      ...spec,
+      joints: spec.joints.map((j, i) => ({
+        ...j,
+        id: rename.get(j.id)!,
+        x: j.x + offsets[(2 * i) % 40],
+        y: j.y + offsets[(2 * i + 1) % 40],
+      })),
+      input: { joint: noInput ? '' : rename.get(spec.input.joint)! },
+    };
+  });
+
+const mech: fc.Arbitrary<AppState['mech']> = fc.record({
+  template: fc.constantFrom(...MECH_TEMPLATE_KEYS),
+  spec: fc.option(mechSpec, { nil: null }),
+});
+
 /** One generator per slice of SLICES: a new slice without one here does not typecheck. */
 export const SLICE_ARBITRARIES: { [K in SliceName]: fc.Arbitrary<AppState[K]> } = {
   design,
@@ -230,6 +267,7 @@ export const SLICE_ARBITRARIES: { [K in SliceName]: fc.Arbitrary<AppState[K]> } 
   forces,
   synMotion,
   synFunction,
+  mech,
 };
 
 /** Any valid state a link can hold exactly: every field of every slice random. */

@@ -49,6 +49,27 @@ describe('synPathReducer', () => {
     });
   });
 
+  it('removes a target and its given θ2 in one action: one undo step (issue 34, 7)', () => {
+    const s = {
+      ...DEFAULT_SYN_PATH,
+      targets: [
+        { x: 0, y: 0 },
+        { x: 1, y: 1 },
+        { x: 2, y: 0 },
+      ],
+      givenTheta2Deg: [10, 20, 30],
+      chosen: 2,
+    };
+    const next = synPathReducer(s, { type: 'removeTarget', index: 1 });
+    expect(next.targets).toEqual([
+      { x: 0, y: 0 },
+      { x: 2, y: 0 },
+    ]);
+    expect(next.givenTheta2Deg).toEqual([10, 30]);
+    expect(next.chosen).toBe(0);
+    expect(synPathReducer(s, { type: 'removeTarget', index: 3 })).toBe(s);
+  });
+
   it('is composed into the app reducer', () => {
     const next = reducer(DEFAULT_STATE, { type: 'setTargets', targets: [{ x: 1, y: 2 }] });
     expect(next.synPath.targets).toEqual([{ x: 1, y: 2 }]);
@@ -87,6 +108,14 @@ describe('synthesis URL keys', () => {
     expect(back.state.shell.page).toBe('synthesis');
   });
 
+  it('keeps a θ2 not given (NaN) as an empty item of tt, never as 0 (issue 34, 3)', () => {
+    const r = parseUrl('page=syn&tg=0,0;1,1;2,0&tm=given&tt=10,,30', DEFAULT_STATE, quiet);
+    expect(r.ignored).toEqual([]);
+    expect(r.state.synPath.givenTheta2Deg).toEqual([10, NaN, 30]);
+    expect(new URLSearchParams(serializeState(r.state)).get('tt')).toBe('10,,30');
+    expect(parseUrl('page=syn&tt=10,x', DEFAULT_STATE, quiet).ignored).toHaveLength(1);
+  });
+
   it('reads page=syn, syn=fn and tg/tm/ts as the issue writes them', () => {
     const r = parseUrl('page=syn&syn=fn&tg=0,0;1,2.5;-3,4&tm=step&ts=20', DEFAULT_STATE, quiet);
     expect(r.ignored).toEqual([]);
@@ -115,7 +144,7 @@ describe('synthesis URL keys', () => {
     const line = /`syn` \(([^)]*)\)/.exec(docs)?.[1] ?? '';
     const listed = line.split(/[^a-z]+/);
     const syn = SYN_PATH_URL_KEYS.find((k) => k.name === 'syn');
-    for (const text of ['path', 'motion', 'fn', 'function']) {
+    for (const text of ['path', 'motion', 'fn', 'function', 'nine']) {
       expect(syn?.parse(text).ok).toBe(true);
       expect(listed).toContain(text);
     }

@@ -2,6 +2,7 @@ import type { InputRangeDeg } from '../../../shared/state/animation';
 import { advanceTheta2, degreesForElapsed } from '../../../shared/state/animation';
 import type { AppState } from '../../../shared/state/appState';
 import type { PlayFrame } from '../../../shared/state/playhead';
+import { playFrameOf } from '../../../shared/state/playhead';
 import type { CycleResponse } from '../../../shared/solution';
 import type { StageInputs } from '../scene/stageScene';
 import type { StageReply, StageRequest } from './stageProtocol';
@@ -13,8 +14,8 @@ export const MAX_DT_SECONDS = 0.1;
 export interface StagePainter {
   setCanvas(canvas: OffscreenCanvas): void;
   setSize(width: number, height: number, dpr: number): void;
-  /** Starts loading the state's language where it has not loaded yet. */
-  prepare(state: AppState): void;
+  /** Starts loading the state's language where it has not loaded yet; settles once it has (at once for English). */
+  prepare(state: AppState): Promise<void>;
   /** Draws frame of the inputs; how long it took (ms), or null when there is nothing to draw on yet or its language is loading. */
   draw(frame: PlayFrame, inputs: StageInputs): number | null;
 }
@@ -53,6 +54,9 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
   let cycle: CycleResponse | null = null;
   let playing: Playing | null = null;
   let handle = 0;
+  let hasCanvas = false;
+  /** Whether 'ready' went to the page (once per worker). */
+  let readySent = false;
   const epochNow = (now: number) => host.timeOrigin + now;
 
   const stopFrames = () => {
@@ -97,18 +101,32 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
     );
   }
 
+  /**
+   * Once it has a canvas and a state whose language has loaded, the stage draws the state's pose once, unseen (its
+   * canvas is hidden until a run's frames come: this compiles the scene's code and lays out its text), and tells the
+   * page it is ready: a Play or drag from then on draws from its first frame without the worker's start-up.
+   */
+  const warmUp = () => {
+    if (readySent || !hasCanvas || !inputs || !host.requestFrame) return;
+    if (!playing) draw(playFrameOf(inputs.state));
+    readySent = true;
+    host.reply({ type: 'ready' });
+  };
+
   return (m) => {
     switch (m.type) {
       case 'canvas':
         painter.setCanvas(m.canvas);
+        hasCanvas = true;
         if (!host.requestFrame) host.reply({ type: 'unsupported' });
+        warmUp();
         break;
       case 'size':
         painter.setSize(m.width, m.height, m.dpr);
         break;
       case 'state':
         inputs = { state: m.state, cycle, ghostShown: m.ghostShown };
-        painter.prepare(m.state);
+        void painter.prepare(m.state).then(warmUp);
         break;
       case 'cycle':
         cycle = m.cycle;

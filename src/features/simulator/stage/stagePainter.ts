@@ -27,9 +27,11 @@ export function createStagePainter(forceLayer: ForceLayer | null): StagePainter 
     setSize(width, height, dpr) {
       size = { width, height, dpr };
     },
-    prepare(state) {
+    async prepare(state) {
       const locale = state.shell.locale;
-      if (!loaded.has(locale)) void loadLanguage(locale).then(() => loaded.add(locale));
+      if (loaded.has(locale)) return;
+      await loadLanguage(locale);
+      loaded.add(locale);
     },
     draw(frame, inputs) {
       const started = performance.now();

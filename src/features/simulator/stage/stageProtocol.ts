@@ -19,8 +19,10 @@ export type StageRequest =
 /**
  * The worker to the page: a frame of play or show `id` drawn at atEpochMs and on screen by shownEpochMs (the next
  * animation frame of the worker after a show; Play draws in its animation frames, so the two are one there), or that
- * this browser's workers cannot animate. drawMs: the worker's time for the frame's scene and drawing.
+ * this browser's workers cannot animate, or that it is ready (it has the canvas and the state, its code has run
+ * once: see stageLoop's warmUp). drawMs: the worker's time for the frame's scene and drawing.
  */
 export type StageReply =
   | { type: 'drawn'; id: number; frame: PlayFrame; atEpochMs: number; shownEpochMs: number; drawMs: number }
-  | { type: 'unsupported' };
+  | { type: 'unsupported' }
+  | { type: 'ready' };

@@ -41,5 +41,14 @@ export function expressionProblemText(
 export function functionProblemText(fm: FunctionMessages, expression: string, p: FunctionProblem): string {
   if (p.code === 'notFinite') return fm.notFinite(expression, formatNumber(p.x, 6));
   if (p.code === 'sameEnds') return fm.sameEnds(expression, formatNumber(p.y, 6));
-  return fm.noLinkage(p.detail);
+  const turns = p.turnsAt === null ? '' : fm.noLinkageTurns(formatNumber(p.turnsAt, 4));
+  const hint = p.hint
+    ? fm.noLinkageHint(
+        p.hint.range === 'theta2' ? 'θ2' : 'θ4',
+        formatNumber(p.hint.deg[0], 6),
+        formatNumber(p.hint.deg[1], 6),
+        p.hint.clean,
+      )
+    : fm.noLinkageNoHint;
+  return fm.noLinkage(fm.noLinkageWhy[p.reason], turns, hint);
 }

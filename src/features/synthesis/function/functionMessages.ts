@@ -1,6 +1,6 @@
 import type { Locale } from '../../../shared/state/appState';
 import { messageModule } from '../../../shared/i18n/messageModule';
-import type { FunctionDefect } from '../../../synthesis';
+import type { FunctionDefect, NoLinkageReason } from '../../../synthesis';
 import type { Construct } from './expression';
 import { functionMessagesEn } from './functionMessagesEn';
 import { functionMessagesZhTw } from './functionMessagesZhTw';
@@ -39,7 +39,15 @@ export interface FunctionMessages {
   constructs: Record<Construct, string>;
   notFinite: (expression: string, x: string) => string;
   sameEnds: (expression: string, y: string) => string;
-  noLinkage: (detail: string) => string;
+  /** No linkage: why, then the turn of f (or ''), then the hint, each a sentence or sentences. */
+  noLinkage: (why: string, turns: string, hint: string) => string;
+  noLinkageWhy: Record<NoLinkageReason | 'other', string>;
+  /** f turns back near x (a sentence, after the why). */
+  noLinkageTurns: (x: string) => string;
+  /** A range that gives a linkage: θ2 or θ4, its ends in degrees, clean (no defects). */
+  noLinkageHint: (range: string, from: string, to: string, clean: boolean) => string;
+  /** When none of the ranges tried gives a linkage. */
+  noLinkageNoHint: string;
   /** A refused number: the field, the text, the value kept and why (null: not a number). */
   fieldError: (field: string, text: string, kept: string, why: string | null) => string;
   rangeWhy: { ends: string; within: (max: string) => string; span: (max: string) => string };
@@ -56,6 +64,12 @@ export interface FunctionMessages {
   typeLine: (type: string) => string;
   branchLine: (branch: string) => string;
   maxError: (value: string, percent: string) => string;
+  /** The largest error when some x cannot be reached (the not-assemblable defect says why). */
+  maxErrorNone: string;
+  /** f turns back near x on the range. */
+  notMonotone: (x: string) => string;
+  /** The largest error, as a percent of y's range, over the limit percent. */
+  largeError: (percent: string, limit: string) => string;
   defectsTitle: string;
   defectWords: Record<FunctionDefect, string>;
   noDefects: string;

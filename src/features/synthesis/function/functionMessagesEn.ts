@@ -47,7 +47,18 @@ export const functionMessagesEn: FunctionMessages = {
     `“${expression}” has no finite value at x = ${x}: choose an x range where it is defined.`,
   sameEnds: (expression, y) =>
     `“${expression}” has the same value ${y} at both ends of the x range, so y cannot be mapped onto θ4.`,
-  noLinkage: (detail) => `No real four-bar fits these ranges (${detail}). Try other θ2 or θ4 ranges.`,
+  noLinkage: (why, turns, hint) => `No real four-bar fits these ranges: ${why}.${turns} ${hint}`,
+  noLinkageWhy: {
+    crank: 'the crank would have to point opposite to θ2',
+    rocker: 'the rocker would have to point opposite to θ4',
+    coupler: 'no coupler length closes the loop at these angles',
+    singular: 'these angle pairs do not fix a linkage, as when θ4 follows θ2 one for one',
+    other: 'the equations have no real solution',
+  },
+  noLinkageTurns: (x) => ` Also, f turns back near x = ${x}, which a rocker can follow only through a dead centre.`,
+  noLinkageHint: (range, from, to, clean) =>
+    `Try ${range} from ${from}° to ${to}°: that gives a linkage${clean ? ' with no defects' : ''}.`,
+  noLinkageNoHint: 'Try other θ2 or θ4 ranges: reverse one, or move it by 90°.',
   fieldError: (field, text, kept, why) =>
     `${field}: “${text}” ${why ? `is refused: ${why}` : 'is not a number'}; keeping ${kept}.`,
   rangeWhy: {
@@ -67,6 +78,11 @@ export const functionMessagesEn: FunctionMessages = {
   typeLine: (type) => `Type: ${type}`,
   branchLine: (branch) => `Branch: ${branch}`,
   maxError: (value, percent) => `Largest structural error: ${value} (${percent} % of y’s range)`,
+  maxErrorNone: 'Largest structural error: none can be given, the loop does not close over the whole range.',
+  notMonotone: (x) =>
+    `f is not monotone on the x range: it turns back near x = ${x}. A rocker follows that only through a dead centre; choose an x range where f only rises or only falls.`,
+  largeError: (percent, limit) =>
+    `Large error: the largest structural error is ${percent} % of y’s range, over ${limit} %. The linkage does not follow f closely; try more precision points or other ranges.`,
   defectsTitle: 'Checks',
   defectWords: {
     limit:

@@ -45,7 +45,18 @@ export const functionMessagesZhTw: FunctionMessages = {
   },
   notFinite: (expression, x) => `「${expression}」在 x = ${x} 沒有有限值：請選擇算式有定義的 x 範圍。`,
   sameEnds: (expression, y) => `「${expression}」在 x 範圍兩端的值同為 ${y}，無法將 y 對應到 θ4。`,
-  noLinkage: (detail) => `沒有實際的四連桿符合這些範圍（${detail}）。請嘗試其他 θ2 或 θ4 範圍。`,
+  noLinkage: (why, turns, hint) => `沒有實際的四連桿符合這些範圍：${why}。${turns}${hint}`,
+  noLinkageWhy: {
+    crank: '曲柄必須指向 θ2 的反方向',
+    rocker: '搖桿必須指向 θ4 的反方向',
+    coupler: '在這些角度下，沒有任何連桿長度能使迴路閉合',
+    singular: '這些角度對無法決定連桿機構，例如 θ4 與 θ2 一一相同時',
+    other: '方程式沒有實數解',
+  },
+  noLinkageTurns: (x) => `此外，f 在 x = ${x} 附近折返，搖桿只能經過死點才能跟隨。`,
+  noLinkageHint: (range, from, to, clean) =>
+    `請試試 ${range} 從 ${from}° 到 ${to}°：可得到連桿機構${clean ? '，且沒有缺陷' : ''}。`,
+  noLinkageNoHint: '請嘗試其他 θ2 或 θ4 範圍：將其反向，或平移 90°。',
   fieldError: (field, text, kept, why) =>
     `${field}：「${text}」${why ? `不被接受：${why}` : '不是數字'}；保留 ${kept}。`,
   rangeWhy: {
@@ -65,6 +76,11 @@ export const functionMessagesZhTw: FunctionMessages = {
   typeLine: (type) => `類型：${type}`,
   branchLine: (branch) => `分支：${branch}`,
   maxError: (value, percent) => `最大結構誤差：${value}（y 範圍的 ${percent} %）`,
+  maxErrorNone: '最大結構誤差：無法給出，迴路無法在整個範圍內閉合。',
+  notMonotone: (x) =>
+    `f 在 x 範圍內不是單調的：在 x = ${x} 附近折返。搖桿只能經過死點才能跟隨；請選擇 f 只上升或只下降的 x 範圍。`,
+  largeError: (percent, limit) =>
+    `誤差過大：最大結構誤差為 y 範圍的 ${percent} %，超過 ${limit} %。連桿機構無法緊密跟隨 f；請增加精確點或改用其他範圍。`,
   defectsTitle: '檢查',
   defectWords: {
     limit: '極限缺陷：在範圍內搖桿到達死點而折返，或曲柄到達行程終點。',

@@ -57,9 +57,32 @@ export function turnHandlePx(v: ViewTransform, pose: Pose): Px {
   return { x: p.x + TURN_HANDLE_PX * Math.cos(pose.angle), y: p.y - TURN_HANDLE_PX * Math.sin(pose.angle) };
 }
 
+/** The poses' spread: the largest distance of a pose's point from their centroid (1e-9 at least). */
+export function poseSpread(poses: readonly Pose[]): number {
+  const c = centroid(poses);
+  return Math.max(1e-9, ...poses.map((p) => Math.hypot(p.x - c.x, p.y - c.y)));
+}
+
+/** Burmester points farther than this many times the nearest one's distance (or the spread) are left out of the fit. */
+export const FAR_POINT_FACTOR = 10;
+
 /**
- * The box the view fits: the poses, the placed pivots and the chosen linkage's fixed pivots, and (two poses) the
- * pole. Not the Burmester curves: they run out to their asymptotes.
+ * Extends b by the points of a curve near c: those within twice the nearer of its nearest point's distance and the
+ * poses' spread, so the stretch worth picking on is in view and the asymptotic arms are not.
+ */
+function extendByNear(b: Bounds, points: readonly Point[], c: Point, spread: number): void {
+  const d = points.map((p) => Math.hypot(p.x - c.x, p.y - c.y));
+  const reach = 2 * Math.max(spread, Math.min(...d));
+  points.forEach((p, i) => {
+    if (d[i] <= reach) extendBounds(b, p.x, p.y);
+  });
+}
+
+/**
+ * The box the view fits: the poses, the placed pivots and the chosen linkage's fixed pivots; (two poses) the pole;
+ * (four poses) the stretch of each centre-point and circle-point curve nearest the poses, not their asymptotic arms;
+ * (five poses) the Burmester points and their circle points, but those more than FAR_POINT_FACTOR times farther than
+ * the nearest one (or the spread).
  */
 export function motionBounds(pic: MotionPicture): Bounds {
   const b = emptyBounds();
@@ -72,13 +95,31 @@ export function motionBounds(pic: MotionPicture): Bounds {
     extendBounds(b, O2.x + links.r1 * Math.cos(groundAngle), O2.y + links.r1 * Math.sin(groundAngle));
   }
   if (pic.outcome.count === 2 && pic.outcome.pole) extendBounds(b, pic.outcome.pole.x, pic.outcome.pole.y);
+  const c = centroid(pic.poses);
+  const spread = poseSpread(pic.poses);
   if (pic.outcome.count === 4) {
-    // The curves near the poses (within twice their spread of the centroid), where the dyads worth picking are.
-    const c = centroid(pic.poses);
-    const reach = 2 * Math.max(...pic.poses.map((p) => Math.hypot(p.x - c.x, p.y - c.y)));
-    for (const d of pic.outcome.curves.flat()) {
-      if (Math.hypot(d.center.x - c.x, d.center.y - c.y) <= reach) extendBounds(b, d.center.x, d.center.y);
+    for (const curve of pic.outcome.curves) {
+      extendByNear(
+        b,
+        curve.map((d) => d.center),
+        c,
+        spread,
+      );
+      extendByNear(
+        b,
+        curve.map((d) => toPlane(pic.poses[0], d.circle)),
+        c,
+        spread,
+      );
     }
+  }
+  if (pic.outcome.count === 5 && pic.outcome.points.length) {
+    const points = pic.outcome.points.flatMap((d) => [d.center, toPlane(pic.poses[0], d.circle)]);
+    const d = points.map((p) => Math.hypot(p.x - c.x, p.y - c.y));
+    const reach = FAR_POINT_FACTOR * Math.max(spread, Math.min(...d));
+    points.forEach((p, i) => {
+      if (d[i] <= reach) extendBounds(b, p.x, p.y);
+    });
   }
   return b;
 }
@@ -140,12 +181,23 @@ function drawConstruction(ctx: DrawContext, v: ViewTransform, construction: Thre
   }
 }
 
-/** A dyad: its centre (fixed pivot) and its circle point at pose 1, joined. */
-function drawDyad(ctx: DrawContext, v: ViewTransform, pose1: Pose, d: BurmesterPair, shape: 'dot' | 'diamond'): void {
+/** A dyad: its centre (fixed pivot) and its circle point at pose 1, joined; both labelled when a label is given. */
+function drawDyad(
+  ctx: DrawContext,
+  v: ViewTransform,
+  pose1: Pose,
+  d: BurmesterPair,
+  shape: 'dot' | 'diamond',
+  label?: string,
+): void {
   const circle = toPlane(pose1, d.circle);
   drawPolyline(ctx, v, [d.center, circle], THEME.text, 1, [3, 3]);
   drawMarker(ctx, v, d.center, shape, CENTRE_COLOR, 5);
   drawMarker(ctx, v, circle, shape === 'dot' ? 'ring' : 'hollowDiamond', CIRCLE_COLOR, 5);
+  if (label) {
+    drawLabel(ctx, v, d.center, label);
+    drawLabel(ctx, v, circle, label);
+  }
 }
 
 function drawLegend(ctx: DrawContext, legend: MotionPicture['legend']): void {
@@ -195,7 +247,8 @@ function drawMethod(ctx: DrawContext, v: ViewTransform, pic: MotionPicture): voi
     for (const d of o.dyads) drawDyad(ctx, v, pic.poses[0], d, 'dot');
     if (pic.cursor) drawMarker(ctx, v, pic.cursor.center, 'ring', THEME.text, 8);
   }
-  if (o.count === 5) for (const d of o.points) drawDyad(ctx, v, pic.poses[0], d, 'diamond');
+  // Numbered as the four-bar list names them ("points 1 + 3").
+  if (o.count === 5) o.points.forEach((d, i) => drawDyad(ctx, v, pic.poses[0], d, 'diamond', String(i + 1)));
   if (o.count === 2 && o.pole) {
     drawWorldCircle(ctx, v, o.pole, o.rocker, THEME.reference, [2, 3]);
     drawMarker(ctx, v, o.pole, 'cross', CONSTRUCTION_COLOR, 5);

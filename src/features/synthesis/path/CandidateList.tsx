@@ -14,6 +14,8 @@ export interface CandidateListProps {
   facts: readonly CandidateFacts[];
   targets: readonly Point[];
   chosen: number;
+  /** The answers are for another task than the page's (an edit since the run): shown dimmed, marked out of date. */
+  stale: boolean;
   dispatch: Dispatch<Action>;
   st: SynthesisMessages;
   t: Messages;
@@ -35,17 +37,22 @@ export function defectsText(f: CandidateFacts, st: SynthesisMessages): string {
 }
 
 /**
- * The candidates, best first: each a button (pressed when chosen) with its thumbnail, Σd², max distance, type,
+ * The candidates, best first (marked out of date when the task changed since the run): each a button (pressed when chosen) with its thumbnail, Σd², max distance, type,
  * smallest transmission angle and defects in words.
  */
-export function CandidateList({ solutions, facts, targets, chosen, dispatch, st, t }: CandidateListProps) {
+export function CandidateList({ solutions, facts, targets, chosen, stale, dispatch, st, t }: CandidateListProps) {
   if (solutions.length === 0) return null;
   return (
-    <section className="card syn-card" aria-labelledby="syn-results-title">
+    <section className={`card syn-card${stale ? ' is-stale' : ''}`} aria-labelledby="syn-results-title">
       <h3 id="syn-results-title" className="syn-card-title">
         {st.resultsTitle}
       </h3>
-      <ol className="syn-candidates" data-testid="candidates">
+      {stale ? (
+        <p className="syn-stale-note" data-testid="stale-note">
+          {st.staleResults}
+        </p>
+      ) : null}
+      <ol className="syn-candidates" data-testid="candidates" data-stale={stale}>
         {solutions.map((s, i) => {
           const f = facts[i];
           return (

@@ -16,6 +16,8 @@ export interface ChosenDesignProps {
   choices: readonly DesignChoice[];
   shown: number;
   onShow: (index: number) => void;
+  /** The design was found for another task than the page's: it is not opened with the new targets. */
+  stale: boolean;
   onOpen: () => void;
   onExportCsv: () => void;
   onExportSvg: () => void;
@@ -26,12 +28,13 @@ export interface ChosenDesignProps {
 
 /**
  * The chosen design: the candidate and its two Roberts cognates as a radio group (the one chosen is drawn and
- * opened), "Open in simulator", and the exports (results CSV, the canvas as SVG and PNG).
+ * opened), "Open in simulator" (not for an out-of-date design), and the exports (results CSV, the canvas as SVG and PNG).
  */
 export function ChosenDesign({
   choices,
   shown,
   onShow,
+  stale,
   onOpen,
   onExportCsv,
   onExportSvg,
@@ -66,8 +69,9 @@ export function ChosenDesign({
           );
         })}
       </fieldset>
+      {stale ? <p className="note">{st.staleOpen}</p> : null}
       <div className="syn-buttons">
-        <button type="button" className="btn btn-primary" onClick={onOpen}>
+        <button type="button" className="btn btn-primary" disabled={stale} onClick={onOpen}>
           {st.openInSimulator}
         </button>
         <button type="button" className="btn" onClick={onExportCsv}>

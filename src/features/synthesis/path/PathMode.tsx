@@ -1,12 +1,15 @@
-import { useMemo, useRef, useState } from 'react';
+import { useCallback, useMemo, useRef, useState } from 'react';
+import { radToDeg } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
 import { robertsCognates } from '../../../synthesis/cognates';
 import { placedJoints } from '../../../synthesis/placed';
 import type { PlacedFourBar } from '../../../synthesis/types';
 import { fitView } from '../../../shared/canvas/view';
+import { formatNumber } from '../../../shared/format';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
-import type { ViewOffset } from '../../../shared/state/appState';
+import type { SynPathState, ViewOffset } from '../../../shared/state/appState';
 import type { SynthesisModeProps } from '../openDesign';
+import type { SynthesisMessages } from '../synthesisMessages';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import { CandidateList } from './CandidateList';
 import { candidateFacts, placedFourBarFacts } from './candidateFacts';
@@ -15,7 +18,9 @@ import { ChosenDesign } from './ChosenDesign';
 import type { PathCurve, PathScene } from './drawPathScene';
 import { pathSceneBounds } from './drawPathScene';
 import { exportPathPng, exportPathSvg, exportResultsCsv } from './pathExports';
-import { pathTaskOf, targetsExtent } from './pathTaskOf';
+import { pathTaskOf, samePathTask, targetsExtent } from './pathTaskOf';
+import type { PathTaskReason } from './pathTaskChecks';
+import { missingTheta2, noneClose, pathTaskReasons } from './pathTaskChecks';
 import { RunControls } from './RunControls';
 import { TargetCanvas } from './TargetCanvas';
 import { TargetsCard } from './TargetsCard';
@@ -55,6 +60,26 @@ function useChoices(
   return { choices, facts };
 }
 
+/** A reason a task cannot be met, in words. */
+function reasonText(r: PathTaskReason, st: SynthesisMessages): string {
+  const n = (x: number) => formatNumber(x, 4);
+  switch (r.kind) {
+    case 'span':
+      return st.reasonSpan(n(r.reach), n(r.span));
+    case 'pivot-far':
+      return st.reasonPivotFar(st.targetName(r.target), n(r.distance), n(r.reach));
+    case 'same-theta2':
+      return st.reasonSameTheta2(st.targetName(r.a), st.targetName(r.b), formatNumber(radToDeg(r.theta2), 6));
+  }
+}
+
+/** Why Synthesize waits: fields in error (by name), or a target without its given θ2; null when it may run. */
+function holdText(fieldErrors: ReadonlyMap<string, string>, s: SynPathState, st: SynthesisMessages): string | null {
+  if (fieldErrors.size > 0) return st.fieldsInError([...fieldErrors.keys()].join(', '));
+  const missing = missingTheta2(s);
+  return missing === null ? null : st.missingTheta2(st.targetName(missing));
+}
+
 /**
  * The Path mode: the targets on a canvas, in a text area and a table; timing, bounds and input; Synthesize on a pool
  * of workers with progress and Cancel; the candidates; the chosen one (or a cognate) moving through the targets,
@@ -69,19 +94,40 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
   const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
   const [shown, setShown] = useState(0);
   const [replaced, setReplaced] = useState(0);
+  const [fieldErrors, setFieldErrors] = useState<ReadonlyMap<string, string>>(new Map());
+  const onFieldError = useCallback((name: string, error: string | null) => {
+    setFieldErrors((m) => {
+      if ((m.get(name) ?? null) === error) return m;
+      const next = new Map(m);
+      if (error === null) next.delete(name);
+      else next.set(name, error);
+      return next;
+    });
+  }, []);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const solutions = run.solutions ?? [];
   const chosen = Math.min(s.chosen, Math.max(0, solutions.length - 1));
   const { choices, facts } = useChoices(run, chosen);
   const choice = choices[Math.min(shown, choices.length - 1)] ?? null;
+  const task = useMemo(() => pathTaskOf(s), [s]);
+  // The answers belong to the task they were computed for: after an edit they are drawn faint and not opened.
+  const stale = run.task !== null && !samePathTask(run.task, task);
+  const hold = holdText(fieldErrors, s, st);
+  const finished = run.status === 'done' || run.status === 'stopped';
+  const summary = useMemo(() => {
+    if (!finished || stale || !run.task || !run.solutions || !noneClose(run.task, run.solutions)) return null;
+    const why = pathTaskReasons(run.task).map((r) => reasonText(r, st));
+    const size = formatNumber(targetsExtent(run.task.targets).size, 4);
+    return [st.noFit(size), ...(why.length > 0 ? why : [st.reasonUnknown])].join(' ');
+  }, [finished, stale, run.task, run.solutions, st]);
 
   const curves: PathCurve[] = choice
-    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: c !== choice }))
+    ? choices.map((c) => ({ x: c.facts.curve.x, y: c.facts.curve.y, faint: stale || c !== choice }))
     : [];
-  const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  const moving = choice && !stale ? { design: choice.design, motion: choice.facts.motion } : null;
   const content = pathSceneBounds({
     targets: s.targets,
-    curves: curves.filter((c) => !c.faint),
+    curves: choice ? [curves[Math.min(shown, curves.length - 1)]] : [],
     pose: null,
     design: choice?.design ?? null,
   });
@@ -125,8 +171,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
             setSelected(s.targets.length);
           }}
           onRemove={(i) => {
-            dispatch({ type: 'setTargets', targets: s.targets.filter((_, k) => k !== i) });
-            dispatch({ type: 'setGivenTheta2', theta2Deg: s.givenTheta2Deg.filter((_, k) => k !== i) });
+            dispatch({ type: 'removeTarget', index: i });
             setSelected(null);
           }}
           canvasRef={canvasRef}
@@ -135,14 +180,16 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
       </div>
       <div className="syn-side">
         <TargetsCard s={s} selected={selected} onSelect={setSelected} onReplace={replace} dispatch={dispatch} st={st} />
-        <TaskSettings s={s} dispatch={dispatch} st={st} />
+        <TaskSettings s={s} dispatch={dispatch} onFieldError={onFieldError} st={st} />
         <RunControls
           run={run}
           canRun={s.targets.length > 0}
+          hold={hold}
+          summary={summary}
           onRun={() => {
             dispatch({ type: 'chooseCandidate', index: 0 });
             setShown(0);
-            void run.run(pathTaskOf(s), s.seed);
+            void run.run(task, s.seed);
           }}
           onCancel={run.cancel}
           st={st}
@@ -152,6 +199,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           facts={facts}
           targets={run.task?.targets ?? s.targets}
           chosen={chosen}
+          stale={stale}
           dispatch={(a) => {
             setShown(0);
             dispatch(a);
@@ -166,6 +214,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
             choices={choices}
             shown={Math.min(shown, choices.length - 1)}
             onShow={setShown}
+            stale={stale}
             onOpen={() => onOpen({ design: choice.design, markers: s.targets, theta2: choice.theta2 })}
             onExportCsv={() => exportResultsCsv(solutions)}
             onExportSvg={() => {

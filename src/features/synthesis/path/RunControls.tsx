@@ -6,6 +6,10 @@ import type { PathRunState } from './usePathSynthesis';
 export interface RunControlsProps {
   run: PathRunState;
   canRun: boolean;
+  /** Why Synthesize waits (a field in error, a missing θ2), or null. */
+  hold: string | null;
+  /** The answers' summary when none passes close to every target (and why, where known), or null. */
+  summary: string | null;
   onRun: () => void;
   onCancel: () => void;
   st: SynthesisMessages;
@@ -18,6 +22,12 @@ function statusText(run: PathRunState, st: SynthesisMessages): string | null {
       return st.statusRunning(run.workers);
     case 'cancelled':
       return st.statusCancelled;
+    case 'stopping':
+      return st.statusStopping;
+    case 'stopped':
+      return run.solutions && run.solutions.length > 0
+        ? st.statusStopped(run.solutions.length, formatNumber(run.elapsedMs / 1000, 2), run.workers)
+        : st.statusCancelled;
     case 'failed':
       return st.statusFailed(run.error ?? '');
     case 'done':
@@ -30,10 +40,10 @@ function statusText(run: PathRunState, st: SynthesisMessages): string | null {
 }
 
 /**
- * "Synthesize" and "Cancel", the progress bar (role progressbar; its value text is the best Σd² so far) and the
- * status line.
+ * "Synthesize" (held while a field is in error) and "Stop", the progress bar (role progressbar; its value text is the best Σd² so far) and the
+ * status line, with a summary when no answer passes close to every target.
  */
-export function RunControls({ run, canRun, onRun, onCancel, st }: RunControlsProps) {
+export function RunControls({ run, canRun, hold, summary, onRun, onCancel, st }: RunControlsProps) {
   const running = run.status === 'running';
   const p = run.progress;
   const percent = p ? Math.round(100 * p.fraction) : 0;
@@ -42,7 +52,12 @@ export function RunControls({ run, canRun, onRun, onCancel, st }: RunControlsPro
   return (
     <section className="card syn-card syn-run" data-status={run.status}>
       <div className="syn-buttons">
-        <button type="button" className="btn btn-primary" disabled={!canRun || running} onClick={onRun}>
+        <button
+          type="button"
+          className="btn btn-primary"
+          disabled={!canRun || hold !== null || running}
+          onClick={onRun}
+        >
           {st.synthesize}
         </button>
         <button type="button" className="btn" disabled={!running} onClick={onCancel}>
@@ -50,6 +65,11 @@ export function RunControls({ run, canRun, onRun, onCancel, st }: RunControlsPro
         </button>
       </div>
       {!canRun ? <p className="note">{st.needTargets}</p> : null}
+      {canRun && hold ? (
+        <p className="syn-error" data-testid="run-hold">
+          {hold}
+        </p>
+      ) : null}
       {running ? (
         <div
           className="syn-progress"
@@ -67,6 +87,11 @@ export function RunControls({ run, canRun, onRun, onCancel, st }: RunControlsPro
       <p className="status-line" role="status" data-testid="synthesis-status">
         {status}
       </p>
+      {summary ? (
+        <p className="syn-error" data-testid="no-fit-summary">
+          {summary}
+        </p>
+      ) : null}
     </section>
   );
 }

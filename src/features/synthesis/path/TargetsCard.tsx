@@ -43,7 +43,8 @@ function TargetPaste({ s, onReplace, st }: Pick<TargetsCardProps, 's' | 'onRepla
   const timed = s.timing === 'given' ? s.givenTheta2Deg : null;
   const shown = draft ?? formatTargetsText(s.targets, timed);
   const read = (text: string) => {
-    const r = parseTargetsText(text);
+    // The app's own CSV (Export CSV) pastes back: its header line is skipped.
+    const r = parseTargetsText(text, true);
     if (!r.ok) {
       setError(errorText(r.error, st));
       return;
@@ -89,9 +90,14 @@ function TargetTable({ s, selected, onSelect, dispatch, st }: Omit<TargetsCardPr
   const setAt = (i: number, p: Partial<Point>) =>
     dispatch({ type: 'setTargets', targets: s.targets.map((t, k) => (k === i ? { ...t, ...p } : t)) });
   const remove = (i: number) => {
-    dispatch({ type: 'setTargets', targets: s.targets.filter((_, k) => k !== i) });
-    dispatch({ type: 'setGivenTheta2', theta2Deg: s.givenTheta2Deg.filter((_, k) => k !== i) });
+    dispatch({ type: 'removeTarget', index: i });
     onSelect(null);
+  };
+  /** θ2 of target i (NaN: not given), the others kept; a target without one stays without (never a silent 0). */
+  const setTheta2 = (i: number, a: number) => {
+    const next = s.targets.map((_, k) => s.givenTheta2Deg[k] ?? NaN);
+    next[i] = a;
+    dispatch({ type: 'setGivenTheta2', theta2Deg: next });
   };
   if (s.targets.length === 0) return null;
   return (
@@ -136,14 +142,11 @@ function TargetTable({ s, selected, onSelect, dispatch, st }: Omit<TargetsCardPr
                 <NumberField
                   label={`${st.targetName(i + 1)} ${st.tableTheta2}`}
                   hideLabel
-                  value={s.givenTheta2Deg[i] ?? 0}
+                  value={Number.isFinite(s.givenTheta2Deg[i]) ? s.givenTheta2Deg[i] : null}
                   className="syn-field"
                   errorText={st.badNumber}
-                  onCommit={(a) => {
-                    const next = s.targets.map((_, k) => s.givenTheta2Deg[k] ?? 0);
-                    next[i] = a;
-                    dispatch({ type: 'setGivenTheta2', theta2Deg: next });
-                  }}
+                  onCommit={(a) => setTheta2(i, a)}
+                  onClear={() => setTheta2(i, NaN)}
                 />
               </td>
             ) : null}

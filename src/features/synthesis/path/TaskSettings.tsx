@@ -10,6 +10,8 @@ import { defaultPathBounds } from './pathTaskOf';
 export interface TaskSettingsProps {
   s: SynPathState;
   dispatch: Dispatch<Action>;
+  /** Told when a field's message appears or goes (by the field's name): Synthesize waits while one shows. */
+  onFieldError: (field: string, error: string | null) => void;
   st: SynthesisMessages;
 }
 
@@ -20,10 +22,10 @@ const SHOWN_DIGITS = 4;
  * Timing (free, equal steps with the step in degrees, or a given θ2 per target in the table), the bounds (longest
  * link, coupler offset, the crank pivot's box; empty fields use defaults from the targets' size) and the input.
  */
-export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
+export function TaskSettings({ s, dispatch, onFieldError, st }: TaskSettingsProps) {
   const d = defaultPathBounds(s.targets);
   const auto = (x: number) => st.autoValue(formatNumber(x, SHOWN_DIGITS));
-  const positive = (x: number) => (x > 0 ? null : st.badNumber(String(x)));
+  const positive = (label: string) => (x: number) => (x > 0 ? null : st.mustBePositive(label));
   const errorText = (text: string, _kept: string, why: string | null) => why ?? st.badNumber(text);
   const box = s.pivotBox ?? d.pivot;
   const setBox = (k: 'min' | 'max', axis: 'x' | 'y', v: number) => {
@@ -32,19 +34,22 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
     if (next.min.x < next.max.x && next.min.y < next.max.y)
       dispatch({ type: 'setPathBounds', bounds: { pivotBox: next } });
   };
+  const boxLabel = (k: 'min' | 'max', axis: 'x' | 'y') => `${axis} ${k === 'min' ? st.pivotMin : st.pivotMax}`;
   const boxField = (k: 'min' | 'max', axis: 'x' | 'y') => (
     <NumberField
-      label={`${axis} ${k === 'min' ? st.pivotMin : st.pivotMax}`}
+      label={boxLabel(k, axis)}
       value={s.pivotBox ? s.pivotBox[k][axis] : null}
       placeholder={formatNumber(d.pivot[k][axis], SHOWN_DIGITS)}
       className="syn-field"
       errorText={errorText}
       check={(v) => {
         const other = k === 'min' ? box.max[axis] : box.min[axis];
-        return (k === 'min' ? v < other : v > other) ? null : st.badNumber(String(v));
+        if (k === 'min' ? v < other : v > other) return null;
+        return st.mustBeMore(boxLabel('max', axis), boxLabel('min', axis), formatNumber(other, 10));
       }}
       onCommit={(v) => setBox(k, axis, v)}
       onClear={() => dispatch({ type: 'setPathBounds', bounds: { pivotBox: null } })}
+      onErrorChange={(e) => onFieldError(boxLabel(k, axis), e)}
     />
   );
   return (
@@ -68,8 +73,9 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
           value={s.timingStepDeg}
           className="syn-field"
           errorText={errorText}
-          check={(v) => (v !== 0 && Math.abs(v) <= 180 ? null : st.badNumber(String(v)))}
+          check={(v) => (v !== 0 && Math.abs(v) <= 180 ? null : st.stepRule)}
           onCommit={(v) => dispatch({ type: 'setTimingStep', stepDeg: v })}
+          onErrorChange={(e) => onFieldError(st.stepLabel, e)}
         />
       ) : null}
       <fieldset className="syn-bounds">
@@ -80,8 +86,9 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
           placeholder={auto(d.length)}
           className="syn-field"
           errorText={errorText}
-          check={positive}
+          check={positive(st.boundLength)}
           onCommit={(v) => dispatch({ type: 'setPathBounds', bounds: { boundLength: v } })}
+          onErrorChange={(e) => onFieldError(st.boundLength, e)}
           onClear={() => dispatch({ type: 'setPathBounds', bounds: { boundLength: null } })}
         />
         <NumberField
@@ -90,8 +97,9 @@ export function TaskSettings({ s, dispatch, st }: TaskSettingsProps) {
           placeholder={auto(d.coupler)}
           className="syn-field"
           errorText={errorText}
-          check={positive}
+          check={positive(st.boundCoupler)}
           onCommit={(v) => dispatch({ type: 'setPathBounds', bounds: { boundCoupler: v } })}
+          onErrorChange={(e) => onFieldError(st.boundCoupler, e)}
           onClear={() => dispatch({ type: 'setPathBounds', bounds: { boundCoupler: null } })}
         />
         <div className="syn-box" role="group" aria-label={st.pivotBox}>

@@ -74,3 +74,11 @@ export function pathTaskOf(s: SynPathState): PathTask {
     input: s.input,
   };
 }
+
+/**
+ * True when two path tasks are the same task: the same targets, timing, bounds and input, number for number.
+ * Answers belong to the task they were computed for: any edit makes them out of date.
+ */
+export function samePathTask(a: PathTask, b: PathTask): boolean {
+  return JSON.stringify(a) === JSON.stringify(b);
+}

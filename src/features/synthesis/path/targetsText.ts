@@ -55,18 +55,25 @@ export function parseTargetsText(
   return { ok: true, value: { targets, theta2Deg: allTimed && targets.length > 0 ? theta2 : null } };
 }
 
-/** Targets as lines "x, y" (or "x, y, θ2" when theta2Deg is given), the shortest exact text of each number. */
-export function formatTargetsText(targets: readonly Point[], theta2Deg: readonly number[] | null = null): string {
-  return targets
-    .map((p, i) => [p.x, p.y, ...(theta2Deg ? [theta2Deg[i] ?? 0] : [])].map((v) => String(v)).join(', '))
-    .join('\n');
+/** θ2 of target i when given (a finite number), else none: a missing θ2 is never written as 0. */
+function givenAt(theta2Deg: readonly number[] | null, i: number): number[] {
+  const a = theta2Deg?.[i];
+  return a !== undefined && Number.isFinite(a) ? [a] : [];
 }
 
-/** The targets as CSV: header x,y (and theta2_deg when given), one row per target. */
+/**
+ * Targets as lines "x, y" (or "x, y, θ2" when theta2Deg is given; a target without its θ2 keeps two numbers), the
+ * shortest exact text of each number.
+ */
+export function formatTargetsText(targets: readonly Point[], theta2Deg: readonly number[] | null = null): string {
+  return targets.map((p, i) => [p.x, p.y, ...givenAt(theta2Deg, i)].map((v) => String(v)).join(', ')).join('\n');
+}
+
+/** The targets as CSV: header x,y (and theta2_deg when given; empty for a target without one), one row per target. */
 export function targetsToCsv(targets: readonly Point[], theta2Deg: readonly number[] | null = null): string {
   const header = theta2Deg ? 'x,y,theta2_deg' : 'x,y';
   const rows = targets.map((p, i) =>
-    [p.x, p.y, ...(theta2Deg ? [theta2Deg[i] ?? 0] : [])].map((v) => String(v)).join(','),
+    [p.x, p.y, ...(theta2Deg ? [givenAt(theta2Deg, i)[0] ?? ''] : [])].map((v) => String(v)).join(','),
   );
   return `${[header, ...rows].join('\n')}\n`;
 }

@@ -1,7 +1,9 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
 import type { JobRunner } from '../../../shared/jobs/jobClient';
+import type { PathCandidate } from '../../../synthesis/globalSearch';
 import type { PathSolution, PathTask } from '../../../synthesis/types';
 import type { SynthesisJobs } from '../jobs';
+import { readPathStage } from '../jobs';
 
 /** A pool of solver workers running the synthesis jobs (createSolverPool in the app). */
 export interface SynthesisPool extends JobRunner<SynthesisJobs> {
@@ -14,8 +16,11 @@ export const PATH_ROUNDS = 400;
 /** Wall-clock budget of each part (ms): a run on a slow phone still ends; the best so far is kept. */
 export const PATH_PART_BUDGET_MS = 20_000;
 
-/** Where a run is: not started, running, finished (with answers), cancelled or failed. */
-export type PathRunStatus = 'idle' | 'running' | 'done' | 'cancelled' | 'failed';
+/**
+ * Where a run is: not started, running, finished (with answers), stopping (merging what was found before Stop),
+ * stopped (with the answers found before Stop), cancelled (stopped before anything was found) or failed.
+ */
+export type PathRunStatus = 'idle' | 'running' | 'done' | 'stopping' | 'stopped' | 'cancelled' | 'failed';
 
 /** A run's state: its status, progress (fraction 0 … 1, best Σd² so far), the answers and what it took. */
 export interface PathRunState {
@@ -42,16 +47,24 @@ const IDLE: PathRunState = {
 /** The last finished run, kept across the page's unmounts (switching to the simulator and back). */
 let lastRun: PathRunState = IDLE;
 
+/** The last finished path synthesis (the Nine points mode compares its answer with the exact ones). */
+export function lastPathRun(): PathRunState {
+  return lastRun;
+}
+
 /**
  * Runs a path synthesis on a pool of workers: the global stage's rounds dealt to pool.size parts (pathPart, seed and
- * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() aborts every
- * part and terminates the pool's workers: the run is marked cancelled at once and no worker computes on. The pool is
- * made on the first run (again after a cancel) and disposed with the page.
+ * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() (Stop) aborts
+ * every part and terminates the pool's workers, so no worker computes on; the candidates the parts reported so far
+ * are then merged on a new pool into the answers (status stopped), or the run is cancelled when none was found yet.
+ * The pool is made on the first run (again after a stop) and disposed with the page.
  */
 export function usePathSynthesis(createPool: () => SynthesisPool) {
   const [state, setState] = useState<PathRunState>(lastRun);
   const pool = useRef<SynthesisPool | null>(null);
   const abort = useRef<AbortController | null>(null);
+  /** The run under way: its task and each part's candidates so far (from its progress), for a stop. */
+  const current = useRef<{ task: PathTask; start: number; found: PathCandidate[][] } | null>(null);
 
   useEffect(
     () => () => {
@@ -69,8 +82,42 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
     // slow phone: stop the workers outright. The next run makes a new pool.
     pool.current?.dispose();
     pool.current = null;
-    setState((s) => (s.status === 'running' ? { ...s, status: 'cancelled', progress: null } : s));
-  }, []);
+    const run = current.current;
+    current.current = null;
+    const found = run ? run.found.flat() : [];
+    if (!run || found.length === 0) {
+      setState((s) => (s.status === 'running' ? { ...s, status: 'cancelled', progress: null } : s));
+      return;
+    }
+    setState((s) => (s.status === 'running' ? { ...s, status: 'stopping', progress: null } : s));
+    // The merge of what the parts found: a few dozen polishes on a fresh worker, cancellable like a run.
+    const controller = new AbortController();
+    abort.current = controller;
+    const p = createPool();
+    pool.current = p;
+    p.run('pathMerge', { task: run.task, parts: run.found }, { signal: controller.signal })
+      .result.then((merged) => {
+        if (controller.signal.aborted || merged === null) return;
+        const stopped: PathRunState = {
+          status: 'stopped',
+          progress: null,
+          solutions: merged,
+          task: run.task,
+          error: null,
+          elapsedMs: performance.now() - run.start,
+          workers: p.size,
+        };
+        lastRun = stopped;
+        setState(stopped);
+      })
+      .catch((e: unknown) => {
+        if (controller.signal.aborted) return;
+        setState((s) => ({ ...s, status: 'failed', error: e instanceof Error ? e.message : String(e) }));
+      })
+      .finally(() => {
+        if (abort.current === controller) abort.current = null;
+      });
+  }, [createPool]);
 
   const run = useCallback(
     async (task: PathTask, seed: number) => {
@@ -83,6 +130,8 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
       const start = performance.now();
       const fractions = new Array<number>(parts).fill(0);
       const bests = new Array<number>(parts).fill(Infinity);
+      const found: PathCandidate[][] = Array.from({ length: parts }, () => []);
+      current.current = { task, start, found };
       setState((s) => ({
         ...s,
         status: 'running',
@@ -93,7 +142,9 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
       const onProgress = (i: number) => (fraction: number, stage: string) => {
         if (controller.signal.aborted) return;
         fractions[i] = fraction;
-        bests[i] = Math.min(bests[i], Number(stage));
+        const reported = readPathStage(stage);
+        bests[i] = Math.min(bests[i], reported.best);
+        if (reported.candidates.length > 0) found[i] = reported.candidates;
         const progress = { fraction: fractions.reduce((a, b) => a + b, 0) / parts, best: Math.min(...bests) };
         setState((s) => (s.status === 'running' ? { ...s, progress } : s));
       };
@@ -116,6 +167,7 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
           { signal: controller.signal },
         ).result;
         if (controller.signal.aborted || merged === null) return;
+        current.current = null;
         const done: PathRunState = {
           status: 'done',
           progress: null,
@@ -129,6 +181,7 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
         setState(done);
       } catch (e) {
         if (controller.signal.aborted) return;
+        current.current = null;
         setState((s) => ({
           ...s,
           status: 'failed',

@@ -13,7 +13,7 @@ export type Locale = 'en' | 'zh-TW';
  * the current linkage), synthesis. src/app/pages.tsx gives each its tab and view (a page missing there is a type
  * error); docs/ARCHITECTURE.md "To add a page".
  */
-export const PAGE_URL_VALUES = { simulator: 'sim', lab: 'lab', synthesis: 'syn' } as const;
+export const PAGE_URL_VALUES = { simulator: 'sim', lab: 'lab', synthesis: 'syn', mechanism: 'mech' } as const;
 
 /** Which page the app shows. */
 export type Page = keyof typeof PAGE_URL_VALUES;

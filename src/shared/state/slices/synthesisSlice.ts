@@ -7,8 +7,8 @@ import type { Action } from '../appState';
 import { plainDecimal } from '../../decimal';
 import type { Slice } from '../slice';
 
-/** The synthesis page's modes: path, motion or function generation. */
-export type SynthesisMode = 'path' | 'motion' | 'function';
+/** The synthesis page's modes: path, motion or function generation, or every linkage through nine points. */
+export type SynthesisMode = 'path' | 'motion' | 'function' | 'nine';
 
 /** How the targets are timed: free input angles (in order), equal steps of θ2, or a given θ2 per target. */
 export type PathTiming = 'free' | 'step' | 'given';
@@ -32,7 +32,7 @@ export interface SynPathState {
   timing: PathTiming;
   /** θ2 advance per target for equal steps, degrees (nonzero, −180 … 180). */
   timingStepDeg: number;
-  /** θ2 of each target for given timing, degrees (missing ones count as 0). */
+  /** θ2 of each target for given timing, degrees; NaN or past the end: not given (the page refuses to run). */
   givenTheta2Deg: number[];
   /** Longest link, length unit; null: from the targets' size. */
   boundLength: number | null;
@@ -54,6 +54,8 @@ export const MAX_TARGETS = 40;
 export type SynPathAction =
   | { type: 'setSynthesisMode'; mode: SynthesisMode }
   | { type: 'setTargets'; targets: Point[] }
+  /** Removes a target and its given θ2 in one step (one undo step). */
+  | { type: 'removeTarget'; index: number }
   | { type: 'setTiming'; timing: PathTiming }
   | { type: 'setTimingStep'; stepDeg: number }
   | { type: 'setGivenTheta2'; theta2Deg: number[] }
@@ -91,6 +93,14 @@ export function synPathReducer(s: SynPathState, action: Action): SynPathState {
       return setField(s, 'mode', action.mode);
     case 'setTargets':
       return { ...s, targets: action.targets.slice(0, MAX_TARGETS).map((p) => ({ x: p.x, y: p.y })), chosen: 0 };
+    case 'removeTarget':
+      if (!(action.index >= 0 && action.index < s.targets.length)) return s;
+      return {
+        ...s,
+        targets: s.targets.filter((_, k) => k !== action.index),
+        givenTheta2Deg: s.givenTheta2Deg.filter((_, k) => k !== action.index),
+        chosen: 0,
+      };
     case 'setTiming':
       return setField(s, 'timing', action.timing);
     case 'setTimingStep':
@@ -132,6 +142,18 @@ export function numberListCodec(what: string, min: number, max: number): Codec<n
     format: (xs) => xs.map(exactText).join(','),
   };
 }
+
+/** Given θ2 per target as `a,b,…` in degrees (exact text); an empty item is a θ2 not given (NaN). */
+const givenAnglesCodec: Codec<number[]> = {
+  parse(raw) {
+    const items = raw.trim() === '' ? [] : raw.split(',');
+    if (items.length > MAX_TARGETS) return fail(`expected at most ${MAX_TARGETS} angles separated by commas`);
+    const out = items.map((t) => (t.trim() === '' ? NaN : plainDecimal(t)));
+    const bad = out.findIndex((x, i) => !Number.isFinite(x) && items[i].trim() !== '');
+    return bad < 0 ? ok(out) : fail(`angle ${bad + 1} (${JSON.stringify(items[bad])}) is not a number`);
+  },
+  format: (xs) => xs.map((x) => (Number.isFinite(x) ? exactText(x) : '')).join(','),
+};
 
 /** Targets as `x,y;x,y;…` (exact text, at most MAX_TARGETS); names the bad point. */
 export const targetsCodec: Codec<Point[]> = {
@@ -186,9 +208,10 @@ const pivotBoxCodec: Codec<PivotBox> = {
 const field = sliceLens('synPath');
 
 /**
- * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn;
- * function is read as fn),
- * tg (targets x,y;x,y;…), tm (free | step | given), ts (step, degrees), tt (given θ2 per target, degrees),
+ * The synthesis slice's URL keys, each written only when it differs from the default: syn (path | motion | fn |
+ * nine; function is read as fn),
+ * tg (targets x,y;x,y;…), tm (free | step | given), ts (step, degrees), tt (given θ2 per target, degrees; empty: not
+ * given),
  * bl (longest link), bc (coupler offset), bp (pivot box x0,y0,x1,y1), in (crank | any), sd (seed).
  */
 export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
@@ -200,6 +223,7 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
       ['fn', 'function'],
       // Read as fn, the mode's own name; enumCodec writes the first text for a value, so links keep syn=fn.
       ['function', 'function'],
+      ['nine', 'nine'],
     ] as const),
     field('mode'),
     DEFAULT_SYN_PATH.mode,
@@ -207,7 +231,7 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('tg', targetsCodec, field('targets'), DEFAULT_SYN_PATH.targets),
   optionalKey('tm', enumCodec(sameText(['free', 'step', 'given'] as const)), field('timing'), DEFAULT_SYN_PATH.timing),
   optionalKey('ts', stepCodec, field('timingStepDeg'), DEFAULT_SYN_PATH.timingStepDeg),
-  optionalKey('tt', numberListCodec('angle', 0, MAX_TARGETS), field('givenTheta2Deg'), DEFAULT_SYN_PATH.givenTheta2Deg),
+  optionalKey('tt', givenAnglesCodec, field('givenTheta2Deg'), DEFAULT_SYN_PATH.givenTheta2Deg),
   optionalKey('bl', nullableCodec(lengthCodec, 'auto'), field('boundLength'), DEFAULT_SYN_PATH.boundLength),
   optionalKey('bc', nullableCodec(lengthCodec, 'auto'), field('boundCoupler'), DEFAULT_SYN_PATH.boundCoupler),
   optionalKey('bp', nullableCodec(pivotBoxCodec, 'auto'), field('pivotBox'), DEFAULT_SYN_PATH.pivotBox),

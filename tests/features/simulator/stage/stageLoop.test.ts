@@ -10,7 +10,7 @@ const FPS = 60;
 const ORIGIN_MS = 5_000;
 
 /** A worker's clock and animation frames run by hand, and a painter that notes what it drew. */
-function harness(withFrames = true) {
+function harness(withFrames = true, prepare: StagePainter['prepare'] = () => Promise.resolve()) {
   let clock = 0;
   let nextHandle = 1;
   const pending = new Map<number, (now: number) => void>();
@@ -31,7 +31,7 @@ function harness(withFrames = true) {
   const painter: StagePainter = {
     setCanvas: () => {},
     setSize: () => {},
-    prepare: () => {},
+    prepare,
     draw: (frame) => {
       drawn.push(frame);
       return 1;
@@ -128,6 +128,55 @@ describe('createStageLoop', () => {
     expect(h.replies).toEqual([]);
     const none = harness(false);
     none.send({ type: 'canvas', canvas: {} as OffscreenCanvas });
+    expect(none.replies).toEqual([{ type: 'unsupported' }]);
+  });
+
+  it("says 'ready' once, after the canvas and the state's language, having drawn the state's pose once", async () => {
+    let loaded = () => {};
+    const language = new Promise<void>((resolve) => (loaded = resolve));
+    const h = harness(true, () => language);
+    h.send({ type: 'canvas', canvas: {} as OffscreenCanvas });
+    h.send({
+      type: 'state',
+      state: { ...DEFAULT_STATE, shell: { ...DEFAULT_STATE.shell, locale: 'zh-TW' } },
+      ghostShown: true,
+    });
+    await Promise.resolve();
+    // The language is still loading: not ready, nothing drawn.
+    expect(h.replies).toEqual([]);
+    expect(h.drawn).toEqual([]);
+    loaded();
+    await language;
+    await Promise.resolve();
+    expect(h.replies).toEqual([{ type: 'ready' }]);
+    expect(h.drawn).toEqual([
+      {
+        theta2Deg: DEFAULT_STATE.motion.theta2Deg,
+        direction: DEFAULT_STATE.motion.direction,
+        branch: DEFAULT_STATE.design.branch,
+      },
+    ]);
+    // A later state or canvas does not say it again.
+    h.send(state);
+    h.send({ type: 'canvas', canvas: {} as OffscreenCanvas });
+    await Promise.resolve();
+    await Promise.resolve();
+    expect(h.replies).toEqual([{ type: 'ready' }]);
+  });
+
+  it('is not ready without a canvas, and a state that comes first waits for the canvas', async () => {
+    const h = harness();
+    h.send(state);
+    await Promise.resolve();
+    await Promise.resolve();
+    expect(h.replies).toEqual([]);
+    h.send({ type: 'canvas', canvas: {} as OffscreenCanvas });
+    expect(h.replies).toEqual([{ type: 'ready' }]);
+    const none = harness(false);
+    none.send(state);
+    none.send({ type: 'canvas', canvas: {} as OffscreenCanvas });
+    await Promise.resolve();
+    await Promise.resolve();
     expect(none.replies).toEqual([{ type: 'unsupported' }]);
   });
 });

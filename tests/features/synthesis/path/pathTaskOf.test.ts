@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { defaultPathBounds, pathTaskOf } from '../../../../src/features/synthesis/path/pathTaskOf';
+import { defaultPathBounds, pathTaskOf, samePathTask } from '../../../../src/features/synthesis/path/pathTaskOf';
 import { DEFAULT_SYN_PATH } from '../../../../src/shared/state/slices/synthesisSlice';
 import { normaliseTask } from '../../../../src/synthesis/pathTask';
 
@@ -36,5 +36,26 @@ describe('pathTaskOf', () => {
     expect(step.timing).toEqual({ kind: 'step', step: -Math.PI / 6 });
     const set = pathTaskOf({ ...s, boundLength: 3, boundCoupler: 1 });
     expect(set.bounds).toMatchObject({ length: [0, 3], coupler: 1 });
+  });
+});
+
+describe('samePathTask', () => {
+  const s = { ...DEFAULT_SYN_PATH, targets: square };
+  it('holds for the same task, and fails after any edit of targets, timing, bounds or input (issue 34, 1)', () => {
+    expect(samePathTask(pathTaskOf(s), pathTaskOf({ ...s, targets: square.map((p) => ({ ...p })) }))).toBe(true);
+    // The seed and the candidate shown are not the task.
+    expect(samePathTask(pathTaskOf(s), pathTaskOf({ ...s, seed: 9, chosen: 3 }))).toBe(true);
+    const edits = [
+      { targets: square.map((p, i) => (i === 2 ? { x: p.x + 1e-9, y: p.y } : p)) },
+      { targets: square.slice(0, 3) },
+      { targets: [...square, { x: 0, y: 0 }] },
+      { timing: 'step' as const },
+      { boundLength: 30 },
+      { boundCoupler: 2 },
+      { pivotBox: { min: { x: -1, y: -1 }, max: { x: 1, y: 1 } } },
+      { input: 'any' as const },
+    ];
+    for (const e of edits)
+      expect(samePathTask(pathTaskOf(s), pathTaskOf({ ...s, ...e })), JSON.stringify(e)).toBe(false);
   });
 });

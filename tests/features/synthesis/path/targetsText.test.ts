@@ -50,6 +50,16 @@ describe('parseTargetsText', () => {
     expect(parseTargetsText('x,y\n1,2').ok).toBe(false);
   });
 
+  it('writes no θ2 for a target without one: a missing θ2 never becomes 0 (issue 34, 3)', () => {
+    const targets = [
+      { x: 1, y: 2 },
+      { x: 3, y: 4 },
+    ];
+    expect(formatTargetsText(targets, [15, NaN])).toBe('1, 2, 15\n3, 4');
+    expect(formatTargetsText(targets, [15])).toBe('1, 2, 15\n3, 4');
+    expect(targetsToCsv(targets, [NaN, 20])).toBe('x,y,theta2_deg\n1,2,\n3,4,20\n');
+  });
+
   it('reads back what formatTargetsText and targetsToCsv write, exactly', () => {
     const targets = [
       { x: 0.1 + 0.2, y: -1e-9 },

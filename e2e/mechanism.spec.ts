@@ -1,0 +1,280 @@
+import AxeBuilder from '@axe-core/playwright';
+import type { Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
+import { readFile } from 'node:fs/promises';
+import Decimal from 'decimal.js';
+import { artifact } from './helpers';
+
+// The mechanism page (issue 33) driven as a person does: the gallery and tpl=, a drag that changes the traced
+// curve, a slider-crank built from nothing by keyboard and by pointer whose exported CSV is checked against the
+// slider-crank's closed form (decimal.js, 40 digits), a mobility-2 linkage that refuses to run, a corrupted mech=,
+// undo and redo, the phone, zh-TW and axe.
+
+Decimal.set({ precision: 40 });
+
+/** The templates' keys and their URL values, as the issue names them (tpl=slider-crank, tpl=jansen). */
+const TEMPLATES: [key: string, tpl: string, name: string][] = [
+  ['fourBar', 'four-bar', 'Four-bar'],
+  ['sliderCrank', 'slider-crank', 'Slider-crank'],
+  ['invertedSliderCrank', 'inverted-slider-crank', 'Inverted slider-crank'],
+  ['whitworth', 'whitworth', 'Whitworth quick return'],
+  ['scotchYoke', 'scotch-yoke', 'Scotch yoke'],
+  ['pistonDriven', 'piston-driven', 'Piston-driven crank'],
+  ['wattI', 'watt-i', 'Watt I six-bar'],
+  ['wattII', 'watt-ii', 'Watt II six-bar'],
+  ['stephensonI', 'stephenson-i', 'Stephenson I six-bar'],
+  ['stephensonII', 'stephenson-ii', 'Stephenson II six-bar'],
+  ['stephensonIII', 'stephenson-iii', 'Stephenson III six-bar'],
+  ['jansen', 'jansen', 'Jansen’s leg'],
+  ['klann', 'klann', 'Klann’s leg'],
+  ['peaucellier', 'peaucellier', 'Peaucellier–Lipkin'],
+  ['chebyshev', 'chebyshev', 'Chebyshev straight line'],
+  ['hoekens', 'hoekens', 'Hoekens straight line'],
+];
+
+const workspace = (page: Page) => page.locator('.mech-workspace');
+const status = (page: Page) => page.getByTestId('mech-status');
+
+/** Types a number into a labelled field of the joints table and commits it with Enter. */
+async function typeField(page: Page, name: string, value: string): Promise<void> {
+  const f = page.getByRole('textbox', { name, exact: true });
+  await f.fill(value);
+  await f.press('Enter');
+}
+
+/** The CSV of the page's Export CSV, parsed into a header and rows of numbers. */
+/** Where the canvas draws a joint as drawn (input 0), in page pixels: its coordinates from the table, the view from data-view. */
+async function screenOf(page: Page, id: string): Promise<{ x: number; y: number }> {
+  const canvas = page.getByTestId('mech-canvas');
+  const box = (await canvas.boundingBox())!;
+  const [scale, cx, cy, panX, panY] = (await canvas.getAttribute('data-view'))!.split(' ').map(Number);
+  const x = Number(await page.getByRole('textbox', { name: `x of ${id}`, exact: true }).inputValue());
+  const y = Number(await page.getByRole('textbox', { name: `y of ${id}`, exact: true }).inputValue());
+  return {
+    x: box.x + box.width / 2 + (x - cx) * scale + panX,
+    y: box.y + box.height / 2 - (y - cy) * scale + panY,
+  };
+}
+
+async function exportedCsv(page: Page): Promise<{ header: string[]; rows: number[][] }> {
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Export CSV' }).click(),
+  ]);
+  const text = await readFile((await download.path())!, 'utf8');
+  const [head, ...lines] = text.trim().split('\n');
+  return { header: head.split(','), rows: lines.map((l) => l.split(',').map(Number)) };
+}
+
+/**
+ * The slider pin B of the offset slider-crank at crank angle θ (rad), from its drawn pin positions, in 40 digits:
+ * A = r (cos θ, sin θ) about O = (0, 0), B on the line y = e, B.x = A.x + √(l² − (e − A.y)²).
+ */
+function sliderPinX(a0: [string, string], b0: [string, string], theta: number): Decimal {
+  const [ax0, ay0] = a0.map((s) => new Decimal(s));
+  const [bx0, by0] = b0.map((s) => new Decimal(s));
+  const r = ax0.pow(2).plus(ay0.pow(2)).sqrt();
+  const l2 = bx0.minus(ax0).pow(2).plus(by0.minus(ay0).pow(2));
+  const th = new Decimal(theta).plus(Decimal.atan2(ay0, ax0));
+  const ax = r.times(Decimal.cos(th));
+  const ay = r.times(Decimal.sin(th));
+  return ax.plus(l2.minus(by0.minus(ay).pow(2)).sqrt());
+}
+
+test.describe('mechanism page', () => {
+  test('opens every template from the gallery and from tpl=, each assembled and running', async ({ page }) => {
+    await page.goto('./?page=mech');
+    await expect(page.getByRole('tab', { name: 'Mechanisms' })).toHaveAttribute('aria-selected', 'true');
+    for (const [key, , name] of TEMPLATES) {
+      await page.locator(`.mech-template[data-template="${key}"]`).click();
+      await expect(page.locator('.mech-name-title')).toHaveText(name);
+      await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+      await expect(page.getByTestId('mech-mobility')).toHaveText('Mobility 1');
+    }
+    for (const [, tpl, name] of TEMPLATES.filter((_, i) => i % 5 === 1)) {
+      await page.goto(`./?page=mech&tpl=${tpl}`);
+      await expect(page.locator('.mech-name-title')).toHaveText(name);
+      await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    }
+    await page.screenshot({ path: artifact('mechanism-klann-1280.png') });
+  });
+
+  test('a dragged joint changes the traced curve, and undo and redo move it back and forth', async ({ page }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const before = await workspace(page).getAttribute('data-trace');
+    const canvas = page.getByTestId('mech-canvas');
+    const x0 = Number(await page.getByRole('textbox', { name: 'x of O4', exact: true }).inputValue());
+    await page.getByRole('radio', { name: 'Choose B' }).check();
+    // Arrow keys on the canvas move the chosen joint (the keyboard's drag): 10 px right, then a pointer drag.
+    await canvas.focus();
+    await canvas.press('Shift+ArrowRight');
+    await expect(workspace(page)).not.toHaveAttribute('data-trace', before!);
+    const afterKeys = await workspace(page).getAttribute('data-trace');
+    await expect(page).toHaveURL(/mech=m1/);
+    // Undo brings the template back (no mech= in the link), redo the edit.
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await expect(workspace(page)).toHaveAttribute('data-trace', before!);
+    await page.getByRole('button', { name: 'Redo' }).click();
+    await expect(workspace(page)).toHaveAttribute('data-trace', afterKeys!);
+    // A pointer drag of the rocker's pivot O4, grabbed where the canvas draws it (its view in data-view).
+    const at = await screenOf(page, 'O4');
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    await page.mouse.move(at.x + 30, at.y - 20, { steps: 4 });
+    await page.mouse.up();
+    await expect(workspace(page)).not.toHaveAttribute('data-trace', afterKeys!);
+    const x1 = Number(await page.getByRole('textbox', { name: 'x of O4', exact: true }).inputValue());
+    const scale = Number((await page.getByTestId('mech-canvas').getAttribute('data-view'))!.split(' ')[0]);
+    expect(x1 - x0).toBeCloseTo(30 / scale, 1);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await expect(workspace(page)).toHaveAttribute('data-trace', afterKeys!);
+  });
+
+  test('builds a slider-crank from nothing by keyboard, plays it, and exports a CSV that matches the closed form', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const press = async (name: string) => {
+      const b = page.getByRole('button', { name, exact: true });
+      await b.focus();
+      await b.press('Enter');
+    };
+    await press('New (empty)');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'noInput');
+    await press('Add link');
+    await press('Add pin');
+    await press('Add link');
+    await press('Add pin');
+    await press('Add link');
+    await press('Add pin');
+    // The slider: its block is link3, its guide the ground.
+    await page.getByRole('combobox', { name: 'First link of a new part' }).selectOption('link3');
+    await page.getByRole('combobox', { name: 'Second link of a new part (a slider’s guide)' }).selectOption('ground');
+    await press('Add slider');
+    await expect(page.getByTestId('mech-mobility')).toHaveText('Mobility 1');
+    // Exact coordinates: crank 2 along +x, rod to the slider line y = 1 (l = 5 from the coordinates).
+    const bx = String(2 + Math.sqrt(24));
+    await typeField(page, 'x of J1', '0');
+    await typeField(page, 'y of J1', '0');
+    await typeField(page, 'x of J2', '2');
+    await typeField(page, 'y of J2', '0');
+    await typeField(page, 'x of J3', bx);
+    await typeField(page, 'y of J3', '1');
+    await typeField(page, 'x of S1', bx);
+    await typeField(page, 'y of S1', '1');
+    await page.getByRole('combobox', { name: 'Input' }).selectOption('J1');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(status(page)).toHaveText('The input turns fully.');
+    // Play, wait for the input to move, pause.
+    await page.getByRole('button', { name: 'Play' }).press('Enter');
+    await expect(workspace(page)).not.toHaveAttribute('data-input', '0');
+    await page.getByRole('button', { name: 'Pause' }).press('Enter');
+    const csv = await exportedCsv(page);
+    expect(csv.header).toEqual(['input', 'J1_x', 'J1_y', 'J2_x', 'J2_y', 'J3_x', 'J3_y', 'S1_x', 'S1_y']);
+    expect(csv.rows).toHaveLength(360);
+    expect(csv.rows[0][0]).toBe(0);
+    for (const k of [0, 37, 90, 181, 270, 359]) {
+      const row = csv.rows[k];
+      expect(row[0]).toBeCloseTo((k * Math.PI) / 180, 14);
+      const want = sliderPinX(['2', '0'], [bx, '1'], row[0]);
+      // The pin is solved by the engine to rounding: 1e-9 of the linkage's size is far above its error.
+      expect(Math.abs(row[5] - want.toNumber()), `J3_x at ${k}°`).toBeLessThan(1e-9);
+      expect(row[6]).toBeCloseTo(1, 12);
+    }
+  });
+
+  test('builds a slider-crank by pointer: taps place the parts, the table’s menus join them, Play runs', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const canvas = page.getByTestId('mech-canvas');
+    const box = (await canvas.boundingBox())!;
+    const tap = (fx: number, fy: number) => page.mouse.click(box.x + fx * box.width, box.y + fy * box.height);
+    await page.getByRole('button', { name: 'New (empty)' }).click();
+    await page.getByRole('button', { name: 'Add link' }).click();
+    await page.getByRole('button', { name: 'Add pin' }).click();
+    await expect(page.getByText('Tap the canvas where the pin goes')).toBeVisible();
+    await tap(0.3, 0.5);
+    await page.getByRole('button', { name: 'Add link' }).click();
+    await page.getByRole('button', { name: 'Add pin' }).click();
+    await tap(0.4, 0.35);
+    await page.getByRole('button', { name: 'Add link' }).click();
+    await page.getByRole('button', { name: 'Add pin' }).click();
+    await tap(0.75, 0.5);
+    await page.getByRole('combobox', { name: 'First link of a new part' }).selectOption('link3');
+    await page.getByRole('combobox', { name: 'Second link of a new part (a slider’s guide)' }).selectOption('ground');
+    await page.getByRole('button', { name: 'Add slider' }).click();
+    // A tap on the pin J3 places the slider on it (an armed tool snaps to the joint under the pointer).
+    const j3 = await screenOf(page, 'J3');
+    await page.mouse.click(j3.x, j3.y);
+    await expect(page.getByRole('textbox', { name: 'x of S1', exact: true })).toHaveValue(
+      await page.getByRole('textbox', { name: 'x of J3', exact: true }).inputValue(),
+    );
+    await page.getByRole('combobox', { name: 'Input' }).selectOption('J1');
+    await expect(page.getByTestId('mech-mobility')).toHaveText('Mobility 1');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(workspace(page)).not.toHaveAttribute('data-input', '0');
+    await page.getByRole('button', { name: 'Pause' }).click();
+  });
+
+  test('a mobility-2 linkage refuses to run and says what to do', async ({ page }) => {
+    // A five-bar: ground and four moving links in a loop, five pins: mobility 3·4 − 2·5 = 2.
+    const fiveBar = {
+      links: ['ground', 'a', 'b', 'c', 'd'],
+      joints: [
+        { id: 'O1', kind: 'R', links: ['ground', 'a'], x: 0, y: 0 },
+        { id: 'A', kind: 'R', links: ['a', 'b'], x: 1, y: 2 },
+        { id: 'B', kind: 'R', links: ['b', 'c'], x: 3, y: 3 },
+        { id: 'C', kind: 'R', links: ['c', 'd'], x: 5, y: 2 },
+        { id: 'O2', kind: 'R', links: ['d', 'ground'], x: 6, y: 0 },
+      ],
+      input: { joint: 'O1' },
+    };
+    await page.goto(`./?page=mech&mech=${encodeURIComponent(JSON.stringify(fiveBar))}`);
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'mobility');
+    await expect(page.getByTestId('mech-mobility')).toHaveText('Mobility 2');
+    await expect(status(page)).toHaveText(/^Mobility 2: the linkage has 1 freedom too many\. Add a link/);
+    await expect(page.getByRole('button', { name: 'Play' })).toBeDisabled();
+    await expect(page.getByRole('button', { name: 'Export CSV' })).toBeDisabled();
+  });
+
+  test('a corrupted mech= is refused and named, and the last good linkage is kept', async ({ page }) => {
+    await page.goto('./?page=mech&tpl=jansen&mech=m1*3*ground*crank');
+    await expect(page.getByTestId('url-notice')).toContainText('mech');
+    await expect(page.getByTestId('mech-refused')).toContainText('the code ends before links[2]');
+    await expect(page.locator('.mech-name-title')).toHaveText('Jansen’s leg');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+  });
+
+  test('the phone layout keeps Play and the input in reach at 390×844', async ({ page }) => {
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.goto('./?page=mech&tpl=jansen');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const play = page.getByRole('button', { name: 'Play' });
+    await expect(play).toBeInViewport();
+    const b = (await play.boundingBox())!;
+    expect(b.y + b.height).toBeLessThanOrEqual(844);
+    expect(b.height).toBeGreaterThanOrEqual(32);
+    await page.screenshot({ path: artifact('mechanism-jansen-390.png') });
+    // Scrolled to the editor, the bar stays on screen.
+    await page.locator('.mech-table').scrollIntoViewIfNeeded();
+    await expect(play).toBeInViewport();
+    await page.setViewportSize({ width: 360, height: 740 });
+    await expect(play).toBeInViewport();
+  });
+
+  test('speaks zh-TW and has no axe violations', async ({ page }) => {
+    await page.goto('./?page=mech&tpl=slider-crank&lang=zh-TW');
+    await expect(page.getByRole('tab', { name: '機構', exact: true })).toHaveAttribute('aria-selected', 'true');
+    await expect(page.locator('.mech-name-title')).toHaveText('曲柄滑塊');
+    await expect(status(page)).toHaveText('輸入可轉整圈。');
+    await expect(page.getByRole('button', { name: '播放' })).toBeVisible();
+    await page.screenshot({ path: artifact('mechanism-zh-tw-1280.png') });
+    const results = await new AxeBuilder({ page }).include('.mech').analyze();
+    expect(results.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes[0]?.target}`)).toEqual([]);
+  });
+});

@@ -1,0 +1,128 @@
+import { useLayoutEffect, useRef, useState } from 'react';
+import type { KeyboardEvent } from 'react';
+import type { ViewOffset } from '../../shared/state/appState';
+import type { Bounds } from '../../shared/canvas/view';
+import { fitView, toScreenX, toScreenY, toWorld } from '../../shared/canvas/view';
+import { usePanZoom } from '../../shared/canvas/usePanZoom';
+import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
+import { ZoomTools } from '../../shared/canvas/ZoomTools';
+import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
+import { useElementSize } from '../../shared/hooks/useElementSize';
+import type { MechPicture } from './drawMechanism';
+import { drawMechanism } from './drawMechanism';
+import type { Pt } from './mechPose';
+
+/** Grab radius of a joint, CSS pixels: a finger covers more than a mouse pointer. */
+const GRAB_PX = { mouse: 14, touch: 26 };
+
+/** Props of MechCanvas: the picture and the box it fits, and what a drag, a tap and the arrow keys do. */
+export interface MechCanvasProps {
+  picture: MechPicture;
+  bounds: Bounds;
+  label: string;
+  labels: { zoomIn: string; zoomOut: string; resetView: string };
+  /** A joint or tracer was taken (start) or let go (null). */
+  onGrab: (id: string | null) => void;
+  /** The taken joint follows the pointer to p (length unit, the view's world). */
+  onDrag: (id: string, p: Pt) => void;
+  /** A tap where nothing was taken (world point; snapped to the joint under it, if any, while a tool is armed). */
+  onTap: (p: Pt) => void;
+  /** A tool is armed: a press on a joint does not take it (the tap places the new part there). */
+  placing: boolean;
+  /** Arrow keys on the canvas: move the chosen joint by (dx, dy) CSS pixels' worth of length. */
+  onNudge: (dx: number, dy: number) => void;
+  /** Lets the page draw the same picture into an export: the view as on screen. */
+  viewRef?: { current: { width: number; height: number; offset: ViewOffset } | null };
+}
+
+/**
+ * The linkage on a pan-and-zoom canvas (the canvas kit): a joint or a tracer under the pointer is dragged, else
+ * the view pans; wheel and pinch zoom; the arrow keys move the chosen joint, + − 0 zoom.
+ */
+export function MechCanvas({
+  picture,
+  bounds,
+  label,
+  labels,
+  onGrab,
+  onDrag,
+  onTap,
+  onNudge,
+  placing,
+  viewRef,
+}: MechCanvasProps) {
+  const wrapRef = useRef<HTMLDivElement>(null);
+  const canvasRef = useRef<HTMLCanvasElement>(null);
+  const { width, height } = useElementSize(wrapRef);
+  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
+  const transform = fitView(bounds, width, height, view);
+  const nearest = (p: ScreenPoint, pointerType: string): string | null => {
+    const r = pointerType === 'touch' || pointerType === 'pen' ? GRAB_PX.touch : GRAB_PX.mouse;
+    let best: string | null = null;
+    let bestD = r;
+    const all: [string, Pt][] = [...Object.entries(picture.pose.points), ...Object.entries(picture.pose.joints)];
+    for (const [id, q] of all) {
+      const d = Math.hypot(toScreenX(transform, q.x) - p.x, toScreenY(transform, q.y) - p.y);
+      if (d < bestD) {
+        bestD = d;
+        best = id;
+      }
+    }
+    return best;
+  };
+  const { pointerHandlers, zoomBy, resetView, onZoomKey } = usePanZoom<string>({
+    canvasRef,
+    view,
+    onViewChange: setView,
+    width,
+    height,
+    grab: (p, pointerType) => (placing ? null : nearest(p, pointerType)),
+    onGrab,
+    onDrag: (id, p) => onDrag(id, toWorld(transform, p.x, p.y)),
+    onTap: (p) => {
+      const id = placing ? nearest(p, 'touch') : null;
+      onTap(id ? (picture.pose.joints[id] ?? picture.pose.points[id]) : toWorld(transform, p.x, p.y));
+    },
+  });
+  useLayoutEffect(() => {
+    const canvas = canvasRef.current;
+    const sized = canvas && sizeCanvas(canvas, width, height);
+    if (sized) drawMechanism(sized.ctx, picture, fitView(bounds, width, height, view));
+    if (viewRef) viewRef.current = { width, height, offset: view };
+  }, [picture, bounds, view, width, height, viewRef]);
+  const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
+    if (onZoomKey(e)) {
+      e.preventDefault();
+      return;
+    }
+    const step = e.shiftKey ? 10 : 1;
+    const d: Record<string, [number, number]> = {
+      ArrowLeft: [-step, 0],
+      ArrowRight: [step, 0],
+      ArrowUp: [0, step],
+      ArrowDown: [0, -step],
+    };
+    const move = d[e.key];
+    if (move) {
+      e.preventDefault();
+      onNudge(move[0] / transform.scale, move[1] / transform.scale);
+    }
+  };
+  return (
+    <div className="mech-canvas-wrap" ref={wrapRef}>
+      <canvas
+        ref={canvasRef}
+        className="mech-canvas"
+        role="img"
+        aria-label={label}
+        aria-keyshortcuts="ArrowLeft ArrowRight ArrowUp ArrowDown + - 0"
+        tabIndex={0}
+        data-testid="mech-canvas"
+        data-view={`${transform.scale} ${transform.centerX} ${transform.centerY} ${transform.panXPx} ${transform.panYPx}`}
+        {...pointerHandlers}
+        onKeyDown={onKeyDown}
+      />
+      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
+    </div>
+  );
+}

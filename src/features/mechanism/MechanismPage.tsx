@@ -1,0 +1,543 @@
+import './MechanismPage.css';
+import { useEffect, useMemo, useRef, useState } from 'react';
+import type { Dispatch } from 'react';
+import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
+import type { MechanismSpec, MechanismSweep } from '../../mechanism';
+import { degToRad, radToDeg } from '../../solver/angles';
+import type { Action, AppState } from '../../shared/state/appState';
+import type { MechTemplateKey } from '../../shared/state/slices/mechSlice';
+import { mechSpecCodec, templateUrlValue } from '../../shared/state/slices/mechSlice';
+import type { JobRunner } from '../../shared/jobs/jobClient';
+import type { Bounds, ViewTransform } from '../../shared/canvas/view';
+import { emptyBounds, extendBounds, fitView } from '../../shared/canvas/view';
+import { exportDrawingPng, exportDrawingSvg } from '../../shared/canvas/exportDrawing';
+import { downloadPng, downloadText } from '../../shared/canvas/download';
+import type { MarkerAt } from '../../shared/charts/chart';
+import { exportChart, specDrawing } from '../../shared/charts/exportChart';
+import { xySpec } from '../../shared/charts/xyChart';
+import type { XYChartData } from '../../shared/charts/xyChart';
+import { formatNumber } from '../../shared/format';
+import type { ViewOffset } from '../../shared/state/appState';
+import type { MechanismJobs } from './jobs';
+import type { MechAnalysis } from './mechAnalysis';
+import { analyseMechanism, runRange } from './mechAnalysis';
+import { csvInputs, mechCsv } from './mechCsv';
+import type { MechMessages } from './mechMessages';
+import { mechMessagesFor } from './mechMessages';
+import type { MechArrow, MechPicture } from './drawMechanism';
+import { drawMechanism, linkColor } from './drawMechanism';
+import { drawnPose, pathOf, poseAt } from './mechPose';
+import type { Pt } from './mechPose';
+import type { MechPlotChoice } from './mechPlots';
+import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
+import { MechCanvas } from './MechCanvas';
+import { MechChart } from './MechChart';
+import { TemplateGallery } from './TemplateGallery';
+import type { PlaceKind } from './SpecEditor';
+import { SpecEditor } from './SpecEditor';
+import { addJoint, addLink, addTracer, emptySpec, moveJoint } from './specEdits';
+import { useMechDrive } from './useMechDrive';
+
+/** Props of MechanismPage: the app state and dispatch, and the solver client (null until it is made). */
+export interface MechanismPageProps {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+  client: JobRunner<MechanismJobs> | null;
+}
+
+/**
+ * The mechanism page (機構): any planar linkage of pins and sliders (src/mechanism). The template gallery, the
+ * canvas (drag a joint to move it as drawn, tap to place a new part), Play and the input, the editor, two plots
+ * against the input and the exports. The template and the edited linkage live in the mech slice (URL tpl, mech);
+ * the input, Play and the view are the page's own. A new template starts the page afresh (its key).
+ */
+export function MechanismPage({ state, dispatch, client }: MechanismPageProps) {
+  const m = mechMessagesFor(state.shell.locale);
+  const { template, spec: edited } = state.mech;
+  // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
+  const [refused, setRefused] = useState(linkRefusal);
+  return (
+    <div className="mech" data-testid="mechanism-page">
+      <div className="mech-head">
+        <h2 className="section-title">{m.pageTitle}</h2>
+        <p className="note mech-intro">{m.intro}</p>
+      </div>
+      {refused && (
+        <p className="mech-error mech-refused" role="alert" data-testid="mech-refused">
+          {m.linkRefused(refused)}{' '}
+          <button type="button" className="btn btn-small" onClick={() => setRefused(null)}>
+            {m.dismiss}
+          </button>
+        </p>
+      )}
+      <section className="mech-gallery-card" aria-label={m.galleryTitle}>
+        <TemplateGallery
+          current={template}
+          edited={edited !== null}
+          onOpen={(t) => dispatch({ type: 'setMechTemplate', template: t })}
+          names={m.templateNames}
+          label={m.galleryLabel}
+        />
+      </section>
+      <MechWorkspace key={template} template={template} edited={edited} dispatch={dispatch} client={client} m={m} />
+    </div>
+  );
+}
+
+/** Why the mech= of the address the page was opened at is refused, or null (none, or a good one). */
+function linkRefusal(): string | null {
+  if (typeof window === 'undefined') return null;
+  const raw = new URLSearchParams(window.location.search).get('mech');
+  if (raw === null) return null;
+  const r = mechSpecCodec.parse(raw);
+  return r.ok ? null : r.why;
+}
+
+/** Props of MechWorkspace. */
+interface MechWorkspaceProps {
+  template: MechTemplateKey;
+  edited: MechanismSpec | null;
+  dispatch: Dispatch<Action>;
+  client: JobRunner<MechanismJobs> | null;
+  m: MechMessages;
+}
+
+/** Every joint and tracer over the run (and as drawn): the canvas fits this box, so Play does not move the view. */
+function runBounds(a: MechAnalysis): Bounds {
+  const b = emptyBounds();
+  const pose = drawnPose(a.spec);
+  for (const q of [...Object.values(pose.joints), ...Object.values(pose.points)]) extendBounds(b, q.x, q.y);
+  if (a.sweep && a.run) {
+    for (const id of [...a.spec.joints.map((j) => j.id), ...(a.spec.points ?? []).map((p) => p.id)]) {
+      const { x, y } = pathOf(a.sweep, id, a.run);
+      for (let i = 0; i < x.length; i++) if (Number.isFinite(x[i])) extendBounds(b, x[i], y[i]);
+    }
+  }
+  return b;
+}
+
+/** Each slider's slide range over the run. */
+function slideRanges(a: MechAnalysis): Record<string, [number, number]> {
+  const out: Record<string, [number, number]> = {};
+  if (!a.sweep || !a.run) return out;
+  for (const j of a.spec.joints) {
+    if (j.kind !== 'P') continue;
+    const s = a.sweep.sliders[j.id].s.subarray(a.run[0], a.run[1] + 1);
+    let lo = 0;
+    let hi = 0;
+    for (const v of s) if (Number.isFinite(v)) [lo, hi] = [Math.min(lo, v), Math.max(hi, v)];
+    out[j.id] = [lo, hi];
+  }
+  return out;
+}
+
+/** Linear interpolation of a series on the grid at input t (NaN off the grid). */
+function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number {
+  if (!a.grid) return NaN;
+  const u = t / a.grid.step - a.grid.kLo;
+  const i = Math.max(0, Math.min(values.length - 2, Math.floor(u)));
+  const f = u - i;
+  if (!(f >= -1e-9 && f <= 1 + 1e-9)) return NaN;
+  return values[i] + (values[i + 1] - values[i]) * f;
+}
+
+/** The default traced points: every tracer. */
+const defaultTraced = (spec: MechanismSpec) => new Set((spec.points ?? []).map((p) => p.id));
+
+/** The page below the gallery, for one template (a new template remounts it: input 0, default plots and traces). */
+function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceProps) {
+  const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
+  const name = m.templateNames[template] ?? template;
+  const shownName = edited ? m.edited(name) : name;
+  const analysis = useMemo(() => analyseMechanism(spec), [spec]);
+  const range = runRange(analysis);
+  const kind = analysis.grid?.kind ?? 'R';
+  const span = range ? range[1] - range[0] : 0;
+  const rate = (speed: number) => (kind === 'R' ? degToRad(speed) : (speed * span) / 360);
+  const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(range, analysis.fullTurn, rate);
+  const input = range ? Math.min(range[1], Math.max(range[0], drive.input)) : 0;
+  const [selected, setSelected] = useState<string | null>(null);
+  const [traced, setTraced] = useState<ReadonlySet<string>>(() => defaultTraced(spec));
+  const [plots, setPlots] = useState<[MechPlotChoice, MechPlotChoice]>(() => defaultPlots(spec));
+  const [showVelocities, setShowVelocities] = useState(false);
+  const [csvRates, setCsvRates] = useState(false);
+  const [placing, setPlacing] = useState<PlaceKind | null>(null);
+  const [editError, setEditError] = useState<string | null>(null);
+  const [exportNote, setExportNote] = useState<string | null>(null);
+  const [frozenBounds, setFrozenBounds] = useState<Bounds | null>(null);
+  const [newLinks, setNewLinks] = useState<[string, string]>(() => {
+    const moving = spec.links.filter((l) => l !== GROUND);
+    return [GROUND, moving[0] ?? GROUND];
+  });
+  const viewRef = useRef<{ width: number; height: number; offset: ViewOffset } | null>(null);
+  const liveBounds = useMemo(() => runBounds(analysis), [analysis]);
+  const bounds = frozenBounds ?? liveBounds;
+
+  const edit = (change: (s: MechanismSpec) => MechanismSpec) => {
+    try {
+      const next = change(spec);
+      setEditError(null);
+      if (next !== spec) dispatch({ type: 'setMechSpec', spec: next });
+    } catch (e) {
+      setEditError(m.editRefused((e as Error).message));
+    }
+  };
+
+  // The rates (the plots' speeds and accelerations, the velocity arrows) come from the worker, for this spec.
+  const plotChoicesParsed = plots.map((c) => parseChoice(spec, c));
+  const wantRates = showVelocities || plotChoicesParsed.some((c) => c && needsRates(c.kind));
+  const [rates, setRates] = useState<{ spec: MechanismSpec; sweep: MechanismSweep } | null>(null);
+  useEffect(() => {
+    if (!client || !wantRates || !analysis.grid || analysis.problem) return;
+    const run = client.run(
+      'mechSweep',
+      { spec: analysis.spec, inputs: analysis.grid.inputs, rates: true },
+      { channel: 'mechRates' },
+    );
+    run.result.then((sweep) => sweep && setRates({ spec: analysis.spec, sweep })).catch(() => setRates(null));
+    return () => run.cancel();
+  }, [client, wantRates, analysis]);
+  const rateSweep = rates && rates.spec === spec ? rates.sweep : null;
+
+  const pose =
+    (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
+    drawnPose(spec);
+  const arrows: MechArrow[] = [];
+  if (showVelocities && rateSweep && analysis.grid) {
+    for (const [id, at] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
+      const s = rateSweep.joints[id] ?? rateSweep.points[id];
+      if (s?.vx && s.vy) arrows.push({ at, vx: valueAt(analysis, s.vx, input), vy: valueAt(analysis, s.vy, input) });
+    }
+  }
+  const traces =
+    analysis.sweep && analysis.run
+      ? [...traced]
+          .filter((id) => analysis.sweep!.joints[id] || analysis.sweep!.points[id])
+          .map((id) => ({ id, ...pathOf(analysis.sweep!, id, analysis.run!) }))
+      : [];
+  const picture: MechPicture = {
+    spec,
+    pose,
+    traces,
+    slideRange: useMemo(() => slideRanges(analysis), [analysis]),
+    selected,
+    arrows,
+    faint: analysis.problem !== null,
+  };
+
+  const inputJoint = spec.input.joint;
+  const inputText = (t: number) => (kind === 'R' ? `${formatNumber(radToDeg(t), 4)}°` : formatNumber(t, 4));
+  const status = statusText(analysis, m, inputText);
+  const limitText = drive.limitAt !== null && drive.playing ? m.atLimit(inputText(drive.limitAt)) : null;
+
+  const place = (kindToPlace: PlaceKind, at: Pt) => {
+    try {
+      const [a, b] = newLinks;
+      const r =
+        kindToPlace === 'T'
+          ? addTracer(spec, a === GROUND ? b : a, at.x, at.y)
+          : addJoint(spec, kindToPlace, [a, b], at.x, at.y);
+      dispatch({ type: 'setMechSpec', spec: r.spec });
+      setSelected(r.id);
+      if (kindToPlace === 'T') setTraced((s) => new Set([...s, r.id]));
+      setEditError(null);
+    } catch (e) {
+      setEditError(m.editRefused((e as Error).message));
+    }
+    setPlacing(null);
+  };
+  const centre = (): Pt => ({ x: (bounds.minX + bounds.maxX) / 2 || 0, y: (bounds.minY + bounds.maxY) / 2 || 0 });
+
+  const draw = (ctx: Parameters<typeof drawMechanism>[0], v: ViewTransform) => drawMechanism(ctx, picture, v);
+  const exportPicture = (format: 'png' | 'svg') => {
+    const view = viewRef.current;
+    if (!view || view.width <= 0) return;
+    const v = fitView(bounds, view.width, view.height, view.offset);
+    const fileBase = `mechanism_${templateUrlValue(template)}${edited ? '_edited' : ''}`;
+    if (format === 'svg') exportDrawingSvg((ctx) => draw(ctx, v), view.width, view.height, fileBase);
+    else void exportDrawingPng((ctx) => draw(ctx, v), view.width, view.height, fileBase);
+  };
+  const exportCsv = async () => {
+    if (!range || !analysis.grid) return;
+    setExportNote(m.exportBusy);
+    try {
+      const inputs = csvInputs(analysis.grid.kind, range, analysis.fullTurn);
+      const params = { spec, inputs, rates: csvRates };
+      const sweep = client
+        ? await client.run('mechSweep', params, { channel: 'mechCsv' }).result
+        : sweepMechanism(spec, inputs, csvRates ? { omega: 1, alpha: 0 } : undefined);
+      if (!sweep) return;
+      const fileBase = `mechanism_${templateUrlValue(template)}${edited ? '_edited' : ''}`;
+      downloadText(mechCsv(spec, inputs, sweep, csvRates), `${fileBase}.csv`, 'text/csv');
+      setExportNote(null);
+    } catch (e) {
+      setExportNote(m.exportFailed((e as Error).message));
+    }
+  };
+
+  const xDeg = useMemo(
+    () => (analysis.grid ? analysis.grid.inputs.map((t) => (kind === 'R' ? radToDeg(t) : t)) : new Float64Array(0)),
+    [analysis, kind],
+  );
+  const xLabel = kind === 'R' ? m.axisInputDeg : m.axisInputLength;
+  const plotViews = plots.map((choice, n) => {
+    const c = parseChoice(spec, choice);
+    const source = c && (needsRates(c.kind) ? rateSweep : analysis.sweep);
+    const title = c ? choiceLabel(c, m) : m.plotNone;
+    let data: XYChartData = { series: [] };
+    let marker: MarkerAt | null = null;
+    if (c && source && analysis.run && !analysis.problem) {
+      const y = plotValues(c, source);
+      const [a, b] = analysis.run;
+      const color = c.kind === 'angle' ? linkColor(spec, c.id) : c.kind === 'accel' ? '#be185d' : '#0e7490';
+      data = { series: [{ label: title, color, x: xDeg.subarray(a, b + 1), y: y.subarray(a, b + 1) }] };
+      const xNow = kind === 'R' ? radToDeg(input) : input;
+      marker = { x: xNow, dots: [{ y: valueAt(analysis, y, input), color }] };
+    }
+    const texts = { title, xLabel, yLabel: c ? axisLabel(c.kind, kind, m) : '' };
+    return { n: n + 1, choice, c, data, marker, texts, pending: c !== null && source === null && !analysis.problem };
+  });
+  const exportPlot = async (n: number, format: 'png' | 'svg') => {
+    const p = plotViews[n - 1];
+    const chart = { draw: specDrawing(xySpec(), p.texts, p.data, p.marker), width: 640, height: 360 };
+    const fileBase = `mechanism_${templateUrlValue(template)}_plot${n}`;
+    if (format === 'svg') downloadText(exportChart(chart, 'svg'), `${fileBase}.svg`, 'image/svg+xml');
+    else downloadPng(await exportChart(chart, '2x'), `${fileBase}.png`);
+  };
+
+  const sliderMin = range ? (kind === 'R' ? radToDeg(range[0]) : range[0]) : 0;
+  const sliderMax = range ? (kind === 'R' ? radToDeg(range[1]) : range[1]) : 0;
+  const sliderStep = kind === 'R' ? 1 : span / 360 || 0.01;
+  const sliderValue = kind === 'R' ? radToDeg(input) : input;
+  const canRun = range !== null;
+
+  return (
+    <div
+      className="mech-workspace"
+      data-mech-state={analysis.problem ? analysis.problem.code : 'ok'}
+      data-trace={traceDigest(traces)}
+      data-input={input}
+    >
+      <div className="mech-stage-col">
+        <div className="mech-stage-head">
+          <h3 className="mech-name-title">{shownName}</h3>
+          <span className={`mech-mobility ${analysis.mobility === 1 ? 'is-ok' : 'is-bad'}`} data-testid="mech-mobility">
+            {m.mobility(Number.isFinite(analysis.mobility) ? String(analysis.mobility) : '—')}
+          </span>
+        </div>
+        <MechCanvas
+          picture={picture}
+          bounds={bounds}
+          label={m.canvasLabel(shownName)}
+          labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
+          viewRef={viewRef}
+          onGrab={(id) => {
+            if (id) {
+              stop(0);
+              setSelected(id);
+              setFrozenBounds(liveBounds);
+            } else setFrozenBounds(null);
+          }}
+          onDrag={(id, p) => edit((s) => moveJoint(s, id, p.x, p.y))}
+          placing={placing !== null}
+          onTap={(p) => placing && place(placing, p)}
+          onNudge={(dx, dy) => {
+            if (!selected) return;
+            const j = spec.joints.find((x) => x.id === selected) ?? spec.points?.find((x) => x.id === selected);
+            if (j) edit((s) => moveJoint(s, selected, j.x + dx, j.y + dy));
+          }}
+        />
+        <p className={`mech-status${analysis.problem ? ' is-bad' : ''}`} role="status" data-testid="mech-status">
+          {limitText ?? status}
+        </p>
+        {placing && (
+          <p className="mech-placing" role="status">
+            {m.placeHint(m.placeWhat[placing])}{' '}
+            <button type="button" className="btn btn-small" onClick={() => setPlacing(null)}>
+              {m.cancel}
+            </button>
+          </p>
+        )}
+        {editError && (
+          <p className="mech-error" role="alert">
+            {editError}
+          </p>
+        )}
+        <div className="mech-drive" role="group" aria-label={m.play}>
+          <button
+            type="button"
+            className="btn btn-primary mech-play"
+            disabled={!canRun}
+            aria-pressed={drive.playing}
+            onClick={() => setPlaying(!drive.playing)}
+          >
+            {drive.playing ? m.pause : m.play}
+          </button>
+          <button
+            type="button"
+            className="btn"
+            disabled={!canRun}
+            onClick={() => step(kind === 'R' ? degToRad(1) : span / 360)}
+          >
+            {m.step}
+          </button>
+          <button type="button" className="btn" disabled={!canRun} aria-pressed={drive.direction < 0} onClick={reverse}>
+            {m.reverse}
+          </button>
+          <label className="mech-input">
+            <span>{kind === 'R' ? m.inputAngle(inputJoint || '—') : m.inputSlide(inputJoint || '—')}</span>
+            <input
+              type="range"
+              min={sliderMin}
+              max={sliderMax}
+              step={sliderStep}
+              value={sliderValue}
+              disabled={!canRun}
+              onChange={(e) => {
+                const v = Number(e.target.value);
+                setInput(kind === 'R' ? degToRad(v) : v);
+              }}
+            />
+            <output data-testid="mech-input-value">{inputText(input)}</output>
+          </label>
+          <label className="mech-speed">
+            <span>{m.speed}</span>
+            <input
+              type="range"
+              min={5}
+              max={360}
+              step={5}
+              value={drive.speed}
+              onChange={(e) => setSpeed(Number(e.target.value))}
+            />
+            <output>
+              {drive.speed} {m.speedUnit}
+            </output>
+          </label>
+        </div>
+      </div>
+      <div className="mech-side">
+        <section className="mech-card" aria-label={m.editTitle}>
+          <h3 className="mech-card-title">{m.editTitle}</h3>
+          <SpecEditor
+            spec={spec}
+            edit={edit}
+            selected={selected}
+            onSelect={setSelected}
+            traced={traced}
+            onTrace={(id, on) =>
+              setTraced((s) => {
+                const next = new Set(s);
+                if (on) next.add(id);
+                else next.delete(id);
+                return next;
+              })
+            }
+            newLinks={[
+              spec.links.includes(newLinks[0]) ? newLinks[0] : GROUND,
+              spec.links.includes(newLinks[1]) ? newLinks[1] : GROUND,
+            ]}
+            onNewLinks={setNewLinks}
+            onPlace={(k, byKeyboard) => (byKeyboard ? place(k, centre()) : setPlacing(k))}
+            onNew={() => {
+              stop(0);
+              setSelected(null);
+              dispatch({ type: 'setMechSpec', spec: emptySpec() });
+              setNewLinks([GROUND, GROUND]);
+            }}
+            onResetTemplate={edited ? () => dispatch({ type: 'setMechSpec', spec: null }) : null}
+            onAddLink={() => {
+              const r = addLink(spec);
+              dispatch({ type: 'setMechSpec', spec: r.spec });
+              setNewLinks(([, b]) => [spec.links.includes(b) ? b : GROUND, r.name]);
+            }}
+            m={m}
+          />
+        </section>
+      </div>
+      <section className="mech-plots" aria-label={m.plotsTitle}>
+        <div className="mech-plot-controls">
+          {plotViews.map((p) => (
+            <label key={p.n}>
+              {m.plotChoice(p.n)}{' '}
+              <select
+                value={p.c ? p.choice : ''}
+                onChange={(e) => setPlots((old) => (p.n === 1 ? [e.target.value, old[1]] : [old[0], e.target.value]))}
+              >
+                <option value="">{m.plotNone}</option>
+                {plotChoices(spec).map((c) => (
+                  <option key={c} value={c}>
+                    {choiceLabel(parseChoice(spec, c)!, m)}
+                  </option>
+                ))}
+              </select>
+            </label>
+          ))}
+          <label className="mech-check">
+            <input type="checkbox" checked={showVelocities} onChange={(e) => setShowVelocities(e.target.checked)} />{' '}
+            {m.showVelocities}
+          </label>
+        </div>
+        <div className="mech-charts">
+          {plotViews.map((p) => (
+            <div key={p.n} className="mech-chart-cell">
+              <MechChart data={p.data} marker={p.marker} texts={p.texts} testId={`mech-chart-${p.n}`} />
+              {p.pending && <p className="note">{m.ratesPending}</p>}
+            </div>
+          ))}
+        </div>
+      </section>
+      <section className="mech-exports" aria-label={m.exportsTitle}>
+        <h3 className="mech-card-title">{m.exportsTitle}</h3>
+        <div className="mech-export-row">
+          <button type="button" className="btn btn-small" disabled={!canRun} onClick={() => void exportCsv()}>
+            {m.exportCsv}
+          </button>
+          <label className="mech-check">
+            <input type="checkbox" checked={csvRates} onChange={(e) => setCsvRates(e.target.checked)} /> {m.csvRates}
+          </label>
+          <button type="button" className="btn btn-small" onClick={() => exportPicture('png')}>
+            {m.exportPng}
+          </button>
+          <button type="button" className="btn btn-small" onClick={() => exportPicture('svg')}>
+            {m.exportSvg}
+          </button>
+          {plotViews.map((p) => (
+            <span key={p.n} className="mech-export-pair">
+              <button type="button" className="btn btn-small" onClick={() => void exportPlot(p.n, 'png')}>
+                {m.exportPlotPng(p.n)}
+              </button>
+              <button type="button" className="btn btn-small" onClick={() => void exportPlot(p.n, 'svg')}>
+                {m.exportPlotSvg(p.n)}
+              </button>
+            </span>
+          ))}
+        </div>
+        {exportNote && (
+          <p className="note" role="status">
+            {exportNote}
+          </p>
+        )}
+      </section>
+    </div>
+  );
+}
+
+/** A short fingerprint of the traced paths (their points' sum, 6 digits), for tests to see a curve change. */
+function traceDigest(traces: { x: ArrayLike<number>; y: ArrayLike<number> }[]): string {
+  let sum = 0;
+  for (const t of traces) for (let i = 0; i < t.x.length; i++) if (Number.isFinite(t.x[i])) sum += t.x[i] + 2 * t.y[i];
+  return sum.toPrecision(6);
+}
+
+/** The status line: what stops the linkage, or how its input moves. */
+function statusText(a: MechAnalysis, m: MechMessages, inputText: (t: number) => string): string {
+  const p = a.problem;
+  if (p?.code === 'noInput') return m.noInput;
+  if (p?.code === 'mobility') return p.mobility > 1 ? m.mobilityHelp.high(p.mobility) : m.mobilityHelp.low(p.mobility);
+  if (p?.code === 'invalid') return m.invalid(p.detail);
+  if (p?.code === 'singular') return m.singular;
+  if (a.fullTurn) return m.fullTurn;
+  const r = runRange(a);
+  return r ? m.rocking(inputText(r[0]), inputText(r[1])) : '';
+}

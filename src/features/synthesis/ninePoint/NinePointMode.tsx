@@ -1,0 +1,259 @@
+import { useMemo, useRef, useState } from 'react';
+import { TWO_PI } from '../../../solver/angles';
+import type { Point } from '../../../solver/kinematics';
+import { fitView } from '../../../shared/canvas/view';
+import { downloadText } from '../../../shared/canvas/download';
+import { formatNumber, formatSci } from '../../../shared/format';
+import { useMessages } from '../../../shared/i18n/MessagesContext';
+import type { ViewOffset } from '../../../shared/state/appState';
+import { placedJoints } from '../../../synthesis/placed';
+import { RECHECK_TOL, ninePointRefusal } from '../../../synthesis/ninePoint/ninePointSynthesis';
+import type { SynthesisModeProps } from '../openDesign';
+import { synthesisMessagesFor } from '../synthesisMessages';
+import type { DesignChoice } from '../path/ChosenDesign';
+import { ChosenDesign } from '../path/ChosenDesign';
+import type { MotionRange } from '../path/candidateFacts';
+import { couplerCurve } from '../path/candidateFacts';
+import type { PathCurve, PathScene } from '../path/drawPathScene';
+import { pathSceneBounds } from '../path/drawPathScene';
+import { exportPathPng, exportPathSvg } from '../path/pathExports';
+import { targetsExtent } from '../path/pathTaskOf';
+import { TargetCanvas } from '../path/TargetCanvas';
+import { TargetsCard } from '../path/TargetsCard';
+import { useFitBounds } from '../path/useFitBounds';
+import type { SynthesisPool } from '../path/usePathSynthesis';
+import { lastPathRun } from '../path/usePathSynthesis';
+import { NineClassList } from './NineClassList';
+import type { NineFilters } from './nineClassFacts';
+import { NO_FILTERS, cognateDesign, filterClasses, nineClassFacts } from './nineClassFacts';
+import { ninePointCsv } from './nineCsv';
+import type { NinePointMessages } from './ninePointMessages';
+import { ninePointMessagesFor } from './ninePointMessages';
+import { NineRunControls } from './NineRunControls';
+import { useNinePointSynthesis } from './useNinePointSynthesis';
+
+/** Props of NinePointMode: a mode's props and how to make the pool of solver workers. */
+export interface NinePointModeProps extends SynthesisModeProps {
+  createPool: () => SynthesisPool;
+}
+
+/** Problem 3 of Wampler, Morgan and Sommese (1992): 64 real linkage classes pass through these nine points. */
+export const WMS_PROBLEM_3: Point[] = [
+  [0.25, 0.0],
+  [0.52, 0.1],
+  [0.8, 0.7],
+  [1.2, 1.0],
+  [1.4, 1.3],
+  [1.1, 1.48],
+  [0.7, 1.4],
+  [0.2, 1.0],
+  [0.02, 0.4],
+].map(([x, y]) => ({ x, y }));
+
+const BRANCHES = ['open', 'crossed'] as const;
+const FULL_TURN: MotionRange = { full: true, lo: 0, hi: TWO_PI };
+/** Samples of the whole coupler curve drawn (each assembly). */
+const CURVE_SAMPLES = 720;
+
+/** Why the targets cannot be solved, as a sentence naming the points, or null when they can. */
+export function nineRefusalText(targets: readonly Point[], nt: NinePointMessages): string | null {
+  if (targets.length !== 9) return nt.needNine(targets.length);
+  const r = ninePointRefusal(targets);
+  if (!r) return null;
+  if (r.kind === 'coincide')
+    return nt.refusalCoincide(r.i + 1, r.j + 1, formatNumber(r.point.x), formatNumber(r.point.y));
+  return r.kind === 'line' ? nt.refusalLine : nt.refusalCircle;
+}
+
+function samePoints(a: readonly Point[], b: readonly Point[]): boolean {
+  return a.length === b.length && a.every((p, i) => p.x === b[i].x && p.y === b[i].y);
+}
+
+/**
+ * The Nine points mode (九點精確合成): exactly nine targets (canvas, text area, table, as the Path mode), "Find every
+ * linkage" on the worker pool with progress and Cancel, every real class found with filters and thumbnails, the
+ * chosen class's cognates moving through the points, "Open in simulator" and the exports.
+ */
+export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePointModeProps) {
+  const st = synthesisMessagesFor(state.shell.locale);
+  const nt = ninePointMessagesFor(state.shell.locale);
+  const t = useMessages();
+  const s = state.synPath;
+  const run = useNinePointSynthesis(createPool);
+  const [selected, setSelected] = useState<number | null>(null);
+  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
+  const [filters, setFilters] = useState<NineFilters>(NO_FILTERS);
+  const [chosenClass, setChosenClass] = useState(0);
+  const [shownCognate, setShownCognate] = useState(0);
+  const [replaced, setReplaced] = useState(0);
+  const canvasRef = useRef<HTMLCanvasElement>(null);
+
+  const points = run.points ?? s.targets;
+  const size = targetsExtent(points).size;
+  const classes = useMemo(() => run.result?.classes ?? [], [run.result]);
+  const facts = useMemo(() => classes.map((c) => nineClassFacts(c, size)), [classes, size]);
+  const shown = useMemo(() => filterClasses(classes, facts, filters), [classes, facts, filters]);
+  const chosen = shown.includes(chosenClass) ? chosenClass : (shown[0] ?? -1);
+  const cls = chosen >= 0 ? classes[chosen] : null;
+  const choices: (DesignChoice & { theta2: number })[] = useMemo(
+    () =>
+      cls
+        ? cls.cognates.map((d, k) => ({
+            design: cognateDesign(d),
+            facts: facts[chosen].cognates[k],
+            theta2: d.theta2[0],
+          }))
+        : [],
+    [cls, facts, chosen],
+  );
+  const choice = choices[Math.min(shownCognate, choices.length - 1)] ?? null;
+  const refusal = nineRefusalText(s.targets, nt);
+
+  // The whole coupler curve, both assemblies over a full turn: the points may lie on either (a circuit or branch
+  // defect), and every one of the nine is on it. The assembly the linkage moves on is drawn strong.
+  const curves: PathCurve[] = useMemo(
+    () =>
+      choice
+        ? BRANCHES.map((b) => ({
+            ...couplerCurve({ ...choice.design, branch: b }, FULL_TURN, CURVE_SAMPLES),
+            faint: b !== choice.design.branch,
+          }))
+        : [],
+    [choice],
+  );
+  const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  const content = pathSceneBounds({
+    targets: s.targets,
+    curves: curves.filter((c) => !c.faint),
+    pose: null,
+    design: choice?.design ?? null,
+  });
+  const bounds = useFitBounds(content, `${replaced}|${run.elapsedMs}|${chosen}|${shownCognate}`);
+
+  // The optimiser's answer for the same nine points, when the Path mode has one that misses them.
+  const pathRun = lastPathRun();
+  const best = pathRun.solutions?.[0];
+  const optimiserMiss =
+    classes.length > 0 &&
+    best &&
+    pathRun.task &&
+    samePoints(pathRun.task.targets, points) &&
+    best.maxDistance > RECHECK_TOL * size
+      ? best.maxDistance
+      : null;
+
+  const replace = (targets: Point[]) => {
+    dispatch({ type: 'setTargets', targets });
+    setSelected(null);
+    setReplaced((n) => n + 1);
+    setView({ zoom: 1, panX: 0, panY: 0 });
+  };
+  const exportScene = (): { scene: PathScene; view: ReturnType<typeof fitView> } | null => {
+    const canvas = canvasRef.current;
+    if (!canvas) return null;
+    const v = fitView(bounds, canvas.clientWidth, canvas.clientHeight, view);
+    const pose = choice ? placedJoints(choice.design, choice.theta2) : null;
+    const names = s.targets.map((_, i) => st.targetName(i + 1));
+    return { scene: { targets: s.targets, selected: null, names, curves, pose }, view: v };
+  };
+
+  return (
+    <div className="syn-path nine-mode" data-testid="nine-mode">
+      <p className="note syn-intro">{nt.intro}</p>
+      <div className="syn-stage card">
+        <TargetCanvas
+          targets={s.targets}
+          selected={selected}
+          curves={curves}
+          moving={moving}
+          bounds={bounds}
+          view={view}
+          onViewChange={setView}
+          onSelect={setSelected}
+          onMove={(i, p) => dispatch({ type: 'setTargets', targets: s.targets.map((q, k) => (k === i ? p : q)) })}
+          onAdd={(p) => {
+            dispatch({ type: 'setTargets', targets: [...s.targets, p] });
+            setSelected(s.targets.length);
+          }}
+          onRemove={(i) => {
+            dispatch({ type: 'setTargets', targets: s.targets.filter((_, k) => k !== i) });
+            setSelected(null);
+          }}
+          canvasRef={canvasRef}
+          st={st}
+        />
+      </div>
+      <div className="syn-side">
+        <TargetsCard
+          s={{ ...s, timing: 'free' }}
+          selected={selected}
+          onSelect={setSelected}
+          onReplace={(targets) => replace(targets)}
+          dispatch={dispatch}
+          st={st}
+        />
+        <div className="syn-buttons">
+          <button type="button" className="btn" onClick={() => replace(WMS_PROBLEM_3)}>
+            {nt.exampleProblem3}
+          </button>
+        </div>
+        <NineRunControls
+          run={run}
+          refusal={refusal}
+          onRun={() => {
+            setChosenClass(0);
+            setShownCognate(0);
+            void run.run(s.targets);
+          }}
+          onCancel={run.cancel}
+          nt={nt}
+        />
+        {optimiserMiss !== null ? (
+          <p className="note nine-compare" data-testid="nine-compare">
+            {nt.optimiserWorse(formatSci(optimiserMiss, 3))}
+          </p>
+        ) : null}
+        {run.result ? (
+          <NineClassList
+            classes={classes}
+            facts={facts}
+            shown={shown}
+            points={points}
+            filters={filters}
+            onFilters={setFilters}
+            chosen={chosen}
+            onChoose={(i) => {
+              setChosenClass(i);
+              setShownCognate(0);
+              // On a phone the canvas is above the list: bring the chosen class into view (a no-op when it shows).
+              canvasRef.current?.scrollIntoView({ block: 'nearest', behavior: 'smooth' });
+            }}
+            nt={nt}
+            st={st}
+            t={t}
+          />
+        ) : null}
+        {choice ? (
+          <ChosenDesign
+            choices={choices}
+            shown={Math.min(shownCognate, choices.length - 1)}
+            onShow={setShownCognate}
+            stale={run.points !== null && run.points !== undefined && !samePoints(run.points, s.targets)}
+            onOpen={() => onOpen({ design: choice.design, markers: points, theta2: choice.theta2 })}
+            onExportCsv={() => downloadText(ninePointCsv(classes), 'nine-point-classes.csv', 'text/csv;charset=utf-8')}
+            onExportSvg={() => {
+              const e = exportScene();
+              if (e) exportPathSvg(e.scene, e.view);
+            }}
+            onExportPng={() => {
+              const e = exportScene();
+              if (e) void exportPathPng(e.scene, e.view);
+            }}
+            st={st}
+            t={t}
+          />
+        ) : null}
+      </div>
+    </div>
+  );
+}
