@@ -1,5 +1,5 @@
 import './LinkageCanvas.css';
-import { memo, useEffect, useId, useRef, useState } from 'react';
+import { memo, useEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import { flushSync } from 'react-dom';
 import { useTheta2Scrub } from './theta2Scrub';
@@ -11,7 +11,7 @@ import type { CouplerPoint, ViewOffset } from '../../shared/state/appState';
 import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
 import { couplerAt, crankAngleAt, grabRadiusPx, hitHandle } from '../../shared/canvas/canvasGestures';
 import { usePanZoom } from '../../shared/canvas/usePanZoom';
-import { ZoomTools } from '../../shared/canvas/ZoomTools';
+import { PanZoomCanvas } from '../../shared/canvas/PanZoomCanvas';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { useElementSize } from '../../shared/hooks/useElementSize';
 import { useLinkageDrawing } from './useLinkageDrawing';
@@ -92,7 +92,7 @@ function useCanvasHandles(
       if (!handle) scrub?.end();
     },
   });
-  return { bounds, ...panZoom };
+  return { bounds, panZoom };
 }
 
 /**
@@ -114,14 +114,13 @@ function StageCanvas({ stage, width, height }: { stage: LiveStage; width: number
 function LinkageCanvasImpl(props: LinkageCanvasProps) {
   const { scene, view, onTheta2, onSize, description, hint, stage } = props;
   const t = useMessages();
-  const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const { width, height } = useElementSize(wrapRef);
   useEffect(() => {
     if (width > 0 && height > 0) onSize?.(width, height);
   }, [width, height, onSize]);
-  const { bounds, pointerHandlers, zoomBy, resetView, onZoomKey } = useCanvasHandles(props, canvasRef, width, height);
+  const { bounds, panZoom } = useCanvasHandles(props, canvasRef, width, height);
   useLinkageDrawing(canvasRef, scene, bounds, view, width, height, stage?.notePageDraw);
   const turnBy = (deltaDeg: number) => {
     if (!onTheta2) return;
@@ -130,38 +129,34 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
   };
 
   return (
-    <div className="canvas-wrap" ref={wrapRef}>
-      <canvas
-        ref={canvasRef}
-        className="linkage-canvas"
-        role="img"
-        aria-label={`${t.canvasLabel}. ${description}`}
-        aria-describedby={hintId}
-        title={hint}
-        aria-keyshortcuts={onTheta2 ? 'ArrowLeft ArrowRight + - 0' : '+ - 0'}
-        tabIndex={0}
-        {...pointerHandlers}
-        onKeyDown={(e) => {
-          if (!onZoomKey(e)) {
-            const turn = keyTurnDeg(e);
-            if (!onTheta2 || turn === null) return;
-            turnBy(turn);
-          }
-          e.preventDefault();
-        }}
-      />
-      {stage ? <StageCanvas stage={stage} width={width} height={height} /> : null}
-      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={t} />
-      <p id={hintId} className="canvas-hint">
-        {hint}
-      </p>
+    <PanZoomCanvas
+      wrapRef={wrapRef}
+      canvasRef={canvasRef}
+      wrapClassName="canvas-wrap"
+      panZoom={panZoom}
+      canvas={{
+        className: 'linkage-canvas',
+        role: 'img',
+        'aria-label': `${t.canvasLabel}. ${description}`,
+        'aria-keyshortcuts': onTheta2 ? 'ArrowLeft ArrowRight + - 0' : '+ - 0',
+      }}
+      onKeyDown={(e) => {
+        const turn = keyTurnDeg(e);
+        if (!onTheta2 || turn === null) return;
+        turnBy(turn);
+        e.preventDefault();
+      }}
+      zoomLabels={t}
+      hint={hint}
+      overlay={stage ? <StageCanvas stage={stage} width={width} height={height} /> : null}
+    >
       {scene.text.warning ? (
         <p className="sr-only" role="status">
           {scene.text.warning}
           {scene.text.warningDetail ? `. ${scene.text.warningDetail}` : ''}
         </p>
       ) : null}
-    </div>
+    </PanZoomCanvas>
   );
 }
 

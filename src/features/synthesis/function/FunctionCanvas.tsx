@@ -3,7 +3,7 @@ import type { ViewOffset } from '../../../shared/state/appState';
 import { fitView } from '../../../shared/canvas/view';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
-import { ZoomTools } from '../../../shared/canvas/ZoomTools';
+import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import { CanvasExports } from '../CanvasExports';
 import type { FunctionPicture } from './functionPicture';
@@ -22,7 +22,7 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
   const { width, height } = useElementSize(wrapRef);
   const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
   const bounds = functionBounds(picture);
-  const { pointerHandlers, zoomBy, resetView, onZoomKey } = usePanZoom<never>({
+  const panZoom = usePanZoom<never>({
     canvasRef,
     view,
     onViewChange: setView,
@@ -35,27 +35,26 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
     if (sized) drawFunction(sized.ctx, picture, fitView(bounds, width, height, view));
   }, [picture, bounds, view, width, height]);
   return (
-    <div className="syn-canvas-wrap" ref={wrapRef}>
-      <canvas
-        ref={canvasRef}
-        className="synmode-canvas"
-        role="img"
-        aria-label={labels.canvas}
-        aria-keyshortcuts="+ - 0"
-        tabIndex={0}
-        data-testid="function-canvas"
-        {...pointerHandlers}
-        onKeyDown={(e) => {
-          if (onZoomKey(e)) e.preventDefault();
-        }}
-      />
-      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
+    <PanZoomCanvas
+      wrapRef={wrapRef}
+      canvasRef={canvasRef}
+      wrapClassName="syn-canvas-wrap"
+      panZoom={panZoom}
+      canvas={{
+        className: 'synmode-canvas',
+        role: 'img',
+        'aria-label': labels.canvas,
+        'aria-keyshortcuts': '+ - 0',
+        'data-testid': 'function-canvas',
+      }}
+      zoomLabels={labels}
+    >
       <CanvasExports
         draw={(ctx) => drawFunction(ctx, picture, fitView(bounds, width, height, view))}
         width={width}
         height={height}
         fileBase="synthesis-function"
       />
-    </div>
+    </PanZoomCanvas>
   );
 }

@@ -1,20 +1,18 @@
 import '../motion/synthesisModes.css';
-import { Suspense, useId, useMemo } from 'react';
+import { Suspense, useMemo } from 'react';
 import type { Dispatch } from 'react';
 import { degToRad } from '../../../solver';
 import type { Action, AppState } from '../../../shared/state/appState';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
-import type { XYChartData } from '../../../shared/charts/xyChart';
 import { COLORS } from '../../../shared/theme/tokens';
-import { formatNumber } from '../../../shared/format';
 import type { OpenDesign } from '../openDesign';
 import { functionMessagesFor } from './functionMessages';
 import { useExpressionParser } from './useExpressionParser';
 import { useSweep } from './useSweep';
-import { FunctionFacts } from './FunctionFacts';
-import { PrecisionTable } from './PrecisionTable';
-import { generatedAt, solveFunction } from './functionSolve';
-import { expressionProblemText, functionProblemText } from './expressionText';
+import { generatedAt } from './functionSolve';
+import { structuralErrorData, useFunctionDesign } from './useFunctionDesign';
+import { FunctionSweep } from './FunctionSweep';
+import { FunctionDesignCard } from './FunctionDesignCard';
 import { ExpressionField } from './ExpressionField';
 import { FunctionFields } from './FunctionFields';
 import { FunctionCanvas } from './FunctionCanvas';
@@ -34,42 +32,11 @@ function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
   const fm = functionMessagesFor(state.shell.locale);
   const s = state.synFunction;
   const parse = useExpressionParser();
-  const sliderId = useId();
-  const parsed = useMemo(() => (parse ? parse(s.expression) : null), [parse, s.expression]);
-  const outcome = useMemo(() => (parsed?.ok ? solveFunction(s, parsed.f) : null), [parsed, s]);
-  const fd = outcome?.ok ? outcome.value : null;
+  const { fd, f, problem } = useFunctionDesign(s, parse, fm);
   const sweep = useSweep(s, fd !== null);
-  const at = fd && parsed?.ok ? generatedAt(s, fd, parsed.f, sweep.x) : null;
-  const chart = useMemo((): XYChartData => {
-    if (!fd) return { series: [] };
-    return {
-      series: [
-        {
-          label: fm.errorSeries,
-          color: COLORS.residual,
-          x: fd.result.structuralError.map((e) => e.x),
-          y: fd.result.structuralError.map((e) => e.error),
-        },
-        {
-          label: fm.precisionSeries,
-          color: COLORS.marker,
-          x: fd.precision.map((p) => p.x),
-          y: fd.precision.map((p) => p.error),
-          line: false,
-          dots: true,
-        },
-      ],
-    };
-  }, [fd, fm]);
+  const at = fd && f ? generatedAt(s, fd, f, sweep.x) : null;
+  const chart = useMemo(() => structuralErrorData(fd, fm), [fd, fm]);
   if (!parse) return <p className="note note-error">{fm.parserFailed}</p>;
-  const problem = !parsed
-    ? null
-    : !parsed.ok
-      ? expressionProblemText(fm, s.expression, parsed.problem)
-      : outcome && !outcome.ok
-        ? functionProblemText(fm, s.expression, outcome.problem)
-        : null;
-  const fmt = (v: number) => formatNumber(v, 5);
 
   return (
     <div className="synmode-mode synmode-function" data-testid="function-mode" data-ready={fd ? 'true' : 'false'}>
@@ -89,24 +56,7 @@ function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
             <p className="note synmode-empty">{fm.noDesign}</p>
           )}
         </section>
-        {fd && at ? (
-          <div className="synmode-sweep">
-            <button type="button" className="btn btn-small" onClick={() => sweep.setPlaying(!sweep.playing)}>
-              {sweep.playing ? fm.pause : fm.play}
-            </button>
-            <label htmlFor={sliderId}>{fm.xSlider}</label>
-            <input
-              id={sliderId}
-              type="range"
-              min={Math.min(...s.xRange)}
-              max={Math.max(...s.xRange)}
-              step={Math.abs(s.xRange[1] - s.xRange[0]) / 200}
-              value={sweep.x}
-              onChange={(e) => sweep.setX(Number(e.target.value))}
-            />
-            <span className="synmode-readout">{fm.readout(fmt(sweep.x), fmt(at.want), fmt(at.got))}</span>
-          </div>
-        ) : null}
+        {fd && at ? <FunctionSweep sweep={sweep} xRange={s.xRange} want={at.want} got={at.got} fm={fm} /> : null}
         {fd && at ? (
           <section className="card synmode-chart-card" aria-label={fm.errorChartTitle}>
             <StructuralErrorChart
@@ -132,19 +82,12 @@ function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
           </p>
         ) : null}
         {fd ? (
-          <div className="synmode-design">
-            <h3 className="section-title">{fm.designTitle}</h3>
-            <FunctionFacts fd={fd} fm={fm} t={t} />
-            <h4 className="synmode-subtitle">{fm.precisionTitle}</h4>
-            <PrecisionTable fd={fd} fm={fm} />
-            <button
-              type="button"
-              className="btn btn-primary"
-              onClick={() => onOpen({ design: fd.design, markers: [], theta2: degToRad(s.theta2RangeDeg[0]) })}
-            >
-              {fm.openInSimulator}
-            </button>
-          </div>
+          <FunctionDesignCard
+            fd={fd}
+            onOpen={() => onOpen({ design: fd.design, markers: [], theta2: degToRad(s.theta2RangeDeg[0]) })}
+            fm={fm}
+            t={t}
+          />
         ) : null}
       </section>
     </div>

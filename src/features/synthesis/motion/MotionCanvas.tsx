@@ -1,4 +1,4 @@
-import { useId, useLayoutEffect, useRef, useState } from 'react';
+import { useLayoutEffect, useRef, useState } from 'react';
 import type { KeyboardEvent, RefObject } from 'react';
 import { flushSync } from 'react-dom';
 import { radToDeg } from '../../../solver';
@@ -12,7 +12,7 @@ import type { ViewOffset } from '../../../shared/state/appState';
 import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionHandle, MotionPicture } from './motionPicture';
 import { drawMotion, handleAt, motionBounds, turnHandlePx } from './motionPicture';
-import { ZoomTools } from '../../../shared/canvas/ZoomTools';
+import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import { CanvasExports } from '../CanvasExports';
 
@@ -112,7 +112,6 @@ function useMotionGestures(
     },
   });
   const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
-    if (panZoom.onZoomKey(e)) return e.preventDefault();
     const n = Number(e.key);
     if (Number.isInteger(n) && n >= 1 && n <= picture.poses.length) {
       onSelect(n - 1);
@@ -131,7 +130,7 @@ function useMotionGestures(
       onPose(picture.selected, { x, y, angleDeg: deg });
     }
   };
-  return { bounds, view, ...panZoom, onKeyDown };
+  return { bounds, view, panZoom, onKeyDown };
 }
 
 /**
@@ -141,16 +140,10 @@ function useMotionGestures(
  */
 export function MotionCanvas(props: MotionCanvasProps) {
   const { picture, labels } = props;
-  const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const { width, height } = useElementSize(wrapRef);
-  const { bounds, view, pointerHandlers, zoomBy, resetView, onKeyDown } = useMotionGestures(
-    props,
-    canvasRef,
-    width,
-    height,
-  );
+  const { bounds, view, panZoom, onKeyDown } = useMotionGestures(props, canvasRef, width, height);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
@@ -171,30 +164,28 @@ export function MotionCanvas(props: MotionCanvasProps) {
   }, [picture, bounds, view, width, height]);
 
   return (
-    <div className="syn-canvas-wrap" ref={wrapRef}>
-      <canvas
-        ref={canvasRef}
-        className="synmode-canvas"
-        role="img"
-        aria-label={`${labels.canvas}. ${labels.selected}`}
-        aria-describedby={hintId}
-        aria-keyshortcuts="1 2 3 4 5 ArrowLeft ArrowRight ArrowUp ArrowDown [ ] + - 0"
-        title={labels.hint}
-        tabIndex={0}
-        data-testid="motion-canvas"
-        {...pointerHandlers}
-        onKeyDown={onKeyDown}
-      />
-      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
-      <p id={hintId} className="syn-canvas-hint">
-        {labels.hint}
-      </p>
+    <PanZoomCanvas
+      wrapRef={wrapRef}
+      canvasRef={canvasRef}
+      wrapClassName="syn-canvas-wrap"
+      panZoom={panZoom}
+      canvas={{
+        className: 'synmode-canvas',
+        role: 'img',
+        'aria-label': `${labels.canvas}. ${labels.selected}`,
+        'aria-keyshortcuts': '1 2 3 4 5 ArrowLeft ArrowRight ArrowUp ArrowDown [ ] + - 0',
+        'data-testid': 'motion-canvas',
+      }}
+      onKeyDown={onKeyDown}
+      zoomLabels={labels}
+      hint={labels.hint}
+    >
       <CanvasExports
         draw={(ctx) => drawMotion(ctx, picture, fitView(bounds, width, height, view))}
         width={width}
         height={height}
         fileBase="synthesis-motion"
       />
-    </div>
+    </PanZoomCanvas>
   );
 }

@@ -1,24 +1,22 @@
 import './synthesisModes.css';
-import { useMemo, useState } from 'react';
+import { useMemo } from 'react';
 import type { Dispatch } from 'react';
 import type { Point } from '../../../solver';
 import { toFrame } from '../../../synthesis';
 import type { Action, AppState } from '../../../shared/state/appState';
 import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
-import { Segmented } from '../../../shared/ui/Segmented';
 import { formatNumber } from '../../../shared/format';
 import type { OpenDesign } from '../openDesign';
 import { motionMessagesFor } from './motionMessages';
-import { solveMotion, toPose } from './motionSolve';
-import type { MotionPicture } from './motionPicture';
-import { centroid, nearestSample } from './motionPicture';
+import { solveMotion } from './motionSolve';
+import { dyadCentreNear, useMotionView } from './useMotionView';
 import { nextPose } from './motionEdits';
 import { problemText } from './motionText';
 import { MotionCanvas } from './MotionCanvas';
 import { PoseTable } from './PoseTable';
 import { MethodPanel } from './MethodPanel';
-import { MotionFacts } from './MotionFacts';
+import { MotionDesignCard } from './MotionDesignCard';
 
 /** Props of MotionMode (as the synthesis page renders every mode). */
 export interface MotionModeProps {
@@ -39,41 +37,16 @@ export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
   const mt = motionMessagesFor(state.shell.locale);
   const s = state.synMotion;
   const outcome = useMemo(() => solveMotion(s), [s]);
-  const [selectedRaw, setSelected] = useState(0);
-  const [shownRaw, setShown] = useState(0);
-  // The curve slider's sample; until it is moved, the one nearest the poses (so its mark is in view).
-  const [cursorRaw, setCursor] = useState<number | null>(null);
-  const selected = Math.min(selectedRaw, s.poses.length - 1);
+  const view = useMotionView(s, outcome, mt);
+  const { picture, poses, selected, setSelected, shownPose } = view;
   const chosen = outcome.chosen;
-  const shownPose = Math.min(shownRaw, (chosen?.theta2.length ?? 1) - 1);
-  const poses = useMemo(() => s.poses.map(toPose), [s.poses]);
-  const samples = useMemo(() => (outcome.count === 4 ? outcome.curves.flat() : []), [outcome]);
-  const cursor = Math.min(cursorRaw ?? nearestSample(samples, centroid(poses)), Math.max(0, samples.length - 1));
-  const picture: MotionPicture = {
-    poses,
-    selected,
-    outcome,
-    pivotChoice: s.pivotChoice,
-    pivots: s.pivots,
-    shownPose,
-    cursor: samples[cursor] ?? null,
-    legend: { centre: mt.centreCurve, circle: mt.circleCurve },
-  };
   const sel = s.poses[selected];
   const setPose = (index: number, pose: PoseDeg) => dispatch({ type: 'setSynPose', index, pose });
   const onPivot = (index: 0 | 1, at: Point) =>
     dispatch({ type: 'setSynPivot', index, point: s.pivotChoice === 'moving' ? toFrame(poses[0], at) : at });
   const onTap = (at: Point, reach: number) => {
     if (outcome.count !== 4) return;
-    let best: Point | null = null;
-    let bestD = reach;
-    for (const d of samples) {
-      const dist = Math.hypot(d.center.x - at.x, d.center.y - at.y);
-      if (dist <= bestD) {
-        bestD = dist;
-        best = d.center;
-      }
-    }
+    const best = dyadCentreNear(view.samples, at, reach);
     if (best) dispatch({ type: 'pickSynDyad', center: best });
   };
   const f = (v: number) => formatNumber(v, 4);
@@ -121,8 +94,8 @@ export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
           outcome={outcome}
           state={state}
           dispatch={dispatch}
-          cursor={cursor}
-          setCursor={setCursor}
+          cursor={view.cursor}
+          setCursor={view.setCursor}
           mt={mt}
         />
         {outcome.problem && !chosen ? (
@@ -135,29 +108,20 @@ export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
           </p>
         ) : null}
         {chosen ? (
-          <div className="synmode-design" data-testid="motion-design">
-            <h3 className="section-title">{mt.designTitle}</h3>
-            <MotionFacts candidate={chosen} mt={mt} t={t} />
-            <Segmented
-              legend={mt.shownAt}
-              value={String(shownPose)}
-              options={chosen.theta2.map((_, i) => ({ value: String(i), label: mt.poseName(i + 1) }))}
-              onChange={(v) => setShown(Number(v))}
-            />
-            <button
-              type="button"
-              className="btn btn-primary"
-              onClick={() =>
-                onOpen({
-                  design: chosen.design,
-                  markers: s.poses.map((p) => ({ x: p.x, y: p.y })),
-                  theta2: chosen.theta2[shownPose],
-                })
-              }
-            >
-              {mt.openInSimulator}
-            </button>
-          </div>
+          <MotionDesignCard
+            chosen={chosen}
+            shownPose={shownPose}
+            onShow={view.setShown}
+            onOpen={() =>
+              onOpen({
+                design: chosen.design,
+                markers: s.poses.map((p) => ({ x: p.x, y: p.y })),
+                theta2: chosen.theta2[shownPose],
+              })
+            }
+            mt={mt}
+            t={t}
+          />
         ) : null}
       </section>
     </div>

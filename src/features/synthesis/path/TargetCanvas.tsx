@@ -1,4 +1,4 @@
-import { useId, useLayoutEffect, useRef } from 'react';
+import { useLayoutEffect, useRef } from 'react';
 import type { RefObject } from 'react';
 import type { Point } from '../../../solver/kinematics';
 import type { PlacedFourBar } from '../../../synthesis/types';
@@ -6,7 +6,7 @@ import { placedJoints } from '../../../synthesis/placed';
 import type { ScreenPoint } from '../../../shared/canvas/canvasGestures';
 import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
-import { ZoomTools } from '../../../shared/canvas/ZoomTools';
+import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
 import { fitView, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
 import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
@@ -84,7 +84,6 @@ function keyMove(e: { key: string; shiftKey: boolean }): [number, number] | null
  */
 export function TargetCanvas(props: TargetCanvasProps) {
   const { targets, selected, curves, moving, bounds, view, onViewChange, canvasRef, st } = props;
-  const hintId = useId();
   const wrapRef = useRef<HTMLDivElement>(null);
   const phase = useRef(0);
   const { width, height } = useElementSize(wrapRef);
@@ -133,43 +132,36 @@ export function TargetCanvas(props: TargetCanvasProps) {
   });
 
   return (
-    <div className="syn-canvas-wrap" ref={wrapRef}>
-      <canvas
-        ref={canvasRef}
-        className="syn-canvas"
-        role="application"
-        aria-label={`${st.canvasLabel}: ${targets.length}`}
-        aria-describedby={hintId}
-        aria-keyshortcuts="Delete Backspace ArrowLeft ArrowRight ArrowUp ArrowDown + - 0"
-        title={st.canvasHint}
-        tabIndex={0}
-        data-testid="synthesis-canvas"
-        data-targets={targets.length}
-        {...panZoom.pointerHandlers}
-        onKeyDown={(e) => {
-          if (panZoom.onZoomKey(e)) {
-            e.preventDefault();
-            return;
-          }
-          if ((e.key === 'Delete' || e.key === 'Backspace') && selected !== null) {
-            props.onRemove(selected);
-            e.preventDefault();
-            return;
-          }
-          const move = keyMove(e);
-          if (move && selected !== null && targets[selected]) {
-            const step = niceStep(transform().scale) / 10;
-            const t = targets[selected];
-            props.onMove(selected, { x: snap(t.x + move[0] * step, step), y: snap(t.y + move[1] * step, step) });
-            e.preventDefault();
-          }
-        }}
-      />
-      <ZoomTools zoomBy={panZoom.zoomBy} resetView={panZoom.resetView} labels={st} />
-      {targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
-      <p id={hintId} className="syn-canvas-hint">
-        {st.canvasHint}
-      </p>
-    </div>
+    <PanZoomCanvas
+      wrapRef={wrapRef}
+      canvasRef={canvasRef}
+      wrapClassName="syn-canvas-wrap"
+      panZoom={panZoom}
+      canvas={{
+        className: 'syn-canvas',
+        role: 'application',
+        'aria-label': `${st.canvasLabel}: ${targets.length}`,
+        'aria-keyshortcuts': 'Delete Backspace ArrowLeft ArrowRight ArrowUp ArrowDown + - 0',
+        'data-testid': 'synthesis-canvas',
+        'data-targets': targets.length,
+      }}
+      onKeyDown={(e) => {
+        if ((e.key === 'Delete' || e.key === 'Backspace') && selected !== null) {
+          props.onRemove(selected);
+          e.preventDefault();
+          return;
+        }
+        const move = keyMove(e);
+        if (move && selected !== null && targets[selected]) {
+          const step = niceStep(transform().scale) / 10;
+          const t = targets[selected];
+          props.onMove(selected, { x: snap(t.x + move[0] * step, step), y: snap(t.y + move[1] * step, step) });
+          e.preventDefault();
+        }
+      }}
+      zoomLabels={st}
+      hint={st.canvasHint}
+      beforeHint={targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
+    />
   );
 }

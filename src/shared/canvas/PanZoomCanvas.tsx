@@ -1,0 +1,71 @@
+import { useId } from 'react';
+import type { CanvasHTMLAttributes, KeyboardEvent, ReactNode, RefObject } from 'react';
+import type { PanZoom } from './usePanZoom';
+import { ZoomTools } from './ZoomTools';
+import './PanZoomCanvas.css';
+import type { ZoomToolsProps } from './ZoomTools';
+
+/** The canvas element's own attributes (its role, label, class, test id, data-*), all but what PanZoomCanvas sets. */
+type CanvasAttributes = Omit<
+  CanvasHTMLAttributes<HTMLCanvasElement>,
+  'onKeyDown' | 'tabIndex' | 'title' | 'aria-describedby' | keyof PanZoom['pointerHandlers']
+> & { [data: `data-${string}`]: string | number | undefined };
+
+/** Props of PanZoomCanvas: the refs, the canvas's pan and zoom (usePanZoom's), its attributes, keys, hint, overlays. */
+export interface PanZoomCanvasProps {
+  wrapRef: RefObject<HTMLDivElement | null>;
+  canvasRef: RefObject<HTMLCanvasElement | null>;
+  /** The class of the wrapper (it sizes the canvas: useElementSize on wrapRef). */
+  wrapClassName: string;
+  panZoom: PanZoom;
+  canvas: CanvasAttributes;
+  /** Keys other than the zoom keys (+ - 0, which PanZoomCanvas takes and prevents). */
+  onKeyDown?: (e: KeyboardEvent<HTMLCanvasElement>) => void;
+  zoomLabels: ZoomToolsProps['labels'];
+  /** The pointer and keyboard hint: the canvas's title and description, shown while the canvas has keyboard focus. */
+  hint?: string;
+  /** Laid over the canvas under the zoom buttons (the live stage's canvas). */
+  overlay?: ReactNode;
+  /** After the zoom buttons, before the hint (an empty canvas's message). */
+  beforeHint?: ReactNode;
+  /** After the hint (exports, a status line). */
+  children?: ReactNode;
+}
+
+/**
+ * The one pan-and-zoom canvas of every page (the simulator's linkage, the synthesis modes'): a focusable canvas with
+ * usePanZoom's pointer handlers and zoom keys, the zoom buttons (ZoomTools) in its corner and its hint. The caller
+ * draws into canvasRef and holds the view.
+ */
+export function PanZoomCanvas(props: PanZoomCanvasProps) {
+  const { wrapRef, canvasRef, wrapClassName, panZoom, canvas, onKeyDown, zoomLabels, hint } = props;
+  const hintId = useId();
+  return (
+    <div className={`pan-zoom-wrap ${wrapClassName}`} ref={wrapRef}>
+      <canvas
+        ref={canvasRef}
+        {...canvas}
+        aria-describedby={hint ? hintId : undefined}
+        title={hint}
+        tabIndex={0}
+        {...panZoom.pointerHandlers}
+        onKeyDown={(e) => {
+          if (panZoom.onZoomKey(e)) {
+            e.preventDefault();
+            return;
+          }
+          onKeyDown?.(e);
+        }}
+      />
+      {props.overlay}
+      <ZoomTools zoomBy={panZoom.zoomBy} resetView={panZoom.resetView} labels={zoomLabels} />
+      {props.beforeHint}
+      {hint ? (
+        <p id={hintId} className="pan-zoom-hint">
+          {hint}
+        </p>
+      ) : null}
+      {props.children}
+    </div>
+  );
+}
