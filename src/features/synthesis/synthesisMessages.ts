@@ -25,6 +25,9 @@ export interface SynthesisMessages {
   canvasLabel: string;
   canvasHint: string;
   canvasEmpty: string;
+  /** The canvas's scale (one grid step, length unit) and the point under the pointer. */
+  gridScale: (step: string) => string;
+  cursorAt: (x: string, y: string) => string;
   zoomIn: string;
   zoomOut: string;
   resetView: string;

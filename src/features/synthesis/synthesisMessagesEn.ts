@@ -15,6 +15,8 @@ export const synthesisMessagesEn: SynthesisMessages = {
   canvasHint:
     'Click or tap to add a target, drag one to move it; Delete or Backspace removes the selected one. Drag elsewhere to pan, pinch or wheel to zoom; arrow keys move the selected target, + − zoom, 0 fits.',
   canvasEmpty: 'Click to add targets, paste them below, or load the example.',
+  gridScale: (step) => `Grid ${step}`,
+  cursorAt: (x, y) => `x ${x}, y ${y}`,
   zoomIn: 'Zoom in',
   zoomOut: 'Zoom out',
   resetView: 'Fit the view',

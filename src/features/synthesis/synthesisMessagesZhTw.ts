@@ -14,6 +14,8 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   canvasHint:
     '點按或輕觸以新增目標點，拖曳以移動；Delete 或 Backspace 刪除選取的點。拖曳空白處平移，雙指或滾輪縮放；方向鍵移動選取的點，+ − 縮放，0 重設視圖。',
   canvasEmpty: '點按以新增目標點、在下方貼上，或載入範例。',
+  gridScale: (step) => `格線 ${step}`,
+  cursorAt: (x, y) => `x ${x}，y ${y}`,
   zoomIn: '放大',
   zoomOut: '縮小',
   resetView: '重設視圖',
