@@ -89,11 +89,15 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   noDefects: '無',
   defectText: {
     'not-crank': () => '輸入無法整周轉動：需來回驅動',
+    'change-point': (v) => `接近變點：S + L − P − Q 僅為最長連桿的 ${v}，可能切換分支`,
+    toggle: (v) => `接近肘節：傳動角降到 ${v}，輸出可能卡死`,
     'low-transmission': (v) => `傳動角降到 ${v}（低於 30°）`,
     misses: (v) => `與目標點相差 ${v}`,
   },
   grashof: 'Grashof',
   nonGrashof: '非 Grashof',
+  changePoint: '變點',
+  cognateOf: (rank) => `候選 ${rank} 的 Roberts 同源機構：以其他樞軸描出相同曲線`,
   chosenTitle: '選定的設計',
   cognatesTitle: 'Roberts 同源機構',
   cognatesIntro:

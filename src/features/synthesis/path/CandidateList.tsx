@@ -12,6 +12,8 @@ import { CandidateThumb } from './CandidateThumb';
 export interface CandidateListProps {
   solutions: readonly PathSolution[];
   facts: readonly CandidateFacts[];
+  /** For each candidate, the rank of one above it that it is a Roberts cognate of, or null. */
+  cognateOf: readonly (number | null)[];
   targets: readonly Point[];
   chosen: number;
   /** The answers are for another task than the page's (an edit since the run): shown dimmed, marked out of date. */
@@ -23,7 +25,8 @@ export interface CandidateListProps {
 
 /** The type in words: "Crank-rocker (Grashof)". */
 export function typeText(f: CandidateFacts, t: Messages, st: SynthesisMessages): string {
-  return `${t.types[f.type]} (${f.grashof ? st.grashof : st.nonGrashof})`;
+  const change = f.defects.some((d) => d.kind === 'change-point');
+  return `${t.types[f.type]} (${change ? st.changePoint : f.grashof ? st.grashof : st.nonGrashof})`;
 }
 
 /** The defects in words, or "none". */
@@ -31,16 +34,28 @@ export function defectsText(f: CandidateFacts, st: SynthesisMessages): string {
   if (f.defects.length === 0) return st.noDefects;
   return f.defects
     .map((d) =>
-      st.defectText[d.kind](d.kind === 'low-transmission' ? `${formatDeg(d.value, 1)}°` : formatNumber(d.value, 3)),
+      st.defectText[d.kind](
+        d.kind === 'low-transmission' || d.kind === 'toggle' ? `${formatDeg(d.value, 1)}°` : formatNumber(d.value, 3),
+      ),
     )
     .join('; ');
 }
 
 /**
  * The candidates, best first (marked out of date when the task changed since the run): each a button (pressed when chosen) with its thumbnail, Σd², max distance, type,
- * smallest transmission angle and defects in words.
+ * smallest transmission angle, defects in words, and a mark when it is a cognate of one above.
  */
-export function CandidateList({ solutions, facts, targets, chosen, stale, dispatch, st, t }: CandidateListProps) {
+export function CandidateList({
+  solutions,
+  facts,
+  cognateOf,
+  targets,
+  chosen,
+  stale,
+  dispatch,
+  st,
+  t,
+}: CandidateListProps) {
   if (solutions.length === 0) return null;
   return (
     <section className={`card syn-card${stale ? ' is-stale' : ''}`} aria-labelledby="syn-results-title">
@@ -76,6 +91,9 @@ export function CandidateList({ solutions, facts, targets, chosen, stale, dispat
                   <span className={f.defects.length > 0 ? 'syn-defects' : undefined}>
                     {st.defects}: {defectsText(f, st)}
                   </span>
+                  {cognateOf[i] !== null ? (
+                    <span className="syn-cognate-mark">{st.cognateOf(cognateOf[i] ?? 0)}</span>
+                  ) : null}
                 </span>
               </button>
             </li>
