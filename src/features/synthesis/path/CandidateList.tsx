@@ -2,11 +2,12 @@ import type { Dispatch } from 'react';
 import type { Point } from '../../../solver/kinematics';
 import type { PathSolution } from '../../../synthesis/types';
 import type { Messages } from '../../../shared/i18n/messages';
-import { formatDeg, formatNumber, formatSci } from '../../../shared/format';
+import { formatDeg, formatNumber, formatSci, roundingNoiseToZero } from '../../../shared/format';
 import type { Action } from '../../../shared/state/appState';
 import type { SynthesisMessages } from '../synthesisMessages';
 import type { CandidateFacts } from './candidateFacts';
 import { CandidateThumb } from './CandidateThumb';
+import { targetsExtent } from './pathTaskOf';
 
 /** Props of CandidateList: the answers with their facts, the targets, which is chosen, and the dispatch. */
 export interface CandidateListProps {
@@ -27,6 +28,19 @@ export interface CandidateListProps {
 export function typeText(f: CandidateFacts, t: Messages, st: SynthesisMessages): string {
   const change = f.defects.some((d) => d.kind === 'change-point');
   return `${t.types[f.type]} (${change ? st.changePoint : f.grashof ? st.grashof : st.nonGrashof})`;
+}
+
+/**
+ * A distance beside the targets' size (length unit) in exponent form, 0 when it is rounding noise (at most
+ * ROUNDING_NOISE of the size: an exact fit's 5e−15 beside 2 reads 0).
+ */
+export function distanceText(d: number, size: number): string {
+  return formatSci(roundingNoiseToZero(d, size), 3);
+}
+
+/** Σd² beside the targets' size (length unit): 0 when its root is rounding noise of the size (see distanceText). */
+export function errorSumText(sum: number, size: number): string {
+  return roundingNoiseToZero(Math.sqrt(sum), size) === 0 ? '0' : formatSci(sum, 3);
 }
 
 /** The defects in words, or "none". */
@@ -57,6 +71,7 @@ export function CandidateList({
   t,
 }: CandidateListProps) {
   if (solutions.length === 0) return null;
+  const size = targetsExtent(targets).size;
   return (
     <section className={`card syn-card${stale ? ' is-stale' : ''}`} aria-labelledby="syn-results-title">
       <h3 id="syn-results-title" className="syn-card-title">
@@ -83,7 +98,7 @@ export function CandidateList({
                 <span className="syn-candidate-text">
                   <strong>{st.candidateName(i + 1)}</strong>
                   <span>
-                    {st.errorSum} {formatSci(s.error, 3)} · {st.maxDistance} {formatSci(s.maxDistance, 3)}
+                    {st.errorSum} {errorSumText(s.error, size)} · {st.maxDistance} {distanceText(s.maxDistance, size)}
                   </span>
                   <span>
                     {typeText(f, t, st)} · {st.minTransmission} {formatDeg(f.muMinDeg, 1)}°
