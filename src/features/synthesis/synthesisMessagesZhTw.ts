@@ -66,7 +66,7 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
     `已於 ${ms} 秒後停止（${workers} 個工作執行緒）：目前找到的最佳 ${count} 個候選。`,
   staleResults: '已過時：目標點或任務在這次合成後已變更。請重新合成以取得符合的結果。',
   mustBePositive: (field) => `${field}必須大於 0。`,
-  mustBeMore: (more, less, lessValue) => `${more}必須大於${less}（${lessValue}）。`,
+  mustBeMore: (more, less, lessValue) => `${more} 必須大於 ${less}（${lessValue}）。`,
   stepRule: '步距必須是 −180° 到 180° 之間的非零角度。',
   fieldsInError: (names) => `請先修正${names}。`,
   missingTheta2: (target) => `請填入 ${target} 的 θ2（指定 θ2），或改用其他時序。`,
