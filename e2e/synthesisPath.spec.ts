@@ -321,6 +321,35 @@ test.describe('the synthesis page, Path mode', () => {
     await expect(page.getByRole('textbox', { name: 'T4 θ2 (°)' })).toHaveValue('40');
   });
 
+  test('the canvas reads its grid step and the point under the mouse (issue 34, 7)', async ({ page }) => {
+    await page.goto('./?page=syn&tg=0,0;4,0;4,-3');
+    const canvas = page.getByTestId('synthesis-canvas');
+    const readout = page.getByTestId('canvas-readout');
+    await expect(readout).toHaveText(/^Grid \d/);
+    const v = JSON.parse((await canvas.getAttribute('data-view'))!) as {
+      scale: number;
+      centerX: number;
+      centerY: number;
+      panXPx: number;
+      panYPx: number;
+      width: number;
+      height: number;
+    };
+    // The grid step shown is the spacing of the lines drawn: a round step about 64 px apart.
+    const step = Number((await readout.textContent())!.replace(/^Grid /, '').replace('−', '-'));
+    expect(step * v.scale).toBeGreaterThan(25);
+    expect(step * v.scale).toBeLessThan(160);
+    expect([1, 2, 5]).toContain(Number((step / 10 ** Math.floor(Math.log10(step))).toPrecision(6)));
+    // Under the mouse at the pixel of (1, −1) (the view's own transform), the readout says x 1, y −1.
+    const box = (await canvas.boundingBox())!;
+    const sx = v.width / 2 + (1 - v.centerX) * v.scale + v.panXPx;
+    const sy = v.height / 2 - (-1 - v.centerY) * v.scale + v.panYPx;
+    await page.mouse.move(box.x + sx, box.y + sy);
+    await expect(readout).toHaveText(`Grid ${String(step)} · x 1, y −1`);
+    await page.mouse.move(box.x + box.width + 50, box.y + 10);
+    await expect(readout).toHaveText(`Grid ${String(step)}`);
+  });
+
   test('adds, moves and removes targets on the canvas with the mouse and the keyboard', async ({ page }) => {
     await page.goto('./?page=syn');
     const canvas = page.getByTestId('synthesis-canvas');
@@ -351,6 +380,15 @@ test.describe('the synthesis page, Path mode', () => {
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
     expect(overflow).toBeLessThanOrEqual(0);
     await synthesize(page);
+    // The canvas stays on screen beside the list: choosing a candidate far down shows it without scrolling back.
+    const third = page.getByTestId('candidates').getByRole('button').nth(2);
+    await third.scrollIntoViewIfNeeded();
+    await third.click();
+    await expect(third).toHaveAttribute('aria-pressed', 'true');
+    const inView = async (box: { y: number; height: number } | null) =>
+      box !== null && box.y >= -1 && box.y + box.height <= 844 + 1;
+    await expect.poll(async () => inView(await canvas.boundingBox())).toBe(true);
+    expect(await inView(await third.boundingBox())).toBe(true);
     await page.screenshot({ path: artifact('synthesis-phone.png'), fullPage: true });
     await context.close();
   });

@@ -47,6 +47,7 @@ export { CURVE_FAR, DEFAULT_CURVE_SAMPLES, burmesterCurves, burmesterFourBars, b
 export type { BurmesterFourBar, BurmesterPair } from './burmester';
 export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
+export { SAME_DESIGN, sameDesign } from './pathScreen';
 export type { RobertsCognate } from './cognates';
 export { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from './ninePoint';
 export type {

@@ -24,8 +24,11 @@ const POLISH_LONG_ITERATIONS = 4000;
 /** How many of the best candidates get the long polish; the rest get POLISH_ITERATIONS. */
 const POLISH_LONG = 4;
 const POLISH_ITERATIONS = 300;
-/** Two designs closer than this (relative to the target size, and in radians) are the same linkage. */
-const SAME_DESIGN = 1e-7;
+/**
+ * Two designs whose pivots, links and coupler point all agree to this share of the target size are one linkage: the
+ * flat valleys of an overdetermined fit leave copies that differ far above rounding (issue 34 item 2).
+ */
+export const SAME_DESIGN = 1e-3;
 
 /** The user-unit design and θ2 (radians, unwrapped) of a candidate. */
 function designOf(t: NormalisedTask, task: PathTask, c: PathCandidate): { design: PlacedFourBar; theta2: number[] } {
@@ -95,22 +98,32 @@ function solutionOf(t: NormalisedTask, task: PathTask, c: PathCandidate): PathSo
   return { design, theta2: wrapped, error, maxDistance };
 }
 
-/** True when a and b are the same linkage to rounding (size: the target set's size in the user's unit). */
+/** O4 of a placed design, and its coupler point's offset from A in the frame of AB (length unit). */
+function pivotAndOffset(d: PlacedFourBar): { O4: Point; offset: Point } {
+  return {
+    O4: { x: d.O2.x + d.links.r1 * Math.cos(d.groundAngle), y: d.O2.y + d.links.r1 * Math.sin(d.groundAngle) },
+    offset: { x: d.pDist * Math.cos(d.pAngle), y: d.pDist * Math.sin(d.pAngle) },
+  };
+}
+
+/**
+ * True when a and b are one linkage: the same branch, and O2, O4, r2, r3, r4 and the coupler point's offset all
+ * within SAME_DESIGN of size (the target set's size in the user's unit). Cognates (other pivots) are not the same.
+ */
 export function sameDesign(a: PlacedFourBar, b: PlacedFourBar, size: number): boolean {
   if (a.branch !== b.branch) return false;
   const tol = SAME_DESIGN * size;
   const close = (p: number, q: number) => Math.abs(p - q) <= tol;
-  const closeAngle = (p: number, q: number) => Math.abs(wrapAngle(p - q)) <= SAME_DESIGN;
+  const near = (p: Point, q: Point) => Math.hypot(p.x - q.x, p.y - q.y) <= tol;
+  const pa = pivotAndOffset(a);
+  const pb = pivotAndOffset(b);
   return (
-    close(a.links.r1, b.links.r1) &&
+    near(a.O2, b.O2) &&
+    near(pa.O4, pb.O4) &&
     close(a.links.r2, b.links.r2) &&
     close(a.links.r3, b.links.r3) &&
     close(a.links.r4, b.links.r4) &&
-    close(a.O2.x, b.O2.x) &&
-    close(a.O2.y, b.O2.y) &&
-    closeAngle(a.groundAngle, b.groundAngle) &&
-    close(a.pDist, b.pDist) &&
-    (a.pDist <= tol || closeAngle(a.pAngle, b.pAngle))
+    near(pa.offset, pb.offset)
   );
 }
 

@@ -4,6 +4,7 @@ import type { JobClientMode, JobClientModeReason, WorkerLike } from '../../src/s
 import type { JobHandlers } from '../../src/shared/jobs/jobTable';
 import { SOLVE_BUDGET, simulatorJobs } from '../../src/features/simulator/jobs';
 import { LAB_STAGE_MS, labJobs } from '../../src/features/lab/jobs';
+import { readPathStage } from '../../src/features/synthesis/jobs';
 import type { LabJobs } from '../../src/features/lab/jobs';
 import { createSolverClient, solverJobs } from '../../src/workers/solverClient';
 import { labHandlers } from '../../src/features/lab/labHandlers';
@@ -78,7 +79,7 @@ describe('solver jobs', () => {
     expect(Object.keys(solverHandlers).sort()).toEqual(Object.keys(solverJobs).sort());
   });
 
-  it('run a path synthesis in parts and merge them, with progress carrying the best Σd²', async () => {
+  it('run a path synthesis in parts and merge them, with progress carrying the best Σd² and candidates', async () => {
     // Six points of a known coupler curve (the report's linkage, θ2 every 60°): an exact fit exists.
     const targets = [0, 1, 2, 3, 4, 5].map((k) => {
       const t2 = (k * Math.PI) / 3;
@@ -109,7 +110,11 @@ describe('solver jobs', () => {
     expect(merged.length).toBeGreaterThan(0);
     expect(merged[0].error).toBeLessThan(1e-20);
     expect(stages.length).toBeGreaterThan(0);
-    expect(stages.every((x) => Number(x) >= 0)).toBe(true);
+    const reported = stages.map(readPathStage);
+    expect(reported.every((r) => r.best >= 0 && r.candidates.length > 0)).toBe(true);
+    // What a part reports merges on its own (a stopped run's answers, issue 34 item 4).
+    const last = reported[reported.length - 1];
+    expect((await solverHandlers.pathMerge({ task, parts: [last.candidates] }, context)).length).toBeGreaterThan(0);
   });
 
   it('give each call a watchdog budget that grows with its work', () => {

@@ -4,7 +4,7 @@ import { synthesisMessagesEn } from './synthesisMessagesEn';
 import { synthesisMessagesZhTw } from './synthesisMessagesZhTw';
 
 /** Defects a path candidate can have, named in words on the page (see path/candidateFacts.ts). */
-export type PathDefect = 'not-crank' | 'low-transmission' | 'misses';
+export type PathDefect = 'not-crank' | 'change-point' | 'toggle' | 'low-transmission' | 'misses';
 
 /**
  * The synthesis page's strings (page shell and Path mode), apart from the app's: only the synthesis page reads them,
@@ -27,6 +27,9 @@ export interface SynthesisMessages {
   canvasLabel: string;
   canvasHint: string;
   canvasEmpty: string;
+  /** The canvas's scale (one grid step, length unit) and the point under the pointer. */
+  gridScale: (step: string) => string;
+  cursorAt: (x: string, y: string) => string;
   zoomIn: string;
   zoomOut: string;
   resetView: string;
@@ -110,6 +113,10 @@ export interface SynthesisMessages {
   defectText: Record<PathDefect, (value: string) => string>;
   grashof: string;
   nonGrashof: string;
+  /** The type's note for a near-change-point design (S + L = P + Q), instead of Grashof. */
+  changePoint: string;
+  /** A candidate that is a Roberts cognate of an earlier one (its rank). */
+  cognateOf: (rank: number) => string;
   chosenTitle: string;
   cognatesTitle: string;
   cognatesIntro: string;

@@ -16,6 +16,8 @@ export const synthesisMessagesEn: SynthesisMessages = {
   canvasHint:
     'Click or tap to add a target, drag one to move it; Delete or Backspace removes the selected one. Drag elsewhere to pan, pinch or wheel to zoom; arrow keys move the selected target, + − zoom, 0 fits.',
   canvasEmpty: 'Click to add targets, paste them below, or load the example.',
+  gridScale: (step) => `Grid ${step}`,
+  cursorAt: (x, y) => `x ${x}, y ${y}`,
   zoomIn: 'Zoom in',
   zoomOut: 'Zoom out',
   resetView: 'Fit the view',
@@ -91,11 +93,15 @@ export const synthesisMessagesEn: SynthesisMessages = {
   noDefects: 'none',
   defectText: {
     'not-crank': () => 'the input does not turn fully: drive it back and forth',
+    'change-point': (v) => `near a change point: S + L − P − Q is ${v} of the longest link, so it can switch branch`,
+    toggle: (v) => `near a toggle: the transmission angle falls to ${v} and the output can lock`,
     'low-transmission': (v) => `the transmission angle falls to ${v} (below 30°)`,
     misses: (v) => `misses a target by ${v}`,
   },
   grashof: 'Grashof',
   nonGrashof: 'non-Grashof',
+  changePoint: 'change point',
+  cognateOf: (rank) => `a Roberts cognate of candidate ${rank}: the same curve from other pivots`,
   chosenTitle: 'Chosen design',
   cognatesTitle: 'Roberts cognates',
   cognatesIntro:

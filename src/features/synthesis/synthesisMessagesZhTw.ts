@@ -15,6 +15,8 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   canvasHint:
     '點按或輕觸以新增目標點，拖曳以移動；Delete 或 Backspace 刪除選取的點。拖曳空白處平移，雙指或滾輪縮放；方向鍵移動選取的點，+ − 縮放，0 重設視圖。',
   canvasEmpty: '點按以新增目標點、在下方貼上，或載入範例。',
+  gridScale: (step) => `格線 ${step}`,
+  cursorAt: (x, y) => `x ${x}，y ${y}`,
   zoomIn: '放大',
   zoomOut: '縮小',
   resetView: '重設視圖',
@@ -65,7 +67,7 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
     `已於 ${ms} 秒後停止（${workers} 個工作執行緒）：目前找到的最佳 ${count} 個候選。`,
   staleResults: '已過時：目標點或任務在這次合成後已變更。請重新合成以取得符合的結果。',
   mustBePositive: (field) => `${field}必須大於 0。`,
-  mustBeMore: (more, less, lessValue) => `${more}必須大於${less}（${lessValue}）。`,
+  mustBeMore: (more, less, lessValue) => `${more} 必須大於 ${less}（${lessValue}）。`,
   stepRule: '步距必須是 −180° 到 180° 之間的非零角度。',
   fieldsInError: (names) => `請先修正${names}。`,
   missingTheta2: (target) => `請填入 ${target} 的 θ2（指定 θ2），或改用其他時序。`,
@@ -88,11 +90,15 @@ export const synthesisMessagesZhTw: SynthesisMessages = {
   noDefects: '無',
   defectText: {
     'not-crank': () => '輸入無法整周轉動：需來回驅動',
+    'change-point': (v) => `接近變點：S + L − P − Q 僅為最長連桿的 ${v}，可能切換分支`,
+    toggle: (v) => `接近肘節：傳動角降到 ${v}，輸出可能卡死`,
     'low-transmission': (v) => `傳動角降到 ${v}（低於 30°）`,
     misses: (v) => `與目標點相差 ${v}`,
   },
   grashof: 'Grashof',
   nonGrashof: '非 Grashof',
+  changePoint: '變點',
+  cognateOf: (rank) => `候選 ${rank} 的 Roberts 同源機構：以其他樞軸描出相同曲線`,
   chosenTitle: '選定的設計',
   cognatesTitle: 'Roberts 同源機構',
   cognatesIntro:

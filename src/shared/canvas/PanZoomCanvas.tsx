@@ -1,5 +1,5 @@
 import { useId } from 'react';
-import type { CanvasHTMLAttributes, KeyboardEvent, ReactNode, RefObject } from 'react';
+import type { CanvasHTMLAttributes, KeyboardEvent, PointerEvent, ReactNode, RefObject } from 'react';
 import type { PanZoom } from './usePanZoom';
 import { ZoomTools } from './ZoomTools';
 import './PanZoomCanvas.css';
@@ -8,7 +8,7 @@ import type { ZoomToolsProps } from './ZoomTools';
 /** The canvas element's own attributes (its role, label, class, test id, data-*), all but what PanZoomCanvas sets. */
 type CanvasAttributes = Omit<
   CanvasHTMLAttributes<HTMLCanvasElement>,
-  'onKeyDown' | 'tabIndex' | 'title' | 'aria-describedby' | keyof PanZoom['pointerHandlers']
+  'onKeyDown' | 'tabIndex' | 'title' | 'aria-describedby' | 'onPointerLeave' | keyof PanZoom['pointerHandlers']
 > & { [data: `data-${string}`]: string | number | undefined };
 
 /** Props of PanZoomCanvas: the refs, the canvas's pan and zoom (usePanZoom's), its attributes, keys, hint, overlays. */
@@ -19,6 +19,9 @@ export interface PanZoomCanvasProps {
   wrapClassName: string;
   panZoom: PanZoom;
   canvas: CanvasAttributes;
+  /** Told of each pointer move after the pan and zoom's handler (a cursor readout), and when the pointer leaves. */
+  onPointerMove?: (e: PointerEvent<HTMLCanvasElement>) => void;
+  onPointerLeave?: () => void;
   /** Keys other than the zoom keys (+ - 0, which PanZoomCanvas takes and prevents). */
   onKeyDown?: (e: KeyboardEvent<HTMLCanvasElement>) => void;
   zoomLabels: ZoomToolsProps['labels'];
@@ -49,6 +52,11 @@ export function PanZoomCanvas(props: PanZoomCanvasProps) {
         title={hint}
         tabIndex={0}
         {...panZoom.pointerHandlers}
+        onPointerMove={(e) => {
+          panZoom.pointerHandlers.onPointerMove(e);
+          props.onPointerMove?.(e);
+        }}
+        onPointerLeave={props.onPointerLeave}
         onKeyDown={(e) => {
           if (panZoom.onZoomKey(e)) {
             e.preventDefault();

@@ -12,7 +12,9 @@ import type { SynthesisModeProps } from '../openDesign';
 import type { SynthesisMessages } from '../synthesisMessages';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import { CandidateList } from './CandidateList';
-import { candidateFacts, placedFourBarFacts } from './candidateFacts';
+import { placedFourBarFacts } from './candidateFacts';
+import type { RankedCandidates } from './rankCandidates';
+import { rankCandidates } from './rankCandidates';
 import type { DesignChoice } from './ChosenDesign';
 import { ChosenDesign } from './ChosenDesign';
 import type { PathCurve, PathScene } from './drawPathScene';
@@ -34,14 +36,17 @@ export interface PathModeProps extends SynthesisModeProps {
   createPool: () => SynthesisPool;
 }
 
-/** The candidate chosen, and its cognates, each with the θ2 it passes the first target at. */
+/**
+ * The answers as listed (rankCandidates), the candidate chosen and its cognates, each with the θ2 it passes the
+ * first target at.
+ */
 function useChoices(
   run: ReturnType<typeof usePathSynthesis>,
   chosen: number,
-): { choices: (DesignChoice & { theta2: number })[]; facts: ReturnType<typeof candidateFacts>[] } {
-  const solutions = run.solutions;
+): { choices: (DesignChoice & { theta2: number })[] } & RankedCandidates {
   const size = targetsExtent(run.task?.targets ?? []).size;
-  const facts = useMemo(() => (solutions ?? []).map((s) => candidateFacts(s, size)), [solutions, size]);
+  const ranked = useMemo(() => rankCandidates(run.solutions ?? [], size), [run.solutions, size]);
+  const { solutions, facts } = ranked;
   const choices = useMemo(() => {
     const sol = solutions?.[chosen];
     if (!sol) return [];
@@ -57,7 +62,7 @@ function useChoices(
       ...cognates.map((c) => ({ ...c, facts: placedFourBarFacts(c.design, c.theta2, sol.maxDistance, size) })),
     ];
   }, [solutions, chosen, facts, size]);
-  return { choices, facts };
+  return { choices, ...ranked };
 }
 
 /** A reason a task cannot be met, in words. */
@@ -105,9 +110,8 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
     });
   }, []);
   const canvasRef = useRef<HTMLCanvasElement>(null);
-  const solutions = run.solutions ?? [];
-  const chosen = Math.min(s.chosen, Math.max(0, solutions.length - 1));
-  const { choices, facts } = useChoices(run, chosen);
+  const chosen = Math.min(s.chosen, Math.max(0, (run.solutions?.length ?? 0) - 1));
+  const { choices, solutions, facts, cognateOf } = useChoices(run, chosen);
   const choice = choices[Math.min(shown, choices.length - 1)] ?? null;
   const task = useMemo(() => pathTaskOf(s), [s]);
   // The answers belong to the task they were computed for: after an edit they are drawn faint and not opened.
@@ -196,6 +200,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
         />
         <CandidateList
           solutions={solutions}
+          cognateOf={cognateOf}
           facts={facts}
           targets={run.task?.targets ?? s.targets}
           chosen={chosen}

@@ -1,4 +1,4 @@
-import { useLayoutEffect, useRef } from 'react';
+import { useLayoutEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import type { Point } from '../../../solver/kinematics';
 import type { PlacedFourBar } from '../../../synthesis/types';
@@ -8,7 +8,8 @@ import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
 import { usePanZoom } from '../../../shared/canvas/usePanZoom';
 import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
-import { fitView, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
+import { fitView, gridLines, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
+import { formatNumber } from '../../../shared/format';
 import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
 import { useElementSize } from '../../../shared/hooks/useElementSize';
 import type { ViewOffset } from '../../../shared/state/appState';
@@ -67,6 +68,11 @@ function worldAt(v: ViewTransform, p: ScreenPoint): Point {
   return { x: snap(w.x, step), y: snap(w.y, step) };
 }
 
+/** One grid step of the view (length unit): the spacing drawGrid draws at (about 64 px). */
+export function gridStep(v: ViewTransform): number {
+  return gridLines(v)?.step ?? niceStep(v.scale, 64);
+}
+
 /** Arrow keys move the selected target by a tenth of the grid step (Shift: a whole step); null for other keys. */
 function keyMove(e: { key: string; shiftKey: boolean }): [number, number] | null {
   const k = e.shiftKey ? 10 : 1;
@@ -80,12 +86,14 @@ function keyMove(e: { key: string; shiftKey: boolean }): [number, number] | null
 /**
  * The Path mode's canvas: the targets on a pan-and-zoom plane (click or tap adds one, drag moves one, Delete or
  * Backspace removes the selected one, arrow keys move it) with the chosen linkage moving through its cycle. The
- * canvas's data-view holds the transform (scale, centre, pan, size) so tests can find a world point's pixel.
+ * canvas's data-view holds the transform (scale, centre, pan, size) so tests can find a world point's pixel. A
+ * corner reads the grid's step (the scale) and, under a mouse, the point it points at (as a click would add it).
  */
 export function TargetCanvas(props: TargetCanvasProps) {
   const { targets, selected, curves, moving, bounds, view, onViewChange, canvasRef, st } = props;
   const wrapRef = useRef<HTMLDivElement>(null);
   const phase = useRef(0);
+  const [cursor, setCursor] = useState<Point | null>(null);
   const { width, height } = useElementSize(wrapRef);
   const transform = () => fitView(bounds, width, height, view);
 
@@ -159,9 +167,28 @@ export function TargetCanvas(props: TargetCanvasProps) {
           e.preventDefault();
         }
       }}
+      onPointerMove={(e) => {
+        if (e.pointerType !== 'mouse') return;
+        const r = e.currentTarget.getBoundingClientRect();
+        setCursor(worldAt(transform(), { x: e.clientX - r.left, y: e.clientY - r.top }));
+      }}
+      onPointerLeave={() => setCursor(null)}
       zoomLabels={st}
       hint={st.canvasHint}
+      overlay={<CanvasReadout step={width > 0 && height > 0 ? gridStep(transform()) : null} cursor={cursor} st={st} />}
       beforeHint={targets.length === 0 ? <p className="syn-canvas-empty">{st.canvasEmpty}</p> : null}
     />
+  );
+}
+
+/** The canvas's corner: the grid step, and the point under the mouse (both in the length unit; noise shown as 0). */
+function CanvasReadout({ step, cursor, st }: { step: number | null; cursor: Point | null; st: SynthesisMessages }) {
+  if (step === null) return null;
+  const n = (x: number) => formatNumber(x, 6, step);
+  return (
+    <p className="syn-canvas-readout" data-testid="canvas-readout">
+      <span>{st.gridScale(n(step))}</span>
+      {cursor ? <span> · {st.cursorAt(n(cursor.x), n(cursor.y))}</span> : null}
+    </p>
   );
 }

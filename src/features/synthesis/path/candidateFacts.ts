@@ -8,6 +8,12 @@ import type { PathDefect } from '../synthesisMessages';
 
 /** A transmission angle below this (degrees, the usual design rule) is a defect. */
 export const LOW_TRANSMISSION_DEG = 30;
+/** |S + L − P − Q| below this share of the longest link is a near-change-point design (it can switch branch). */
+export const CHANGE_POINT_SHARE = 1e-3;
+/** A transmission angle below this (degrees) is a near-toggle: the output can lock (reported instead of low μ). */
+export const TOGGLE_DEG = 5;
+/** Defects that rank a candidate last: it passes the targets, but the linkage will not run dependably. */
+export const RANK_LAST: readonly PathDefect[] = ['change-point', 'toggle'];
 /** A target missed by more than this fraction of the targets' size is a defect. */
 export const MISS_FRACTION = 0.01;
 /** Samples of a coupler curve over the motion (one turn, or one reachable interval). */
@@ -80,9 +86,21 @@ function minTransmissionDeg(design: PlacedFourBar, m: MotionRange): number {
   return Number.isFinite(least) ? radToDeg(least) : NaN;
 }
 
+/** |S + L − P − Q| as a share of the longest link L (0 at a change point). */
+export function grashofGap(design: PlacedFourBar): number {
+  const r = [design.links.r1, design.links.r2, design.links.r3, design.links.r4].sort((a, b) => a - b);
+  return Math.abs(r[0] + r[3] - r[1] - r[2]) / r[3];
+}
+
+/** True when the facts rank a candidate last (a near-change-point or near-toggle design). */
+export function ranksLast(f: CandidateFacts): boolean {
+  return f.defects.some((d) => RANK_LAST.includes(d.kind));
+}
+
 /**
  * The facts of one design for the targets: its Grashof type, the smallest transmission angle over its motion, its
- * defects (an input that cannot turn fully, μ below 30°, a target missed by more than 1 % of the targets' size) and
+ * defects (an input that cannot turn fully, near a change point, μ below 5° (a toggle) or else below 30°, a target
+ * missed by more than 1 % of the targets' size) and
  * its coupler curve over the motion.
  */
 export function placedFourBarFacts(
@@ -96,7 +114,10 @@ export function placedFourBarFacts(
   const muMinDeg = minTransmissionDeg(design, motion);
   const defects: CandidateFacts['defects'] = [];
   if (!c.inputIsCrank) defects.push({ kind: 'not-crank', value: 0 });
-  if (!(muMinDeg >= LOW_TRANSMISSION_DEG)) defects.push({ kind: 'low-transmission', value: muMinDeg });
+  const gap = grashofGap(design);
+  if (gap < CHANGE_POINT_SHARE) defects.push({ kind: 'change-point', value: gap });
+  if (muMinDeg < TOGGLE_DEG) defects.push({ kind: 'toggle', value: muMinDeg });
+  else if (!(muMinDeg >= LOW_TRANSMISSION_DEG)) defects.push({ kind: 'low-transmission', value: muMinDeg });
   if (maxDistance > MISS_FRACTION * size) defects.push({ kind: 'misses', value: maxDistance });
   return { type: c.type, grashof: c.grashof, muMinDeg, defects, motion, curve: couplerCurve(design, motion) };
 }

@@ -52,6 +52,20 @@ describe('pathTaskReasons', () => {
     expect(reasons[1].kind === 'pivot-far' && reasons[1].distance).toBeCloseTo(99 * Math.SQRT2, 12);
   });
 
+  it('draws the span line at twice the longest link plus the coupler offset', () => {
+    // |O2P| ≤ r2 + |AP| ≤ 1 + 1: two targets 4 apart are reachable from a pivot midway, 4.01 apart are not.
+    const apart = (d: number): PathTask => ({
+      targets: [
+        { x: 0, y: 0 },
+        { x: d, y: 0 },
+      ],
+      timing: { kind: 'free' },
+      bounds: { length: [0, 1], coupler: 1, pivot: { min: { x: 1, y: -1 }, max: { x: 3, y: 1 } } },
+    });
+    expect(pathTaskReasons(apart(3.99))).toEqual([]);
+    expect(pathTaskReasons(apart(4.01))).toEqual([{ kind: 'span', reach: 2, span: 4.01 }]);
+  });
+
   it('names two targets at different places given one θ2, a whole turn apart too', () => {
     const at = (deg: number[]): PathTask => ({
       targets: three,
