@@ -298,3 +298,36 @@ test.describe('synthesis: motion, the Burmester curves in view (issue 34, item 8
     await page.screenshot({ path: artifact('synthesis-motion-five-fit-1280.png') });
   });
 });
+
+test.describe('synthesis: motion, six to twenty poses by least squares (issue 34, item 9)', () => {
+  test('eight poses of the known linkage: its four-bar first, an error per pose near zero', async ({ page }) => {
+    const eight = [10, 50, 90, 130, 170, 210, 250, 290].map((t) => knownPose(deg(t)));
+    await page.goto(motionUrl(eight));
+    await expect(page.getByTestId('motion-method')).toHaveText(/^Six or more poses/);
+    await expect(page.getByTestId('approx-fourbars').getByRole('radio').first()).toBeChecked();
+    const { O2 } = await fixedPivots(page);
+    expectNear(O2, KNOWN.O2);
+    const rows = page.getByTestId('motion-errors').locator('tbody tr');
+    await expect(rows).toHaveCount(8);
+    const errors = await rows.evaluateAll((trs) => trs.map((tr) => Number(tr.getAttribute('data-position'))));
+    for (const e of errors) expect(e).toBeLessThan(1e-6);
+    await page.screenshot({ path: artifact('synthesis-motion-eight-1280.png'), fullPage: true });
+  });
+
+  test('Add pose goes past five, and a choice of four-bar shows its errors; at 390×844 too', async ({ browser }) => {
+    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+    const page = await context.newPage();
+    await page.goto(`${test.info().project.use.baseURL}?page=syn&syn=motion`);
+    for (let k = 0; k < 3; k++) await page.getByRole('button', { name: 'Add pose' }).click();
+    await expect(page.getByTestId('motion-mode')).toHaveAttribute('data-count', '6');
+    await expect(page.getByTestId('approx-count')).toHaveText(/best-fit dyads/);
+    const radios = page.getByTestId('approx-fourbars').getByRole('radio');
+    expect(await radios.count()).toBeGreaterThan(1);
+    await radios.nth(1).check();
+    await expect(page.getByTestId('motion-errors').locator('tbody tr')).toHaveCount(6);
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    expect(overflow).toBeLessThanOrEqual(0);
+    await page.screenshot({ path: artifact('synthesis-motion-six-390.png'), fullPage: true });
+    await context.close();
+  });
+});

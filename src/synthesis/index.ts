@@ -39,6 +39,15 @@ export type {
 } from './functionGeneration';
 export { motionDesign, threePositionConstruction, threePositionSynthesis } from './motionGeneration';
 export type { MotionDesign, PivotConstruction, PivotName, ThreePositionGiven } from './motionGeneration';
+export {
+  MAX_APPROX_DYADS,
+  MAX_APPROX_POSES,
+  MIN_APPROX_POSES,
+  approximateDyads,
+  approximateMotion,
+  poseErrors,
+} from './motionLeastSquares';
+export type { ApproxDyad, ApproxFourBar, ApproxMotion, PoseError } from './motionLeastSquares';
 export { screenPoses } from './defects';
 export type { MotionDefect, PinPair } from './defects';
 export { twoPositionRocker } from './twoPosition';

@@ -1,6 +1,7 @@
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../../../shared/state/appState';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
+import { formatNumber } from '../../../shared/format';
 import type { MotionMessages } from './motionMessages';
 import type { MotionOutcome } from './motionSolve';
 import { pivotsFor } from './motionEdits';
@@ -21,7 +22,7 @@ export interface MethodPanelProps {
 
 /**
  * The method's own controls for the number of poses: the rocker's ground and Q (two), the pivots (three), the dyad
- * picker (four), the Burmester points' four-bars (five).
+ * picker (four), the Burmester points' four-bars (five), the least-squares dyads' four-bars (six to twenty).
  */
 export function MethodPanel({ outcome, state, dispatch, cursor, setCursor, mt }: MethodPanelProps) {
   const s = state.synMotion;
@@ -68,6 +69,30 @@ export function MethodPanel({ outcome, state, dispatch, cursor, setCursor, mt }:
           picked={s.dyadPicks.length}
           mt={mt}
         />
+      );
+    case 6:
+      return (
+        <>
+          <p className="note" data-testid="approx-count">
+            {mt.approxDyads(outcome.dyads.length)}
+          </p>
+          {outcome.fourBars.length ? (
+            <ChoiceList
+              legend={mt.approxFourBarsTitle}
+              testId="approx-fourbars"
+              items={outcome.fourBars.map((b, i) => ({
+                label: mt.approxItem(
+                  i + 1,
+                  b.pairs ? `${b.pairs[0] + 1} + ${b.pairs[1] + 1}` : '',
+                  formatNumber(b.rms ?? NaN, 3),
+                ),
+                detail: `${t.types[b.type]} · ${b.defects.length ? b.defects.map((d) => mt.defectShort[d]).join(', ') : mt.noDefectsShort}`,
+              }))}
+              chosen={Math.min(s.choice, outcome.fourBars.length - 1)}
+              onChoose={(choice) => dispatch({ type: 'setSynChoice', choice })}
+            />
+          ) : null}
+        </>
       );
     default:
       return (

@@ -134,7 +134,7 @@ function useMotionGestures(
 }
 
 /**
- * The Motion mode's canvas: poses as points with turning handles (mouse, pen or touch; keys 1–5, arrows, [ ]),
+ * The Motion mode's canvas: poses as points with turning handles (mouse, pen or touch; keys 1–9, arrows, [ ]),
  * the method's construction and the linkage, pan and zoom (usePanZoom). data-poses gives each pose's point and
  * handle in CSS pixels, for tests that drag them as a person would.
  */
@@ -173,7 +173,7 @@ export function MotionCanvas(props: MotionCanvasProps) {
         className: 'synmode-canvas',
         role: 'img',
         'aria-label': `${labels.canvas}. ${labels.selected}`,
-        'aria-keyshortcuts': '1 2 3 4 5 ArrowLeft ArrowRight ArrowUp ArrowDown [ ] + - 0',
+        'aria-keyshortcuts': '1 2 3 4 5 6 7 8 9 ArrowLeft ArrowRight ArrowUp ArrowDown [ ] + - 0',
         'data-testid': 'motion-canvas',
       }}
       onKeyDown={onKeyDown}

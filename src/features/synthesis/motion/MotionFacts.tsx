@@ -1,5 +1,6 @@
 import type { Messages } from '../../../shared/i18n/messages';
-import { formatNumber } from '../../../shared/format';
+import { radToDeg } from '../../../solver';
+import { formatDeg, formatNumber } from '../../../shared/format';
 import type { MotionMessages } from './motionMessages';
 import type { MotionCandidate } from './motionSolve';
 
@@ -10,7 +11,36 @@ export interface MotionFactsProps {
   t: Messages;
 }
 
-/** The design's lengths, its type and its checks in words (order, branch and Grashof defects, or none). */
+/** Six or more poses: the design's error at each pose (position, length unit; angle, degrees). */
+function PoseErrorTable({ candidate, mt }: { candidate: MotionCandidate; mt: MotionMessages }) {
+  if (!candidate.errors) return null;
+  return (
+    <>
+      <h4 className="synmode-subtitle">{mt.errorsTitle}</h4>
+      <table className="synmode-table" data-testid="motion-errors">
+        <caption className="sr-only">{mt.errorsCaption}</caption>
+        <thead>
+          <tr>
+            <th scope="col">{mt.columnPose}</th>
+            <th scope="col">{mt.columnPositionError}</th>
+            <th scope="col">{mt.columnAngleError}</th>
+          </tr>
+        </thead>
+        <tbody>
+          {candidate.errors.map((e, i) => (
+            <tr key={i} data-position={e.position} data-angle={e.angle}>
+              <td>{i + 1}</td>
+              <td>{formatNumber(e.position, 3)}</td>
+              <td>{formatDeg(radToDeg(e.angle), 2)}</td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+    </>
+  );
+}
+
+/** The design's lengths, its type and its checks in words (order, branch and Grashof defects, or none); the error at each pose for six or more. */
 export function MotionFacts({ candidate, mt, t }: MotionFactsProps) {
   const { links, O2, groundAngle } = candidate.design;
   const O4 = { x: O2.x + links.r1 * Math.cos(groundAngle), y: O2.y + links.r1 * Math.sin(groundAngle) };
@@ -38,6 +68,7 @@ export function MotionFacts({ candidate, mt, t }: MotionFactsProps) {
           {mt.noDefects}
         </p>
       )}
+      <PoseErrorTable candidate={candidate} mt={mt} />
     </div>
   );
 }

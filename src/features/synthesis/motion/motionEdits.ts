@@ -18,7 +18,8 @@ const same = (a: PoseDeg, b: PoseDeg) => a.x === b.x && a.y === b.y && a.angleDe
 export function nextPose(poses: readonly PoseDeg[]): PoseDeg | null {
   const n = poses.length;
   if (n >= MAX_POSES) return null;
-  if (poses.every((p, i) => same(p, DEFAULT_POSES_FIVE[i]))) return DEFAULT_POSES_FIVE[n];
+  if (n < DEFAULT_POSES_FIVE.length && poses.every((p, i) => same(p, DEFAULT_POSES_FIVE[i])))
+    return DEFAULT_POSES_FIVE[n];
   const a = poses[n - 2];
   const b = poses[n - 1];
   const r = (v: number) => Number(v.toPrecision(10));

@@ -10,8 +10,8 @@ import { motionMessagesZhTw } from './motionMessagesZhTw';
  */
 export interface MotionMessages {
   intro: string;
-  /** What the page does with this many poses (2 to 5). */
-  methodFor: Record<2 | 3 | 4 | 5, string>;
+  /** What the page does with this many poses (2 to 5; 6 for 6 to 20). */
+  methodFor: Record<2 | 3 | 4 | 5 | 6, string>;
   posesTitle: string;
   poseName: (n: number) => string;
   tableCaption: string;
@@ -49,6 +49,16 @@ export interface MotionMessages {
   burmesterPoints: (n: number) => string;
   fourBarsTitle: string;
   fourBarItem: (n: number, pairs: string) => string;
+  /** Six or more poses: how many least-squares dyads, the list's title, an entry (dyads "1 + 3", rms error). */
+  approxDyads: (n: number) => string;
+  approxFourBarsTitle: string;
+  approxItem: (n: number, pairs: string, rms: string) => string;
+  /** The chosen four-bar's error at each pose: title, caption, columns. */
+  errorsTitle: string;
+  errorsCaption: string;
+  columnPose: string;
+  columnPositionError: string;
+  columnAngleError: string;
   groundLength: string;
   groundAuto: (length: string) => string;
   timeRatio: string;
@@ -76,6 +86,7 @@ export interface MotionMessages {
     atPole: string;
     noCrankPivot: (ground: string, rocker: string) => string;
     noBurmester: string;
+    noApprox: string;
     pickTwo: (picked: number) => string;
   };
 }

@@ -3,12 +3,13 @@ import type { MotionMessages } from './motionMessages';
 /** English strings of the Motion mode. */
 export const motionMessagesEn: MotionMessages = {
   intro:
-    'Place 2 to 5 poses of the coupler: drag a pose’s point to move it and its handle to turn it, or type them in the table.',
+    'Place 2 to 20 poses of the coupler: drag a pose’s point to move it and its handle to turn it, or type them in the table.',
   methodFor: {
     2: 'Two poses: the body turns about their pole as a rocker, and a crank swings it between them (two-position rocker synthesis).',
     3: 'Three poses: place two pivots; the other two are the centres of the circles through their three positions.',
     4: 'Four poses: every point of the centre-point curve is a fixed pivot with its moving pivot on the circle-point curve. Pick two.',
     5: 'Five poses: only the Burmester points (at most four) keep a pivot on a circle through all five; each two make a four-bar.',
+    6: 'Six or more poses: no four-bar meets them all, so each dyad is the best fit by least squares (its moving pivot’s positions as near a circle as they can be); each two make a four-bar, with its error at every pose.',
   },
   posesTitle: 'Poses',
   poseName: (n) => `Pose ${n}`,
@@ -25,7 +26,7 @@ export const motionMessagesEn: MotionMessages = {
   mustBeBetween: (min, max) => `it must lie from ${min} to ${max}`,
   canvasLabel: 'Motion synthesis canvas',
   canvasHint:
-    'Drag a pose’s point or its handle; drag elsewhere to pan. Keys: 1–5 choose a pose, arrows move it (Shift: finer), [ and ] turn it, + − 0 zoom.',
+    'Drag a pose’s point or its handle; drag elsewhere to pan. Keys: 1–9 choose a pose, arrows move it (Shift: finer), [ and ] turn it, + − 0 zoom.',
   zoomIn: 'Zoom in',
   zoomOut: 'Zoom out',
   resetView: 'Fit the view',
@@ -52,6 +53,16 @@ export const motionMessagesEn: MotionMessages = {
     n === 0 ? 'No Burmester points: these poses have none.' : `${n} Burmester points (marked ◆ on the canvas).`,
   fourBarsTitle: 'Four-bars from the Burmester points',
   fourBarItem: (n, pairs) => `Four-bar ${n} (points ${pairs})`,
+  approxDyads: (n) =>
+    n === 0 ? 'No dyad fits these poses.' : `${n} best-fit dyads (marked ◆ and numbered on the canvas).`,
+  approxFourBarsTitle: 'Four-bars from the best-fit dyads',
+  approxItem: (n, pairs, rms) => `Four-bar ${n} (dyads ${pairs}): rms error ${rms}`,
+  errorsTitle: 'Error at each pose',
+  errorsCaption:
+    'Where the coupler is when the crank points through each pose’s crank pin: distance and turn from the pose',
+  columnPose: 'Pose',
+  columnPositionError: 'position error',
+  columnAngleError: 'angle error (°)',
   groundLength: 'Ground length |O2 O4|',
   groundAuto: (length) => `auto: ${length}`,
   timeRatio: 'Time ratio Q',
@@ -86,6 +97,7 @@ export const motionMessagesEn: MotionMessages = {
     atPole: 'The pose point is the pole itself: move a pose so that the rocker has a length.',
     noCrankPivot: (ground, rocker) =>
       `No crank pivot lies at ground length ${ground} (rocker ${rocker}). Try a longer ground: for Q = 1 it must exceed the rocker.`,
+    noApprox: 'No two best-fit dyads make a four-bar (their pivots coincide). Move a pose.',
     noBurmester: 'These five poses have no Burmester points, so no four-bar reaches all five exactly. Move a pose.',
     pickTwo: (picked) => (picked === 0 ? 'Pick two dyads on the centre-point curve.' : 'Pick one more dyad.'),
   },

@@ -2,12 +2,13 @@ import type { MotionMessages } from './motionMessages';
 
 /** Traditional Chinese (Taiwan) strings of the Motion mode. */
 export const motionMessagesZhTw: MotionMessages = {
-  intro: '放置耦桿的 2 至 5 個姿態：拖曳姿態的點可移動它，拖曳其把手可旋轉它，也可以在表格中輸入。',
+  intro: '放置耦桿的 2 至 20 個姿態：拖曳姿態的點可移動它，拖曳其把手可旋轉它，也可以在表格中輸入。',
   methodFor: {
     2: '兩個姿態：物體繞兩姿態的轉動極點擺動成為搖桿，由曲柄在兩位置之間驅動（兩位置搖桿合成）。',
     3: '三個姿態：放置兩個樞軸；另外兩個樞軸是通過其三個位置之圓的圓心。',
     4: '四個姿態：中心點曲線上的每一點都是固定樞軸，其活動樞軸位於圓點曲線上。請選取兩個。',
     5: '五個姿態：只有 Burmester 點（至多四個）能讓樞軸在五個姿態中都位於同一圓上；每兩點構成一個四連桿。',
+    6: '六個以上姿態：沒有四連桿能到達全部姿態，因此每個雙桿組都以最小平方法求最佳擬合（其活動樞軸的各位置盡量接近一個圓）；每兩個構成一個四連桿，並列出各姿態的誤差。',
   },
   posesTitle: '姿態',
   poseName: (n) => `姿態 ${n}`,
@@ -23,7 +24,7 @@ export const motionMessagesZhTw: MotionMessages = {
   mustBeBetween: (min, max) => `必須介於 ${min} 與 ${max} 之間`,
   canvasLabel: '運動合成畫布',
   canvasHint:
-    '拖曳姿態的點或把手；拖曳其他位置可平移。按鍵：1–5 選擇姿態，方向鍵移動（Shift 較細），[ 與 ] 旋轉，+ − 0 縮放。',
+    '拖曳姿態的點或把手；拖曳其他位置可平移。按鍵：1–9 選擇姿態，方向鍵移動（Shift 較細），[ 與 ] 旋轉，+ − 0 縮放。',
   zoomIn: '放大',
   zoomOut: '縮小',
   resetView: '符合視窗',
@@ -49,6 +50,14 @@ export const motionMessagesZhTw: MotionMessages = {
     n === 0 ? '沒有 Burmester 點：這些姿態沒有解。' : `${n} 個 Burmester 點（畫布上以 ◆ 標示）。`,
   fourBarsTitle: '由 Burmester 點構成的四連桿',
   fourBarItem: (n, pairs) => `四連桿 ${n}（點 ${pairs}）`,
+  approxDyads: (n) => (n === 0 ? '沒有雙桿組能擬合這些姿態。' : `${n} 個最佳擬合雙桿組（在畫布上以 ◆ 標示並編號）。`),
+  approxFourBarsTitle: '由最佳擬合雙桿組構成的四連桿',
+  approxItem: (n, pairs, rms) => `四連桿 ${n}（雙桿組 ${pairs}）：均方根誤差 ${rms}`,
+  errorsTitle: '各姿態的誤差',
+  errorsCaption: '曲柄指向各姿態的曲柄銷時耦桿的位置：與該姿態的距離與轉角差',
+  columnPose: '姿態',
+  columnPositionError: '位置誤差',
+  columnAngleError: '角度誤差（°）',
   groundLength: '機架長度 |O2 O4|',
   groundAuto: (length) => `自動：${length}`,
   timeRatio: '時間比 Q',
@@ -79,6 +88,7 @@ export const motionMessagesZhTw: MotionMessages = {
     atPole: '姿態點就是轉動極點：請移動姿態，使搖桿有長度。',
     noCrankPivot: (ground, rocker) =>
       `在機架長度 ${ground}（搖桿 ${rocker}）處沒有曲柄樞軸。請加長機架：Q = 1 時機架必須長於搖桿。`,
+    noApprox: '沒有兩個最佳擬合雙桿組能構成四連桿（其樞軸重合）。請移動一個姿態。',
     noBurmester: '這五個姿態沒有 Burmester 點，因此沒有四連桿能精確到達全部五個姿態。請移動一個姿態。',
     pickTwo: (picked) => (picked === 0 ? '請在中心點曲線上選取兩個雙桿組。' : '請再選取一個雙桿組。'),
   },

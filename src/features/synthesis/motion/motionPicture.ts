@@ -81,8 +81,8 @@ function extendByNear(b: Bounds, points: readonly Point[], c: Point, spread: num
 /**
  * The box the view fits: the poses, the placed pivots and the chosen linkage's fixed pivots; (two poses) the pole;
  * (four poses) the stretch of each centre-point and circle-point curve nearest the poses, not their asymptotic arms;
- * (five poses) the Burmester points and their circle points, but those more than FAR_POINT_FACTOR times farther than
- * the nearest one (or the spread).
+ * (five poses) the Burmester points and (six or more) the least-squares dyads, with their circle points, but those
+ * more than FAR_POINT_FACTOR times farther than the nearest one (or the spread).
  */
 export function motionBounds(pic: MotionPicture): Bounds {
   const b = emptyBounds();
@@ -113,8 +113,9 @@ export function motionBounds(pic: MotionPicture): Bounds {
       );
     }
   }
-  if (pic.outcome.count === 5 && pic.outcome.points.length) {
-    const points = pic.outcome.points.flatMap((d) => [d.center, toPlane(pic.poses[0], d.circle)]);
+  const marked = pic.outcome.count === 5 ? pic.outcome.points : pic.outcome.count === 6 ? pic.outcome.dyads : [];
+  if (marked.length) {
+    const points = marked.flatMap((d) => [d.center, toPlane(pic.poses[0], d.circle)]);
     const d = points.map((p) => Math.hypot(p.x - c.x, p.y - c.y));
     const reach = FAR_POINT_FACTOR * Math.max(spread, Math.min(...d));
     points.forEach((p, i) => {
@@ -249,6 +250,7 @@ function drawMethod(ctx: DrawContext, v: ViewTransform, pic: MotionPicture): voi
   }
   // Numbered as the four-bar list names them ("points 1 + 3").
   if (o.count === 5) o.points.forEach((d, i) => drawDyad(ctx, v, pic.poses[0], d, 'diamond', String(i + 1)));
+  if (o.count === 6) o.dyads.forEach((d, i) => drawDyad(ctx, v, pic.poses[0], d, 'diamond', String(i + 1)));
   if (o.count === 2 && o.pole) {
     drawWorldCircle(ctx, v, o.pole, o.rocker, THEME.reference, [2, 3]);
     drawMarker(ctx, v, o.pole, 'cross', CONSTRUCTION_COLOR, 5);

@@ -6,6 +6,7 @@
 import { PI, angleDiff, classify, degToRad } from '../../../solver';
 import type { LinkageType, Point } from '../../../solver';
 import {
+  approximateMotion,
   burmesterCurves,
   burmesterFourBars,
   burmesterPoints,
@@ -15,11 +16,13 @@ import {
   twoPositionRocker,
 } from '../../../synthesis';
 import type {
+  ApproxDyad,
   BurmesterPair,
   MotionDefect,
   PivotConstruction,
   PlacedFourBar,
   Pose,
+  PoseError,
   ThreePositionGiven,
   TwoPositionRocker,
 } from '../../../synthesis';
@@ -31,8 +34,11 @@ export interface MotionCandidate {
   theta2: number[];
   defects: MotionDefect[];
   type: LinkageType;
-  /** Five poses: the Burmester points it is made of (crank's, rocker's; 0-based). */
+  /** Five or more poses: the Burmester points or least-squares dyads it is made of (crank's, rocker's; 0-based). */
   pairs?: [number, number];
+  /** Six or more poses: its error at each pose (approximateMotion's), and their root mean square (length unit). */
+  errors?: PoseError[];
+  rms?: number;
 }
 
 /** Why a method has no design (said in words by the page). */
@@ -45,6 +51,7 @@ export type MotionProblem =
   | { code: 'atPole' }
   | { code: 'noCrankPivot'; ground: number; rocker: number }
   | { code: 'noBurmester' }
+  | { code: 'noApprox' }
   | { code: 'pickTwo'; picked: number };
 
 /** Two poses: the pole they turn about (the rocker pivot O4) and the crank-rockers that swing it between them. */
@@ -84,8 +91,17 @@ export interface FivePoseOutcome {
   problem: MotionProblem | null;
 }
 
+/** Six to twenty poses (count 6 stands for all of them): the least-squares dyads and their four-bars. */
+export interface ManyPoseOutcome {
+  count: 6;
+  dyads: ApproxDyad[];
+  fourBars: MotionCandidate[];
+  chosen: MotionCandidate | null;
+  problem: MotionProblem | null;
+}
+
 /** What the Motion mode shows for its poses. */
-export type MotionOutcome = TwoPoseOutcome | ThreePoseOutcome | FourPoseOutcome | FivePoseOutcome;
+export type MotionOutcome = TwoPoseOutcome | ThreePoseOutcome | FourPoseOutcome | FivePoseOutcome | ManyPoseOutcome;
 
 /** Samples of the centre-point curve per closed branch: about a pixel apart on a phone-sized canvas. */
 export const CURVE_SAMPLES = 600;
@@ -186,6 +202,25 @@ function fivePoses(poses: Pose[], s: SynMotionState): FivePoseOutcome {
   return { count: 5, points, fourBars, chosen: fourBars[Math.min(s.choice, fourBars.length - 1)], problem: null };
 }
 
+/** Six to twenty poses: approximateMotion's dyads and four-bars (fewest defects, then smallest rms), the chosen one. */
+function manyPoses(poses: Pose[], s: SynMotionState): ManyPoseOutcome {
+  let out: ReturnType<typeof approximateMotion>;
+  try {
+    out = approximateMotion(poses);
+  } catch {
+    return { count: 6, dyads: [], fourBars: [], chosen: null, problem: { code: 'degenerate' } };
+  }
+  const fourBars = out.fourBars.map((b) => ({
+    ...candidate(b.design, b.theta2, b.defects),
+    pairs: b.pairs,
+    errors: b.errors,
+    rms: b.rms,
+  }));
+  if (!fourBars.length) return { count: 6, dyads: out.dyads, fourBars, chosen: null, problem: { code: 'noApprox' } };
+  const chosen = fourBars[Math.min(s.choice, fourBars.length - 1)];
+  return { count: 6, dyads: out.dyads, fourBars, chosen, problem: null };
+}
+
 /**
  * The pole of two poses: the one point the displacement from pose 1 to pose 2 leaves in place, so the body turns
  * about it; c = (P2 − e^{iΔ} P1) / (1 − e^{iΔ}), Δ the turn wrapped to (−π, π]. Null without a turn.
@@ -251,7 +286,9 @@ export function solveMotion(s: SynMotionState): MotionOutcome {
       return threePoses(poses, s);
     case 4:
       return fourPoses(poses, s);
-    default:
+    case 5:
       return fivePoses(poses, s);
+    default:
+      return manyPoses(poses, s);
   }
 }

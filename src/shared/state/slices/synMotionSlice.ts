@@ -21,7 +21,10 @@ export type PivotChoice = 'moving' | 'fixed';
 
 /** The synthesis page's Motion mode: the poses and what the designer chose for their count. */
 export interface SynMotionState {
-  /** 2 to 5 poses; their count chooses the method (two-position rocker, three positions, Burmester curves, points). */
+  /**
+   * 2 to 20 poses; their count chooses the method (two-position rocker, three positions, Burmester curves, points,
+   * least squares for 6 or more).
+   */
   poses: PoseDeg[];
   /** Three poses: which pivots are placed. */
   pivotChoice: PivotChoice;
@@ -39,13 +42,13 @@ export interface SynMotionState {
 
 /** Fewest and most poses. */
 export const MIN_POSES = 2;
-export const MAX_POSES = 5;
+export const MAX_POSES = 20;
 /** Largest time ratio accepted (Q = 10 already needs a crank pivot angle of 147°). */
 export const MAX_TIME_RATIO = 10;
 /** Largest |coordinate| of a pose, pivot or pick (length unit): the canvas cannot show more spread than this. */
 export const COORD_MAX = 1e9;
-/** Largest index of a shown result (five poses give at most 6 four-bars). */
-export const MAX_CHOICE = 5;
+/** Largest index of a shown result (five poses give at most 6 four-bars, 6 to 20 poses at most 15). */
+export const MAX_CHOICE = 14;
 
 /**
  * Five poses of the coupler point of a crank-rocker (r = 10, 3, 9, 7 placed at O2 = (−5, −6), P at 5 and 34°)
@@ -180,7 +183,7 @@ const pointItem =
     return r.ok ? { ok: true, value: { x: r.value[0], y: r.value[1] } } : r;
   };
 
-/** Poses as x,y,deg;x,y,deg;… (2 to 5; lengths to 10 significant digits, angles to 1e-9° in (−180, 180]). */
+/** Poses as x,y,deg;x,y,deg;… (2 to 20; lengths to 10 significant digits, angles to 1e-9° in (−180, 180]). */
 export const posesCodec: Codec<PoseDeg[]> = listOf(
   MIN_POSES,
   MAX_POSES,
@@ -205,7 +208,7 @@ export const picksCodec: Codec<Point[]> = listOf(0, 2, 'picks x,y', pointItem('p
 const choiceCodec: Codec<number> = {
   parse(raw) {
     const s = raw.trim();
-    return /^\d$/.test(s) && Number(s) <= MAX_CHOICE
+    return /^\d{1,2}$/.test(s) && Number(s) <= MAX_CHOICE
       ? { ok: true, value: Number(s) }
       : { ok: false, why: `expected a whole number from 0 to ${MAX_CHOICE}` };
   },

@@ -83,14 +83,17 @@ describe('roundToPixel', () => {
 });
 
 describe('nextPose', () => {
-  it('grows the default poses into the default five, then steps along the last two', () => {
+  it('grows the default poses into the default five, then steps along the last two up to twenty', () => {
     expect(nextPose(DEFAULT_POSES_FIVE.slice(0, 3))).toEqual(DEFAULT_POSES_FIVE[3]);
     const mine = [
       { x: 0, y: 0, angleDeg: 10 },
       { x: 1, y: 2, angleDeg: 30 },
     ];
     expect(nextPose(mine)).toEqual({ x: 2, y: 4, angleDeg: 50 });
-    expect(nextPose(DEFAULT_POSES_FIVE)).toBeNull();
+    // Past five the poses step on (least squares takes 6 to 20); twenty is the most.
+    expect(nextPose(DEFAULT_POSES_FIVE)).toEqual({ x: -6.8, y: -4, angleDeg: 45 });
+    const twenty = Array.from({ length: 20 }, (_, i) => ({ x: i, y: 0, angleDeg: i }));
+    expect(nextPose(twenty)).toBeNull();
   });
 });
 

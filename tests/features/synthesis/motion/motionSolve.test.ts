@@ -236,6 +236,36 @@ describe('solveMotion with five poses', () => {
   });
 });
 
+describe('solveMotion with six to twenty poses (issue 34, item 9)', () => {
+  it('fits 8 poses of the known linkage by least squares: its pivots first, zero error at every pose', () => {
+    const poses = [10, 50, 90, 130, 170, 210, 250, 290].map((t) => knownPose(deg(t)));
+    const o = solveMotion(motion({ poses }));
+    if (o.count !== 6) throw new Error('not least squares');
+    expect(o.problem).toBeNull();
+    const chosen = o.chosen!;
+    expect(chosen.defects).toEqual([]);
+    expect(dist(chosen.design.O2, KNOWN.O2)).toBeLessThan(1e-7);
+    expect(chosen.errors).toHaveLength(8);
+    for (const e of chosen.errors!) expect(e.position).toBeLessThan(1e-9);
+    // Another choice is another four-bar of the dyads, with a larger rms error.
+    const other = solveMotion(motion({ poses, choice: 1 }));
+    if (other.count !== 6 || !other.chosen) throw new Error('no second four-bar');
+    expect(other.chosen.rms!).toBeGreaterThan(chosen.rms!);
+  });
+
+  it('gives each pose an error when the poses are not on one linkage', () => {
+    const poses = [10, 50, 90, 130, 170, 210].map((t, i) => {
+      const p = knownPose(deg(t));
+      return { ...p, x: p.x + (i % 2 ? 0.03 : -0.03) };
+    });
+    const o = solveMotion(motion({ poses }));
+    if (o.count !== 6 || !o.chosen) throw new Error('no design');
+    const worst = Math.max(...o.chosen.errors!.map((e) => e.position));
+    expect(worst).toBeGreaterThan(1e-3);
+    expect(worst).toBeLessThan(0.2);
+  });
+});
+
 describe('toPose', () => {
   it('turns degrees into the synthesis module’s radians', () => {
     expect(toPose({ x: 1, y: 2, angleDeg: 90 })).toEqual({ x: 1, y: 2, angle: Math.PI / 2 });

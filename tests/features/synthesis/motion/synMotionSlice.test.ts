@@ -95,8 +95,8 @@ describe('Motion URL keys', () => {
   });
 
   it.each([
-    ['ps', '1,2,3', /expected 2 to 5 poses/],
-    ['ps', '0,0,0;1,1,1;2,2,2;3,3,3;4,4,4;5,5,5', /expected 2 to 5 poses.*got 6/],
+    ['ps', '1,2,3', /expected 2 to 20 poses/],
+    ['ps', Array.from({ length: 21 }, (_, i) => `${i},${i},${i}`).join(';'), /expected 2 to 20 poses.*got 21/],
     ['ps', '0,0,0;1,1', /pose 2 must be 3 comma-separated numbers, got 2/],
     ['ps', '0,0,0;1,abc,2', /pose 2: "abc" is not a number/],
     ['ps', '0,0,0;1,1e12,2', /pose 2: a value is beyond/],
@@ -104,8 +104,8 @@ describe('Motion URL keys', () => {
     ['pc', 'sideways', /expected moving or fixed/],
     ['pv', '1,2', /expected 2 to 2 pivots/],
     ['dy', '1,2;3,4;5,6', /expected 0 to 2 picks/],
-    ['mc', '6', /whole number from 0 to 5/],
-    ['mc', '-1', /whole number from 0 to 5/],
+    ['mc', '15', /whole number from 0 to 14/],
+    ['mc', '-1', /whole number from 0 to 14/],
     ['mg', '0', /auto or a length above 0/],
     ['mg', '-3', /auto or a length above 0/],
     ['mq', '0.5', /time ratio from 1 to 10/],
@@ -115,6 +115,15 @@ describe('Motion URL keys', () => {
     expect(r.ignored.map((p) => p.key)).toEqual([key]);
     expect(r.ignored[0].why).toMatch(why);
     expect(r.state).toEqual(DEFAULT_STATE);
+  });
+
+  it('reads 6 to 20 poses and a choice up to 14 (least squares, issue 34 item 9)', () => {
+    const twenty = Array.from({ length: 20 }, (_, i) => ({ x: i, y: i / 2, angleDeg: 2 * i }));
+    const text = twenty.map((p) => `${p.x},${p.y},${p.angleDeg}`).join(';');
+    const r = parseUrl(`ps=${encodeURIComponent(text)}&mc=14`, DEFAULT_STATE, quiet);
+    expect(r.ignored).toEqual([]);
+    expect(r.state.synMotion.poses).toEqual(twenty);
+    expect(r.state.synMotion.choice).toBe(14);
   });
 
   it('rounds a dragged pose to 10 significant digits and 1e-9° on the way out', () => {
