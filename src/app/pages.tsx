@@ -15,6 +15,9 @@ const MechanismPage = lazy(() =>
   import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
 );
 
+/** The address's query as the app was opened (before the URL sync rewrites it): the mechanism page says why a mech= was refused. */
+const OPENED_SEARCH = typeof window === 'undefined' ? '' : window.location.search;
+
 /** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
 const createSynthesisPool = () => createSolverPool();
 
@@ -81,7 +84,7 @@ export const PAGES: Readonly<Record<Page, PageEntry>> = {
       loading(
         MECHANISM_LABEL,
         s.state.shell.locale,
-        <MechanismPage state={s.state} dispatch={s.dispatch} client={s.client} />,
+        <MechanismPage state={s.state} dispatch={s.dispatch} client={s.client} openedSearch={OPENED_SEARCH} />,
       ),
     sideColumns: false,
     layoutClass: 'mechanism',

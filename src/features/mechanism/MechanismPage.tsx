@@ -43,6 +43,8 @@ export interface MechanismPageProps {
   state: AppState;
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
+  /** The query the app was opened with, to say why its mech= was refused; default none. */
+  openedSearch?: string;
   /** In the embed (page=mech in embed.html or <fourbar-lab>): the linkage, Play and the plots only; default false. */
   embedded?: boolean;
 }
@@ -53,11 +55,11 @@ export interface MechanismPageProps {
  * against the input and the exports. The template and the edited linkage live in the mech slice (URL tpl, mech);
  * the input, Play and the view are the page's own. A new template starts the page afresh (its key).
  */
-export function MechanismPage({ state, dispatch, client, embedded = false }: MechanismPageProps) {
+export function MechanismPage({ state, dispatch, client, embedded = false, openedSearch = '' }: MechanismPageProps) {
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited } = state.mech;
   // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
-  const [refused, setRefused] = useState(linkRefusal);
+  const [refused, setRefused] = useState(() => linkRefusal(openedSearch));
   return (
     <div className={`mech${embedded ? ' mech-embedded' : ''}`} data-testid="mechanism-page">
       {!embedded && (
@@ -98,10 +100,9 @@ export function MechanismPage({ state, dispatch, client, embedded = false }: Mec
   );
 }
 
-/** Why the mech= of the address the page was opened at is refused, or null (none, or a good one). */
-function linkRefusal(): string | null {
-  if (typeof window === 'undefined') return null;
-  const raw = new URLSearchParams(window.location.search).get('mech');
+/** Why the mech= of a query is refused, or null (none, or a good one). */
+function linkRefusal(search: string): string | null {
+  const raw = new URLSearchParams(search).get('mech');
   if (raw === null) return null;
   const r = mechSpecCodec.parse(raw);
   return r.ok ? null : r.why;
