@@ -267,6 +267,15 @@ test.describe('mechanism page', () => {
     await expect(play).toBeInViewport();
   });
 
+  test('the embed shows the page at 600×450: the linkage, Play and the plots', async ({ page }) => {
+    await page.setViewportSize({ width: 600, height: 450 });
+    await page.goto('./embed.html?page=mech&tpl=slider-crank');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(page.getByRole('button', { name: 'Play' })).toBeInViewport();
+    await expect(page.getByRole('button', { name: 'Add pin' })).toBeHidden();
+    await page.screenshot({ path: artifact('mechanism-embed-600.png') });
+  });
+
   test('speaks zh-TW and has no axe violations', async ({ page }) => {
     await page.goto('./?page=mech&tpl=slider-crank&lang=zh-TW');
     await expect(page.getByRole('tab', { name: '機構', exact: true })).toHaveAttribute('aria-selected', 'true');

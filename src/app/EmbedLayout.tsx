@@ -1,5 +1,5 @@
 import './EmbedLayout.css';
-import { useCallback, useState } from 'react';
+import { Suspense, lazy, useCallback, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../shared/state/appState';
 import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../shared/url/url';
@@ -62,6 +62,11 @@ function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Di
   );
 }
 
+// The mechanism page (page=mech) loads only when an embed asks for it.
+const MechanismPage = lazy(() =>
+  import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
+);
+
 /**
  * The compact widget for an iframe: title bar with language and a link to the full simulator, the linkage
  * with the controls beside it, then the panels the URL asks for (numbers, plots, export).
@@ -97,35 +102,43 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
           <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
           <UrlNotice ignored={initial.ignored} source={ownsPage ? 'link' : 'attributes'} />
           <main className="embed-main">
-            <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
-              <div className="embed-stage">
-                <LinkageStage
-                  cycle={cycle}
-                  design={design}
-                  onViewChange={onViewChange}
-                  onTheta2={crankMovable ? onTheta2 : undefined}
-                  onCoupler={couplerMovable ? onCoupler : undefined}
-                  onSize={onCanvasSize}
-                  hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
-                  onShown={onShown}
-                  forceLayer={forceLayer}
-                  stage={session.stage}
-                />
-              </div>
-              {show('controls') ? (
-                <div className="embed-controls">
-                  <ControlsPanel
-                    state={state}
-                    dispatch={dispatch}
-                    locked={embed.locked}
-                    compact
-                    rocking={rocking}
-                    onStep={onStep}
-                  />
+            {state.shell.page === 'mechanism' ? (
+              <Suspense fallback={null}>
+                <MechanismPage state={state} dispatch={dispatch} client={session.client} embedded />
+              </Suspense>
+            ) : (
+              <>
+                <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
+                  <div className="embed-stage">
+                    <LinkageStage
+                      cycle={cycle}
+                      design={design}
+                      onViewChange={onViewChange}
+                      onTheta2={crankMovable ? onTheta2 : undefined}
+                      onCoupler={couplerMovable ? onCoupler : undefined}
+                      onSize={onCanvasSize}
+                      hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
+                      onShown={onShown}
+                      forceLayer={forceLayer}
+                      stage={session.stage}
+                    />
+                  </div>
+                  {show('controls') ? (
+                    <div className="embed-controls">
+                      <ControlsPanel
+                        state={state}
+                        dispatch={dispatch}
+                        locked={embed.locked}
+                        compact
+                        rocking={rocking}
+                        onStep={onStep}
+                      />
+                    </div>
+                  ) : null}
                 </div>
-              ) : null}
-            </div>
-            <EmbedPanels session={session} show={show} theta2Locked={!crankMovable} />
+                <EmbedPanels session={session} show={show} theta2Locked={!crankMovable} />
+              </>
+            )}
           </main>
         </div>
       </FramePoseProvider>

@@ -16,6 +16,9 @@ const MechanismPage = lazy(() =>
 );
 const SpatialPage = lazy(() => import('../features/spatial/SpatialPage').then((m) => ({ default: m.SpatialPage })));
 
+/** The address's query as the app was opened (before the URL sync rewrites it): the mechanism page says why a mech= was refused. */
+const OPENED_SEARCH = typeof window === 'undefined' ? '' : window.location.search;
+
 /** The synthesis page's pool of solver workers (cores − 1, at least one), made on its first run. */
 const createSynthesisPool = () => createSolverPool();
 
@@ -83,7 +86,7 @@ export const PAGES: Readonly<Record<Page, PageEntry>> = {
       loading(
         MECHANISM_LABEL,
         s.state.shell.locale,
-        <MechanismPage state={s.state} dispatch={s.dispatch} client={s.client} />,
+        <MechanismPage state={s.state} dispatch={s.dispatch} client={s.client} openedSearch={OPENED_SEARCH} />,
       ),
     sideColumns: false,
     layoutClass: 'mechanism',

@@ -43,6 +43,10 @@ export interface MechanismPageProps {
   state: AppState;
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
+  /** The query the app was opened with, to say why its mech= was refused; default none. */
+  openedSearch?: string;
+  /** In the embed (page=mech in embed.html or <fourbar-lab>): the linkage, Play and the plots only; default false. */
+  embedded?: boolean;
 }
 
 /**
@@ -51,17 +55,19 @@ export interface MechanismPageProps {
  * against the input and the exports. The template and the edited linkage live in the mech slice (URL tpl, mech);
  * the input, Play and the view are the page's own. A new template starts the page afresh (its key).
  */
-export function MechanismPage({ state, dispatch, client }: MechanismPageProps) {
+export function MechanismPage({ state, dispatch, client, embedded = false, openedSearch = '' }: MechanismPageProps) {
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited } = state.mech;
   // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
-  const [refused, setRefused] = useState(linkRefusal);
+  const [refused, setRefused] = useState(() => linkRefusal(openedSearch));
   return (
-    <div className="mech" data-testid="mechanism-page">
-      <div className="mech-head">
-        <h2 className="section-title">{m.pageTitle}</h2>
-        <p className="note mech-intro">{m.intro}</p>
-      </div>
+    <div className={`mech${embedded ? ' mech-embedded' : ''}`} data-testid="mechanism-page">
+      {!embedded && (
+        <div className="mech-head">
+          <h2 className="section-title">{m.pageTitle}</h2>
+          <p className="note mech-intro">{m.intro}</p>
+        </div>
+      )}
       {refused && (
         <p className="mech-error mech-refused" role="alert" data-testid="mech-refused">
           {m.linkRefused(refused)}{' '}
@@ -70,24 +76,33 @@ export function MechanismPage({ state, dispatch, client }: MechanismPageProps) {
           </button>
         </p>
       )}
-      <section className="mech-gallery-card" aria-label={m.galleryTitle}>
-        <TemplateGallery
-          current={template}
-          edited={edited !== null}
-          onOpen={(t) => dispatch({ type: 'setMechTemplate', template: t })}
-          names={m.templateNames}
-          label={m.galleryLabel}
-        />
-      </section>
-      <MechWorkspace key={template} template={template} edited={edited} dispatch={dispatch} client={client} m={m} />
+      {!embedded && (
+        <section className="mech-gallery-card" aria-label={m.galleryTitle}>
+          <TemplateGallery
+            current={template}
+            edited={edited !== null}
+            onOpen={(t) => dispatch({ type: 'setMechTemplate', template: t })}
+            names={m.templateNames}
+            label={m.galleryLabel}
+          />
+        </section>
+      )}
+      <MechWorkspace
+        key={template}
+        template={template}
+        edited={edited}
+        dispatch={dispatch}
+        client={client}
+        m={m}
+        embedded={embedded}
+      />
     </div>
   );
 }
 
-/** Why the mech= of the address the page was opened at is refused, or null (none, or a good one). */
-function linkRefusal(): string | null {
-  if (typeof window === 'undefined') return null;
-  const raw = new URLSearchParams(window.location.search).get('mech');
+/** Why the mech= of a query is refused, or null (none, or a good one). */
+function linkRefusal(search: string): string | null {
+  const raw = new URLSearchParams(search).get('mech');
   if (raw === null) return null;
   const r = mechSpecCodec.parse(raw);
   return r.ok ? null : r.why;
@@ -100,6 +115,7 @@ interface MechWorkspaceProps {
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
   m: MechMessages;
+  embedded: boolean;
 }
 
 /** Every joint and tracer over the run (and as drawn): the canvas fits this box, so Play does not move the view. */
@@ -145,7 +161,7 @@ function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number 
 const defaultTraced = (spec: MechanismSpec) => new Set((spec.points ?? []).map((p) => p.id));
 
 /** The page below the gallery, for one template (a new template remounts it: input 0, default plots and traces). */
-function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceProps) {
+function MechWorkspace({ template, edited, dispatch, client, m, embedded }: MechWorkspaceProps) {
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
@@ -416,7 +432,7 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
           </label>
         </div>
       </div>
-      <div className="mech-side">
+      <div className="mech-side" hidden={embedded}>
         <section className="mech-card" aria-label={m.editTitle}>
           <h3 className="mech-card-title">{m.editTitle}</h3>
           <SpecEditor
@@ -487,7 +503,7 @@ function MechWorkspace({ template, edited, dispatch, client, m }: MechWorkspaceP
           ))}
         </div>
       </section>
-      <section className="mech-exports" aria-label={m.exportsTitle}>
+      <section className="mech-exports" aria-label={m.exportsTitle} hidden={embedded}>
         <h3 className="mech-card-title">{m.exportsTitle}</h3>
         <div className="mech-export-row">
           <button type="button" className="btn btn-small" disabled={!canRun} onClick={() => void exportCsv()}>
