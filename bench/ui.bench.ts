@@ -49,7 +49,7 @@ const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
  * BENCH_OVERLAYS_QUERY replaces the query (say, without frc=1&fv=1) for a comparison on the same machine.
  */
 const ALL_OVERLAYS_URL = `${BASE}?${process.env.BENCH_OVERLAYS_QUERY ?? 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel'}`;
-/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel, ninePoint (default all), for quick checks. */
+/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel, ninePoint, spatial (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
@@ -441,6 +441,49 @@ async function measureNinePoint(browser: Browser, rate: number) {
   }
 }
 
+/**
+ * The Spatial page (issue 32) at a CPU slowdown: frames the three.js view draws per second during PLAY_SECONDS of Play,
+ * and while it is orbited (an ArrowRight on the view every animation frame, each turning it 5 degrees).
+ */
+async function measureSpatial(browser: Browser, rate: number): Promise<{ playFps: number; orbitFps: number }> {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, deviceScaleFactor: 1 });
+  try {
+    const page = await context.newPage();
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate });
+    await page.goto(`${BASE}?page=3d`);
+    await page.locator('.spatial-view[data-state="ready"]').waitFor({ timeout: 60_000 });
+    await page.waitForTimeout(500);
+    const canvas = page.getByTestId('spatial-canvas');
+    const frames = () => canvas.evaluate((c: HTMLCanvasElement) => Number(c.dataset.frames ?? 0));
+    await page.getByRole('button', { name: 'Play' }).click();
+    await page.waitForTimeout(300);
+    const f0 = await frames();
+    const t0 = performance.now();
+    await page.waitForTimeout(PLAY_SECONDS * 1000);
+    const playFps = ((await frames()) - f0) / ((performance.now() - t0) / 1000);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    const orbit = await page.locator('.spatial-canvas-host').evaluate(async (host: HTMLElement, seconds) => {
+      const c = host.querySelector('canvas') as HTMLCanvasElement;
+      const count = () => Number(c.dataset.frames ?? 0);
+      const from = count();
+      const start = performance.now();
+      await new Promise<void>((done) => {
+        const tick = (t: number) => {
+          host.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
+          if (t - start < seconds * 1000) requestAnimationFrame(tick);
+          else done();
+        };
+        requestAnimationFrame(tick);
+      });
+      return { frames: count() - from, seconds: (performance.now() - start) / 1000 };
+    }, PLAY_SECONDS / 2);
+    return { playFps, orbitFps: orbit.frames / orbit.seconds };
+  } finally {
+    await context.close();
+  }
+}
+
 async function main(): Promise<void> {
   const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
   const server = await preview({
@@ -484,6 +527,8 @@ async function main(): Promise<void> {
     // Issue 20: every overlay on (ALL_OVERLAYS_URL) at 6x.
     const overlaysPlay6: typeof play1 = [];
     const overlaysT6: typeof t1 = [];
+    // Issue 32: the Spatial page's three.js view, Play and orbit at 4x.
+    const spatial4: Awaited<ReturnType<typeof measureSpatial>>[] = [];
     // Interleaved runs, so a slow spell of the machine spreads over every figure rather than hitting one.
     for (let run = 0; run < RUNS; run++) {
       if (wanted('play1')) play1.push(await measurePlay(browser, 1));
@@ -504,6 +549,7 @@ async function main(): Promise<void> {
         cancel4.push(await measureSynCancel(browser, 4));
         cancel6.push(await measureSynCancel(browser, 6));
       }
+      if (wanted('spatial')) spatial4.push(await measureSpatial(browser, 4));
       console.log(`run ${run + 1}/${RUNS} done`);
     }
     // Issue 30: the nine-point run, once (a minute or more), at 4x on a pool of NINE_POINT_WORKERS.
@@ -530,6 +576,7 @@ async function main(): Promise<void> {
       viewport: '1280x800 @1x',
       runs: RUNS,
       play: { x1: play(play1), x4: play(play4) },
+      spatial: { playFps4x: pick(spatial4, (p) => p.playFps), orbitFps4x: pick(spatial4, (p) => p.orbitFps) },
       // Frame time (ms, from the animation-frame rate) at 4x with the velocity and acceleration views off and on.
       motion: {
         offFrameMs: pick(motionOff, (p) => 1000 / p.frameFps),
@@ -667,6 +714,18 @@ async function main(): Promise<void> {
           : '—',
         `<= ${TARGETS.ninePointS}`,
         ninePoint ? ok(ninePoint.seconds <= TARGETS.ninePointS) : '',
+      ),
+      row(
+        'Spatial page: Play, frames drawn/s, 4x CPU',
+        s(result.spatial.playFps4x),
+        '>= 50',
+        ok(result.spatial.playFps4x.median >= 50),
+      ),
+      row(
+        'Spatial page: orbit, frames drawn/s, 4x CPU',
+        s(result.spatial.orbitFps4x),
+        '>= 50',
+        ok(result.spatial.orbitFps4x.median >= 50),
       ),
       row(
         'frame time with those views on / off, 4x',

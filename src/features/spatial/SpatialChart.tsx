@@ -15,7 +15,7 @@ export interface SpatialChartProps {
 
 /** A new x–y chart at size 0 (drawn once the view knows its box). */
 const newChart = (svg: SVGSVGElement, markerHost: HTMLElement | undefined) =>
-  createXYChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost });
+  createXYChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '', markerHost, xDomain: [0, 360] });
 
 /** One plot of the spatial page against θ2 (degrees), on the chart kit's x–y spec, with the marker at θ2. */
 export function SpatialChart({ data, marker, texts, testId }: SpatialChartProps) {

@@ -174,6 +174,8 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     pending = 0;
     renderer.render(scene, camera);
     frameCount++;
+    // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
+    canvas.dataset.frames = String(frameCount);
   };
   const invalidate = () => {
     if (!pending) pending = requestAnimationFrame(render);

@@ -37,6 +37,8 @@ export interface XYFit {
   equalAspect?: boolean;
   /** Both domains hold 0 (a polar diagram's centre); default false. */
   includeOrigin?: boolean;
+  /** A fixed x domain (θ2 from 0 to 360°), not padded or made nice; default from the data. */
+  xDomain?: [number, number];
 }
 
 /** Options of createXYChart: size (CSS pixels), texts, x rules, marker host and the fit. */
@@ -105,13 +107,13 @@ function fittedLinearTicks(
  * or, with equalAspect, widened to equal units per pixel instead (a nice domain would undo it).
  */
 export function xyFrame(data: XYChartData, plot: PlotArea, fit: XYFit = {}): Omit<ChartScales, 'iw' | 'ih'> {
-  let xd = paddedExtent(finiteValues(data.series, 'x'), fit.includeOrigin);
+  let xd = fit.xDomain ?? paddedExtent(finiteValues(data.series, 'x'), fit.includeOrigin);
   let yd = paddedExtent(finiteValues(data.series, 'y'), fit.includeOrigin);
   if (fit.equalAspect) ({ x: xd, y: yd } = equalAspectDomains(xd, yd, plot.iw, plot.ih));
   const x = scaleLinear().domain(xd).range([0, plot.iw]);
   const y = scaleLinear().domain(yd).range([plot.ih, 0]);
   if (!fit.equalAspect) {
-    x.nice(plot.xCount);
+    if (!fit.xDomain) x.nice(plot.xCount);
     y.nice(plot.yCount);
   }
   // y labels stack vertically: they need the font's height between them, not their width.
@@ -143,6 +145,7 @@ export function xySpec(fit: XYFit = {}): ChartSpec<XYChartData, MarkerAt> {
  * aspect and the origin on request), grid, legend, x rules and a marker; returns its handle (scales in it).
  */
 export function createXYChart(svg: SVGSVGElement, options: XYChartOptions): XYChart {
-  const { title, xLabel, yLabel, equalAspect, includeOrigin, ...rest } = options;
-  return createChart(svg, rest, { title, xLabel, yLabel }, xySpec({ equalAspect, includeOrigin }), { series: [] });
+  const { title, xLabel, yLabel, equalAspect, includeOrigin, xDomain, ...rest } = options;
+  const spec = xySpec({ equalAspect, includeOrigin, xDomain });
+  return createChart(svg, rest, { title, xLabel, yLabel }, spec, { series: [] });
 }
