@@ -5,7 +5,7 @@ import type { Bounds } from '../../shared/canvas/view';
 import { fitView, toScreenX, toScreenY, toWorld } from '../../shared/canvas/view';
 import { usePanZoom } from '../../shared/canvas/usePanZoom';
 import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
-import { ZoomTools } from '../../shared/canvas/ZoomTools';
+import { PanZoomCanvas } from '../../shared/canvas/PanZoomCanvas';
 import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
 import { useElementSize } from '../../shared/hooks/useElementSize';
 import type { MechPicture } from './drawMechanism';
@@ -70,7 +70,7 @@ export function MechCanvas({
     }
     return best;
   };
-  const { pointerHandlers, zoomBy, resetView, onZoomKey } = usePanZoom<string>({
+  const panZoom = usePanZoom<string>({
     canvasRef,
     view,
     onViewChange: setView,
@@ -91,10 +91,6 @@ export function MechCanvas({
     if (viewRef) viewRef.current = { width, height, offset: view };
   }, [picture, bounds, view, width, height, viewRef]);
   const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
-    if (onZoomKey(e)) {
-      e.preventDefault();
-      return;
-    }
     const step = e.shiftKey ? 10 : 1;
     const d: Record<string, [number, number]> = {
       ArrowLeft: [-step, 0],
@@ -109,20 +105,21 @@ export function MechCanvas({
     }
   };
   return (
-    <div className="mech-canvas-wrap" ref={wrapRef}>
-      <canvas
-        ref={canvasRef}
-        className="mech-canvas"
-        role="img"
-        aria-label={label}
-        aria-keyshortcuts="ArrowLeft ArrowRight ArrowUp ArrowDown + - 0"
-        tabIndex={0}
-        data-testid="mech-canvas"
-        data-view={`${transform.scale} ${transform.centerX} ${transform.centerY} ${transform.panXPx} ${transform.panYPx}`}
-        {...pointerHandlers}
-        onKeyDown={onKeyDown}
-      />
-      <ZoomTools zoomBy={zoomBy} resetView={resetView} labels={labels} />
-    </div>
+    <PanZoomCanvas
+      wrapRef={wrapRef}
+      canvasRef={canvasRef}
+      wrapClassName="mech-canvas-wrap"
+      panZoom={panZoom}
+      canvas={{
+        className: 'mech-canvas',
+        role: 'img',
+        'aria-label': label,
+        'aria-keyshortcuts': 'ArrowLeft ArrowRight ArrowUp ArrowDown + - 0',
+        'data-testid': 'mech-canvas',
+        'data-view': `${transform.scale} ${transform.centerX} ${transform.centerY} ${transform.panXPx} ${transform.panYPx}`,
+      }}
+      onKeyDown={onKeyDown}
+      zoomLabels={labels}
+    />
   );
 }
