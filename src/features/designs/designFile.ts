@@ -1,6 +1,7 @@
 import type { AppState } from '../../shared/state/appState';
 import { DEFAULT_STATE } from '../../shared/state/appState';
-import { SHELL_URL_KEYS } from '../../shared/state/slices/shellSlice';
+import type { Page } from '../../shared/state/slices/shellSlice';
+import { PAGE_URL_VALUES, SHELL_URL_KEYS } from '../../shared/state/slices/shellSlice';
 import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
 import type { UrlTarget } from '../../shared/url/urlKeys';
 import { URL_CONSTRAINTS, URL_KEYS } from '../../shared/url/urlKeys';
@@ -30,6 +31,11 @@ export interface DesignFile {
   name: string;
   /** When it was saved, ISO 8601 in UTC. */
   savedAt: string;
+  /**
+   * The page the work belongs to, as the URL writes it ("syn"), written only for work saved on a page other than the
+   * simulator's (the synthesis task); opening the file shows that page. Optional: files without it open as before.
+   */
+  page?: string;
   /** The work: the share link's keys (every slice's URL keys but NOT_IN_FILE) with JSON values. */
   state: Record<string, UrlValue>;
 }
@@ -50,7 +56,17 @@ export type DesignFileError =
 
 /** What reading a file gave: the state, the design's name and when it was saved, or why it was refused. */
 export type DesignFileRead =
-  { ok: true; state: AppState; name: string; savedAt: string | null } | { ok: false; error: DesignFileError };
+  | { ok: true; state: AppState; name: string; savedAt: string | null; page: Page | null }
+  | { ok: false; error: DesignFileError };
+
+/** Pages whose work a file names (the simulator's design is on every page, so a simulator file names none). */
+const FILE_PAGES: readonly Page[] = ['synthesis'];
+
+/** The page of a URL value ("syn"), or null. */
+function pageOf(value: unknown): Page | null {
+  const hit = (Object.keys(PAGE_URL_VALUES) as Page[]).find((p) => PAGE_URL_VALUES[p] === value);
+  return hit ?? null;
+}
 
 /** The work of a state as a file holds it: stateValues without NOT_IN_FILE. */
 export function designValues(state: AppState): Record<string, UrlValue> {
@@ -61,14 +77,32 @@ export function designValues(state: AppState): Record<string, UrlValue> {
 
 /** The design file of a state, as the JSON text Save writes (two-space indent, a final newline). */
 export function writeDesignFile(state: AppState, name: string, savedAt: Date): string {
+  const page = state.shell.page;
   const file: DesignFile = {
     format: DESIGN_FILE_FORMAT,
     version: DESIGN_FILE_VERSION,
     name,
     savedAt: savedAt.toISOString(),
+    ...(FILE_PAGES.includes(page) ? { page: PAGE_URL_VALUES[page] } : {}),
     state: designValues(state),
   };
   return `${JSON.stringify(file, null, 2)}\n`;
+}
+
+/**
+ * The name Save offers on the synthesis page: the task's (path-6-targets, motion-8-poses, function-log10(x)); null on
+ * other pages (the lengths' file stem is the name there).
+ */
+export function taskName(state: AppState): string | null {
+  if (state.shell.page !== 'synthesis') return null;
+  switch (state.synPath.mode) {
+    case 'path':
+      return `path-${state.synPath.targets.length}-targets`;
+    case 'motion':
+      return `motion-${state.synMotion.poses.length}-poses`;
+    case 'function':
+      return `function-${state.synFunction.expression}`;
+  }
 }
 
 /** A design name as a file name: `<name>.fourbar.json`, without the characters file systems refuse. */
@@ -103,6 +137,8 @@ function checkHeader(file: Record<string, unknown>): DesignFileError | null {
   else if (v > DESIGN_FILE_VERSION && bad.length === 0) return { kind: 'newer', version: v };
   if (file.name !== undefined && typeof file.name !== 'string')
     bad.push({ field: 'name', value: shown(file.name), why: 'expected text' });
+  if (file.page !== undefined && !FILE_PAGES.includes(pageOf(file.page) as Page))
+    bad.push({ field: 'page', value: shown(file.page), why: 'expected "syn"' });
   if (file.savedAt !== undefined && (typeof file.savedAt !== 'string' || Number.isNaN(Date.parse(file.savedAt))))
     bad.push({ field: 'savedAt', value: shown(file.savedAt), why: 'expected an ISO 8601 time' });
   if (!isRecord(file.state))
@@ -154,5 +190,5 @@ export function readDesignFile(text: string, base: AppState): DesignFileRead {
   if (bad.length) return { ok: false, error: { kind: 'fields', fields: bad } };
   const name = typeof json.name === 'string' ? json.name : '';
   const savedAt = typeof json.savedAt === 'string' ? json.savedAt : null;
-  return { ok: true, state: target.state, name, savedAt };
+  return { ok: true, state: target.state, name, savedAt, page: pageOf(json.page) };
 }

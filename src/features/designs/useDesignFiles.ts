@@ -8,7 +8,15 @@ import { AUTOSAVE_STORAGE_KEY, readStorage } from '../../shared/storage';
 import type { RestoreOffer } from './autosave';
 import { restoreOffer } from './autosave';
 import type { DesignFileError } from './designFile';
-import { DESIGN_FILE_VERSION, designFileName, designNameOf, readDesignFile, writeDesignFile } from './designFile';
+import {
+  DESIGN_FILE_VERSION,
+  designFileName,
+  designNameOf,
+  readDesignFile,
+  taskName,
+  writeDesignFile,
+} from './designFile';
+import type { Page } from '../../shared/state/slices/shellSlice';
 import type { DesignsMessages } from './designsMessages';
 import type { RecentDesign } from './recentDesigns';
 import { readRecent, rememberRecent } from './recentDesigns';
@@ -50,7 +58,8 @@ export function useDesignFiles(state: AppState, dispatch: Dispatch<Action>, t: D
     restoreOffer(readStorage(AUTOSAVE_STORAGE_KEY), state, window.location.search),
   );
   const latest = useLatest(state);
-  const shownName = name ?? fileStem(state.design.linkage, state.design.branch);
+  // On the synthesis page an unnamed design is named after its task.
+  const shownName = name ?? taskName(state) ?? fileStem(state.design.linkage, state.design.branch);
   // An unnamed design is autosaved without a name, so a restored one keeps following its lengths.
   useAutosave(state, name ?? '');
 
@@ -61,9 +70,11 @@ export function useDesignFiles(state: AppState, dispatch: Dispatch<Action>, t: D
   }, [notice]);
 
   const apply = useCallback(
-    (next: AppState, designName: string) => {
-      // The reader's language and page stay; everything a file holds comes from it.
-      dispatch({ type: 'replace', state: { ...next, shell: latest.current.shell } });
+    (next: AppState, designName: string, page: Page | null = null) => {
+      // The reader's language and page stay, but a file of synthesis work opens on its page; everything else a file
+      // holds comes from it.
+      const shell = { ...latest.current.shell, page: page ?? latest.current.shell.page };
+      dispatch({ type: 'replace', state: { ...next, shell } });
       setName(designName || null);
       setOffer(null);
     },
@@ -78,7 +89,7 @@ export function useDesignFiles(state: AppState, dispatch: Dispatch<Action>, t: D
         return;
       }
       const designName = r.name || designNameOf(fileName);
-      apply(r.state, designName);
+      apply(r.state, designName, r.page);
       setRecent(rememberRecent({ name: designName, at: new Date().toISOString(), file: text }));
       setNotice({ kind: 'status', text: t.opened(designName) });
     },

@@ -12,6 +12,7 @@ import {
   designNameOf,
   designValues,
   readDesignFile,
+  taskName,
   writeDesignFile,
 } from '../../../src/features/designs/designFile';
 import { withFields } from '../../shared/state/stateFixtures';
@@ -280,5 +281,56 @@ describe('designFileName and designNameOf', () => {
   it('replace the characters file systems refuse', () => {
     expect(designFileName('a/b:c*?')).toBe('a_b_c_.fourbar.json');
     expect(designFileName('  ')).toBe('design.fourbar.json');
+  });
+});
+
+describe('design files of synthesis work (issue 34, item 13)', () => {
+  const onSynthesis = (patch: Partial<AppState>): AppState => ({
+    ...DEFAULT_STATE,
+    ...patch,
+    shell: { ...DEFAULT_STATE.shell, page: 'synthesis' },
+  });
+  const eight = Array.from({ length: 8 }, (_, i) => ({ x: i, y: i / 2, angleDeg: 10 * i }));
+  const motion = onSynthesis({
+    synPath: { ...DEFAULT_STATE.synPath, mode: 'motion' },
+    synMotion: { ...DEFAULT_STATE.synMotion, poses: eight, choice: 3 },
+  });
+
+  it('a file saved on the synthesis page says so, and opens there with the task, the mode and the choice', () => {
+    const text = writeDesignFile(motion, 'motion-8-poses', SAVED_AT);
+    expect(JSON.parse(text)).toMatchObject({ page: 'syn', state: { syn: 'motion', mc: 3 } });
+    const r = readDesignFile(text, DEFAULT_STATE);
+    if (!r.ok) throw new Error(JSON.stringify(r.error));
+    expect(r.page).toBe('synthesis');
+    expect(r.state.synPath.mode).toBe('motion');
+    expect(r.state.synMotion.poses).toEqual(eight);
+    expect(r.state.synMotion.choice).toBe(3);
+  });
+
+  it('a simulator file names no page, and an older file without one opens on the reader’s page', () => {
+    const text = writeDesignFile(DEFAULT_STATE, 'x', SAVED_AT);
+    expect(JSON.parse(text)).not.toHaveProperty('page');
+    const r = readDesignFile(text, DEFAULT_STATE);
+    expect(r.ok && r.page).toBeNull();
+  });
+
+  it('refuses a page it does not know, naming the field', () => {
+    expect(badFields(edited(motion, (f) => (f.page = 'moon')))).toEqual([
+      { field: 'page', value: '"moon"', why: 'expected "syn"' },
+    ]);
+  });
+
+  it('names the work after the task on the synthesis page, after the lengths elsewhere', () => {
+    expect(taskName(motion)).toBe('motion-8-poses');
+    expect(taskName(onSynthesis({ synPath: { ...DEFAULT_STATE.synPath, mode: 'function' } }))).toBe(
+      `function-${DEFAULT_STATE.synFunction.expression}`,
+    );
+    const targets = [
+      { x: 0, y: 0 },
+      { x: 1, y: 2 },
+      { x: 3, y: 1 },
+    ];
+    expect(taskName(onSynthesis({ synPath: { ...DEFAULT_STATE.synPath, targets } }))).toBe('path-3-targets');
+    expect(taskName(DEFAULT_STATE)).toBeNull();
   });
 });
