@@ -134,9 +134,11 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning }: SpatialVie
         </div>
       )}
       <div className="spatial-view-foot">
-        <p id="spatial-view-hint" className="note spatial-view-hint">
-          {sm.viewHint}
-        </p>
+        {status !== 'no-webgl' ? (
+          <p id="spatial-view-hint" className="note spatial-view-hint">
+            {sm.viewHint}
+          </p>
+        ) : null}
         {status !== 'no-webgl' ? (
           <Segmented
             legend={sm.projectionLegend}
