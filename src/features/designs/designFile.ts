@@ -90,7 +90,8 @@ export function writeDesignFile(state: AppState, name: string, savedAt: Date): s
 }
 
 /**
- * The name Save offers on the synthesis page: the task's (path-6-targets, motion-8-poses, function-log10(x)); null on
+ * The name Save offers on the synthesis page: the task's (path-6-targets, motion-8-poses, function-log10(x),
+ * nine-points); null on
  * other pages (the lengths' file stem is the name there).
  */
 export function taskName(state: AppState): string | null {
@@ -102,6 +103,8 @@ export function taskName(state: AppState): string | null {
       return `motion-${state.synMotion.poses.length}-poses`;
     case 'function':
       return `function-${state.synFunction.expression}`;
+    case 'nine':
+      return 'nine-points';
   }
 }
 

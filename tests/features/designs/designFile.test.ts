@@ -325,6 +325,7 @@ describe('design files of synthesis work (issue 34, item 13)', () => {
     expect(taskName(onSynthesis({ synPath: { ...DEFAULT_STATE.synPath, mode: 'function' } }))).toBe(
       `function-${DEFAULT_STATE.synFunction.expression}`,
     );
+    expect(taskName(onSynthesis({ synPath: { ...DEFAULT_STATE.synPath, mode: 'nine' } }))).toBe('nine-points');
     const targets = [
       { x: 0, y: 0 },
       { x: 1, y: 2 },
