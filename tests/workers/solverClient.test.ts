@@ -66,11 +66,12 @@ afterEach(() => {
 });
 
 describe('solver jobs', () => {
-  it('are the simulator’s, the lab’s, synthesis’s and the mechanism page’s tables, each name once', () => {
+  it('are the simulator’s, the lab’s, synthesis’s (path and nine points) and the mechanism page’s tables, each name once', () => {
     expect(Object.keys(solverJobs).sort()).toEqual([
       'cycle',
       'lab',
       'mechSweep',
+      'ninePointPart',
       'pathMerge',
       'pathPart',
       'point',
