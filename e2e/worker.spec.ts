@@ -28,9 +28,15 @@ async function holdWorkerScript(page: Page): Promise<() => void> {
   return release;
 }
 
+/** Whether a worker is the solver's (a slow page may also have started the live stage's worker). */
+const isSolver = (w: Worker) => /solver\.worker/.test(w.url());
+
+/** The solver workers the page runs now. */
+const solverWorkers = (page: Page) => page.workers().filter(isSolver);
+
 /** The one solver worker the page runs now. */
 function onlyWorker(page: Page): Worker {
-  const workers = page.workers();
+  const workers = solverWorkers(page);
   expect(workers).toHaveLength(1);
   return workers[0];
 }
@@ -47,7 +53,7 @@ test.describe('a dying solver worker', () => {
     const plotBefore = await chartPath(page, 0);
 
     await killWorker(onlyWorker(page));
-    const restarted = page.waitForEvent('worker');
+    const restarted = page.waitForEvent('worker', { predicate: isSolver });
     await page.getByRole('textbox', { name: /^r3/ }).fill('5.5');
     await expect(page.getByRole('status').filter({ hasText: 'The solver worker stopped; restarted it.' })).toHaveCount(
       1,
@@ -69,7 +75,7 @@ test.describe('a dying solver worker', () => {
     await expect(page.getByRole('heading', { name: 'At θ2 = 200.00°' })).toBeVisible(RECOVERY);
     await expect(grashof).toContainText('S + L = 8 < P + Q = 9.5', RECOVERY);
     await expect.poll(() => chartPath(page, 0)).not.toBe(plotRestarted);
-    expect(page.workers()).toHaveLength(0);
+    expect(solverWorkers(page)).toHaveLength(0);
   });
 
   test('says so in Traditional Chinese too', async ({ page }) => {
@@ -97,7 +103,7 @@ test.describe('the first load', () => {
       await expect(page.getByTestId('nr-iterations')).toHaveText(/^\d+$/);
       await expect(page.getByTestId('linkage-type')).toHaveText('Crank-rocker');
       await expect(page.getByRole('img', { name: /Linkage view\. θ2 45\.00°, θ3 44\.18°/ })).toBeVisible();
-      expect(page.workers()).toHaveLength(0);
+      expect(solverWorkers(page)).toHaveLength(0);
       // Not the client's fallback (it starts only after the worker fails to answer, and says so).
       await expect(page.getByText('Web Worker unavailable here: solving on the main thread.')).toHaveCount(0);
     } finally {

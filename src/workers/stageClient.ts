@@ -7,6 +7,12 @@ import { createStageInputs } from '../features/simulator/stage/stageInputs';
 import type { StageReply, StageRequest } from '../features/simulator/stage/stageProtocol';
 import { createStageRun } from '../features/simulator/stage/stageRun';
 
+/**
+ * The early start waits for this many of the page's draws: the first ones carry one-time costs (fonts, compiling, the
+ * background's bitmap), and the page times the first frame again at idle until it has as many (useLinkageDrawing).
+ */
+const WARM_AFTER_DRAWS = 4;
+
 /** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
 function canTransfer(): boolean {
   return (
@@ -132,7 +138,7 @@ export function createLiveStage(): LiveStage | null {
    * drag, whose route is decided from its first move.
    */
   const warmIfSlow = () => {
-    if (!worker && prefersStage()) start();
+    if (!worker && pageDraws.count() >= WARM_AFTER_DRAWS && prefersStage()) start();
   };
   return {
     attach(canvas) {

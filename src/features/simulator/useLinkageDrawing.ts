@@ -12,6 +12,19 @@ import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
 /** A canvas element for the background bitmap. */
 const newCanvas = () => document.createElement('canvas');
 
+/** Draws timed before the page stops redrawing the first frame at idle to time it (see useLinkageDrawing). */
+const MEASURED_DRAWS = 4;
+
+/** Runs task when the page is idle (requestIdleCallback, or a short timeout where there is none); returns its cancel. */
+function whenIdle(task: () => void): () => void {
+  if (typeof requestIdleCallback === 'function') {
+    const handle = requestIdleCallback(task, { timeout: 1000 });
+    return () => cancelIdleCallback(handle);
+  }
+  const handle = setTimeout(task, 100);
+  return () => clearTimeout(handle);
+}
+
 /**
  * Draws the scene on the canvas (sized for devicePixelRatio) in a layout effect whenever the scene, the fit bounds,
  * the view or the size (CSS pixels) changes: the background (grid, curves, ground) is kept in a bitmap once it is
@@ -30,6 +43,8 @@ export function useLinkageDrawing(
 ): void {
   // Touched in the drawing effect only.
   const background = useRef<FrameBackground | null>(null);
+  /** How many draws were timed (the idle redraws of the first count). */
+  const measured = useRef(0);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
@@ -55,5 +70,27 @@ export function useLinkageDrawing(
     canvas.dataset.p = at(scene.pose?.P);
     onDrawn?.(performance.now() - started);
     benchMark('fourbar:canvas', { theta2Rad: scene.theta2 });
+    measured.current += 1;
+    if (!onDrawn || measured.current >= MEASURED_DRAWS) return;
+    // The first draws carry one-time costs (fonts, compiling, the background's bitmap): the same frame is drawn again
+    // when the page is idle until MEASURED_DRAWS are timed, so the time of a draw like Play's and a drag's is known
+    // before the first one (the live stage's route).
+    let cancel = () => {};
+    const redraw = () => {
+      const again = performance.now();
+      background.current = drawLinkageFrame(
+        sized.ctx,
+        background.current,
+        scene,
+        { bounds, view, width, height },
+        sized,
+        newCanvas,
+      ).background;
+      measured.current += 1;
+      onDrawn(performance.now() - again);
+      if (measured.current < MEASURED_DRAWS) cancel = whenIdle(redraw);
+    };
+    cancel = whenIdle(redraw);
+    return () => cancel();
   }, [canvasRef, scene, bounds, view, width, height, onDrawn]);
 }

@@ -13,14 +13,18 @@ export interface PageDraws {
   note(ms: number): void;
   /** Whether the lower median of the latest DRAWS_KEPT draws is at least SLOW_PAGE_DRAW_MS (false before two). */
   slow(): boolean;
+  /** How many draws were noted in all. */
+  count(): number;
 }
 
 /** The page's draw times, for the live stage's prefersStage. */
 export function createPageDraws(): PageDraws {
   const draws: number[] = [];
+  let noted = 0;
   return {
     note(ms) {
       if (!Number.isFinite(ms) || ms < 0) return;
+      noted += 1;
       draws.push(ms);
       if (draws.length > DRAWS_KEPT) draws.shift();
     },
@@ -29,5 +33,6 @@ export function createPageDraws(): PageDraws {
       const sorted = [...draws].sort((a, b) => a - b);
       return sorted[Math.floor((sorted.length - 1) / 2)] >= SLOW_PAGE_DRAW_MS;
     },
+    count: () => noted,
   };
 }

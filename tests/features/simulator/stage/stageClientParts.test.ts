@@ -14,6 +14,14 @@ describe('createPageDraws', () => {
     expect(d.slow()).toBe(false);
   });
 
+  it('counts every draw noted, also those no longer kept, and not the bad times', () => {
+    const d = createPageDraws();
+    for (const ms of [1, 2, 3, 4, 5, 6, 7]) d.note(ms);
+    d.note(Number.NaN);
+    d.note(-1);
+    expect(d.count()).toBe(7);
+  });
+
   it('decides by the lower median of the latest five draws (4, 4, 5, 9, 50: median 5 is slow)', () => {
     const d = createPageDraws();
     for (const ms of [50, 4, 9, 5, 4]) d.note(ms);
