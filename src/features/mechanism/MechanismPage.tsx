@@ -31,7 +31,7 @@ import type { Pt } from './mechPose';
 import type { MechPlotChoice } from './mechPlots';
 import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
 import { MechCanvas } from './MechCanvas';
-import { MechChart } from './MechChart';
+import { XYChartView } from '../../shared/charts/XYChartView';
 import { TemplateGallery } from './TemplateGallery';
 import type { PlaceKind } from './SpecEditor';
 import { SpecEditor } from './SpecEditor';
@@ -497,7 +497,13 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
         <div className="mech-charts">
           {plotViews.map((p) => (
             <div key={p.n} className="mech-chart-cell">
-              <MechChart data={p.data} marker={p.marker} texts={p.texts} testId={`mech-chart-${p.n}`} />
+              <XYChartView
+                className="mech-chart"
+                data={p.data}
+                marker={p.marker}
+                texts={p.texts}
+                testId={`mech-chart-${p.n}`}
+              />
               {p.pending && <p className="note">{m.ratesPending}</p>}
             </div>
           ))}

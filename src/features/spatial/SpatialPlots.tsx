@@ -4,7 +4,7 @@ import type { XYChartData } from '../../shared/charts/xyChart';
 import { COLORS } from '../../shared/theme/tokens';
 import { radToDeg } from '../../solver';
 import type { SpatialPose } from '../../spatial';
-import { SpatialChart } from './SpatialChart';
+import { XYChartView } from '../../shared/charts/XYChartView';
 import { plotColumns } from './plotSeries';
 import type { SpatialMessages } from './spatialMessages';
 import type { SpatialAnalysis } from './useSpatialAnalysis';
@@ -50,8 +50,10 @@ export function SpatialPlots({ analysis, theta2Deg, pose, muRad, sm }: SpatialPl
   return (
     <div className="spatial-plots">
       {charts.map((c) => (
-        <SpatialChart
+        <XYChartView
           key={c.key}
+          className="spatial-chart"
+          fullTurn
           data={data[c.key]}
           marker={c.m}
           texts={{ title: c.title, xLabel: sm.axisTheta2, yLabel: c.y }}
