@@ -20,7 +20,7 @@ import {
   RANGE_DEG_MAX,
   X_ABS_MAX,
 } from '../../../src/shared/state/slices/synFunctionSlice';
-import { MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
+import { MECH_FORCES_LIMITS, MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
 import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import type { MechanismSpec } from '../../../src/mechanism';
 import { SPATIAL_LENGTH_MAX } from '../../../src/shared/state/slices/spatialSlice';
@@ -254,6 +254,14 @@ const mechSpec: fc.Arbitrary<MechanismSpec> = fc
 const mech: fc.Arbitrary<AppState['mech']> = fc.record({
   template: fc.constantFrom(...MECH_TEMPLATE_KEYS),
   spec: fc.option(mechSpec, { nil: null }),
+  forces: fc.record({
+    enabled: fc.boolean(),
+    rhoKgPerM: double(0, MECH_FORCES_LIMITS.rho),
+    gravityMPerS2: double(0, MECH_FORCES_LIMITS.gravity),
+    inputSpeed: double(-MECH_FORCES_LIMITS.speed, MECH_FORCES_LIMITS.speed),
+    joint: fc.oneof(fc.constant(''), anyName),
+    arrows: fc.boolean(),
+  }),
 });
 
 /** A value on the spatial page's degree grid (9 decimals) strictly inside (lo, hi) or in [lo, hi) as asked. */
