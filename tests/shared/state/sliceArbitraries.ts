@@ -286,6 +286,8 @@ const spatial: fc.Arbitrary<AppState['spatial']> = fc.record({
   betaDeg: angle180,
   theta2Deg: degrees(0, 359.999999999),
   branch: fc.constantFrom('open' as const, 'crossed' as const),
+  omega2RadPerS: fc.oneof(fc.constant(1), double(-1e6, 1e6)),
+  alpha2RadPerS2: fc.oneof(fc.constant(0), double(-1e9, 1e9)),
 });
 
 /** One generator per slice of SLICES: a new slice without one here does not typecheck. */

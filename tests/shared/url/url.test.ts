@@ -433,6 +433,10 @@ const SPATIAL_RANGE_CASES: [string, string, boolean][] = [
   ['t2', 'x', false],
   ['br', 'crossed', true],
   ['br', 'up', false],
+  ['w2', '-2.5', true],
+  ['w2', '1000001', false],
+  ['al2', '-1e9', true],
+  ['al2', 'fast', false],
 ];
 
 describe('parseUrl range checks', () => {
