@@ -3,20 +3,8 @@
  * (ninePointSynthesis over every shipped start path), with the real classes found, the paths, the time and paths/s.
  * Also runs alone: PRINT_NINE_POINT=1 npx vite-node bench/synthesisNinePoint.ts
  */
+import { WMS_PROBLEM_3 as PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { ninePointSynthesis } from '../src/synthesis';
-
-/** Problem 3's nine points (WMS 1992; the alphaCertified data of Hauenstein and Sottile). */
-export const PROBLEM_3 = [
-  [0.25, 0.0],
-  [0.52, 0.1],
-  [0.8, 0.7],
-  [1.2, 1.0],
-  [1.4, 1.3],
-  [1.1, 1.48],
-  [0.7, 1.4],
-  [0.2, 1.0],
-  [0.02, 0.4],
-].map(([x, y]) => ({ x, y }));
 
 export interface NinePointRow {
   case: string;

@@ -31,6 +31,7 @@ import { chromium } from 'playwright';
 import type { Browser, BrowserContext, Page } from 'playwright';
 import { preview } from 'vite';
 import { findChromium } from '../scripts/ensure-chromium.mjs';
+import { WMS_PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { PHONE_PROFILE, gzipStaticServer, phoneColdLoad } from './phoneLoad';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -408,7 +409,7 @@ async function measureSynCancel(browser: Browser, rate: number): Promise<{ pageM
 }
 
 /** Problem 3 of Wampler, Morgan and Sommese (1992) as the tg key: 64 real classes pass through these nine points. */
-const PROBLEM_3 = '0.25,0;0.52,0.1;0.8,0.7;1.2,1;1.4,1.3;1.1,1.48;0.7,1.4;0.2,1;0.02,0.4';
+const PROBLEM_3 = WMS_PROBLEM_3.map((p) => `${p.x},${p.y}`).join(';');
 /** Workers of the nine-point row's pool: the page makes cores − 1, so it is told of NINE_POINT_WORKERS + 1 cores. */
 const NINE_POINT_WORKERS = Number(process.env.BENCH_NINE_WORKERS ?? 4);
 

@@ -8,19 +8,7 @@ import { loadStartSystem } from '../../src/synthesis/ninePoint/ninePointSynthesi
 import { Tracker } from '../../src/synthesis/ninePoint/tracker';
 import { placedCouplerPoint, placedJoints } from '../../src/synthesis/placed';
 import type { PlacedFourBar } from '../../src/synthesis/types';
-
-/** Problem 3 of Wampler, Morgan and Sommese (1992), as in the alphaCertified data (Hauenstein and Sottile). */
-const PROBLEM_3: Point[] = [
-  [0.25, 0.0],
-  [0.52, 0.1],
-  [0.8, 0.7],
-  [1.2, 1.0],
-  [1.4, 1.3],
-  [1.1, 1.48],
-  [0.7, 1.4],
-  [0.2, 1.0],
-  [0.02, 0.4],
-].map(([x, y]) => ({ x, y }));
+import { WMS_PROBLEM_3 as PROBLEM_3 } from '../../src/features/synthesis/ninePoint/wmsProblem3';
 
 /** A crank-rocker chosen by hand, and nine points of its coupler curve spread over most of a turn. */
 const KNOWN: PlacedFourBar = {

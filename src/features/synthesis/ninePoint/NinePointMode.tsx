@@ -1,12 +1,9 @@
-import { useMemo, useRef, useState } from 'react';
+import { useMemo, useState } from 'react';
 import { TWO_PI } from '../../../solver/angles';
 import type { Point } from '../../../solver/kinematics';
-import { fitView } from '../../../shared/canvas/view';
 import { downloadText } from '../../../shared/canvas/download';
 import { formatSci } from '../../../shared/format';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
-import type { ViewOffset } from '../../../shared/state/appState';
-import { placedJoints } from '../../../synthesis/placed';
 import { RECHECK_TOL } from '../../../synthesis/ninePoint/ninePointSynthesis';
 import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
@@ -14,21 +11,22 @@ import type { DesignChoice } from '../path/ChosenDesign';
 import { ChosenDesign } from '../path/ChosenDesign';
 import type { MotionRange } from '../path/candidateFacts';
 import { couplerCurve } from '../path/candidateFacts';
-import type { PathCurve, PathScene } from '../path/drawPathScene';
+import type { PathCurve } from '../path/drawPathScene';
 import { pathSceneBounds } from '../path/drawPathScene';
-import { exportPathPng, exportPathSvg } from '../path/pathExports';
 import { targetsExtent } from '../path/pathTaskOf';
 import { TargetCanvas } from '../path/TargetCanvas';
 import { TargetsCard } from '../path/TargetsCard';
 import { useFitBounds } from '../path/useFitBounds';
 import type { SynthesisPool } from '../path/usePathSynthesis';
 import { lastPathRun } from '../path/usePathSynthesis';
+import { useTargetEditing } from '../path/useTargetEditing';
 import { NineClassList } from './NineClassList';
 import type { NineFilters } from './nineClassFacts';
 import { NO_FILTERS, cognateDesign, filterClasses, nineClassFacts } from './nineClassFacts';
 import { ninePointCsv } from './nineCsv';
 import { ninePointMessagesFor } from './ninePointMessages';
-import { WMS_PROBLEM_3, nineRefusalText } from './nineInput';
+import { nineRefusalText } from './nineInput';
+import { WMS_PROBLEM_3 } from './wmsProblem3';
 import { NineRunControls } from './NineRunControls';
 import { useNinePointSynthesis } from './useNinePointSynthesis';
 
@@ -57,13 +55,14 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
   const t = useMessages();
   const s = state.synPath;
   const run = useNinePointSynthesis(createPool);
-  const [selected, setSelected] = useState<number | null>(null);
-  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
+  const { selected, setSelected, view, setView, replaced, replace, canvasRef, ...edit } = useTargetEditing(
+    s.targets,
+    dispatch,
+    st,
+  );
   const [filters, setFilters] = useState<NineFilters>(NO_FILTERS);
   const [chosenClass, setChosenClass] = useState(0);
   const [shownCognate, setShownCognate] = useState(0);
-  const [replaced, setReplaced] = useState(0);
-  const canvasRef = useRef<HTMLCanvasElement>(null);
 
   const points = run.points ?? s.targets;
   const size = targetsExtent(points).size;
@@ -119,21 +118,6 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
       ? best.maxDistance
       : null;
 
-  const replace = (targets: Point[]) => {
-    dispatch({ type: 'setTargets', targets });
-    setSelected(null);
-    setReplaced((n) => n + 1);
-    setView({ zoom: 1, panX: 0, panY: 0 });
-  };
-  const exportScene = (): { scene: PathScene; view: ReturnType<typeof fitView> } | null => {
-    const canvas = canvasRef.current;
-    if (!canvas) return null;
-    const v = fitView(bounds, canvas.clientWidth, canvas.clientHeight, view);
-    const pose = choice ? placedJoints(choice.design, choice.theta2) : null;
-    const names = s.targets.map((_, i) => st.targetName(i + 1));
-    return { scene: { targets: s.targets, selected: null, names, curves, pose }, view: v };
-  };
-
   return (
     <div className="syn-path nine-mode" data-testid="nine-mode">
       <p className="note syn-intro">{nt.intro}</p>
@@ -147,15 +131,9 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
           view={view}
           onViewChange={setView}
           onSelect={setSelected}
-          onMove={(i, p) => dispatch({ type: 'setTargets', targets: s.targets.map((q, k) => (k === i ? p : q)) })}
-          onAdd={(p) => {
-            dispatch({ type: 'setTargets', targets: [...s.targets, p] });
-            setSelected(s.targets.length);
-          }}
-          onRemove={(i) => {
-            dispatch({ type: 'setTargets', targets: s.targets.filter((_, k) => k !== i) });
-            setSelected(null);
-          }}
+          onMove={edit.onMove}
+          onAdd={edit.onAdd}
+          onRemove={edit.onRemove}
           canvasRef={canvasRef}
           st={st}
         />
@@ -218,14 +196,7 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
             stale={run.points !== null && run.points !== undefined && !samePoints(run.points, s.targets)}
             onOpen={() => onOpen({ design: choice.design, markers: points, theta2: choice.theta2 })}
             onExportCsv={() => downloadText(ninePointCsv(classes), 'nine-point-classes.csv', 'text/csv;charset=utf-8')}
-            onExportSvg={() => {
-              const e = exportScene();
-              if (e) exportPathSvg(e.scene, e.view);
-            }}
-            onExportPng={() => {
-              const e = exportScene();
-              if (e) void exportPathPng(e.scene, e.view);
-            }}
+            {...edit.sceneExports(bounds, curves, choice)}
             st={st}
             t={t}
           />

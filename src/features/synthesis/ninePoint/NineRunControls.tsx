@@ -1,5 +1,6 @@
 import { formatNumber } from '../../../shared/format';
 import { NINE_POINT_PATHS } from '../../../synthesis/ninePoint/ninePointSynthesis';
+import { RunPanel } from '../path/RunPanel';
 import type { NinePointMessages } from './ninePointMessages';
 import type { NineRunState } from './useNinePointSynthesis';
 
@@ -70,39 +71,26 @@ export function NineRunControls({ run, refusal, onRun, onCancel, nt }: NineRunCo
         count(p.real),
       )
     : '';
-  const status = statusText(run, nt);
   return (
-    <section className="card syn-card syn-run" data-status={run.status} data-testid="nine-run">
-      <div className="syn-buttons">
-        <button type="button" className="btn btn-primary" disabled={refusal !== null || running} onClick={onRun}>
-          {nt.solve}
-        </button>
-        <button type="button" className="btn" disabled={!running} onClick={onCancel}>
-          {nt.cancel}
-        </button>
-      </div>
-      {refusal ? (
-        <p className="syn-error" role="alert" data-testid="nine-refusal">
-          {refusal}
-        </p>
-      ) : null}
-      {running ? (
-        <div
-          className="syn-progress"
-          role="progressbar"
-          aria-label={nt.progressLabel}
-          aria-valuemin={0}
-          aria-valuemax={100}
-          aria-valuenow={percent}
-          aria-valuetext={text}
-        >
-          <div className="syn-progress-bar" style={{ width: `${percent}%` }} />
-          <span className="syn-progress-text">{text}</span>
-        </div>
-      ) : null}
-      <p className="status-line" role="status" data-testid="nine-status">
-        {status}
-      </p>
-    </section>
+    <RunPanel
+      status={run.status}
+      testId="nine-run"
+      runLabel={nt.solve}
+      cancelLabel={nt.cancel}
+      runDisabled={refusal !== null || running}
+      running={running}
+      onRun={onRun}
+      onCancel={onCancel}
+      progress={{ percent, text, label: nt.progressLabel }}
+      statusText={statusText(run, nt)}
+      statusTestId="nine-status"
+      notes={
+        refusal ? (
+          <p className="syn-error" role="alert" data-testid="nine-refusal">
+            {refusal}
+          </p>
+        ) : null
+      }
+    />
   );
 }

@@ -1,20 +1,12 @@
-import { csvFormatRows } from 'd3-dsv';
 import { radToDeg } from '../../../solver/angles';
 import type { NinePointClass } from '../../../synthesis/ninePoint/ninePointSynthesis';
+import { PLACED_CSV_COLUMNS, csvText, placedCsvCells } from '../path/resultsCsv';
 
 /** The columns of the Nine points mode's "Export results CSV", in order (θ2 at each of the nine points, degrees). */
 export const NINE_CSV_COLUMNS = [
   'class',
   'cognate',
-  'r1',
-  'r2',
-  'r3',
-  'r4',
-  'o2x',
-  'o2y',
-  'ground_deg',
-  'p_dist',
-  'p_angle_deg',
+  ...PLACED_CSV_COLUMNS,
   'branch',
   'grashof',
   'defects',
@@ -28,25 +20,15 @@ export const NINE_CSV_COLUMNS = [
  */
 export function ninePointCsv(classes: readonly NinePointClass[]): string {
   const rows = classes.flatMap((c, i) =>
-    c.cognates.map((d, k) =>
-      [
-        i + 1,
-        k + 1,
-        d.links.r1,
-        d.links.r2,
-        d.links.r3,
-        d.links.r4,
-        d.O2.x,
-        d.O2.y,
-        radToDeg(d.groundAngle),
-        d.pDist,
-        radToDeg(d.pAngle),
-        d.branches[0] ?? d.branch,
-        c.grashof,
-        c.defects.join(' '),
-        ...d.theta2.map(radToDeg),
-      ].map(String),
-    ),
+    c.cognates.map((d, k) => [
+      String(i + 1),
+      String(k + 1),
+      ...placedCsvCells(d),
+      d.branches[0] ?? d.branch,
+      String(c.grashof),
+      c.defects.join(' '),
+      ...d.theta2.map((t) => String(radToDeg(t))),
+    ]),
   );
-  return `${csvFormatRows([[...NINE_CSV_COLUMNS], ...rows])}\n`;
+  return csvText(NINE_CSV_COLUMNS, rows);
 }

@@ -1,5 +1,6 @@
 import { formatNumber, formatSci } from '../../../shared/format';
 import type { SynthesisMessages } from '../synthesisMessages';
+import { RunPanel } from './RunPanel';
 import type { PathRunState } from './usePathSynthesis';
 
 /** Props of RunControls: the run, whether there are targets, and its actions. */
@@ -48,50 +49,34 @@ export function RunControls({ run, canRun, hold, summary, onRun, onCancel, st }:
   const p = run.progress;
   const percent = p ? Math.round(100 * p.fraction) : 0;
   const best = p && Number.isFinite(p.best) ? formatSci(p.best, 3) : '—';
-  const status = statusText(run, st);
   return (
-    <section className="card syn-card syn-run" data-status={run.status}>
-      <div className="syn-buttons">
-        <button
-          type="button"
-          className="btn btn-primary"
-          disabled={!canRun || hold !== null || running}
-          onClick={onRun}
-        >
-          {st.synthesize}
-        </button>
-        <button type="button" className="btn" disabled={!running} onClick={onCancel}>
-          {st.cancel}
-        </button>
-      </div>
-      {!canRun ? <p className="note">{st.needTargets}</p> : null}
-      {canRun && hold ? (
-        <p className="syn-error" data-testid="run-hold">
-          {hold}
-        </p>
-      ) : null}
-      {running ? (
-        <div
-          className="syn-progress"
-          role="progressbar"
-          aria-label={st.progressLabel}
-          aria-valuemin={0}
-          aria-valuemax={100}
-          aria-valuenow={percent}
-          aria-valuetext={st.progressText(String(percent), best)}
-        >
-          <div className="syn-progress-bar" style={{ width: `${percent}%` }} />
-          <span className="syn-progress-text">{st.progressText(String(percent), best)}</span>
-        </div>
-      ) : null}
-      <p className="status-line" role="status" data-testid="synthesis-status">
-        {status}
-      </p>
+    <RunPanel
+      status={run.status}
+      runLabel={st.synthesize}
+      cancelLabel={st.cancel}
+      runDisabled={!canRun || hold !== null || running}
+      running={running}
+      onRun={onRun}
+      onCancel={onCancel}
+      progress={{ percent, text: st.progressText(String(percent), best), label: st.progressLabel }}
+      statusText={statusText(run, st)}
+      statusTestId="synthesis-status"
+      notes={
+        <>
+          {!canRun ? <p className="note">{st.needTargets}</p> : null}
+          {canRun && hold ? (
+            <p className="syn-error" data-testid="run-hold">
+              {hold}
+            </p>
+          ) : null}
+        </>
+      }
+    >
       {summary ? (
         <p className="syn-error" data-testid="no-fit-summary">
           {summary}
         </p>
       ) : null}
-    </section>
+    </RunPanel>
   );
 }
