@@ -159,6 +159,29 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
   },
   {
+    id: 'semicircle-6-timed',
+    title: 'Six points on a semicircle of radius 10 with prescribed timing θ2 = 30°, 60°, … 180°',
+    task: {
+      targets: [
+        [0, 0],
+        [1.9098, 5.8779],
+        [6.9098, 9.5106],
+        [13.09, 9.5106],
+        [18.09, 5.8779],
+        [20, 0],
+      ].map(([x, y]) => ({ x, y })),
+      timing: { kind: 'given', theta2: [30, 60, 90, 120, 150, 180].map(deg) },
+      bounds: WIDE_50,
+      input: 'crank',
+    },
+    exact: false,
+    published: {
+      f: 1.21622,
+      source: 'best published, as quoted in issue 34',
+      note: 'lengths ≤ 50, pivot box ±50, crank input; the published design itself was not available here, so the value is quoted, not recomputed',
+    },
+  },
+  {
     id: 'ellipse-10',
     title: 'Ten points on an ellipse (the tenth repeats the first), free timing',
     task: {
