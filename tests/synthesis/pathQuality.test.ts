@@ -13,29 +13,9 @@ import { levenbergMarquardt } from '../../src/synthesis/levenbergMarquardt';
 import type { LeastSquaresProblem } from '../../src/synthesis/levenbergMarquardt';
 import { projectCrank, turnsFully } from '../../src/synthesis/pathProblem';
 import { BENCHMARK_CASES } from './benchmarkCases';
-import { oraclePoint } from './couplerOracle';
+import { oracleError } from './couplerOracle';
 
 const D = Decimal.clone({ precision: 50 });
-
-/** Σd² of a placed design at the θ2 given (radians), by the 50-digit oracle; Infinity where it does not assemble. */
-export function oracleError(design: PlacedFourBar, theta2: number[], targets: { x: number; y: number }[]): number {
-  const od = {
-    ...design.links,
-    u: design.pDist * Math.cos(design.pAngle),
-    v: design.pDist * Math.sin(design.pAngle),
-    O2x: design.O2.x,
-    O2y: design.O2.y,
-    g: design.groundAngle,
-    sigma: design.branch === 'open' ? (1 as const) : (-1 as const),
-  };
-  let sum = new D(0);
-  for (let i = 0; i < targets.length; i++) {
-    const p = oraclePoint(od, theta2[i]);
-    if (!p) return Infinity;
-    sum = sum.plus(new D(p.x).minus(targets[i].x).pow(2)).plus(new D(p.y).minus(targets[i].y).pow(2));
-  }
-  return sum.toNumber();
-}
 
 const timed = BENCHMARK_CASES.find((c) => c.id === 'semicircle-6-timed')!;
 
