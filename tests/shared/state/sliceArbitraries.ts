@@ -5,7 +5,7 @@ import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { OMEGA_UNITS } from '../../../src/shared/state/inputMotion';
 import { LENGTH_UNITS } from '../../../src/shared/state/slices/designSlice';
 import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../../src/shared/state/slices/forcesSlice';
-import { MAX_TARGETS } from '../../../src/shared/state/slices/synthesisSlice';
+import { MAX_PATH_CHOICE, MAX_TARGETS } from '../../../src/shared/state/slices/synthesisSlice';
 import {
   COORD_MAX,
   MAX_CHOICE,
@@ -144,8 +144,8 @@ const synPath: fc.Arbitrary<AppState['synPath']> = fc.record({
   pivotBox: fc.option(pivotBox, { nil: null }),
   input: fc.constantFrom('crank' as const, 'any' as const),
   seed: fc.integer({ min: 1, max: 2 ** 31 - 1 }),
-  // The candidate shown is not in the link (a link reruns the search): always the best.
-  chosen: fc.constant(0),
+  // The candidate shown (URL cd): a rerun with the link's seed shows it again.
+  chosen: fc.integer({ min: 0, max: MAX_PATH_CHOICE }),
 });
 
 const linkMass = fc.record({

@@ -315,6 +315,8 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['in', 'rocker', false],
   ['sd', '7', true],
   ['sd', '0', false],
+  ['cd', '2', true],
+  ['cd', '-1', false],
   ['ps', '0,0,0;1,2,45', true],
   ['ps', '0,0,0', false],
   ['pc', 'fixed', true],
