@@ -369,10 +369,10 @@ describe('solveMechForces on the offset slider-crank (crank 2, rod 5, offset 1; 
 
 describe('the mechSweep job with forces', () => {
   it('returns the sweep and the forces over the same inputs', async () => {
+    const context = { signal: new AbortController().signal, progress: () => {} };
     const spec = MECHANISM_TEMPLATES.pistonDriven.spec;
     const inputs = Float64Array.from([0, 0.1, 0.2]);
     const job: MechForcesJob = { metresPerUnit: 0.01, rhoKgPerM: 1, gravityMPerS2: 0, inputSpeed: 2 };
-    const context = { signal: new AbortController().signal, progress: () => {} };
     const r = await mechanismHandlers.mechSweep({ spec, inputs, rates: true, forces: job }, context);
     expect(r.ok).toEqual(Uint8Array.from([1, 1, 1]));
     // A slider input: a force (N) along the slide, the same as solveMechForces gives.
