@@ -83,6 +83,25 @@ function expectNear(shown: number[], oracle: V, what: string): void {
   oracle.forEach((v, i) => expect(Math.abs(shown[i] - v.toNumber()), `${what}[${i}]`).toBeLessThan(6e-7));
 }
 
+/**
+ * The x domain a plot's axis draws (data units at its two ends), read from the SVG as a person's ruler would: the
+ * axis line's pixel ends and two labelled ticks' positions, interpolated linearly.
+ */
+async function xAxisDomain(page: Page, testId: string): Promise<[number, number]> {
+  return page.getByTestId(testId).evaluate((svg) => {
+    const axis = svg.querySelector('g.axis-x')!;
+    const d = axis.querySelector('path.domain')!.getAttribute('d')!;
+    const m = /M([-\d.e]+),[-\d.e]+H([-\d.e]+)/.exec(d)!;
+    const ticks = [...axis.querySelectorAll('g.tick')].map((t) => ({
+      px: Number(/translate\(([-\d.e]+)/.exec(t.getAttribute('transform')!)![1]),
+      v: Number(t.querySelector('text')!.textContent!.replace('−', '-')),
+    }));
+    const [a, b] = [ticks[0], ticks[ticks.length - 1]];
+    const at = (px: number) => a.v + ((px - a.px) * (b.v - a.v)) / (b.px - a.px);
+    return [at(Number(m[1])), at(Number(m[2]))] as [number, number];
+  });
+}
+
 async function openSpatial(page: Page, query = 'page=3d'): Promise<void> {
   await page.goto(`./?${query}`);
   await expect(page.getByTestId('spatial-page')).toBeVisible({ timeout: 20_000 });
@@ -150,6 +169,34 @@ test.describe('Spatial page', () => {
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready');
     await page.waitForTimeout(300);
     await page.screenshot({ path: artifact('spatial-rssr.png') });
+  });
+
+  test('a rocking input: the plots span its reachable range, not a full turn; a crank gets the full turn', async ({
+    page,
+  }) => {
+    // Arcs 50, 40, 30, 35: the arc d from A to O4 runs over [10°, 90°] and must stay within [|a3 − a4|, a3 + a4] =
+    // [5°, 65°], so the crank rocks through |θ2| ≤ acos((cos 65° − cos 50° cos 40°) / (sin 50° sin 40°)), about 98.15°.
+    await openSpatial(page, 'page=3d&sk=sph&a1=50&a2=40&a3=30&a4=35&pd=0&t2=10');
+    const [a1, a2, a3, a4] = [rad(50), rad(40), rad(30), rad(35)];
+    const tMax = D.acos(a3.plus(a4).cos().minus(a1.cos().times(a2.cos())).div(a1.sin().times(a2.sin())))
+      .times(180)
+      .div(D.acos(-1))
+      .toNumber();
+    await expect(page.getByTestId('spatial-type')).not.toHaveText('crank-rocker');
+    for (const id of ['theta4', 'omega4', 'alpha4', 'mu']) {
+      await expect(page.getByTestId(`spatial-plot-${id}`).locator('g.axis-x g.tick').first()).toBeAttached();
+      const [lo, hi] = await xAxisDomain(page, `spatial-plot-${id}`);
+      // The range the test computed, to a hundredth of a degree (the axis' pixels are not rounded).
+      expect(Math.abs(lo + tMax), `${id} lower end ${lo}`).toBeLessThan(0.01);
+      expect(Math.abs(hi - tMax), `${id} upper end ${hi}`).toBeLessThan(0.01);
+    }
+    await page.screenshot({ path: artifact('spatial-rocking.png'), fullPage: true });
+    // The spherical crank-rocker preset turns fully: 0 to 360.
+    await page.getByRole('combobox', { name: 'Preset' }).selectOption({ label: 'Spherical crank-rocker' });
+    await expect(page.getByTestId('spatial-type')).toHaveText('crank-rocker');
+    await expect
+      .poll(async () => (await xAxisDomain(page, 'spatial-plot-theta4')).map((v) => Math.round(v * 1e6) / 1e6))
+      .toEqual([0, 360]);
   });
 
   test("exports the CSV with the issue's columns; its first row is the oracle's", async ({ page }) => {
