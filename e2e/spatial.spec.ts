@@ -222,6 +222,40 @@ test.describe('Spatial page', () => {
     });
   });
 
+  test('the input speed and acceleration (w2, al2) set the rates of the numbers and the CSV', async ({ page }) => {
+    // With ω4 = g(θ2) ω2: α4 = g'(θ2) ω2² + g(θ2) α2, g and g' being the oracle's ω4 and α4 at ω2 = 1, α2 = 0.
+    await openSpatial(page, 'page=3d&w2=2.5&al2=-3');
+    await expect(page.getByRole('textbox', { name: 'Input speed ω2' })).toHaveValue('2.5');
+    await expect(page.getByRole('textbox', { name: 'Input acceleration α2' })).toHaveValue('-3');
+    const [w2, al2] = [d('2.5'), d(-3)];
+    const at = (t2: number) => {
+      const o = sphericalOracle(60, 20, 55, 45, t2);
+      return { omega4: o.omega4.times(w2), alpha4: o.alpha4.times(w2.pow(2)).plus(o.omega4.times(al2)) };
+    };
+    const shown = at(30);
+    await expect(page.getByTestId('spatial-omega4')).toContainText(
+      shown.omega4.toSignificantDigits(6).toString().replace('-', '−'),
+    );
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export CSV' }).click(),
+    ]);
+    const lines = readFileSync(await download.path(), 'utf8')
+      .trim()
+      .split('\n');
+    for (const t2 of [0, 90]) {
+      const row = lines[1 + t2].split(',').map(Number);
+      const o = at(t2);
+      for (const [i, w] of [
+        [11, o.omega4],
+        [12, o.alpha4],
+      ] as const) {
+        const x = w.toNumber();
+        expect(Math.abs(row[i] - x), `θ2 = ${t2}, column ${i}`).toBeLessThanOrEqual(1e-13 * Math.max(1, Math.abs(x)));
+      }
+    }
+  });
+
   test('exports a PNG of the 3D view', async ({ page }) => {
     await openSpatial(page);
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
