@@ -83,6 +83,25 @@ function expectNear(shown: number[], oracle: V, what: string): void {
   oracle.forEach((v, i) => expect(Math.abs(shown[i] - v.toNumber()), `${what}[${i}]`).toBeLessThan(6e-7));
 }
 
+/**
+ * The x domain a plot's axis draws (data units at its two ends), read from the SVG as a person's ruler would: the
+ * axis line's pixel ends and two labelled ticks' positions, interpolated linearly.
+ */
+async function xAxisDomain(page: Page, testId: string): Promise<[number, number]> {
+  return page.getByTestId(testId).evaluate((svg) => {
+    const axis = svg.querySelector('g.axis-x')!;
+    const d = axis.querySelector('path.domain')!.getAttribute('d')!;
+    const m = /M([-\d.e]+),[-\d.e]+H([-\d.e]+)/.exec(d)!;
+    const ticks = [...axis.querySelectorAll('g.tick')].map((t) => ({
+      px: Number(/translate\(([-\d.e]+)/.exec(t.getAttribute('transform')!)![1]),
+      v: Number(t.querySelector('text')!.textContent!.replace('−', '-')),
+    }));
+    const [a, b] = [ticks[0], ticks[ticks.length - 1]];
+    const at = (px: number) => a.v + ((px - a.px) * (b.v - a.v)) / (b.px - a.px);
+    return [at(Number(m[1])), at(Number(m[2]))] as [number, number];
+  });
+}
+
 async function openSpatial(page: Page, query = 'page=3d'): Promise<void> {
   await page.goto(`./?${query}`);
   await expect(page.getByTestId('spatial-page')).toBeVisible({ timeout: 20_000 });
@@ -152,6 +171,34 @@ test.describe('Spatial page', () => {
     await page.screenshot({ path: artifact('spatial-rssr.png') });
   });
 
+  test('a rocking input: the plots span its reachable range, not a full turn; a crank gets the full turn', async ({
+    page,
+  }) => {
+    // Arcs 50, 40, 30, 35: the arc d from A to O4 runs over [10°, 90°] and must stay within [|a3 − a4|, a3 + a4] =
+    // [5°, 65°], so the crank rocks through |θ2| ≤ acos((cos 65° − cos 50° cos 40°) / (sin 50° sin 40°)), about 98.15°.
+    await openSpatial(page, 'page=3d&sk=sph&a1=50&a2=40&a3=30&a4=35&pd=0&t2=10');
+    const [a1, a2, a3, a4] = [rad(50), rad(40), rad(30), rad(35)];
+    const tMax = D.acos(a3.plus(a4).cos().minus(a1.cos().times(a2.cos())).div(a1.sin().times(a2.sin())))
+      .times(180)
+      .div(D.acos(-1))
+      .toNumber();
+    await expect(page.getByTestId('spatial-type')).not.toHaveText('crank-rocker');
+    for (const id of ['theta4', 'omega4', 'alpha4', 'mu']) {
+      await expect(page.getByTestId(`spatial-plot-${id}`).locator('g.axis-x g.tick').first()).toBeAttached();
+      const [lo, hi] = await xAxisDomain(page, `spatial-plot-${id}`);
+      // The range the test computed, to a hundredth of a degree (the axis' pixels are not rounded).
+      expect(Math.abs(lo + tMax), `${id} lower end ${lo}`).toBeLessThan(0.01);
+      expect(Math.abs(hi - tMax), `${id} upper end ${hi}`).toBeLessThan(0.01);
+    }
+    await page.screenshot({ path: artifact('spatial-rocking.png'), fullPage: true });
+    // The spherical crank-rocker preset turns fully: 0 to 360.
+    await page.getByRole('combobox', { name: 'Preset' }).selectOption({ label: 'Spherical crank-rocker' });
+    await expect(page.getByTestId('spatial-type')).toHaveText('crank-rocker');
+    await expect
+      .poll(async () => (await xAxisDomain(page, 'spatial-plot-theta4')).map((v) => Math.round(v * 1e6) / 1e6))
+      .toEqual([0, 360]);
+  });
+
   test("exports the CSV with the issue's columns; its first row is the oracle's", async ({ page }) => {
     await openSpatial(page);
     const [download] = await Promise.all([
@@ -173,6 +220,40 @@ test.describe('Spatial page', () => {
       const x = w.toNumber();
       expect(Math.abs(row[i] - x), `column ${i}`).toBeLessThanOrEqual(1e-13 * Math.max(1, Math.abs(x)));
     });
+  });
+
+  test('the input speed and acceleration (w2, al2) set the rates of the numbers and the CSV', async ({ page }) => {
+    // With ω4 = g(θ2) ω2: α4 = g'(θ2) ω2² + g(θ2) α2, g and g' being the oracle's ω4 and α4 at ω2 = 1, α2 = 0.
+    await openSpatial(page, 'page=3d&w2=2.5&al2=-3');
+    await expect(page.getByRole('textbox', { name: 'Input speed ω2' })).toHaveValue('2.5');
+    await expect(page.getByRole('textbox', { name: 'Input acceleration α2' })).toHaveValue('-3');
+    const [w2, al2] = [d('2.5'), d(-3)];
+    const at = (t2: number) => {
+      const o = sphericalOracle(60, 20, 55, 45, t2);
+      return { omega4: o.omega4.times(w2), alpha4: o.alpha4.times(w2.pow(2)).plus(o.omega4.times(al2)) };
+    };
+    const shown = at(30);
+    await expect(page.getByTestId('spatial-omega4')).toContainText(
+      shown.omega4.toSignificantDigits(6).toString().replace('-', '−'),
+    );
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Export CSV' }).click(),
+    ]);
+    const lines = readFileSync(await download.path(), 'utf8')
+      .trim()
+      .split('\n');
+    for (const t2 of [0, 90]) {
+      const row = lines[1 + t2].split(',').map(Number);
+      const o = at(t2);
+      for (const [i, w] of [
+        [11, o.omega4],
+        [12, o.alpha4],
+      ] as const) {
+        const x = w.toNumber();
+        expect(Math.abs(row[i] - x), `θ2 = ${t2}, column ${i}`).toBeLessThanOrEqual(1e-13 * Math.max(1, Math.abs(x)));
+      }
+    }
   });
 
   test('exports a PNG of the 3D view', async ({ page }) => {

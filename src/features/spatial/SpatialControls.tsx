@@ -1,3 +1,4 @@
+import { useSyncExternalStore } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, SpatialState } from '../../shared/state/appState';
 import type { SpatialField } from '../../shared/state/slices/spatialSlice';
@@ -6,6 +7,7 @@ import type { SpatialPreset } from '../../spatial';
 import type { SliderRange } from './SpatialFieldControl';
 import { SpatialFieldControl } from './SpatialFieldControl';
 import type { SpatialMessages } from './spatialMessages';
+import type { SpatialPlayhead } from './spatialPlayhead';
 import { PRESET_IDS, presetById, presetOf, presetPatch } from './spatialModel';
 
 /** Props of SpatialControls: the state, dispatch, Play and the step, and the strings. */
@@ -16,6 +18,8 @@ export interface SpatialControlsProps {
   onPlay: (playing: boolean) => void;
   onStep: (deltaDeg: number) => void;
   sm: SpatialMessages;
+  /** Play's frame ahead of the state: the θ2 field follows it. */
+  playhead: SpatialPlayhead;
 }
 
 const ARC: SliderRange = { min: 0.5, max: 179.5, step: 0.5 };
@@ -43,8 +47,33 @@ const FIELDS: Record<SpatialState['kind'], [SpatialField, SliderRange][]> = {
   ],
 };
 
+/** The θ2 field and slider: the state's θ2, or Play's while it runs ahead (only this field re-renders per frame). */
+function Theta2Field({
+  stateDeg,
+  playhead,
+  onCommit,
+  sm,
+}: {
+  stateDeg: number;
+  playhead: SpatialPlayhead;
+  onCommit: (value: number) => void;
+  sm: SpatialMessages;
+}) {
+  const frame = useSyncExternalStore(playhead.subscribe, playhead.get);
+  return (
+    <SpatialFieldControl
+      field="theta2Deg"
+      value={frame?.theta2Deg ?? stateDeg}
+      slider={{ min: 0, max: 359.5, step: 0.5 }}
+      onCommit={onCommit}
+      sm={sm}
+      decimals={2}
+    />
+  );
+}
+
 /** The linkage's controls: kind, preset, its values, θ2 with Play and Step, and the branch. */
-export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: SpatialControlsProps) {
+export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, playhead }: SpatialControlsProps) {
   const set = (field: SpatialField) => (value: number) => dispatch({ type: 'setSpatialField', field, value });
   const preset = presetOf(s);
   return (
@@ -90,14 +119,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
         ))}
       </div>
       <div className="spatial-input">
-        <SpatialFieldControl
-          field="theta2Deg"
-          value={s.theta2Deg}
-          slider={{ min: 0, max: 359.5, step: 0.5 }}
-          onCommit={set('theta2Deg')}
-          sm={sm}
-          decimals={2}
-        />
+        <Theta2Field stateDeg={s.theta2Deg} playhead={playhead} onCommit={set('theta2Deg')} sm={sm} />
         <div className="spatial-play">
           <button type="button" className="btn btn-small" onClick={() => onStep(-1)} aria-label={sm.stepBack}>
             <span aria-hidden="true">◀ 1°</span>

@@ -1,15 +1,16 @@
 import { radToDeg } from '../../solver';
 import { formatDeg, formatNumber } from '../../shared/format';
-import type { SpatialPose, Vec3 } from '../../spatial';
+import type { Vec3 } from '../../spatial';
+import type { SpatialFrame, SpatialPlayhead } from './spatialPlayhead';
+import { useShownFrame } from './spatialPlayhead';
 import type { SpatialMessages } from './spatialMessages';
 import type { SpatialAnalysis } from './useSpatialAnalysis';
 
-/** Props of SpatialNumbers: the analysis, the pose and μ at θ2 (null where the loop cannot close), the strings. */
+/** Props of SpatialNumbers: the analysis, the frame of the state (base) and Play's playhead ahead of it, the strings. */
 export interface SpatialNumbersProps {
   analysis: SpatialAnalysis;
-  pose: SpatialPose | null;
-  muRad: number | null;
-  theta2Deg: number;
+  playhead: SpatialPlayhead;
+  base: SpatialFrame;
   sm: SpatialMessages;
 }
 
@@ -37,7 +38,8 @@ function PinRow({ name, p, id }: { name: string; p: Vec3 | undefined; id: string
 }
 
 /** The numbers at θ2 (output angle, rates, μ, the pins) and of the cycle (type, input range, swing, μ range). */
-export function SpatialNumbers({ analysis, pose, muRad, theta2Deg, sm }: SpatialNumbersProps) {
+export function SpatialNumbers({ analysis, playhead, base, sm }: SpatialNumbersProps) {
+  const { pose, muRad, theta2Deg } = useShownFrame(playhead, base);
   const { classification: c, motion } = analysis;
   const swing = motion.swings.map((w) => `${formatDeg(radToDeg(w.swing))}°`).join(', ') || '—';
   const mu = motion.transmission;

@@ -1,5 +1,5 @@
 import './SpatialPage.css';
-import { useMemo, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 import { downloadPng, downloadText } from '../../shared/canvas/download';
 import { formatDeg } from '../../shared/format';
@@ -15,6 +15,8 @@ import { spatialCsvText, spatialFileStem } from './spatialExports';
 import { spatialMessagesFor } from './spatialMessages';
 import { SpatialNumbers } from './SpatialNumbers';
 import { SpatialPlots } from './SpatialPlots';
+import type { SpatialFrame } from './spatialPlayhead';
+import { SpatialPlayhead } from './spatialPlayhead';
 import type { SpatialScene } from './spatialScene';
 import type { ViewStatus } from './SpatialView';
 import { SpatialView } from './SpatialView';
@@ -48,26 +50,50 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
   const shownPose = useMemo(() => (linkage && pose ? scenePose(linkage, pose) : null), [linkage, pose]);
   const sceneRef = useRef<SpatialScene | null>(null);
   const [playing, setPlaying] = useState(false);
-  const [direction, setDirection] = useState<1 | -1>(1);
+  const direction = useRef<1 | -1>(1);
+  const [playhead] = useState(() => new SpatialPlayhead());
+  const base = useMemo<SpatialFrame>(
+    () => ({ theta2Deg: s.theta2Deg, branch: s.branch, pose, muRad }),
+    [s.theta2Deg, s.branch, pose, muRad],
+  );
   const [notice, setNotice] = useState<string | null>(null);
   const [viewStatus, setViewStatus] = useState<ViewStatus>('loading');
   const pngOff = viewStatus === 'ready' ? null : viewStatus === 'no-webgl' ? sm.pngNeedsWebgl : sm.pngLoading;
 
-  useAnimationFrame(playing && model !== null, (dt) => {
-    if (!model) return;
-    const next = normalizeTheta2Deg(s.theta2Deg + direction * PLAY_DEG_PER_S * dt);
-    if (muAt(model, next, s.branch) === null) {
+  // A change of the state (an edit, a commit) or of the linkage hands the view back to the state.
+  useEffect(() => playhead.set(null), [playhead, base]);
+
+  // Play moves the playhead and the 3D view every frame without touching the app state (no page or app render per
+  // frame); the state gets θ2 and the branch when Play stops or turns back at a limit.
+  useAnimationFrame(playing && model !== null && input !== null, (dt) => {
+    if (!model || !input) return;
+    const from = playhead.get() ?? base;
+    const next = normalizeTheta2Deg(from.theta2Deg + direction.current * PLAY_DEG_PER_S * dt);
+    const nextPose = poseAt(model, next, from.branch, input);
+    if (nextPose === null) {
       // The input's limit: a real linkage goes back on the other branch (the two meet there).
-      setDirection(direction === 1 ? -1 : 1);
-      dispatch({ type: 'setSpatial', patch: { branch: s.branch === 'open' ? 'crossed' : 'open' } });
+      direction.current = direction.current === 1 ? -1 : 1;
+      const branch = from.branch === 'open' ? 'crossed' : 'open';
+      dispatch({ type: 'setSpatial', patch: { theta2Deg: from.theta2Deg, branch } });
       return;
     }
-    dispatch({ type: 'setSpatialField', field: 'theta2Deg', value: next });
+    playhead.set({ theta2Deg: next, branch: from.branch, pose: nextPose, muRad: muAt(model, next, from.branch) });
+    if (linkage) sceneRef.current?.setPose(scenePose(linkage, nextPose));
   });
 
+  /** Play on or off; off commits the frame on screen to the state (the link, the fields). */
+  const onPlay = (on: boolean) => {
+    const f = playhead.get();
+    if (!on && f) {
+      dispatch({ type: 'setSpatial', patch: { theta2Deg: f.theta2Deg, branch: f.branch } });
+      playhead.set(null);
+    }
+    setPlaying(on);
+  };
   const onStep = (d: number) => {
+    const f = playhead.get() ?? base;
     setPlaying(false);
-    dispatch({ type: 'setSpatialField', field: 'theta2Deg', value: normalizeTheta2Deg(s.theta2Deg + d) });
+    dispatch({ type: 'setSpatial', patch: { theta2Deg: normalizeTheta2Deg(f.theta2Deg + d), branch: f.branch } });
   };
   const fail = (e: unknown) => setNotice(sm.exportFailed(e instanceof Error ? e.message : String(e)));
   const onPng = () => {
@@ -111,13 +137,21 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
         </section>
         <div className="spatial-side">
           <PanelSection id="spatial-controls-title" title={sm.kindLegend}>
-            <SpatialControls s={s} dispatch={dispatch} playing={playing} onPlay={setPlaying} onStep={onStep} sm={sm} />
+            <SpatialControls
+              s={s}
+              dispatch={dispatch}
+              playing={playing}
+              onPlay={onPlay}
+              onStep={onStep}
+              sm={sm}
+              playhead={playhead}
+            />
           </PanelSection>
         </div>
         <div className="spatial-results">
           <PanelSection id="spatial-numbers-title" title={sm.numbersSection}>
             {analysis ? (
-              <SpatialNumbers analysis={analysis} pose={pose} muRad={muRad} theta2Deg={s.theta2Deg} sm={sm} />
+              <SpatialNumbers analysis={analysis} playhead={playhead} base={base} sm={sm} />
             ) : (
               <p className="spatial-warning" role="alert">
                 {error}
@@ -158,7 +192,7 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
       </div>
       {analysis ? (
         <PanelSection id="spatial-plots-title" title={sm.plotsTitle} className="panel-section spatial-plots-section">
-          <SpatialPlots analysis={analysis} theta2Deg={s.theta2Deg} pose={pose} muRad={muRad} sm={sm} />
+          <SpatialPlots analysis={analysis} playhead={playhead} base={base} sm={sm} />
         </PanelSection>
       ) : null}
     </div>

@@ -3,27 +3,33 @@ import type { MarkerAt } from '../../shared/charts/chart';
 import type { XYChartData } from '../../shared/charts/xyChart';
 import { COLORS } from '../../shared/theme/tokens';
 import { radToDeg } from '../../solver';
-import type { SpatialPose } from '../../spatial';
 import { XYChartView } from '../../shared/charts/XYChartView';
-import { plotColumns } from './plotSeries';
+import { plotColumns, plotTheta2Deg } from './plotSeries';
 import type { SpatialMessages } from './spatialMessages';
+import type { SpatialFrame, SpatialPlayhead } from './spatialPlayhead';
+import { useShownFrame } from './spatialPlayhead';
 import type { SpatialAnalysis } from './useSpatialAnalysis';
 
-/** Props of SpatialPlots: the analysis, θ2 and the pose there (the markers), the strings. */
+/** Props of SpatialPlots: the analysis, the frame of the state (base) and Play's playhead ahead of it (the markers), the strings. */
 export interface SpatialPlotsProps {
   analysis: SpatialAnalysis;
-  theta2Deg: number;
-  pose: SpatialPose | null;
-  muRad: number | null;
+  playhead: SpatialPlayhead;
+  base: SpatialFrame;
   sm: SpatialMessages;
 }
 
 /** θ4, ω4, α4 and the transmission angle against θ2 over a turn, each with a marker at θ2. */
-export function SpatialPlots({ analysis, theta2Deg, pose, muRad, sm }: SpatialPlotsProps) {
+export function SpatialPlots({ analysis, playhead, base, sm }: SpatialPlotsProps) {
+  const { pose, muRad, theta2Deg } = useShownFrame(playhead, base);
   const cols = useMemo(() => plotColumns(analysis.sweep), [analysis]);
+  const loDeg = radToDeg(analysis.span.lo);
+  const hiDeg = radToDeg(analysis.span.hi);
   const data = useMemo(() => {
+    // The x axis is the input's reachable range: a full turn only when the input turns fully.
+    const xDomain: [number, number] = [loDeg, hiDeg];
     const one = (label: string, color: string, y: Float64Array): XYChartData => ({
       series: [{ label, color, x: cols.theta2Deg, y }],
+      xDomain,
     });
     return {
       theta4: one('θ4', COLORS.rocker, cols.theta4Deg),
@@ -31,9 +37,9 @@ export function SpatialPlots({ analysis, theta2Deg, pose, muRad, sm }: SpatialPl
       alpha4: one('α4', COLORS.acceleration, cols.alpha4),
       mu: one('μ', COLORS.coupler, cols.muDeg),
     };
-  }, [cols]);
+  }, [cols, loDeg, hiDeg]);
   const marker = (y: number | null, color: string): MarkerAt => ({
-    x: theta2Deg,
+    x: plotTheta2Deg(theta2Deg, loDeg),
     dots: y === null || !Number.isFinite(y) ? [] : [{ y, color }],
   });
   const charts = [
@@ -53,7 +59,6 @@ export function SpatialPlots({ analysis, theta2Deg, pose, muRad, sm }: SpatialPl
         <XYChartView
           key={c.key}
           className="spatial-chart"
-          fullTurn
           data={data[c.key]}
           marker={c.m}
           texts={{ title: c.title, xLabel: sm.axisTheta2, yLabel: c.y }}

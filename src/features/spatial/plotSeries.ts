@@ -1,5 +1,30 @@
-import { radToDeg } from '../../solver';
+import { TWO_PI, radToDeg } from '../../solver';
+import type { InputRange } from '../../solver';
 import type { SpatialSweep } from '../../spatial';
+
+/**
+ * Where the plots' θ2 axis starts and ends, radians: a full turn from 0 for a crank; for an input that rocks, its
+ * reachable range from the first interval's lower end (so a range through 0, −98° … 98°, is one piece), up to the last
+ * interval's upper end; [0, 2π] when nothing is reachable.
+ */
+export function plotSpan(range: InputRange): { lo: number; hi: number } {
+  if (range.full || !range.intervals.length) return { lo: 0, hi: TWO_PI };
+  const lo = range.intervals[0].lo;
+  let hi = lo;
+  for (const iv of range.intervals) hi = Math.max(hi, lo + wrapTwoPi(iv.hi - lo));
+  return { lo, hi };
+}
+
+/** x in [0, 2π) (a full turn's end stays 2π when it is one). */
+function wrapTwoPi(x: number): number {
+  const r = x - TWO_PI * Math.floor(x / TWO_PI);
+  return r === 0 && x > 0 ? TWO_PI : r;
+}
+
+/** θ2 (degrees, any turn) on the plots' axis: in [lo, lo + 360) for the span's lower end lo (degrees). */
+export function plotTheta2Deg(theta2Deg: number, loDeg: number): number {
+  return loDeg + ((((theta2Deg - loDeg) % 360) + 360) % 360);
+}
 
 /** The plots' columns of a sweep: θ2 and θ4 in degrees (θ4 broken where it wraps), ω4, α4, μ in degrees. */
 export interface SpatialPlotColumns {

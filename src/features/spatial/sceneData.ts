@@ -68,10 +68,19 @@ export function pathSegments(xyz: Float64Array, valid: Uint8Array, s: number): n
  * straight chord when they are antipodal or equal within rounding.
  */
 export function arcPoints(p: Vec3, q: Vec3, steps = 32): number[] {
+  const out = new Array<number>(3 * (steps + 1));
+  arcPointsInto(out, p, q, steps);
+  return out;
+}
+
+/**
+ * arcPoints written into out (3 (steps + 1) numbers from offset 0), allocating nothing: the 3D view's moving links,
+ * every frame of Play.
+ */
+export function arcPointsInto(out: Float32Array | number[], p: Vec3, q: Vec3, steps: number): void {
   const dot = Math.min(1, Math.max(-1, p.x * q.x + p.y * q.y + p.z * q.z));
   const angle = Math.acos(dot);
   const s = Math.sin(angle);
-  const out: number[] = [];
   for (let i = 0; i <= steps; i++) {
     const t = i / steps;
     let a = 1 - t;
@@ -80,9 +89,20 @@ export function arcPoints(p: Vec3, q: Vec3, steps = 32): number[] {
       a = Math.sin((1 - t) * angle) / s;
       b = Math.sin(t * angle) / s;
     }
-    out.push(a * p.x + b * q.x, a * p.y + b * q.y, a * p.z + b * q.z);
+    out[3 * i] = a * p.x + b * q.x;
+    out[3 * i + 1] = a * p.y + b * q.y;
+    out[3 * i + 2] = a * p.z + b * q.z;
   }
-  return out;
+}
+
+/** The straight segment from p to q as steps + 1 points into out (an RSSR's rods on the same buffers as arcs). */
+export function chordPointsInto(out: Float32Array, p: Vec3, q: Vec3, steps: number): void {
+  for (let i = 0; i <= steps; i++) {
+    const t = i / steps;
+    out[3 * i] = p.x + t * (q.x - p.x);
+    out[3 * i + 1] = p.y + t * (q.y - p.y);
+    out[3 * i + 2] = p.z + t * (q.z - p.z);
+  }
 }
 
 /** The view's fit: centre and radius of everything drawn. */

@@ -20,7 +20,7 @@ import {
   Vector3,
   WebGLRenderer,
 } from 'three';
-import type { Material, Object3D } from 'three';
+import type { InterleavedBufferAttribute, Material, Object3D } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
@@ -31,7 +31,7 @@ import { COLORS } from '../../shared/theme/tokens';
 import { PI, TWO_PI, degToRad } from '../../solver';
 import type { Vec3 } from '../../spatial';
 import type { SceneLinkage, ScenePose } from './sceneData';
-import { arcPoints, sceneBounds } from './sceneData';
+import { arcPointsInto, chordPointsInto, sceneBounds } from './sceneData';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
 export type Projection = 'perspective' | 'orthographic';
@@ -76,6 +76,37 @@ function fatLine(color: string, widthPx: number, opacity = 1): Line2 {
   return new Line2(new LineGeometry(), m);
 }
 
+/**
+ * A moving link: a fat line of `points` points whose segment buffer is made once and rewritten in place each pose
+ * (LineGeometry.setPositions would allocate new buffers every frame), and its points' scratch buffer.
+ */
+interface MovingLine {
+  line: Line2;
+  points: Float32Array;
+  /** Copies points into the line's segments and marks them for upload. */
+  commit(): void;
+}
+
+function movingLine(color: string, widthPx: number, count: number): MovingLine {
+  const line = fatLine(color, widthPx);
+  const points = new Float32Array(3 * count);
+  line.geometry.setPositions(points);
+  // The pose moves the line anywhere on the unit sphere (or the RSSR's box): no culling on a stale bound.
+  line.frustumCulled = false;
+  const start = line.geometry.getAttribute('instanceStart') as InterleavedBufferAttribute;
+  const segments = start.data.array as Float32Array;
+  return {
+    line,
+    points,
+    commit() {
+      for (let i = 0; i + 1 < count; i++) {
+        for (let k = 0; k < 6; k++) segments[6 * i + k] = points[3 * i + k];
+      }
+      start.data.needsUpdate = true;
+    },
+  };
+}
+
 function setLine(line: Line2, pts: number[]): void {
   if (pts.length < 6) {
     line.visible = false;
@@ -104,10 +135,9 @@ function fan(color: string): Mesh {
   return m;
 }
 
-/** Puts a fan on the arc's points (x y z flat; the centre is the origin). */
-function setFan(m: Mesh, arc: number[]): void {
-  m.visible = arc.length > 0;
-  if (!arc.length) return;
+/** Puts a fan on the arc's points (x y z flat; the centre is the origin), in place. */
+function setFan(m: Mesh, arc: Float32Array): void {
+  m.visible = true;
   const pos = m.geometry.getAttribute('position') as Float32BufferAttribute;
   const a = pos.array as Float32Array;
   a[0] = a[1] = a[2] = 0;
@@ -196,18 +226,23 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     l.material.resolution.copy(size);
     return l;
   };
-  const crank = track(fatLine(COLORS.crank, 7));
-  const coupler = track(fatLine(COLORS.coupler, 7));
-  const rocker = track(fatLine(COLORS.rocker, 7));
-  const pArm = track(fatLine(COLORS.coupler, 3));
+  const links = [COLORS.crank, COLORS.coupler, COLORS.rocker].map((c) => movingLine(c, 7, FAN_STEPS + 1));
+  const [crank, coupler, rocker] = links;
+  const pArm = movingLine(COLORS.coupler, 3, FAN_STEPS + 1);
+  for (const m of [...links, pArm]) track(m.line);
   const pinA = ball(COLORS.crank, 0.045);
   const pinB = ball(COLORS.rocker, 0.045);
   const pinP = ball(COLORS.couplerPoint, 0.04);
   const crankFan = fan(COLORS.crank);
   const couplerFan = fan(COLORS.coupler);
   const rockerFan = fan(COLORS.rocker);
+  const fans: [Mesh, MovingLine][] = [
+    [crankFan, crank],
+    [couplerFan, coupler],
+    [rockerFan, rocker],
+  ];
   const moving = new Group();
-  moving.add(crankFan, couplerFan, rockerFan, crank, coupler, rocker, pArm, pinA, pinB, pinP);
+  moving.add(crankFan, couplerFan, rockerFan, crank.line, coupler.line, rocker.line, pArm.line, pinA, pinB, pinP);
   scene.add(moving);
   let linkage: SceneLinkage | null = null;
   let lastFitKey = '';
@@ -358,27 +393,27 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
         invalidate();
         return;
       }
+      // Every frame of Play: the links' buffers are rewritten in place, nothing is allocated.
       const l = linkage;
-      if (l.kind === 'spherical') {
-        const arcs = [arcPoints(l.crankPivot, p.A), arcPoints(p.A, p.B), arcPoints(l.rockerPivot, p.B)];
-        setLine(crank, arcs[0]);
-        setLine(coupler, arcs[1]);
-        setLine(rocker, arcs[2]);
-        setFan(crankFan, arcs[0]);
-        setFan(couplerFan, arcs[1]);
-        setFan(rockerFan, arcs[2]);
-        setLine(pArm, p.P ? arcPoints(p.A, p.P) : []);
-      } else {
-        for (const f of [crankFan, couplerFan, rockerFan]) setFan(f, []);
-        setLine(crank, [l.crankPivot.x, l.crankPivot.y, l.crankPivot.z, p.A.x, p.A.y, p.A.z]);
-        setLine(coupler, [p.A.x, p.A.y, p.A.z, p.B.x, p.B.y, p.B.z]);
-        setLine(rocker, [l.rockerPivot.x, l.rockerPivot.y, l.rockerPivot.z, p.B.x, p.B.y, p.B.z]);
-        setLine(pArm, []);
+      const spherical = l.kind === 'spherical';
+      const put = spherical ? arcPointsInto : chordPointsInto;
+      put(crank.points, l.crankPivot, p.A, FAN_STEPS);
+      put(coupler.points, p.A, p.B, FAN_STEPS);
+      put(rocker.points, l.rockerPivot, p.B, FAN_STEPS);
+      for (const m of links) m.commit();
+      pArm.line.visible = spherical && p.P !== undefined;
+      if (spherical && p.P) {
+        arcPointsInto(pArm.points, p.A, p.P, FAN_STEPS);
+        pArm.commit();
       }
-      pinA.position.copy(v3(p.A));
-      pinB.position.copy(v3(p.B));
+      for (const [f, m] of fans) {
+        if (spherical) setFan(f, m.points);
+        else f.visible = false;
+      }
+      pinA.position.set(p.A.x, p.A.y, p.A.z);
+      pinB.position.set(p.B.x, p.B.y, p.B.z);
       pinP.visible = p.P !== undefined;
-      if (p.P) pinP.position.copy(v3(p.P));
+      if (p.P) pinP.position.set(p.P.x, p.P.y, p.P.z);
       invalidate();
     },
     setProjection(p) {

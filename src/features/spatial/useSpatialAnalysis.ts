@@ -13,6 +13,7 @@ import {
 } from '../../spatial';
 import type { SceneLinkage } from './sceneData';
 import { sceneLinkage } from './sceneData';
+import { plotSpan } from './plotSeries';
 import { modelOf } from './spatialModel';
 
 /** Steps per turn of the plots' and the 3D view's sweep (half a degree). */
@@ -37,6 +38,8 @@ export interface SpatialAnalysis {
   classification: SpatialClassification;
   motion: OutputMotion;
   scene: SceneLinkage;
+  /** The plots' θ2 axis, radians: a full turn from 0, or the reachable range of an input that rocks (plotSpan). */
+  span: { lo: number; hi: number };
 }
 
 /** The linkage's analysis, or the error that names a bad value (null analysis). */
@@ -44,11 +47,13 @@ export function analyse(s: SpatialState): { analysis: SpatialAnalysis | null; er
   try {
     const model = modelOf(s);
     const input = inputOf(s);
-    const sweep = sweepSpatial(model, s.branch, { steps: SWEEP_STEPS, ...input });
     const classification = model.kind === 'spherical' ? classifySpherical(model.linkage) : classifyRSSR(model.linkage);
+    const span = plotSpan(classification.inputRange);
+    // From the range's lower end: a rocking input's range is one piece of the sweep, its end a sample.
+    const sweep = sweepSpatial(model, s.branch, { steps: SWEEP_STEPS, start: span.lo, ...input });
     const motion = outputMotion(model, s.branch);
     return {
-      analysis: { model, input, sweep, classification, motion, scene: sceneLinkage(model, sweep) },
+      analysis: { model, input, sweep, classification, motion, scene: sceneLinkage(model, sweep), span },
       error: null,
     };
   } catch (e) {

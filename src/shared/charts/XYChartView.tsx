@@ -13,7 +13,7 @@ export interface XYChartViewProps {
   testId: string;
   /** The chart box's own class, beside chart-box. */
   className: string;
-  /** x is an angle over one turn: the axis spans 0 to 360 whatever the data covers. */
+  /** x is an angle over one turn: the axis spans 0 to 360 unless the data give their own xDomain (an input that rocks). */
   fullTurn?: boolean;
 }
 

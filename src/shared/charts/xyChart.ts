@@ -29,6 +29,8 @@ export interface XYSeries {
 /** Data of an x–y chart. */
 export interface XYChartData {
   series: XYSeries[];
+  /** The x domain these data are plotted on (an input's reachable range), not padded or made nice; default the fit's. */
+  xDomain?: [number, number];
 }
 
 /** How an x–y chart fits its data: equal units per pixel on both axes, the origin in view. */
@@ -107,13 +109,15 @@ function fittedLinearTicks(
  * or, with equalAspect, widened to equal units per pixel instead (a nice domain would undo it).
  */
 export function xyFrame(data: XYChartData, plot: PlotArea, fit: XYFit = {}): Omit<ChartScales, 'iw' | 'ih'> {
-  let xd = fit.xDomain ?? paddedExtent(finiteValues(data.series, 'x'), fit.includeOrigin);
+  // The data's own domain (the reachable range of an input that rocks) wins over the fit's full turn.
+  const fixedX = data.xDomain ?? fit.xDomain;
+  let xd = fixedX ?? paddedExtent(finiteValues(data.series, 'x'), fit.includeOrigin);
   let yd = paddedExtent(finiteValues(data.series, 'y'), fit.includeOrigin);
   if (fit.equalAspect) ({ x: xd, y: yd } = equalAspectDomains(xd, yd, plot.iw, plot.ih));
   const x = scaleLinear().domain(xd).range([0, plot.iw]);
   const y = scaleLinear().domain(yd).range([plot.ih, 0]);
   if (!fit.equalAspect) {
-    if (!fit.xDomain) x.nice(plot.xCount);
+    if (!fixedX) x.nice(plot.xCount);
     y.nice(plot.yCount);
   }
   // y labels stack vertically: they need the font's height between them, not their width.

@@ -10,7 +10,10 @@ import {
 } from '../../../src/shared/state/slices/spatialSlice';
 import { SPATIAL_PRESETS, sweepSpatial } from '../../../src/spatial';
 import { pathSegments, sceneLinkage, scenePose } from '../../../src/features/spatial/sceneData';
-import { plotColumns } from '../../../src/features/spatial/plotSeries';
+import { plotColumns, plotSpan, plotTheta2Deg } from '../../../src/features/spatial/plotSeries';
+import { analyse } from '../../../src/features/spatial/useSpatialAnalysis';
+import { chartSize, plotArea } from '../../../src/shared/charts/chart';
+import { xyFrame } from '../../../src/shared/charts/xyChart';
 import { spatialCsvText, spatialFileStem } from '../../../src/features/spatial/spatialExports';
 import { modelOf, presetOf, presetPatch } from '../../../src/features/spatial/spatialModel';
 
@@ -169,6 +172,43 @@ describe('spatialCsvText', () => {
     expect(spatialFileStem({ ...presetState('rssr-skew'), branch: 'crossed' })).toBe(
       'spatial_rssr_1-4-2-3-60-0.5-1_crossed',
     );
+  });
+});
+
+describe('plotSpan', () => {
+  it("is the rocking input's reachable range, one piece through 0, and a full turn only for a crank", () => {
+    // Arcs 50, 40, 30, 35: the arc from A to O4 must stay within a3 + a4 = 65°, so |θ2| ≤ acos((cos 65° − cos 50°
+    // cos 40°) / (sin 50° sin 40°)) (about 98.15°); |a3 − a4| = 5° < |a1 − a2| = 10° adds no hole.
+    const deg = (x: number) => rad(x);
+    const tMax = D.acos(
+      deg(65)
+        .cos()
+        .minus(deg(50).cos().times(deg(40).cos()))
+        .div(deg(50).sin().times(deg(40).sin())),
+    );
+    const rocking = analyse({ ...DEFAULT_SPATIAL, a1Deg: 50, a2Deg: 40, a3Deg: 30, a4Deg: 35, pDistDeg: 0 }).analysis!;
+    expect(rocking.classification.inputRange.full).toBe(false);
+    // The range's ends are moved inward until the solver closes there: within 1e-12 rad of the oracle.
+    expect(Math.abs(rocking.span.lo + tMax.toNumber())).toBeLessThan(1e-12);
+    expect(Math.abs(rocking.span.hi - tMax.toNumber())).toBeLessThan(1e-12);
+    expect(plotSpan(rocking.classification.inputRange)).toEqual(rocking.span);
+    // The sweep starts at the range's lower end, so the range is one run of closing samples.
+    expect(rocking.sweep.theta2[0]).toBe(rocking.span.lo);
+    expect(rocking.sweep.valid[0]).toBe(1);
+    const crank = analyse(DEFAULT_SPATIAL).analysis!;
+    expect(crank.span).toEqual({ lo: 0, hi: 2 * Math.PI });
+    // A shown θ2 of 350° is −10° on the rocking axis.
+    expect(plotTheta2Deg(350, -98)).toBe(-10);
+    expect(plotTheta2Deg(10, -98)).toBe(10);
+  });
+
+  it("puts a chart's x axis on the data's own domain, not the fit's full turn", () => {
+    const area = plotArea(chartSize({ width: 500, height: 300 }));
+    const series = [{ label: 'θ4', color: '#000', x: [-90, 0, 90], y: [1, 2, 3] }];
+    expect(xyFrame({ series, xDomain: [-98.15, 98.15] }, area, { xDomain: [0, 360] }).x.domain()).toEqual([
+      -98.15, 98.15,
+    ]);
+    expect(xyFrame({ series }, area, { xDomain: [0, 360] }).x.domain()).toEqual([0, 360]);
   });
 });
 
