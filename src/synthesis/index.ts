@@ -58,9 +58,10 @@ export { toFrame, toPlane } from './poseFrame';
 export { robertsCognates } from './cognates';
 export { SAME_DESIGN, sameDesign } from './pathScreen';
 export type { RobertsCognate } from './cognates';
-export { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from './ninePoint';
+export { NINE_POINT_PATHS, mergeNinePoint, ninePointJumps, ninePointRefusal, ninePointSynthesis } from './ninePoint';
 export type {
   NinePointClass,
+  NinePointEnd,
   NinePointLinkage,
   NinePointOptions,
   NinePointRefusal,

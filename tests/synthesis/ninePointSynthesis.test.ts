@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import type { Point } from '../../src/solver';
-import { NINE_POINT_PATHS, mergeNinePoint, ninePointRefusal, ninePointSynthesis } from '../../src/synthesis';
+import {
+  NINE_POINT_PATHS,
+  mergeNinePoint,
+  ninePointJumps,
+  ninePointRefusal,
+  ninePointSynthesis,
+} from '../../src/synthesis';
 import type { NinePointResult } from '../../src/synthesis';
 import { robertsCognates } from '../../src/synthesis/cognates';
 import { orbit, orbitKey, sameKey } from '../../src/synthesis/ninePoint/group';
@@ -96,7 +102,7 @@ describe('ninePointSynthesis', () => {
   it('gives back a linkage built by hand and both its Roberts cognates from nine points of its curve', async () => {
     const i = await startIndexOf(KNOWN_POINTS, KNOWN, KNOWN_THETA2[0]);
     const r = await ninePointSynthesis(KNOWN_POINTS, { paths: { start: i, end: i + 1 } });
-    expect(r.paths).toEqual({ total: 1, finished: 1, failed: 0 });
+    expect(r.paths).toEqual({ total: 1, finished: 1, failed: 0, retracked: 0 });
     expect(r.classes.length).toBe(1);
     const got = r.classes[0].cognates;
     expect(got.length).toBe(3);
@@ -174,12 +180,44 @@ describe('ninePointSynthesis', () => {
     };
     const m = mergeNinePoint([r, other, again]);
     expect(m.classes.length).toBe(1);
-    expect(m.paths).toEqual({ total: 4, finished: 3, failed: 1 });
+    expect(m.paths).toEqual({ total: 4, finished: 3, failed: 1, retracked: 0 });
+  });
+
+  it('re-tracks a path that jumped onto a path of another slice, and counts it re-tracked', async () => {
+    const i = await startIndexOf(KNOWN_POINTS, KNOWN, KNOWN_THETA2[0]);
+    const j = i === 0 ? 1 : i - 1;
+    const a = await ninePointSynthesis(KNOWN_POINTS, { paths: { start: i, end: i + 1 } });
+    const b = await ninePointSynthesis(KNOWN_POINTS, { paths: { start: j, end: j + 1 } });
+    expect(a.ends!.length).toBe(1);
+    expect(sameKey(a.ends![0].key, b.ends![0].key, 1e-6)).toBe(false);
+    // The injected jump: slice b's path j ends where slice a's path i does (the known linkage's orbit), its class too.
+    const jumped: typeof b = {
+      ...b,
+      classes: a.classes.map((c) => ({ ...c, path: j })),
+      ends: [{ path: j, key: a.ends![0].key }],
+    };
+    expect(ninePointJumps([a, jumped])).toEqual([Math.min(i, j), Math.max(i, j)]);
+    // Merged as they are, the jump is said: one class, the second path failed.
+    expect(mergeNinePoint([a, jumped]).paths).toEqual({ total: 2, finished: 1, failed: 1, retracked: 0 });
+    const again = await ninePointSynthesis(KNOWN_POINTS, { retrack: ninePointJumps([a, jumped]) });
+    expect(again.redone).toEqual([Math.min(i, j), Math.max(i, j)]);
+    const m = mergeNinePoint([a, jumped, again]);
+    expect(ninePointJumps([a, jumped, again])).toEqual([]);
+    expect(m.paths).toEqual({ total: 2, finished: 2, failed: 0, retracked: 2 });
+    // Path i still gives the known linkage's class, once; path j its own end again.
+    expect(m.classes.filter((c) => c.path === i).length).toBe(1);
+    expect(m.classes.filter((c) => c.path === j).length).toBe(b.classes.length);
+    expect(m.ends!.map((e) => e.path).sort((x, y) => x - y)).toEqual([Math.min(i, j), Math.max(i, j)]);
+    expect(sameKey(m.ends!.find((e) => e.path === j)!.key, b.ends![0].key, 1e-6)).toBe(true);
+  });
+
+  it('refuses a re-track of a path the start system does not have', async () => {
+    await expect(ninePointSynthesis(KNOWN_POINTS, { retrack: [NINE_POINT_PATHS] })).rejects.toThrow(/retrack\[0\]/);
   });
 
   it('merges slices by summing paths and concatenating classes', () => {
     const a: NinePointResult = { classes: [], paths: { total: 3, finished: 2, failed: 1 } };
     const b: NinePointResult = { classes: [], paths: { total: 5, finished: 5, failed: 0 } };
-    expect(mergeNinePoint([a, b]).paths).toEqual({ total: 8, finished: 7, failed: 1 });
+    expect(mergeNinePoint([a, b]).paths).toEqual({ total: 8, finished: 7, failed: 1, retracked: 0 });
   });
 });

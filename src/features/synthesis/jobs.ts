@@ -28,6 +28,8 @@ export interface NinePointPartParams {
   points: Point[];
   start: number;
   end: number;
+  /** Start paths to track again instead of the slice (ninePointJumps after the merge). */
+  retrack?: number[];
 }
 
 /** Time allowed between two progress reports of a nine-point slice (ms): 16 paths on a slow phone, with room. */

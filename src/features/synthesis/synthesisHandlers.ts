@@ -24,11 +24,12 @@ export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
   },
   async ninePointPart(params, { signal, progress }) {
     const { ninePointSynthesis } = await import('../../synthesis');
-    const { points, start, end } = params;
+    const { points, start, end, retrack } = params;
     // The stage is the real roots found so far (a number as text).
     return ninePointSynthesis(points, {
       signal,
       paths: { start, end },
+      retrack,
       onProgress: ({ done, total, found }) => progress(done / total, String(found)),
     });
   },

@@ -104,7 +104,7 @@ export function orbitKey(z: Float64Array): Float64Array {
 }
 
 /** Whether two orbit keys agree to tol relative to their size. */
-export function sameKey(k1: Float64Array, k2: Float64Array, tol: number): boolean {
+export function sameKey(k1: ArrayLike<number>, k2: ArrayLike<number>, tol: number): boolean {
   let d = 0;
   let m = 0;
   for (let i = 0; i < k1.length; i++) {

@@ -25,22 +25,40 @@ export interface NinePointClass {
   cognates: NinePointLinkage[];
   grashof: boolean;
   defects: ('circuit' | 'order' | 'branch')[];
+  /** The start path (index into the shipped start system) that found it. */
+  path?: number;
+}
+
+/** Where a start path ended at a finite root: its index and the orbit key of its end (8 numbers, see orbitKey). */
+export interface NinePointEnd {
+  path: number;
+  key: number[];
 }
 
 /**
  * Every real, non-degenerate class found, and the paths: each tracked path is one orbit of six roots (two labellings ×
- * three cognates); finished counts paths that ended at a regular root or at infinity, failed those lost.
+ * three cognates); finished counts paths that ended at a regular root or at infinity, failed those lost; retracked
+ * the paths tracked again, carefully, because two paths had ended in one orbit (one of them jumped). ends lists every
+ * path that ended at a finite root with its orbit key, so that a merge of slices finds a path that jumped onto a path
+ * of another slice (ninePointJumps).
  */
 export interface NinePointResult {
   classes: NinePointClass[];
-  paths: { total: number; finished: number; failed: number };
+  paths: { total: number; finished: number; failed: number; retracked?: number };
+  ends?: NinePointEnd[];
+  /** The start paths this result tracked again (options.retrack): in a merge they replace those paths' first ends. */
+  redone?: number[];
 }
 
-/** Options: cancel, progress, and a slice [start, end) of the start solutions for a worker pool. */
+/**
+ * Options: cancel, progress, and a slice [start, end) of the start solutions for a worker pool; or retrack, start
+ * paths to track again carefully (those ninePointJumps names after a merge), which replace them in mergeNinePoint.
+ */
 export interface NinePointOptions {
   signal?: AbortSignalLike;
   onProgress?: (p: { done: number; total: number; found: number }) => void;
   paths?: { start: number; end: number };
+  retrack?: number[];
 }
 
 /** A linkage passes through a point when its coupler point is within this of it (relative to the points' size). */
@@ -288,6 +306,13 @@ export async function ninePointSynthesis(points: Point[], options: NinePointOpti
   const n = start.roots.length;
   const from = Math.max(0, Math.min(n, Math.floor(options.paths?.start ?? 0)));
   const to = Math.max(from, Math.min(n, Math.floor(options.paths?.end ?? n)));
+  const retrack = options.retrack;
+  retrack?.forEach((i, k) => {
+    if (!Number.isInteger(i) || i < 0 || i >= n) {
+      throw new Error(`retrack[${k}] = ${i}: a start path index from 0 to ${n - 1} needed`);
+    }
+  });
+  const indices = retrack ? [...new Set(retrack)] : Array.from({ length: to - from }, (_, k) => from + k);
   const tracker = new Tracker();
   tracker.setSegment(start.params, target, GAMMA[0], GAMMA[1]);
   const ends: { z: Float64Array; key: Float64Array; index: number }[] = [];
@@ -301,11 +326,12 @@ export async function ninePointSynthesis(points: Point[], options: NinePointOpti
       : tracker.track(z, { hMax: 0.1 });
     return { z, status: r.status };
   };
-  for (let i = from; i < to; i++) {
+  for (let done = 0; done < indices.length; done++) {
+    const i = indices[done];
     // Cancelled: what is done so far, with finished + failed < total saying the rest was not tracked.
     if (options.signal?.aborted) break;
-    let r = trackOne(i, false);
-    if (r.status === 'failed') r = trackOne(i, true);
+    let r = trackOne(i, !!retrack);
+    if (r.status === 'failed' && !retrack) r = trackOne(i, true);
     if (r.status === 'failed') failed++;
     else {
       finished++;
@@ -314,14 +340,17 @@ export async function ninePointSynthesis(points: Point[], options: NinePointOpti
         if (realPart(r.z)) real++;
       }
     }
-    if (options.onProgress && ((i - from) % 16 === 15 || i === to - 1)) {
-      options.onProgress({ done: i - from + 1, total: to - from, found: real });
+    if (options.onProgress && (done % 16 === 15 || done === indices.length - 1)) {
+      options.onProgress({ done: done + 1, total: indices.length, found: real });
       await Promise.resolve();
     }
   }
   // Two paths that end in one orbit mean one jumped: track them again, carefully; a duplicate that stays is failed.
+  let retracked = retrack ? indices.length : 0;
   for (const group of duplicates(ends.map((e) => e.key))) {
     for (const k of group) {
+      if (retrack) continue;
+      retracked++;
       const r = trackOne(ends[k].index, true);
       if (r.status === 'finished') ends[k] = { z: r.z, key: orbitKey(r.z), index: ends[k].index };
     }
@@ -336,13 +365,18 @@ export async function ninePointSynthesis(points: Point[], options: NinePointOpti
   for (let k = 0; k < ends.length; k++) {
     const w = drop.has(k) ? null : realPart(ends[k].z);
     const cls = w && classOf(w, target, points, size);
-    if (cls) classes.push(cls);
+    if (cls) classes.push({ ...cls, path: ends[k].index });
   }
-  return { classes, paths: { total: to - from, finished, failed } };
+  return {
+    classes,
+    paths: { total: indices.length, finished, failed, retracked },
+    ends: ends.filter((_, k) => !drop.has(k)).map((e) => ({ path: e.index, key: Array.from(e.key) })),
+    ...(retrack ? { redone: indices } : {}),
+  };
 }
 
 /** Groups (two or more) of indices whose orbit keys agree. */
-function duplicates(keys: Float64Array[]): number[][] {
+function duplicates(keys: ArrayLike<number>[]): number[][] {
   const order = keys.map((_, i) => i).sort((i, j) => keys[i][0] - keys[j][0]);
   const taken = new Set<number>();
   const groups: number[][] = [];
@@ -396,33 +430,82 @@ function classPivots(c: NinePointClass): Point[] {
 }
 
 /**
- * The union of slices' results: path counts summed, classes concatenated. A class found by two slices (a path that
- * jumped to an orbit another slice also reached; one slice alone re-tracks such paths) is kept once and the later
- * path counted failed, so a jump is said, not hidden.
+ * The start paths of slices' results that ended in one orbit with a path of another slice (one of them jumped; a
+ * slice alone re-tracks its own): track them again with options.retrack and merge that result in too.
+ */
+export function ninePointJumps(parts: NinePointResult[]): number[] {
+  const ends = liveEnds(parts);
+  const out = new Set<number>();
+  for (const g of duplicates(ends.map((e) => e.key))) {
+    if (new Set(g.map((k) => ends[k].part)).size > 1) g.forEach((k) => out.add(ends[k].path));
+  }
+  return [...out].sort((a, b) => a - b);
+}
+
+/** Every part's ends, less those a later re-track (redone) replaces: with the part each is from. */
+function liveEnds(parts: NinePointResult[]): (NinePointEnd & { part: number })[] {
+  const out: (NinePointEnd & { part: number })[] = [];
+  parts.forEach((r, part) => {
+    const later = new Set(parts.slice(part + 1).flatMap((q) => q.redone ?? []));
+    for (const e of r.ends ?? []) if (!later.has(e.path)) out.push({ ...e, part });
+  });
+  return out;
+}
+
+/**
+ * The union of slices' results: path counts summed, classes concatenated. A re-track (a result with redone) replaces
+ * the first ends and classes of its paths. Two paths of different slices still ending in one orbit (by the ends' keys,
+ * or for results without ends by a class's three ground pivots to 1e-7) keep their class once and count the later
+ * path failed, so a jump is said, not hidden.
  */
 export function mergeNinePoint(parts: NinePointResult[]): NinePointResult {
-  const classes: NinePointClass[] = [];
-  const keys: Point[][] = [];
-  let dropped = 0;
-  for (const c of parts.flatMap((r) => r.classes)) {
-    const k = classPivots(c);
-    const same = keys.some(
-      (q) =>
-        q.length === k.length &&
-        q.every((p, i) => Math.hypot(p.x - k[i].x, p.y - k[i].y) <= SAME_CLASS * (1 + Math.hypot(p.x, p.y))),
-    );
-    if (same) dropped++;
-    else {
-      classes.push(c);
-      keys.push(k);
+  const paths = { total: 0, finished: 0, failed: 0, retracked: 0 };
+  for (const r of parts) {
+    paths.total += r.paths.total;
+    paths.finished += r.paths.finished;
+    paths.failed += r.paths.failed;
+    paths.retracked += r.paths.retracked ?? 0;
+  }
+  // Paths a later part tracked again: their first ends were finished paths, now counted by the re-track.
+  const replaced = new Set<string>();
+  parts.forEach((r, part) => {
+    const later = new Set(parts.slice(part + 1).flatMap((q) => q.redone ?? []));
+    for (const e of r.ends ?? []) {
+      if (!later.has(e.path)) continue;
+      replaced.add(`${part}:${e.path}`);
+      paths.total--;
+      paths.finished--;
+    }
+  });
+  const ends = liveEnds(parts);
+  const jumped = new Set<string>();
+  for (const g of duplicates(ends.map((e) => e.key))) {
+    for (const k of g.slice(1)) {
+      jumped.add(`${ends[k].part}:${ends[k].path}`);
+      paths.finished--;
+      paths.failed++;
     }
   }
-  return {
-    classes,
-    paths: {
-      total: parts.reduce((s, r) => s + r.paths.total, 0),
-      finished: parts.reduce((s, r) => s + r.paths.finished, 0) - dropped,
-      failed: parts.reduce((s, r) => s + r.paths.failed, 0) + dropped,
-    },
-  };
+  const classes: NinePointClass[] = [];
+  const keys: Point[][] = [];
+  parts.forEach((r, part) => {
+    for (const c of r.classes) {
+      const id = `${part}:${c.path}`;
+      if (replaced.has(id) || jumped.has(id)) continue;
+      const k = classPivots(c);
+      const same = keys.some(
+        (q) =>
+          q.length === k.length &&
+          q.every((p, i) => Math.hypot(p.x - k[i].x, p.y - k[i].y) <= SAME_CLASS * (1 + Math.hypot(p.x, p.y))),
+      );
+      if (same) {
+        paths.finished--;
+        paths.failed++;
+      } else {
+        classes.push(c);
+        keys.push(k);
+      }
+    }
+  });
+  return { classes, paths, ends: ends.map(({ path, key }) => ({ path, key })) };
 }

@@ -47,7 +47,7 @@ function statusText(run: NineRunState, nt: NinePointMessages): string | null {
             r.paths.failed,
             formatNumber(run.elapsedMs / 1000, 3),
             run.workers,
-          )
+          ) + (r.paths.retracked ? nt.statusRetracked(r.paths.retracked) : '')
         : null;
     default:
       return null;

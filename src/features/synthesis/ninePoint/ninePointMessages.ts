@@ -42,6 +42,8 @@ export interface NinePointMessages {
   /** A cancelled run: paths and roots tracked of all; the classes found so far stay. */
   statusCancelled: (tracked: string, total: string, roots: string, rootsTotal: string) => string;
   statusFailed: (why: string) => string;
+  /** Added to statusDone when paths were tracked again because two had ended in one orbit (one jumped). */
+  statusRetracked: (n: number) => string;
   /** "64 real linkage classes, 192 linkages". */
   classCount: (classes: number, linkages: number) => string;
   noClasses: string;

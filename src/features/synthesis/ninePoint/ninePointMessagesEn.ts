@@ -25,6 +25,8 @@ export const ninePointMessagesEn: NinePointMessages = {
     `Cancelled after ${tracked} of ${total} paths (${roots} of ${rootsTotal} roots): the classes below are those ` +
     'found so far, not all.',
   statusFailed: (why) => `The run failed: ${why}`,
+  statusRetracked: (n) =>
+    ` ${n} path${n === 1 ? ' was' : 's were'} tracked again, carefully: two paths had ended at one solution.`,
   classCount: (classes, linkages) =>
     `${classes} real linkage class${classes === 1 ? '' : 'es'}, ${linkages} linkage${linkages === 1 ? '' : 's'}`,
   noClasses: 'No real linkage passes through these nine points.',

@@ -22,6 +22,7 @@ export const ninePointMessagesZhTw: NinePointMessages = {
   statusCancelled: (tracked, total, roots, rootsTotal) =>
     `已取消：${total} 條路徑中追蹤了 ${tracked} 條（${rootsTotal} 個根中 ${roots} 個）；下列只是目前找到的類別，並非全部。`,
   statusFailed: (why) => `執行失敗：${why}`,
+  statusRetracked: (n) => `有 ${n} 條路徑因兩條路徑收斂到同一解而重新仔細追蹤。`,
   classCount: (classes, linkages) => `${classes} 個實數連桿類別，共 ${linkages} 個連桿`,
   noClasses: '沒有實數連桿通過這九點。',
   classesTitle: '連桿類別',

@@ -1,7 +1,7 @@
 import { useCallback, useEffect, useRef, useState } from 'react';
 import type { Point } from '../../../solver/kinematics';
 import type { NinePointResult } from '../../../synthesis/ninePoint/ninePointSynthesis';
-import { NINE_POINT_PATHS, mergeNinePoint } from '../../../synthesis/ninePoint/ninePointSynthesis';
+import { NINE_POINT_PATHS, mergeNinePoint, ninePointJumps } from '../../../synthesis/ninePoint/ninePointSynthesis';
 import type { SynthesisPool } from '../path/usePathSynthesis';
 
 /** Start paths in one slice sent to a worker: small enough that Cancel loses little and the workers stay balanced. */
@@ -154,6 +154,17 @@ export function useNinePointSynthesis(createPool: () => SynthesisPool) {
       try {
         await Promise.all(Array.from({ length: p.size }, worker));
         if (controller.signal.aborted) return;
+        // A path that jumped onto a path of another slice shows only now: track those paths again, carefully.
+        const jumps = ninePointJumps(done);
+        if (jumps.length > 0) {
+          const again = await p.run(
+            'ninePointPart',
+            { points, start: 0, end: 0, retrack: jumps },
+            { signal: controller.signal },
+          ).result;
+          if (again === null || controller.signal.aborted) return;
+          done.push(again);
+        }
         const finished: NineRunState = {
           status: 'done',
           progress: null,

@@ -52,7 +52,7 @@ describe('nineResultOf', () => {
     const a: NinePointResult = { classes: [cls(true, [], 0)], paths: { total: 32, finished: 31, failed: 1 } };
     const b: NinePointResult = { classes: [], paths: { total: 32, finished: 32, failed: 0 } };
     const r = nineResultOf([a, b], NINE_POINT_PATHS);
-    expect(r.paths).toEqual({ total: NINE_POINT_PATHS, finished: 63, failed: 1 });
+    expect(r.paths).toEqual({ total: NINE_POINT_PATHS, finished: 63, failed: 1, retracked: 0 });
     expect(r.classes.length).toBe(1);
   });
 });
