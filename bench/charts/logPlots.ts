@@ -12,10 +12,10 @@ export function makeLogCharts(
   height: number,
 ) {
   const text = { title: 'NR convergence', xLabel: 'iteration', yLabel: '|f|', toleranceLabel: 'tol', emptyText: '' };
-  const conv = createConvergenceChart(svgs.conv, { ...text, width, height });
+  const conv = createConvergenceChart(svgs.conv, width, height, text);
   return {
     convergence(runs: ConvergenceRun[], tolerance: number) {
-      conv.update({ runs, tolerance });
+      conv.update({ runs, tolerance, toleranceLabel: 'tol' });
     },
     diagram(r: LabResult, method: SweepMethod, tol: number) {
       drawWorkPrecisionChart(svgs.wp, r.series, {

@@ -13,7 +13,8 @@ import {
   minus,
   prepareSvg,
   styleAxis,
-  drawGridLines,
+  drawGridX,
+  drawGridY,
   drawChartText,
 } from '../../shared/charts/chartFrame';
 import {
@@ -248,7 +249,9 @@ function drawPanelAxes(
   yFormat: (d: number, i: number) => string,
   showXNumbers: boolean,
 ): void {
-  drawGridLines(child(panel, 'g', 'grid'), iw, h, yTicks, y, sc.xTicks, sc.x);
+  const grid = child(panel, 'g', 'grid');
+  drawGridY(grid, iw, yTicks, y);
+  drawGridX(grid, h, sc.xTicks, sc.x);
   const ax = child(panel, 'g', 'axis-x').attr('transform', `translate(0,${h})`);
   ax.call(
     axisBottom(sc.x)

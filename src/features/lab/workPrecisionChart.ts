@@ -15,7 +15,8 @@ import {
   minus,
   prepareSvg,
   styleAxis,
-  drawGridLines,
+  drawGridX,
+  drawGridY,
   drawChartText,
 } from '../../shared/charts/chartFrame';
 import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from '../../shared/charts/ticks';
@@ -383,7 +384,8 @@ function drawAxesAndFloor(plot: G, x: LogScale, y: LogScale, iw: number, ih: num
     anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0,
   );
   const grid = child(plot, 'g', 'grid');
-  drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
+  drawGridY(grid, iw, yTicks, y);
+  drawGridX(grid, ih, xTicks, x);
   // The floor: everything at or below 1e-17 rad, exact answers included, is drawn on this dashed line.
   grid
     .selectAll<SVGLineElement, number>('line.floor')
