@@ -172,14 +172,14 @@ test.describe('the angle and convergence charts', () => {
     await page.goto('./');
     await waitReady(page);
     const conv = page.getByRole('img', { name: /^NR convergence at θ2/ });
-    await watchMutations(conv, ['g.axis-x', 'g.axis-y', 'g.runs']);
-    const runBefore = await conv.locator('g.runs path').last().getAttribute('d');
+    await watchMutations(conv, ['g.axis-x', 'g.axis-y', 'g.lines']);
+    const runBefore = await conv.locator('g.lines path').last().getAttribute('d');
     await stepSlider(page, /^θ2/, 'ArrowRight', 6);
     await expect(page.getByRole('textbox', { name: /^θ2/ })).toHaveValue('51');
     await expect(conv).toHaveAttribute('aria-label', /51/);
-    await expect.poll(() => conv.locator('g.runs path').last().getAttribute('d')).not.toBe(runBefore);
+    await expect.poll(() => conv.locator('g.lines path').last().getAttribute('d')).not.toBe(runBefore);
     const counts = await mutationCounts(conv);
-    expect(counts['g.runs'].batches).toBeGreaterThan(0);
+    expect(counts['g.lines'].batches).toBeGreaterThan(0);
     // An axis may change with the residual range, but is never rewritten with what it already shows.
     expect(counts['g.axis-x'].redundant).toBe(0);
     expect(counts['g.axis-y'].redundant).toBe(0);

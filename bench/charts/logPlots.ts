@@ -1,6 +1,6 @@
 import type { ConvergenceRun } from '../../src/shared/charts/convergenceChart';
 import { createConvergenceChart } from '../../src/shared/charts/convergenceChart';
-import { drawWorkPrecisionChart } from '../../src/features/lab/workPrecisionChart';
+import { workPrecisionDrawing } from '../../src/features/lab/workPrecisionChart';
 import { drawCycleChart } from '../../src/features/lab/cycleChart';
 import type { LabResult } from '../../src/study/workPrecision';
 import type { SweepMethod } from '../../src/solver/types';
@@ -11,21 +11,18 @@ export function makeLogCharts(
   width: number,
   height: number,
 ) {
-  const text = { title: 'NR convergence', xLabel: 'iteration', yLabel: '|f|', toleranceLabel: 'tol', emptyText: '' };
-  const conv = createConvergenceChart(svgs.conv, { ...text, width, height });
+  const text = { title: 'NR convergence', xLabel: 'iteration', yLabel: '|f|', emptyText: '' };
+  const conv = createConvergenceChart(svgs.conv, width, height, text);
   return {
     convergence(runs: ConvergenceRun[], tolerance: number) {
-      conv.update({ runs, tolerance });
+      conv.update({ runs, tolerance, toleranceLabel: 'tol' });
     },
     diagram(r: LabResult, method: SweepMethod, tol: number) {
-      drawWorkPrecisionChart(svgs.wp, r.series, {
+      workPrecisionDrawing(r.series, { title: 'WP', xLabel: 'ns', yLabel: 'err', highlight: { method, tol } })(
+        svgs.wp,
         width,
         height,
-        title: 'WP',
-        xLabel: 'ns',
-        yLabel: 'err',
-        highlight: { method, tol },
-      });
+      );
     },
     cycle(r: LabResult, theta2Deg: number) {
       drawCycleChart(

@@ -1,5 +1,5 @@
 import { angleSpec } from '../../shared/charts/theta2Chart';
-import { drawConvergenceChart } from '../../shared/charts/convergenceChart';
+import { CONVERGENCE_SIZE, convergenceSpec } from '../../shared/charts/convergenceChart';
 import { rateSpec } from '../../shared/charts/rateChart';
 import type { ChartExport } from '../../shared/charts/exportChart';
 import { exportChart, specDrawing } from '../../shared/charts/exportChart';
@@ -72,11 +72,9 @@ export function rateExport(subject: 'omega' | 'alpha', frame: ShownFrame, t: Mes
 export function plotExport(subject: Exclude<ExportSubject, 'linkage'>, c: ExportContext): ChartExport {
   const { state: s, marker } = c.frame;
   if (subject === 'convergence') {
-    const { runs, tolerance, ...text } = convergenceInputs(c.point, s.solver.nrStart, c.t);
-    return {
-      ...CONVERGENCE_EXPORT_SIZE,
-      draw: (svg, width, height) => drawConvergenceChart(svg, { runs, tolerance }, { ...text, width, height }),
-    };
+    const { runs, tolerance, toleranceLabel, ...text } = convergenceInputs(c.point, s.solver.nrStart, c.t);
+    const data = { runs, tolerance, toleranceLabel };
+    return { ...CONVERGENCE_EXPORT_SIZE, draw: specDrawing(convergenceSpec, text, data, null, CONVERGENCE_SIZE) };
   }
   if (subject === 'omega' || subject === 'alpha') {
     const { inputs, marker: at } = rateExport(subject, c.frame, c.t);

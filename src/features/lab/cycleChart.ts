@@ -1,20 +1,18 @@
-import { axisBottom, axisLeft } from 'd3-axis';
-import type { ScaleContinuousNumeric, ScaleLinear, ScaleLogarithmic } from 'd3-scale';
-import type { Selection } from 'd3-selection';
+import type { ScaleContinuousNumeric } from 'd3-scale';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
-import { curveStep, line } from 'd3-shape';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
-import type { Margins, SvgSel } from '../../shared/charts/chartFrame';
+import type { ChartScales, ChartSpec, ChartTexts, GSel, MarkerAt, PlotArea } from '../../shared/charts/chart';
+import { chartSize, createChart, logFloor } from '../../shared/charts/chart';
+import type { Margins } from '../../shared/charts/chartFrame';
 import {
   CHART_STYLE,
+  LEGEND_ROW,
   child,
   estimateTextWidth,
+  legendRows,
   minus,
   prepareSvg,
-  styleAxis,
-  drawGridLines,
-  drawChartText,
 } from '../../shared/charts/chartFrame';
 import {
   angleTicks,
@@ -25,9 +23,15 @@ import {
   logTicks,
   niceCountDomain,
   niceLogDomain,
-  tickCount,
 } from '../../shared/charts/ticks';
-import { LEGEND_ROW, METHOD_COLORS, drawMethodLegend } from './workPrecisionChart';
+import { METHOD_COLORS } from './workPrecisionChart';
+
+/**
+ * The lab's cycle chart: two chart-kit specs stacked in one SVG over θ2 from 0 to 360°, sharing the x axis: NR
+ * iterations per point for each method (steps, linear or symlog) on top, |det J| (log y, zeros on its floor, gaps
+ * where the linkage cannot assemble) below, with the unassembled stretches shaded, the input limits dashed and
+ * the current θ2 as the kit's marker in both.
+ */
 
 /** NR iterations at each theta2 sample of one method. */
 export interface CycleIterations {
@@ -62,7 +66,7 @@ export interface CycleChartOptions {
   detJLabel: string;
   /** Legend and line label per method; default each entry's own label. */
   methodLabels?: Partial<Record<SweepMethod, string>>;
-  /** Default { top: 46 plus 16 per extra legend row, right: 14, bottom: 40, left: 58 }; top given here wins. */
+  /** Default { top: 46 plus 16 per extra legend row, right: 14, bottom: 40, left: 58 }. */
   margins?: Partial<Margins>;
   /** Vertical gap between the two panels in pixels; default 14. */
   panelGap?: number;
@@ -157,239 +161,149 @@ export function decadeLabels(ticks: readonly number[]): string[] {
   return exps.map((e) => (plain ? (e >= 0 ? String(dec(1, e)) : `0.${'0'.repeat(-e - 1)}1`) : minus(`1e${e}`)));
 }
 
-type G = Selection<SVGGElement, unknown, null, undefined>;
-
-/** Where the cycle chart's parts go (CSS pixels): margins, the plot's width, the two panels' heights and the gap. */
-interface CycleLayout {
-  m: Margins;
-  iw: number;
-  hTop: number;
-  hBot: number;
-  /** Top of the bottom panel, from the plot's top. */
-  yBot0: number;
+/** The top panel's data: θ2 samples, each method's counts, the unassembled stretches and the limits (degrees). */
+interface CyclePanelData {
+  data: CycleChartData;
+  labels: Partial<Record<SweepMethod, string>>;
 }
 
-/** Draws the method legend (its rows push the plot down) and splits the rest into the two panels. */
-function layoutCycleChart(s: SvgSel, data: CycleChartData, options: CycleChartOptions): CycleLayout {
-  const { width, height } = options;
-  const legendRows = drawMethodLegend(
-    s,
-    data.iterations.map((it) => ({
-      label: options.methodLabels?.[it.method] ?? it.label,
-      color: METHOD_COLORS[it.method] ?? CHART_STYLE.muted,
-      kind: 'line',
-    })),
-    14,
-    33,
-    width - 28,
-  );
-  const m: Margins = {
-    top: options.margins?.top ?? 46 + Math.max(0, legendRows - 1) * LEGEND_ROW,
-    right: options.margins?.right ?? 14,
-    bottom: options.margins?.bottom ?? 40,
-    left: options.margins?.left ?? 58,
-  };
-  const gapPx = options.panelGap ?? 14;
-  const iw = Math.max(10, width - m.left - m.right);
-  const ihAll = Math.max(30, height - m.top - m.bottom);
-  const hTop = Math.max(10, Math.round((ihAll - gapPx) * 0.5));
-  const hBot = Math.max(10, ihAll - gapPx - hTop);
-  return { m, iw, hTop, hBot, yBot0: hTop + gapPx };
-}
-
-/** The cycle chart's scales and ticks: θ2 across, iterations up the top panel, |det J| (log) up the bottom one. */
-interface CycleScales {
-  x: ScaleLinear<number, number>;
-  xTicks: number[];
-  yIt: ScaleContinuousNumeric<number, number>;
-  itTicks: number[];
-  yDet: ScaleLogarithmic<number, number>;
-  detTicks: number[];
-  /** |det J| floor: zeros are drawn on it. */
-  d0: number;
-}
-
-function cycleScales(data: CycleChartData, { iw, hTop, hBot }: CycleLayout): CycleScales {
-  const x = scaleLinear().domain([0, 360]).range([0, iw]);
+/** The θ2 axis of a panel: 0..360 degrees across iw, ticks on the angle lattice about 60 px apart whose labels fit. */
+function theta2Axis(plot: PlotArea): Pick<ChartScales, 'x' | 'xTicks'> {
+  const x = scaleLinear().domain([0, 360]).range([0, plot.iw]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
     x,
     (t) => estimateTextWidth(`${t}`),
-    tickCount(iw, 60),
+    plot.xCount,
   );
-  const itMax = maxIterations(data.iterations);
-  const itAll = iterationTicks(itMax, tickCount(hTop, 24));
-  const itTop = itAll[itAll.length - 1];
-  // Symlog when one method needs dozens of iterations somewhere: 1, 2 and 3 must stay apart from 100.
-  const yIt: ScaleContinuousNumeric<number, number> = (itMax > 20 ? scaleSymlog() : scaleLinear())
-    .domain([0, itTop])
-    .range([hTop, 4]);
-  const [d0, d1] = detJDomain(data.detJ);
-  const yDet = scaleLog().domain([d0, d1]).range([hBot, 0]).clamp(true);
-  return {
-    x,
-    xTicks,
-    yIt,
-    itTicks: spacedTicks(itAll, yIt, 13),
-    yDet,
-    detTicks: decadeTicks(d0, d1, tickCount(hBot, 18)),
-    d0,
-  };
+  return { x, xTicks };
 }
 
-/** One panel's grid, x axis (numbers only when showXNumbers: the panels share it) and y axis. */
-function drawPanelAxes(
-  panel: G,
-  iw: number,
-  h: number,
-  sc: Pick<CycleScales, 'x' | 'xTicks'>,
-  y: ScaleContinuousNumeric<number, number>,
-  yTicks: number[],
-  yFormat: (d: number, i: number) => string,
-  showXNumbers: boolean,
-): void {
-  drawGridLines(child(panel, 'g', 'grid'), iw, h, yTicks, y, sc.xTicks, sc.x);
-  const ax = child(panel, 'g', 'axis-x').attr('transform', `translate(0,${h})`);
-  ax.call(
-    axisBottom(sc.x)
-      .tickValues(sc.xTicks)
-      .tickFormat((d) => (showXNumbers ? `${d}` : ''))
-      .tickSizeOuter(0),
-  );
-  styleAxis(ax);
-  const ay = child(panel, 'g', 'axis-y');
-  ay.call(
-    axisLeft(y)
-      .tickValues(yTicks)
-      .tickFormat((d, i) => yFormat(d as number, i))
-      .tickSizeOuter(0),
-  );
-  styleAxis(ay);
+/** Shades the stretches where the linkage cannot assemble (|det J| is NaN) over the panel's height. */
+function drawBands(g: GSel, { data }: CyclePanelData, frame: ChartScales): void {
+  g.selectAll<SVGRectElement, [number, number]>('rect')
+    .data(unassembledRuns(data.theta2Deg, data.detJ))
+    .join('rect')
+    .attr('x', (r) => frame.x(r[0]))
+    .attr('width', (r) => Math.max(1, frame.x(r[1]) - frame.x(r[0])))
+    .attr('y', 0)
+    .attr('height', frame.ih)
+    .attr('fill', CHART_COLORS.unassembledBand);
 }
 
-/** Iterations: step lines centred on each sample; a negative count is a gap. */
-function drawIterationLines(top: G, data: CycleChartData, { x, yIt }: CycleScales): void {
-  const n = data.theta2Deg.length;
-  const nIt = data.iterations.length;
-  child(top, 'g', 'lines')
-    .selectAll<SVGPathElement, CycleIterations>('path')
-    .data(data.iterations)
-    .join('path')
-    .attr('fill', 'none')
-    .attr('stroke', (d) => METHOD_COLORS[d.method] ?? CHART_STYLE.muted)
-    .attr('stroke-width', 1.5)
-    .attr('stroke-linejoin', 'round')
-    .attr('d', (d, k) => {
-      // Overlapping counts (two methods both at 2) would hide each other: dodge each method by 1.5 px.
-      const dodge = (k - (nIt - 1) / 2) * 1.5;
-      const idx = Array.from({ length: Math.min(n, d.iterations.length) }, (_v, i) => i);
-      const gen = line<number>()
-        .defined((i) => d.iterations[i] >= 0)
-        .curve(curveStep)
-        .x((i) => x(data.theta2Deg[i]))
-        .y((i) => yIt(d.iterations[i]) + dodge);
-      return gen(idx) ?? '';
-    });
-}
-
-/** |det J| on its log scale, gaps where it is not finite, zeros on the floor. */
-function drawDetJ(bot: G, data: CycleChartData, { x, yDet, d0 }: CycleScales): void {
-  const detGen = line<number>()
-    .defined((i) => Number.isFinite(data.detJ[i]))
-    .x((i) => x(data.theta2Deg[i]))
-    .y((i) => yDet(Math.max(d0, data.detJ[i])));
-  const detIdx = Array.from({ length: Math.min(data.theta2Deg.length, data.detJ.length) }, (_v, i) => i);
-  child(bot, 'path', 'detj')
-    .attr('fill', 'none')
-    .attr('stroke', CHART_STYLE.residual)
-    .attr('stroke-width', 1.75)
-    .attr('stroke-linejoin', 'round')
-    .attr('d', detGen(detIdx) ?? '');
-}
-
-/** Vertical lines of one class at these angles (degrees), from the top panel's top to the bottom panel's foot. */
-function markerLines(
-  markers: G,
-  cls: string,
-  deg: number[],
-  x: ScaleLinear<number, number>,
-  yEnd: number,
-): Selection<SVGLineElement, number, SVGGElement, unknown> {
-  return markers
-    .selectAll<SVGLineElement, number>(`line.${cls}`)
-    .data(deg)
+/** The input limits as dashed grey lines down the panel. */
+function drawLimits(g: GSel, { data }: CyclePanelData, frame: ChartScales): void {
+  g.selectAll<SVGLineElement, number>('line.limit')
+    .data(data.limitsDeg.filter(Number.isFinite).map(toAxisDeg))
     .join('line')
-    .attr('class', cls)
-    .attr('x1', (d) => x(d))
-    .attr('x2', (d) => x(d))
+    .attr('class', 'limit')
+    .attr('x1', (d) => frame.x(d))
+    .attr('x2', (d) => frame.x(d))
     .attr('y1', 0)
-    .attr('y2', yEnd);
+    .attr('y2', frame.ih)
+    .attr('stroke', CHART_STYLE.tolerance)
+    .attr('stroke-width', 1.25)
+    .attr('stroke-dasharray', '5 4');
 }
+
+/** The current θ2 as the kit's marker line (no dots); hidden when not finite. */
+const currentMarker = (_m: true, { data }: CyclePanelData): MarkerAt | null =>
+  data.currentDeg !== undefined && Number.isFinite(data.currentDeg)
+    ? { x: toAxisDeg(data.currentDeg), dots: [] }
+    : null;
+
+/** What both panels share: bands under the grid, limits over the curves, the current θ2 as the marker. */
+const panelLayers = {
+  under: { className: 'bands', draw: drawBands },
+  over: { className: 'limits', draw: drawLimits },
+  marker: currentMarker,
+};
+
+/** The top panel: each method's iterations per point as steps (a negative count is a gap), dodged 1.5 px apart. */
+export const iterationsSpec: ChartSpec<CyclePanelData, true> = {
+  frame: ({ data }, plot) => {
+    const itMax = maxIterations(data.iterations);
+    const itAll = iterationTicks(itMax, plot.yCount);
+    // Symlog when one method needs dozens of iterations somewhere: 1, 2 and 3 must stay apart from 100.
+    const y: ScaleContinuousNumeric<number, number> = (itMax > 20 ? scaleSymlog() : scaleLinear())
+      .domain([0, itAll[itAll.length - 1]])
+      .range([plot.ih, 4]);
+    return { ...theta2Axis(plot), y, yTicks: spacedTicks(itAll, y, 13) };
+  },
+  curves: ({ data, labels }) => {
+    const n = data.iterations.length;
+    return data.iterations.map((it, k) => ({
+      label: labels[it.method] ?? it.label,
+      color: METHOD_COLORS[it.method] ?? CHART_STYLE.muted,
+      x: data.theta2Deg,
+      y: Array.from(it.iterations, (v) => (v >= 0 ? v : NaN)),
+      step: true,
+      strokeWidth: 1.5,
+      // Overlapping counts (two methods both at 2) would hide each other: dodge each method by 1.5 px.
+      dyPx: (k - (n - 1) / 2) * 1.5,
+    }));
+  },
+  // The panels share the x axis: tick marks only here, the numbers are under the bottom panel.
+  xTickFormat: () => () => '',
+  ...panelLayers,
+};
+
+/** The bottom panel: |det J| on a log y, gaps where it is NaN, zeros on the floor, one style of decade labels. */
+export const detJSpec: ChartSpec<CyclePanelData, true> = {
+  frame: ({ data }, plot) => {
+    const [d0, d1] = detJDomain(data.detJ);
+    return {
+      ...theta2Axis(plot),
+      y: scaleLog().domain([d0, d1]).range([plot.ih, 0]),
+      yTicks: decadeTicks(d0, d1, plot.yCount),
+      yFloor: logFloor(d0, [data.detJ]),
+    };
+  },
+  curves: ({ data }) => [{ label: '|det J|', color: CHART_STYLE.residual, x: data.theta2Deg, y: data.detJ }],
+  yTickFormat: (frame) => {
+    const labels = decadeLabels(frame.yTicks);
+    return (v) => labels[frame.yTicks.indexOf(v)] ?? '';
+  },
+  legend: () => [],
+  ...panelLayers,
+};
+
+/** Vertical gap between the panels and the top panel's room below its plot (its tick marks), CSS pixels. */
+const PANEL_FOOT = 7;
 
 /**
- * Draws (or redraws in place) the lab's cycle chart: two panels over theta2 0..360 degrees sharing the
- * x axis, NR iterations per point for each method (step lines) on top and |det J| (log scale, gaps where
- * the linkage cannot assemble) below, with dashed grey input limits and an orange current-theta2 line.
+ * Draws (or redraws in place) the lab's cycle chart: the two panels (iterationsSpec over detJSpec) as two kit charts
+ * in nested SVGs, equal in height, the method legend's rows pushing both down; sizes in CSS pixels.
  */
 export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options: CycleChartOptions): void {
   const { width, height } = options;
   const s = prepareSvg(svg, width, height);
-  const layout = layoutCycleChart(s, data, options);
-  const { m, iw, hTop, hBot, yBot0 } = layout;
-  const sc = cycleScales(data, layout);
-
-  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
-  const top = child(plot, 'g', 'panel-top');
-  const bot = child(plot, 'g', 'panel-bottom').attr('transform', `translate(0,${yBot0})`);
-
-  // Unassembled stretches: a light band in both panels explains the gaps.
-  const runs = unassembledRuns(data.theta2Deg, data.detJ);
-  for (const [panel, h] of [
-    [top, hTop],
-    [bot, hBot],
-  ] as const) {
-    child(panel, 'g', 'bands')
-      .selectAll<SVGRectElement, [number, number]>('rect')
-      .data(runs)
-      .join('rect')
-      .attr('x', (r) => sc.x(r[0]))
-      .attr('width', (r) => Math.max(1, sc.x(r[1]) - sc.x(r[0])))
-      .attr('y', 0)
-      .attr('height', h)
-      .attr('fill', CHART_COLORS.unassembledBand);
-  }
-
-  // The top panel shares the x axis: tick marks only, the numbers are under the bottom panel.
-  drawPanelAxes(top, iw, hTop, sc, sc.yIt, sc.itTicks, (d) => `${d}`, false);
-  const detLabels = decadeLabels(sc.detTicks);
-  drawPanelAxes(bot, iw, hBot, sc, sc.yDet, sc.detTicks, (_d, i) => detLabels[i], true);
-  drawIterationLines(top, data, sc);
-  drawDetJ(bot, data, sc);
-
-  // Markers over both panels: input limits (dashed grey) and the current input angle (orange).
-  const markers = child(plot, 'g', 'markers');
-  markerLines(markers, 'limit', data.limitsDeg.filter(Number.isFinite).map(toAxisDeg), sc.x, yBot0 + hBot)
-    .attr('stroke', CHART_STYLE.tolerance)
-    .attr('stroke-width', 1.25)
-    .attr('stroke-dasharray', '5 4');
-  const cur = data.currentDeg;
-  markerLines(markers, 'current', cur !== undefined && Number.isFinite(cur) ? [toAxisDeg(cur)] : [], sc.x, yBot0 + hBot)
-    .attr('stroke', CHART_STYLE.marker)
-    .attr('stroke-width', 1.5);
-
-  drawChartText(
-    s,
+  const labels = options.methodLabels ?? {};
+  const panel: CyclePanelData = { data, labels };
+  const legend = iterationsSpec.curves(panel);
+  const m = { top: 46, right: 14, bottom: 40, left: 58, ...options.margins };
+  const gap = options.panelGap ?? 14;
+  const top = m.top + Math.max(0, legendRows(legend, width - 28) - 1) * LEGEND_ROW;
+  const ihAll = Math.max(30, height - top - m.bottom);
+  const hTop = Math.max(10, Math.round((ihAll - gap) * 0.5));
+  const topHeight = top + hTop + PANEL_FOOT;
+  const panels = [
+    { cls: 'panel-top', spec: iterationsSpec, y: 0, h: topHeight, margins: { ...m, bottom: PANEL_FOOT } },
     {
-      title: options.title,
-      xLabel: options.xLabel,
-      yLabels: [
-        { text: options.iterationsLabel, centerY: m.top + hTop / 2 },
-        { text: options.detJLabel, centerY: m.top + yBot0 + hBot / 2 },
-      ],
+      cls: 'panel-bottom',
+      spec: detJSpec,
+      y: topHeight,
+      h: Math.max(0, height - topHeight),
+      margins: { ...m, top: gap - PANEL_FOOT },
     },
-    m.left,
-    iw,
-    width,
-    height,
-  );
+  ];
+  const texts: ChartTexts[] = [
+    { title: options.title, xLabel: '', yLabel: options.iterationsLabel },
+    { title: '', xLabel: options.xLabel, yLabel: options.detJLabel },
+  ];
+  panels.forEach((p, i) => {
+    const el = child(s, 'svg', p.cls).attr('x', 0).attr('y', p.y).node() as SVGSVGElement;
+    const size = chartSize({ width, height: p.h, margins: p.margins, xTickSpacing: 60, yTickSpacing: i ? 18 : 24 });
+    createChart(el, size, texts[i], p.spec, panel).setMarker(true);
+  });
 }

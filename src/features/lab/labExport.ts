@@ -1,13 +1,13 @@
-import { drawWorkPrecisionChart } from './workPrecisionChart';
+import { workPrecisionDrawing } from './workPrecisionChart';
 import type { WorkPrecisionChartOptions } from './workPrecisionChart';
 import type { LabSeries } from '../../study/workPrecision';
 import type { ChartExport } from '../../shared/charts/exportChart';
 
-/** The work-precision diagram as a chart to export (exportChart): these series, drawn at opts.width x opts.height CSS pixels. */
-export function labExport(series: readonly LabSeries[], opts: WorkPrecisionChartOptions): ChartExport {
-  return {
-    width: opts.width,
-    height: opts.height,
-    draw: (svg, width, height) => drawWorkPrecisionChart(svg, series, { ...opts, width, height }),
-  };
+/** The work-precision diagram as a chart to export (exportChart): these series, drawn at width x height CSS pixels. */
+export function labExport(
+  series: readonly LabSeries[],
+  opts: WorkPrecisionChartOptions,
+  size: { width: number; height: number },
+): ChartExport {
+  return { ...size, draw: workPrecisionDrawing(series, opts) };
 }

@@ -1,6 +1,6 @@
 import { useCallback, useMemo } from 'react';
 import { drawCycleChart } from './cycleChart';
-import { drawWorkPrecisionChart, formatMaxError, shownTol } from './workPrecisionChart';
+import { formatMaxError, shownTol, workPrecisionDrawing } from './workPrecisionChart';
 import type { WorkPrecisionChartOptions, WorkPrecisionHighlight } from './workPrecisionChart';
 import type { LabPoint, LabResult, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
@@ -9,7 +9,7 @@ import type { LabMessages } from './labMessages';
 
 /** The lab's two charts: the diagram's options (shared with its export) and the draws of both SVG views. */
 export interface LabCharts {
-  chartOptions: Omit<WorkPrecisionChartOptions, 'width' | 'height'>;
+  chartOptions: WorkPrecisionChartOptions;
   drawDiagram: (svg: SVGSVGElement, width: number, height: number) => void;
   drawCycle: (svg: SVGSVGElement, width: number, height: number) => void;
 }
@@ -47,9 +47,8 @@ export function useLabCharts(
 ): LabCharts {
   const highlight = useMemo(() => ({ method, tol }), [method, tol]);
   const chartOptions = useMemo(() => diagramOptions(t, lt, highlight), [t, lt, highlight]);
-  const drawDiagram = useCallback(
-    (svg: SVGSVGElement, width: number, height: number) =>
-      drawWorkPrecisionChart(svg, result ? result.series : [], { ...chartOptions, width, height }),
+  const drawDiagram = useMemo(
+    () => workPrecisionDrawing(result ? result.series : [], chartOptions),
     [result, chartOptions],
   );
   const drawCycle = useCallback(

@@ -34,8 +34,7 @@ export function useLabExports(
     if (!result) return;
     setStatus('');
     try {
-      const { width, height } = LAB_EXPORT_SIZE;
-      const bytes = await exportChart(labExport(result.series, { ...chartOptions, width, height }), pngSize);
+      const bytes = await exportChart(labExport(result.series, chartOptions, LAB_EXPORT_SIZE), pngSize);
       downloadPng(bytes, labFileName(result.linkage, result.branch, result.stepDeg, 'png', pngSize));
     } catch (e) {
       setStatus(t.exportFailed(e instanceof Error ? e.message : String(e)));
@@ -43,9 +42,8 @@ export function useLabExports(
   };
   const onSvg = () => {
     if (!result) return;
-    const { width, height } = LAB_EXPORT_SIZE;
     downloadText(
-      exportChart(labExport(result.series, { ...chartOptions, width, height }), 'svg'),
+      exportChart(labExport(result.series, chartOptions, LAB_EXPORT_SIZE), 'svg'),
       labSvgFileName(result.linkage, result.branch, result.stepDeg),
       'image/svg+xml;charset=utf-8',
     );

@@ -1,25 +1,30 @@
-import { axisBottom, axisLeft } from 'd3-axis';
 import { scaleLog } from 'd3-scale';
-import type { ScaleLogarithmic } from 'd3-scale';
-import type { Selection } from 'd3-selection';
-import { line, symbol, symbolCircle, symbolDiamond } from 'd3-shape';
+import { symbol, symbolCircle, symbolDiamond } from 'd3-shape';
 import type { LabPoint, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
 import { formatSci } from '../../shared/format';
-import type { Margins, SvgSel } from '../../shared/charts/chartFrame';
-import {
-  CHART_STYLE,
-  child,
-  estimateTextWidth,
-  minus,
-  prepareSvg,
-  styleAxis,
-  drawGridLines,
-  drawChartText,
-} from '../../shared/charts/chartFrame';
-import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain, tickCount } from '../../shared/charts/ticks';
+import type {
+  ChartScales,
+  ChartSizeOptions,
+  ChartSpec,
+  ChartTexts,
+  Curve,
+  GSel,
+  PlotArea,
+} from '../../shared/charts/chart';
+import type { LegendItem } from '../../shared/charts/chartFrame';
+import { CHART_STYLE, child, estimateTextWidth, minus } from '../../shared/charts/chartFrame';
+import type { ChartDrawing } from '../../shared/charts/exportChart';
+import { specDrawing } from '../../shared/charts/exportChart';
+import { dec, logTicks, niceLogDomain, niceOneTwoFiveDomain } from '../../shared/charts/ticks';
 import { placeLabels as placeBoxes } from '../../shared/canvas/labelPlacement';
+
+/**
+ * The lab's work-precision diagram as a chart-kit spec: median time per point (ns, log x) against max angle error
+ * (rad, log y, floored at ERROR_FLOOR), a line per traced method over its tolerances, a diamond per default, red
+ * outlines for trouble, the chosen point ringed and tolerance labels placed clear of the marks.
+ */
 
 /** Fixed colour of each lab method, so a method looks the same in every chart and table. */
 export const METHOD_COLORS: Readonly<Record<SweepMethod, string>> = {
@@ -42,17 +47,20 @@ export interface WorkPrecisionHighlight {
   tol: number | null;
 }
 
-/** Options of drawWorkPrecisionChart; sizes in CSS pixels. */
-export interface WorkPrecisionChartOptions {
-  width: number;
-  height: number;
-  title: string;
-  /** x axis label, e.g. 'median time per point (ns)'. */
-  xLabel: string;
-  /** y axis label, e.g. 'max angle error (rad)'. */
-  yLabel: string;
-  /** The chosen method and tolerance, drawn with an orange ring; none by default. */
+/** Data of the work-precision diagram: the lab's series and the chosen point (ringed; none by default). */
+export interface WorkPrecisionData {
+  series: readonly LabSeries[];
   highlight?: WorkPrecisionHighlight | null;
+}
+
+/** Texts of the work-precision diagram. */
+export interface WorkPrecisionText extends ChartTexts {
+  /** Text shown in the middle when there is no point to plot; default none. */
+  emptyText?: string;
+}
+
+/** How the diagram words and labels its marks (read once, when its spec is made). */
+export interface WorkPrecisionSpecOptions {
   /** Small tolerance labels ('1e-6') beside the traced points; default true. */
   tolLabels?: boolean;
   /** Legend and tooltip label per method; default each series' own label. */
@@ -65,11 +73,21 @@ export interface WorkPrecisionChartOptions {
   failureLegend?: string;
   /** Tooltip text of one marker; default label, tolerance, ns/pt and max error on separate lines. */
   tooltip?: (series: LabSeries, point: LabPoint) => string;
-  /** Text shown in the middle when there is no point to plot. */
-  emptyText?: string;
-  /** Default { top: 55 plus 16 per extra legend row, right: 16, bottom: 40, left: 66 }; values given here win. */
-  margins?: Partial<Margins>;
 }
+
+/** Everything the diagram shows but its size and series: texts, wording and the chosen point. */
+export interface WorkPrecisionChartOptions extends WorkPrecisionText, WorkPrecisionSpecOptions {
+  /** The chosen method and tolerance, drawn with an orange ring; none by default. */
+  highlight?: WorkPrecisionHighlight | null;
+}
+
+/** Size options of the diagram: its margins (the legend's rows push the plot down) and tick spacing, CSS pixels. */
+export const WORK_PRECISION_SIZE: Omit<ChartSizeOptions, 'width' | 'height'> = {
+  margins: { top: 55, right: 16, bottom: 40, left: 66 },
+  xTickSpacing: 60,
+  xMaxTicks: Infinity,
+  yTickSpacing: 24,
+};
 
 /**
  * Formats a tolerance for labels and CSV: 'default' (or defaultText) for null, otherwise the shortest
@@ -234,98 +252,7 @@ export function placePointLabels(
   return items.map((_, i) => spot.get(i) ?? null);
 }
 
-/** One entry of a method legend. */
-export interface MethodLegendItem {
-  label: string;
-  color: string;
-  /** 'line': plain line; 'curve': line with a dot; 'default': filled diamond; 'defaultKey': hollow diamond; 'failureKey': red-ringed dot. */
-  kind: 'line' | 'curve' | 'default' | 'defaultKey' | 'failureKey';
-}
-
-/** Height of one legend row in pixels. */
-export const LEGEND_ROW = 16;
-const LEGEND_SAMPLE = 22;
-const LEGEND_GAP = 14;
-
-/** Wraps legend entries of these label widths into rows no wider than maxWidth; returns [x, row] per entry (pixels, row index). */
-export function legendLayout(labelWidths: readonly number[], maxWidth: number): Array<[number, number]> {
-  const out: Array<[number, number]> = [];
-  let x = 0;
-  let row = 0;
-  for (const w of labelWidths) {
-    const full = LEGEND_SAMPLE + w;
-    if (x > 0 && x + full > maxWidth) {
-      x = 0;
-      row++;
-    }
-    out.push([x, row]);
-    x += full + LEGEND_GAP;
-  }
-  return out;
-}
-
-/** Draws (or updates) a legend at (x, y) in the SVG that wraps into rows of at most maxWidth pixels; returns the number of rows. */
-export function drawMethodLegend(
-  s: SvgSel,
-  items: readonly MethodLegendItem[],
-  x: number,
-  y: number,
-  maxWidth: number,
-): number {
-  const layout = legendLayout(
-    items.map((it) => estimateTextWidth(it.label)),
-    maxWidth,
-  );
-  const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
-  const item = legend
-    .selectAll<SVGGElement, MethodLegendItem>('g.item')
-    .data(items)
-    .join((enter) => {
-      const g = enter.append('g').attr('class', 'item');
-      g.append('line');
-      g.append('path');
-      g.append('text');
-      return g;
-    });
-  item.attr('transform', (_d, i) => `translate(${layout[i][0]},${layout[i][1] * LEGEND_ROW})`);
-  item
-    .select('line')
-    .attr('x1', 0)
-    .attr('x2', 16)
-    .attr('y1', 0)
-    .attr('y2', 0)
-    .attr('stroke', (d) => d.color)
-    .attr('stroke-width', 1.75)
-    .attr('display', (d) => (d.kind === 'curve' || d.kind === 'line' ? null : 'none'));
-  item
-    .select('path')
-    .attr('transform', 'translate(8,0)')
-    .attr('d', (d) => (d.kind === 'default' || d.kind === 'defaultKey' ? symbol(symbolDiamond, 70)() : '') ?? '')
-    .attr('fill', (d) => (d.kind === 'default' ? d.color : CHART_STYLE.background))
-    .attr('stroke', (d) =>
-      d.kind === 'default' ? CHART_STYLE.background : d.kind === 'defaultKey' ? CHART_STYLE.muted : 'none',
-    )
-    .attr('stroke-width', (d) => (d.kind === 'defaultKey' ? 1.25 : 1));
-  item
-    .selectAll<SVGCircleElement, MethodLegendItem>('circle')
-    .data((d) => (d.kind === 'curve' || d.kind === 'failureKey' ? [d] : []))
-    .join('circle')
-    .attr('cx', 8)
-    .attr('cy', 0)
-    .attr('r', (d) => (d.kind === 'curve' ? 3 : 3.5))
-    .attr('fill', (d) => (d.kind === 'curve' ? d.color : CHART_STYLE.background))
-    .attr('stroke', (d) => (d.kind === 'curve' ? CHART_STYLE.background : FAILURE_COLOR))
-    .attr('stroke-width', (d) => (d.kind === 'curve' ? 1 : 2));
-  item
-    .select('text')
-    .attr('x', 21)
-    .attr('y', 4)
-    .attr('fill', CHART_STYLE.text)
-    .text((d) => d.label);
-  return items.length ? layout[layout.length - 1][1] + 1 : 0;
-}
-
-/** One drawn marker (internal). */
+/** One drawn marker, in plot pixels (internal). */
 interface Marker {
   series: LabSeries;
   point: LabPoint;
@@ -340,124 +267,85 @@ function defaultTooltip(label: string, p: LabPoint, defaultTolText: string): str
   return `${label}\ntol ${shownTol(p.tol, defaultTolText)}\n${p.nsPerPoint.toFixed(0)} ns/pt\nmax error ${err} rad`;
 }
 
-type Curve = { sr: LabSeries } & ReturnType<typeof orderedCurvePoints>;
-type G = Selection<SVGGElement, unknown, null, undefined>;
-type LogScale = ScaleLogarithmic<number, number>;
+/** A method's curve split for drawing (orderedCurvePoints) with its series. */
+type MethodCurve = { sr: LabSeries } & CurvePoints;
 
-/** Draws the legend (methods, then the diamond and red-outline keys when they apply); returns the plot margins it leaves. */
-function drawLegendAndMargins(
-  s: SvgSel,
-  series: readonly LabSeries[],
-  curves: readonly Curve[],
-  options: WorkPrecisionChartOptions,
-  labelOf: (sr: LabSeries) => string,
-): Margins {
-  const legendItems: MethodLegendItem[] = curves.map((c) => ({
-    label: labelOf(c.sr),
-    color: METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted,
-    kind: c.traced.length > 0 ? 'curve' : 'default',
-  }));
-  const anyDefaultOfTraced = curves.some((c) => c.traced.length > 0 && c.defaultPoint);
-  if (options.defaultLegend && anyDefaultOfTraced) {
-    legendItems.push({ label: options.defaultLegend, color: CHART_STYLE.muted, kind: 'defaultKey' });
-  }
-  const anyTrouble = series.some((sr) => sr.points.some((p) => isDrawable(p) && hasTrouble(p)));
-  if (options.failureLegend && anyTrouble) {
-    legendItems.push({ label: options.failureLegend, color: FAILURE_COLOR, kind: 'failureKey' });
-  }
-  const legendRows = drawMethodLegend(s, legendItems, 14, 33, options.width - 28);
+/** The colour of a method. */
+const colorOf = (sr: LabSeries) => METHOD_COLORS[sr.method] ?? CHART_STYLE.muted;
+
+/** True when some drawable point's error is below ERROR_FLOOR (it is drawn on the floor). */
+function anyFloored(series: readonly LabSeries[]): boolean {
+  return series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
+}
+
+/** The diagram's frame: log x and y over workPrecisionDomains, log ticks (anchored on the floor when it is used). */
+export function workPrecisionFrame(data: WorkPrecisionData, plot: PlotArea): Omit<ChartScales, 'iw' | 'ih'> {
+  const dom = workPrecisionDomains(data.series);
+  const floored = anyFloored(data.series);
   return {
-    top: options.margins?.top ?? 33 + Math.max(0, legendRows - 1) * LEGEND_ROW + 22,
-    right: options.margins?.right ?? 16,
-    bottom: options.margins?.bottom ?? 40,
-    left: options.margins?.left ?? 66,
+    x: scaleLog().domain(dom.x).range([0, plot.iw]),
+    y: scaleLog().domain(dom.y).range([plot.ih, 0]),
+    xTicks: logTicks(dom.x, plot.xCount),
+    yTicks: logTicks(dom.y, plot.yCount, floored ? Math.round(Math.log10(ERROR_FLOOR)) : 0),
+    yFloor: floored ? ERROR_FLOOR : undefined,
   };
 }
 
-/** Draws the grid, the dashed error floor (when a point sits on it) and both log axes. */
-function drawAxesAndFloor(plot: G, x: LogScale, y: LogScale, iw: number, ih: number, anyFloored: boolean): void {
-  const xTicks = logTicks(x.domain() as [number, number], tickCount(iw, 60));
-  const yTicks = logTicks(
-    y.domain() as [number, number],
-    tickCount(ih, 24),
-    anyFloored ? Math.round(Math.log10(ERROR_FLOOR)) : 0,
-  );
-  const grid = child(plot, 'g', 'grid');
-  drawGridLines(grid, iw, ih, yTicks, y, xTicks, x);
-  // The floor: everything at or below 1e-17 rad, exact answers included, is drawn on this dashed line.
-  grid
-    .selectAll<SVGLineElement, number>('line.floor')
-    .data(anyFloored ? [ERROR_FLOOR] : [])
-    .join('line')
-    .attr('class', 'floor')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.tolerance)
-    .attr('stroke-dasharray', '3 3');
-  const ax = child(plot, 'g', 'axis-x').attr('transform', `translate(0,${ih})`);
-  ax.call(
-    axisBottom(x)
-      .tickValues(xTicks)
-      .tickFormat((d) => formatTimeTick(Number(d)))
-      .tickSizeOuter(0),
-  );
-  styleAxis(ax);
-  const ay = child(plot, 'g', 'axis-y');
-  ay.call(
-    axisLeft(y)
-      .tickValues(yTicks)
-      .tickFormat((d) =>
-        anyFloored && Number(d) === ERROR_FLOOR ? `≤${formatErrorTick(ERROR_FLOOR)}` : formatErrorTick(Number(d)),
-      )
-      .tickSizeOuter(0),
-  );
-  styleAxis(ay);
+/** Each traced method as a line over its tolerances, loosest first; a point that cannot be drawn is a gap. */
+function methodCurves(data: WorkPrecisionData, labelOf: (sr: LabSeries) => string): Curve[] {
+  return data.series
+    .map((sr): MethodCurve => ({ sr, ...orderedCurvePoints(sr) }))
+    .filter((c) => c.traced.length > 0)
+    .map((c) => ({
+      label: labelOf(c.sr),
+      color: colorOf(c.sr),
+      x: c.traced.map((p) => (isDrawable(p) ? p.nsPerPoint : NaN)),
+      y: c.traced.map((p) => (isDrawable(p) ? p.maxError : NaN)),
+      strokeWidth: 1.6,
+    }));
 }
 
-/** The markers of every curve in plot pixels: its drawable traced points, then its default. */
-function curveMarkers(curves: readonly Curve[], x: LogScale, y: LogScale): Marker[] {
+/** The legend: each method (a line through a dot when traced, a diamond for a default alone), then the keys that apply. */
+function methodLegend(data: WorkPrecisionData, o: WorkPrecisionSpecOptions, labelOf: (sr: LabSeries) => string) {
+  const curves: MethodCurve[] = data.series.map((sr) => ({ sr, ...orderedCurvePoints(sr) }));
+  const items: LegendItem[] = curves.map((c) => ({
+    label: labelOf(c.sr),
+    color: colorOf(c.sr),
+    symbol: c.traced.length > 0 ? 'line-dot' : 'diamond',
+  }));
+  if (o.defaultLegend && curves.some((c) => c.traced.length > 0 && c.defaultPoint)) {
+    items.push({ label: o.defaultLegend, color: CHART_STYLE.muted, symbol: 'hollow-diamond' });
+  }
+  if (o.failureLegend && data.series.some((sr) => sr.points.some((p) => isDrawable(p) && hasTrouble(p)))) {
+    items.push({ label: o.failureLegend, color: FAILURE_COLOR, symbol: 'ring' });
+  }
+  return items;
+}
+
+/** The markers of every method in plot pixels: its drawable traced points, then its default. */
+function curveMarkers(series: readonly LabSeries[], frame: ChartScales): Marker[] {
   const markers: Marker[] = [];
-  const at = (sr: LabSeries, point: LabPoint, isDefault: boolean, color: string): Marker => ({
+  const at = (sr: LabSeries, point: LabPoint, isDefault: boolean): Marker => ({
     series: sr,
     point,
     isDefault,
-    color,
-    x: x(point.nsPerPoint),
-    y: y(plottedError(point.maxError)),
+    color: colorOf(sr),
+    x: frame.x(point.nsPerPoint),
+    y: frame.y(plottedError(point.maxError)),
   });
-  for (const c of curves) {
-    const color = METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted;
-    for (const p of c.traced) if (isDrawable(p)) markers.push(at(c.sr, p, false, color));
-    if (c.defaultPoint) markers.push(at(c.sr, c.defaultPoint, true, color));
+  for (const sr of series) {
+    const c = orderedCurvePoints(sr);
+    for (const p of c.traced) if (isDrawable(p)) markers.push(at(sr, p, false));
+    if (c.defaultPoint) markers.push(at(sr, c.defaultPoint, true));
   }
   return markers;
 }
 
-/** Draws each traced method's line over its tolerances (gaps where a point is not drawable). */
-function drawCurves(plot: G, curves: readonly Curve[], x: LogScale, y: LogScale): void {
-  const gen = line<LabPoint>()
-    .defined((p) => isDrawable(p))
-    .x((p) => x(p.nsPerPoint))
-    .y((p) => y(plottedError(p.maxError)));
-  child(plot, 'g', 'curves')
-    .selectAll<SVGPathElement, Curve>('path')
-    .data(curves.filter((c) => c.traced.length > 0))
-    .join('path')
-    .attr('fill', 'none')
-    .attr('stroke', (c) => METHOD_COLORS[c.sr.method] ?? CHART_STYLE.muted)
-    .attr('stroke-width', 1.6)
-    .attr('stroke-opacity', 0.85)
-    .attr('stroke-linejoin', 'round')
-    .attr('d', (c) => gen(c.traced) ?? '');
-}
-
 /** Draws the markers (dots, default diamonds, red outlines for trouble) with their tooltips. */
-function drawMarkers(plot: G, markers: readonly Marker[], tip: (mk: Marker) => string): void {
+function drawMarkers(g: GSel, markers: readonly Marker[], tip: (mk: Marker) => string): void {
   // Defaults first so the smaller traced dots stay visible on top of a diamond they coincide with.
   const ordered = [...markers.filter((mk) => mk.isDefault), ...markers.filter((mk) => !mk.isDefault)];
-  const marks = child(plot, 'g', 'markers')
+  const marks = child(g, 'g', 'markers')
     .selectAll<SVGPathElement, Marker>('path')
     .data(ordered)
     .join((enter) => {
@@ -476,8 +364,8 @@ function drawMarkers(plot: G, markers: readonly Marker[], tip: (mk: Marker) => s
 }
 
 /** Rings the chosen markers. */
-function drawHighlight(plot: G, chosen: readonly Marker[]): void {
-  child(plot, 'g', 'highlight')
+function drawHighlight(g: GSel, chosen: readonly Marker[]): void {
+  child(g, 'g', 'highlight')
     .selectAll<SVGCircleElement, Marker>('circle')
     .data(chosen)
     .join('circle')
@@ -491,7 +379,7 @@ function drawHighlight(plot: G, chosen: readonly Marker[]): void {
 }
 
 /** Labels traced markers with their tolerance where placePointLabels finds room, the chosen ones first. */
-function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Marker[], iw: number, ih: number): void {
+function drawTolLabels(g: GSel, markers: readonly Marker[], chosen: readonly Marker[], iw: number, ih: number): void {
   const labelSize = 9.5;
   // The chosen point is labelled first so it is never the one crowded out.
   const labelled = [
@@ -518,7 +406,7 @@ function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Mar
   const labels = labelled
     .map((mk, i) => ({ mk, text: texts[i], spot: spots[i] }))
     .filter((l): l is { mk: Marker; text: string; spot: PlacedLabel } => l.spot !== null);
-  child(plot, 'g', 'tol-labels')
+  child(g, 'g', 'tol-labels')
     .selectAll<SVGTextElement, (typeof labels)[number]>('text')
     .data(labels)
     .join('text')
@@ -532,50 +420,51 @@ function drawTolLabels(plot: G, markers: readonly Marker[], chosen: readonly Mar
 }
 
 /**
- * Draws (or redraws in place) the lab's work-precision diagram: median time per point (ns) against
- * max angle error (rad), both log scales. Each traced method is a line over its tolerances (loosest
- * first); a method's default is a diamond; red outlines mark configurations that failed, jumped
- * branch or falsely converged; NaN errors are skipped; errors below ERROR_FLOOR sit on the floor.
+ * The work-precision diagram as a spec, worded by these options: log time per point against log max error, a
+ * line per traced method (NaN errors are gaps), the marks (diamond defaults, red outlines for trouble, the chosen
+ * one ringed, tolerance labels) over them, errors below ERROR_FLOOR on its dashed floor.
  */
-export function drawWorkPrecisionChart(
-  svg: SVGSVGElement,
-  series: readonly LabSeries[],
-  options: WorkPrecisionChartOptions,
-): void {
-  const { width, height } = options;
-  const s = prepareSvg(svg, width, height);
-  const labelOf = (sr: LabSeries) => options.methodLabels?.[sr.method] ?? sr.label;
-  const defaultTolText = options.defaultTolText ?? 'default';
-  const curves: Curve[] = series.map((sr) => ({ sr, ...orderedCurvePoints(sr) }));
-  const m = drawLegendAndMargins(s, series, curves, options, labelOf);
-  const iw = Math.max(10, width - m.left - m.right);
-  const ih = Math.max(10, height - m.top - m.bottom);
-  const dom = workPrecisionDomains(series);
-  const x = scaleLog().domain(dom.x).range([0, iw]).clamp(true);
-  const y = scaleLog().domain(dom.y).range([ih, 0]).clamp(true);
-  const plot = child(s, 'g', 'plot').attr('transform', `translate(${m.left},${m.top})`);
-  const anyFloored = series.some((sr) => sr.points.some((p) => isDrawable(p) && p.maxError < ERROR_FLOOR));
-  drawAxesAndFloor(plot, x, y, iw, ih, anyFloored);
+export function workPrecisionSpec(
+  o: WorkPrecisionSpecOptions = {},
+): ChartSpec<WorkPrecisionData, never, WorkPrecisionText> {
+  const labelOf = (sr: LabSeries) => o.methodLabels?.[sr.method] ?? sr.label;
+  const tip = (mk: Marker) =>
+    o.tooltip
+      ? o.tooltip(mk.series, mk.point)
+      : defaultTooltip(labelOf(mk.series), mk.point, o.defaultTolText ?? 'default');
+  return {
+    frame: workPrecisionFrame,
+    curves: (data) => methodCurves(data, labelOf),
+    xTickFormat: () => formatTimeTick,
+    yTickFormat: () => formatErrorTick,
+    legend: (_curves, _text, data) => methodLegend(data, o, labelOf),
+    empty: (data, text) => (data.series.some((sr) => sr.points.some(isDrawable)) ? null : (text.emptyText ?? '')),
+    over: {
+      className: 'points',
+      draw(g, data, frame) {
+        const markers = curveMarkers(data.series, frame);
+        const hl = data.highlight;
+        const chosen = hl ? markers.filter((mk) => mk.series.method === hl.method && mk.point.tol === hl.tol) : [];
+        drawMarkers(g, markers, tip);
+        drawHighlight(g, chosen);
+        const labelled = o.tolLabels !== false;
+        drawTolLabels(g, labelled ? markers : [], labelled ? chosen : [], frame.iw, frame.ih);
+      },
+    },
+  };
+}
 
-  const markers = curveMarkers(curves, x, y);
-  drawCurves(plot, curves, x, y);
-  drawMarkers(plot, markers, (mk) =>
-    options.tooltip
-      ? options.tooltip(mk.series, mk.point)
-      : defaultTooltip(labelOf(mk.series), mk.point, defaultTolText),
-  );
-  const hl = options.highlight;
-  const chosen = hl ? markers.filter((mk) => mk.series.method === hl.method && mk.point.tol === hl.tol) : [];
-  drawHighlight(plot, chosen);
-  drawTolLabels(plot, options.tolLabels === false ? [] : markers, options.tolLabels === false ? [] : chosen, iw, ih);
-
-  drawChartText(
-    s,
-    { title: options.title, xLabel: options.xLabel, yLabels: [{ text: options.yLabel, centerY: m.top + ih / 2 }] },
-    m.left,
-    iw,
-    width,
-    height,
-    { plot, text: markers.length === 0 ? (options.emptyText ?? '') : null, centerY: m.top + ih / 2 },
+/**
+ * The lab's work-precision diagram of these series as a drawing (on screen and for export): texts, wording and
+ * the chosen point from options, at the size the drawing is asked for.
+ */
+export function workPrecisionDrawing(series: readonly LabSeries[], options: WorkPrecisionChartOptions): ChartDrawing {
+  const { title, xLabel, yLabel, emptyText, highlight, ...wording } = options;
+  return specDrawing(
+    workPrecisionSpec(wording),
+    { title, xLabel, yLabel, emptyText },
+    { series, highlight },
+    null,
+    WORK_PRECISION_SIZE,
   );
 }

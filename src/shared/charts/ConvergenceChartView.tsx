@@ -18,17 +18,17 @@ export function ConvergenceChartView({ inputs, label }: ConvergenceChartViewProp
   const boxRef = useRef<HTMLDivElement>(null);
   const [chart, setChart] = useState<ConvergenceChart | null>(null);
   const svgRef = useCallback((svg: SVGSVGElement | null) => {
-    setChart(svg ? createConvergenceChart(svg, { width: 0, height: 0, title: '', xLabel: '', yLabel: '' }) : null);
+    setChart(svg ? createConvergenceChart(svg, 0, 0, { title: '', xLabel: '', yLabel: '' }) : null);
   }, []);
   const { width, height } = useElementSize(boxRef);
   const { runs, tolerance, title, xLabel, yLabel, toleranceLabel, emptyText } = inputs;
 
   useLayoutEffect(() => {
-    chart?.setText({ title, xLabel, yLabel, toleranceLabel, emptyText });
-  }, [chart, title, xLabel, yLabel, toleranceLabel, emptyText]);
+    chart?.setText({ title, xLabel, yLabel, emptyText });
+  }, [chart, title, xLabel, yLabel, emptyText]);
   useLayoutEffect(() => {
-    chart?.update({ runs, tolerance });
-  }, [chart, runs, tolerance]);
+    chart?.update({ runs, tolerance, toleranceLabel });
+  }, [chart, runs, tolerance, toleranceLabel]);
   useLayoutEffect(() => {
     if (width > 0 && height > 0) chart?.resize(width, height);
   }, [chart, width, height]);

@@ -1,16 +1,19 @@
 import { axisBottom, axisLeft } from 'd3-axis';
 import { select } from 'd3-selection';
 import type { Selection } from 'd3-selection';
-import type { ScaleLinear } from 'd3-scale';
+import type { ScaleContinuousNumeric } from 'd3-scale';
+import { curveStep } from 'd3-shape';
 import type { LegendItem, Margins } from './chartFrame';
 import {
   CHART_STYLE,
+  LEGEND_ROW,
   child,
   drawChartText,
   drawGridX,
   drawGridY,
   drawLegend,
   legendBoxes,
+  legendRows,
   minus,
   prepareSvg,
   sameChartTexts,
@@ -23,9 +26,10 @@ import { drawXMarks } from './xMarks';
 import { linePath } from './line';
 
 /**
- * The chart kit's one skeleton: frame, axes, grid, x rules, curves with gaps, point marks, legend, texts,
- * marker, resize and axis caching. A spec says what differs (scales, curves, layers, marker); the θ2
- * charts (angle, rate, transmission) and the x–y chart are specs of it.
+ * The chart kit's one skeleton: frame, axes (linear or log, a log y with a floor), grid, x rules, curves with
+ * gaps, point marks, a legend that wraps, texts, an empty state, marker, resize and axis caching. A spec says what
+ * differs (scales, curves, layers, marker); the θ2 charts (angle, rate, transmission), the x–y chart, the NR
+ * convergence chart and the lab's work-precision and cycle charts are specs of it.
  */
 
 /** A d3 group selection, as the layers draw into. */
@@ -54,6 +58,10 @@ export interface Curve {
   strokeWidth?: number;
   /** Id of a clipPath the line is drawn through; default none. */
   clipId?: string;
+  /** Steps: each value holds until the next sample (d3's curveStep, a count per sample); default false. */
+  step?: boolean;
+  /** Shifts the curve down this many pixels, so equal values of two curves stay apart (a dodge); default 0. */
+  dyPx?: number;
 }
 
 /** The title and axis labels every chart has. */
@@ -100,14 +108,23 @@ export interface PlotArea {
   yCount: number;
 }
 
+/** A scale from data to plot pixels: d3's linear, log or symlog. */
+export type ChartScale = ScaleContinuousNumeric<number, number>;
+
 /** The plot area, the scales (data to plot pixels) and the ticks of a chart. */
 export interface ChartScales {
   iw: number;
   ih: number;
-  x: ScaleLinear<number, number>;
-  y: ScaleLinear<number, number>;
+  /** Data to plot pixels; a value the scale cannot place (0 on a log scale) is a gap. */
+  x: ChartScale;
+  y: ChartScale;
   xTicks: number[];
   yTicks: number[];
+  /**
+   * The floor of a log y: finite values below it (zeros and negatives included) are drawn on it, their dots hollow,
+   * with a dashed line along it and its tick labelled ≤; default none (logFloor sets it when some value is below).
+   */
+  yFloor?: number;
 }
 
 /** The marker in data units: a vertical line at x and a dot at each y on it (NaN or outside the plot: no dot). */
@@ -137,10 +154,12 @@ export interface ChartSpec<D, M, T extends ChartTexts = ChartTexts> {
   curves(data: D): Curve[];
   /** x tick labels; default the number as d3 writes it, typographic minus. */
   xTickFormat?: (frame: ChartScales) => (value: number) => string;
-  /** y tick labels; default the number as d3 writes it, typographic minus. */
+  /** y tick labels; default the number as d3 writes it, typographic minus (the floor's tick gets ≤ before it). */
   yTickFormat?: (frame: ChartScales) => (value: number) => string;
-  /** The legend; default one entry per curve. */
-  legend?: (curves: readonly Curve[], text: T) => LegendItem[];
+  /** The legend (it wraps into rows, which push the plot down); default one entry per curve. */
+  legend?: (curves: readonly Curve[], text: T, data: D) => LegendItem[];
+  /** A text shown in the middle instead of the plot and axis labels (nothing to plot), or null; default null. */
+  empty?: (data: D, text: T) => string | null;
   /** Where the marker goes, in data units (null hides it); default no marker. */
   marker?: (marker: M, data: D) => MarkerAt | null;
   /** Clip the curves' group to the plot (curves that run off a clipped y domain); default false. */
@@ -166,7 +185,7 @@ export interface Chart<D, M, T extends ChartTexts = ChartTexts> {
   /** Redraws what depends on the spec's own settings (the transmission band): layers, curves and marker. */
   refresh(): void;
   /** A copy of the x or the y scale (data to plot pixels). */
-  scale(name: 'x' | 'y'): ScaleLinear<number, number>;
+  scale(name: 'x' | 'y'): ChartScale;
 }
 
 const DEFAULT_MARGINS: Margins = { top: 46, right: 14, bottom: 40, left: 50 };
@@ -251,23 +270,43 @@ export function wrappedSegments(x: ArrayLike<number>, yDeg: ArrayLike<number>): 
   return out;
 }
 
-/** SVG path data of a curve in plot pixels: gaps where x or y is NaN, breaks at wraps, at most two samples per pixel. */
+/** y as drawn on a y axis with this floor: a finite value below the floor sits on it; NaN stays NaN (a gap). */
+export function onFloor(y: number, floor: number | undefined): number {
+  return floor !== undefined && y < floor ? floor : y;
+}
+
+/**
+ * The floor of a log axis for these values: floor when a finite value is below it (a zero, say), else undefined
+ * (nothing to floor, so no floor line and no ≤ is drawn).
+ */
+export function logFloor(floor: number, values: Iterable<ArrayLike<number>>): number | undefined {
+  for (const v of values) for (let i = 0; i < v.length; i++) if (v[i] < floor) return floor;
+  return undefined;
+}
+
+/**
+ * SVG path data of a curve in plot pixels: gaps where x or y is NaN or off its scale (0 on a log axis), values below
+ * the y floor on it, breaks at wraps, steps when asked, at most two samples per pixel.
+ */
 export function curvePath(
-  curve: Pick<Curve, 'x' | 'y' | 'wrapped'>,
-  frame: Pick<ChartScales, 'x' | 'y' | 'iw'>,
+  curve: Pick<Curve, 'x' | 'y' | 'wrapped' | 'step' | 'dyPx'>,
+  frame: Pick<ChartScales, 'x' | 'y' | 'iw' | 'yFloor'>,
 ): string {
   // At most two samples per horizontal pixel: n = 3600 on a 300 px chart would only cost time.
   const idx = plotIndices(curve.y, Math.max(64, Math.round(2 * frame.iw)));
   const xs = idx.map((i) => curve.x[i]);
   const ys = idx.map((i) => curve.y[i]);
   const pts: [number, number][] = curve.wrapped ? wrappedSegments(xs, ys) : xs.map((x, i) => [x, ys[i]]);
+  const dy = curve.dyPx ?? 0;
+  const px = pts.map(([x, y]): [number, number] => [frame.x(x), frame.y(onFloor(y, frame.yFloor)) + dy]);
   // Hundredths of a pixel: finer digits only lengthen the path text the browser parses on every redraw.
   return linePath(
-    pts,
-    (d) => frame.x(d[0]),
-    (d) => frame.y(d[1]),
+    px,
+    (d) => d[0],
+    (d) => d[1],
     (d) => Number.isFinite(d[0]) && Number.isFinite(d[1]),
     2,
+    curve.step ? curveStep : undefined,
   );
 }
 
@@ -328,6 +367,32 @@ function chartParts(svg: SVGSVGElement, spec: PartsPlan, clipId: string) {
 /** The groups of a chart's SVG. */
 type ChartParts = ReturnType<typeof chartParts>;
 
+/** One point mark in plot pixels: hollow when it sits on the floor (the value is below it), smaller on a faint curve. */
+interface DotPx {
+  cx: number;
+  cy: number;
+  color: string;
+  r: number;
+  hollow: boolean;
+}
+
+/** The point marks of the curves with dots, in plot pixels: one per point both scales can place. */
+export function curveDots(curves: readonly Curve[], frame: Pick<ChartScales, 'x' | 'y' | 'yFloor'>): DotPx[] {
+  const out: DotPx[] = [];
+  for (const c of curves) {
+    if (!c.dots) continue;
+    const n = Math.min(c.x.length, c.y.length);
+    for (let i = 0; i < n; i++) {
+      const y = c.y[i];
+      const cx = frame.x(c.x[i]);
+      const cy = frame.y(onFloor(y, frame.yFloor)) + (c.dyPx ?? 0);
+      if (!Number.isFinite(cx) || !Number.isFinite(cy)) continue;
+      out.push({ cx, cy, color: c.color, r: c.faint ? DOT_R - 1 : DOT_R, hollow: onFloor(y, frame.yFloor) !== y });
+    }
+  }
+  return out;
+}
+
 /** Draws the lines (one path per curve with a line) and the point marks (one circle per finite point). */
 function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: ChartScales): void {
   parts.lines
@@ -343,81 +408,98 @@ function drawCurves(parts: ChartParts, curves: readonly Curve[], frame: ChartSca
     .attr('stroke-linejoin', 'round')
     .attr('clip-path', (d) => (d.clipId ? `url(#${d.clipId})` : null))
     .attr('d', (d) => curvePath(d, frame));
-  const points = curves
-    .filter((c) => c.dots)
-    .flatMap((c) => {
-      const n = Math.min(c.x.length, c.y.length);
-      const out: { cx: number; cy: number; color: string }[] = [];
-      for (let i = 0; i < n; i++) {
-        if (Number.isFinite(c.x[i]) && Number.isFinite(c.y[i]))
-          out.push({ cx: frame.x(c.x[i]), cy: frame.y(c.y[i]), color: c.color });
-      }
-      return out;
-    });
   parts.dots
-    .selectAll<SVGCircleElement, (typeof points)[number]>('circle')
-    .data(points)
+    .selectAll<SVGCircleElement, DotPx>('circle')
+    .data(curveDots(curves, frame))
     .join('circle')
     .attr('class', 'dot')
     .attr('cx', (d) => d.cx)
     .attr('cy', (d) => d.cy)
-    .attr('r', DOT_R)
-    .attr('fill', (d) => d.color)
-    .attr('stroke', CHART_STYLE.background)
-    .attr('stroke-width', 1);
+    .attr('r', (d) => d.r)
+    .attr('fill', (d) => (d.hollow ? CHART_STYLE.background : d.color))
+    .attr('stroke', (d) => (d.hollow ? d.color : CHART_STYLE.background))
+    .attr('stroke-width', (d) => (d.hollow ? 1.25 : 1));
 }
 
-/** Draws the x axis and its grid. */
-function drawXAxis(parts: ChartParts, frame: ChartScales, format: (v: number) => string): void {
+/** Draws the x axis (these tick labels, in tick order) and its grid. */
+function drawXAxis(parts: ChartParts, frame: ChartScales, labels: readonly string[]): void {
   const { ih, x, xTicks } = frame;
   drawGridX(parts.gridX, ih, xTicks, x);
   parts.ax.attr('transform', `translate(0,${ih})`).call(
     axisBottom(x)
       .tickValues(xTicks)
-      .tickFormat((d) => format(Number(d)))
+      .tickFormat((_d, i) => labels[i])
       .tickSizeOuter(0),
   );
   styleAxis(parts.ax);
 }
 
-/** Draws the y axis and its grid. */
-function drawYAxis(parts: ChartParts, frame: ChartScales, format: (v: number) => string): void {
-  const { iw, y, yTicks } = frame;
+/** Draws the y axis (these tick labels, in tick order), its grid and the dashed line of its floor. */
+function drawYAxis(parts: ChartParts, frame: ChartScales, labels: readonly string[]): void {
+  const { iw, y, yTicks, yFloor } = frame;
   drawGridY(parts.gridY, iw, yTicks, y);
+  parts.gridY
+    .selectAll<SVGLineElement, number>('line.floor')
+    .data(yFloor === undefined ? [] : [yFloor])
+    .join('line')
+    .attr('class', 'floor')
+    .attr('x1', 0)
+    .attr('x2', iw)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', CHART_STYLE.tolerance)
+    .attr('stroke-dasharray', '3 3');
   parts.ay.call(
     axisLeft(y)
       .tickValues(yTicks)
-      .tickFormat((d) => format(Number(d)))
+      .tickFormat((_d, i) => labels[i])
       .tickSizeOuter(0),
   );
   styleAxis(parts.ay);
 }
 
-/** Draws the title, the x label and the y label centred on the plot. */
-function drawTexts(parts: ChartParts, text: ChartTexts, frame: ChartScales, size: ChartSize): void {
-  const m = size.margins;
-  const yLabels = [{ text: text.yLabel, centerY: m.top + frame.ih / 2 }];
-  drawChartText(
-    parts.s,
-    { title: text.title, xLabel: text.xLabel, yLabels },
-    m.left,
-    frame.iw,
-    size.width,
-    size.height,
-  );
+/** The y tick labels: the spec's format, ≤ before the floor's (everything below it is drawn there). */
+function yTickLabels(format: (v: number) => string, frame: ChartScales): string[] {
+  return frame.yTicks.map((t) => (t === frame.yFloor ? `≤${format(t)}` : format(t)));
 }
 
 /** What a live chart draws from: its size, texts, data and their curves, marker, x rules and scales. */
 interface ChartState<D, M, T extends ChartTexts> {
+  /** The size asked for. */
   size: ChartSize;
+  /** The size laid out: the top margin grown by a row per extra legend row. */
+  layout: ChartSize;
   text: T;
   data: D;
   curves: readonly Curve[];
   marker: M | null;
   xMarks: readonly XMark[];
   frame: ChartScales;
-  /** What the axes, legend and x rules were last drawn for: each is redrawn only when its key changes. */
-  keys: { x: string; y: string; legend: string; marks: string };
+  /** What the axes, legend, x rules and empty text were last drawn for: each is redrawn only when its key changes. */
+  keys: { x: string; y: string; legend: string; marks: string; empty: string | null };
+}
+
+/** The spec's empty text for the state's data and texts (null: there is a plot to show). */
+function emptyText<D, M, T extends ChartTexts>(spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>): string | null {
+  return spec.empty ? spec.empty(st.data, st.text) : null;
+}
+
+/** Draws the title, the x label and the y label centred on the plot, or the spec's empty text instead of the plot. */
+function drawTexts<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>) {
+  const { text, frame, layout: size } = st;
+  const m = size.margins;
+  const centerY = m.top + frame.ih / 2;
+  const empty = emptyText(spec, st);
+  st.keys.empty = empty;
+  drawChartText(
+    parts.s,
+    { title: text.title, xLabel: text.xLabel, yLabels: [{ text: text.yLabel, centerY }] },
+    m.left,
+    frame.iw,
+    size.width,
+    size.height,
+    spec.empty ? { plot: parts.plot, text: empty, centerY } : undefined,
+  );
 }
 
 /** Draws the x and y axes (and the clip to the plot), each only when its size, domain or ticks changed. */
@@ -425,10 +507,12 @@ function drawAxes<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec
   const { frame, keys } = st;
   const { iw, ih, x, y, xTicks, yTicks } = frame;
   parts.clipRect?.attr('x', 0).attr('y', 0).attr('width', iw).attr('height', ih);
-  const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')}`;
-  if (xKey !== keys.x) drawXAxis(parts, frame, (spec.xTickFormat ?? plainFormat)(frame));
-  const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')}`;
-  if (yKey !== keys.y) drawYAxis(parts, frame, (spec.yTickFormat ?? plainFormat)(frame));
+  const xLabels = xTicks.map((spec.xTickFormat ?? plainFormat)(frame));
+  const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')} ${xLabels.join(',')}`;
+  if (xKey !== keys.x) drawXAxis(parts, frame, xLabels);
+  const yLabels = yTickLabels((spec.yTickFormat ?? plainFormat)(frame), frame);
+  const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')} ${yLabels.join(',')} ${frame.yFloor}`;
+  if (yKey !== keys.y) drawYAxis(parts, frame, yLabels);
   Object.assign(keys, { x: xKey, y: yKey });
 }
 
@@ -443,8 +527,20 @@ function drawData<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec
 const LEGEND_AT = { x: 14, y: 33 } as const;
 
 /** The legend's entries: the spec's items, or one per curve. */
-function legendItems<D, M, T extends ChartTexts>(spec: ChartSpec<D, M, T>, st: ChartState<D, M, T>) {
-  return spec.legend ? spec.legend(st.curves, st.text) : st.curves;
+function legendItems<D, M, T extends ChartTexts>(
+  spec: ChartSpec<D, M, T>,
+  st: Pick<ChartState<D, M, T>, 'curves' | 'text' | 'data'>,
+): readonly LegendItem[] {
+  return spec.legend ? spec.legend(st.curves, st.text, st.data) : st.curves;
+}
+
+/** The legend's widest row, CSS pixels: the chart's width less its left inset on both sides. */
+const legendWidth = (size: ChartSize) => size.width - 2 * LEGEND_AT.x;
+
+/** The size laid out for a legend of these entries: the top margin grown by LEGEND_ROW per row after the first. */
+export function legendLayoutSize(size: ChartSize, items: readonly LegendItem[]): ChartSize {
+  const extra = Math.max(0, legendRows(items, legendWidth(size)) - 1);
+  return extra ? { ...size, margins: { ...size.margins, top: size.margins.top + extra * LEGEND_ROW } } : size;
 }
 
 /**
@@ -458,13 +554,13 @@ function drawLegendIfChanged<D, M, T extends ChartTexts>(
 ) {
   const items = legendItems(spec, st);
   const key = items.map((d) => `${d.label}|${d.color}|${d.faint === true}`).join('\n');
-  if (key !== st.keys.legend) drawLegend(parts.s, items, LEGEND_AT.x, LEGEND_AT.y);
+  if (key !== st.keys.legend) drawLegend(parts.s, items, LEGEND_AT.x, LEGEND_AT.y, legendWidth(st.size));
   st.keys.legend = key;
   const marksKey = `${st.keys.x}\n${key}\n${st.xMarks.map((m) => `${m.xDeg}|${m.label}`).join('\n')}`;
   if (marksKey === st.keys.marks) return;
   st.keys.marks = marksKey;
-  const { left, top } = st.size.margins;
-  const avoid = legendBoxes(items, LEGEND_AT.x, LEGEND_AT.y).map((b) => ({
+  const { left, top } = st.layout.margins;
+  const avoid = legendBoxes(items, LEGEND_AT.x, LEGEND_AT.y, legendWidth(st.size)).map((b) => ({
     x0: b.x0 - left,
     y0: b.y0 - top,
     x1: b.x1 - left,
@@ -488,33 +584,44 @@ export function createChart<D, M, T extends ChartTexts>(
   empty: D,
 ): Chart<D, M, T> {
   const size = chartSize(options);
+  const text = { ...initialText };
+  const curves = spec.curves(empty);
+  const layout = legendLayoutSize(size, legendItems(spec, { curves, text, data: empty }));
   const st: ChartState<D, M, T> = {
     size,
-    text: { ...initialText },
+    layout,
+    text,
     data: empty,
-    curves: spec.curves(empty),
+    curves,
     marker: null,
     xMarks: options.xMarks ?? [],
-    frame: chartFrame(spec, empty, size),
-    keys: { x: '', y: '', legend: '', marks: '' },
+    frame: chartFrame(spec, empty, layout),
+    keys: { x: '', y: '', legend: '', marks: '', empty: null },
   };
   const laidOut = () => st.size.width > 0 && st.size.height > 0;
   // The id e2e reads on the rate chart's clipped lines.
   const parts = chartParts(svg, spec, `theta2-clip-${++clipCounter}`);
   const mark = chartMarker(parts.plot.node() as SVGGElement, options.markerHost);
 
+  /** Lays the chart out again for its legend and data; true when the plot moved (a legend row came or went). */
+  const relayout = () => {
+    const top = st.layout.margins.top;
+    st.layout = legendLayoutSize(st.size, legendItems(spec, st));
+    st.frame = chartFrame(spec, st.data, st.layout);
+    return st.layout.margins.top !== top;
+  };
   const drawMarker = () => {
     const at = st.marker === null || !spec.marker ? null : spec.marker(st.marker, st.data);
-    const box = { left: st.size.margins.left, top: st.size.margins.top, height: st.frame.ih };
-    mark.draw(markerPlacement(at, st.frame), box, st.size.width, st.size.height);
+    const { left, top } = st.layout.margins;
+    mark.draw(markerPlacement(at, st.frame), { left, top, height: st.frame.ih }, st.size.width, st.size.height);
   };
   const drawAll = () => {
     if (!laidOut()) return;
     prepareSvg(svg, st.size.width, st.size.height);
-    parts.plot.attr('transform', `translate(${st.size.margins.left},${st.size.margins.top})`);
+    parts.plot.attr('transform', `translate(${st.layout.margins.left},${st.layout.margins.top})`);
     drawAxes(parts, spec, st);
     drawData(parts, spec, st);
-    drawTexts(parts, st.text, st.frame, st.size);
+    drawTexts(parts, spec, st);
     drawLegendIfChanged(parts, spec, st);
     drawMarker();
   };
@@ -522,10 +629,13 @@ export function createChart<D, M, T extends ChartTexts>(
   drawAll();
   return {
     update(next) {
-      Object.assign(st, { data: next, curves: spec.curves(next), frame: chartFrame(spec, next, st.size) });
+      Object.assign(st, { data: next, curves: spec.curves(next) });
+      const moved = relayout();
       if (!laidOut()) return;
+      if (moved) return drawAll();
       drawAxes(parts, spec, st);
       drawData(parts, spec, st);
+      if (emptyText(spec, st) !== st.keys.empty) drawTexts(parts, spec, st);
       drawLegendIfChanged(parts, spec, st);
       drawMarker();
     },
@@ -536,14 +646,16 @@ export function createChart<D, M, T extends ChartTexts>(
     resize(width, height) {
       if (width === st.size.width && height === st.size.height) return;
       st.size = chartSize({ ...st.size, width, height });
-      st.frame = chartFrame(spec, st.data, st.size);
+      relayout();
       drawAll();
     },
     setText(next) {
       if (sameChartTexts(next, st.text)) return;
       st.text = { ...next };
+      const moved = relayout();
       if (!laidOut()) return;
-      drawTexts(parts, st.text, st.frame, st.size);
+      if (moved) return drawAll();
+      drawTexts(parts, spec, st);
       drawLegendIfChanged(parts, spec, st);
     },
     setXMarks(next) {

@@ -1,5 +1,6 @@
 import type { Selection } from 'd3-selection';
 import { select } from 'd3-selection';
+import { symbol, symbolDiamond } from 'd3-shape';
 import { COLORS, FONTS, FONT_SIZES } from '../theme/tokens';
 
 /** Chart margins in CSS pixels. */
@@ -68,11 +69,16 @@ export function minus(s: string): string {
   return s.replace(/^-/, '\u2212').replace(/e-/, 'e\u2212');
 }
 
-/** One legend entry: a line sample and its label. */
+/** How a legend entry's sample is drawn: a line (dashed when faint), a line through a dot, a diamond (filled or hollow), a ring. */
+export type LegendSymbol = 'line' | 'line-dot' | 'diamond' | 'hollow-diamond' | 'ring';
+
+/** One legend entry: a sample (default a line) and its label. */
 export interface LegendItem {
   label: string;
   color: string;
   faint?: boolean;
+  /** Default 'line'. */
+  symbol?: LegendSymbol;
 }
 
 /** Rough label width in CSS pixels at the chart font size; labels are not measured so export and screen agree. */
@@ -90,36 +96,68 @@ export interface TextBox {
   y1: number;
 }
 
-/** Left edge of each legend entry relative to the legend's origin: line sample, gap, label, spacing. */
-function legendOffsets(items: readonly LegendItem[]): number[] {
-  const offsets: number[] = [];
-  let cx = 0;
-  for (const it of items) {
-    offsets.push(cx);
-    cx += 22 + estimateTextWidth(it.label) + 14;
+/** Height of one legend row, CSS pixels. */
+export const LEGEND_ROW = 16;
+/** A legend entry's sample and the gap before its label, then the space before the next entry; CSS pixels. */
+const LEGEND_SAMPLE = 22;
+const LEGEND_GAP = 14;
+
+/** Wraps legend entries of these label widths into rows no wider than maxWidth; returns [x, row] per entry (pixels, row index). */
+export function legendLayout(labelWidths: readonly number[], maxWidth: number): Array<[number, number]> {
+  const out: Array<[number, number]> = [];
+  let x = 0;
+  let row = 0;
+  for (const w of labelWidths) {
+    const full = LEGEND_SAMPLE + w;
+    if (x > 0 && x + full > maxWidth) {
+      x = 0;
+      row++;
+    }
+    out.push([x, row]);
+    x += full + LEGEND_GAP;
   }
-  return offsets;
+  return out;
+}
+
+/** Where each entry of a legend at most maxWidth pixels wide goes: [x, row] from its origin. */
+function legendPlaces(items: readonly LegendItem[], maxWidth: number): Array<[number, number]> {
+  return legendLayout(
+    items.map((it) => estimateTextWidth(it.label)),
+    maxWidth,
+  );
+}
+
+/** Rows a legend of these entries takes at most maxWidth pixels wide (0 without entries). */
+export function legendRows(items: readonly LegendItem[], maxWidth: number): number {
+  const places = legendPlaces(items, maxWidth);
+  return places.length ? places[places.length - 1][1] + 1 : 0;
 }
 
 /**
- * The boxes (CSS pixels, SVG coordinates) a one-row legend at (x, y) covers, one per entry: its line sample and
- * label, from a font-size above the label's baseline (y + 4) to a quarter of it below (descenders).
+ * The boxes (CSS pixels, SVG coordinates) a legend at (x, y), wrapped at maxWidth, covers, one per entry: its
+ * sample and label, from a font-size above the label's baseline (y + 4) to a quarter of it below (descenders).
  */
-export function legendBoxes(items: readonly LegendItem[], x: number, y: number): TextBox[] {
-  const offsets = legendOffsets(items);
+export function legendBoxes(items: readonly LegendItem[], x: number, y: number, maxWidth = Infinity): TextBox[] {
+  const places = legendPlaces(items, maxWidth);
   const f = CHART_STYLE.fontSize;
-  return items.map((it, i) => ({
-    x0: x + offsets[i],
-    y0: y + 4 - f,
-    x1: x + offsets[i] + 21 + estimateTextWidth(it.label),
-    y1: y + 4 + f / 4,
-  }));
+  return items.map((it, i) => {
+    const [dx, row] = places[i];
+    const top = y + row * LEGEND_ROW;
+    return { x0: x + dx, y0: top + 4 - f, x1: x + dx + 21 + estimateTextWidth(it.label), y1: top + 4 + f / 4 };
+  });
 }
 
-/** Draws (or updates) a one-row legend starting at (x, y) in the SVG: line sample then label, left to right. */
-export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y: number): void {
+/** True for the samples drawn as a line (and a dot on it). */
+const isLine = (d: LegendItem) => d.symbol === undefined || d.symbol === 'line' || d.symbol === 'line-dot';
+const isDiamond = (d: LegendItem) => d.symbol === 'diamond' || d.symbol === 'hollow-diamond';
+
+/**
+ * Draws (or updates) a legend starting at (x, y) in the SVG, sample then label, left to right, wrapped into rows of
+ * at most maxWidth pixels (LEGEND_ROW apart); returns the number of rows.
+ */
+export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y: number, maxWidth = Infinity): number {
   const legend = child(s, 'g', 'legend').attr('transform', `translate(${x},${y})`);
-  const offsets = legendOffsets(items);
+  const places = legendPlaces(items, maxWidth);
   const item = legend
     .selectAll<SVGGElement, LegendItem>('g.item')
     .data(items)
@@ -129,9 +167,10 @@ export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y
       g.append('text');
       return g;
     });
-  item.attr('transform', (_d, i) => `translate(${offsets[i]},0)`);
+  item.attr('transform', (_d, i) => `translate(${places[i][0]},${places[i][1] * LEGEND_ROW})`);
   item
     .select('line')
+    .attr('display', (d) => (isLine(d) ? null : 'none'))
     .attr('x1', 0)
     .attr('x2', 16)
     .attr('y1', 0)
@@ -140,11 +179,32 @@ export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y
     .attr('stroke-width', (d) => (d.faint ? 1.25 : 2))
     .attr('stroke-dasharray', (d) => (d.faint ? '4 3' : null));
   item
+    .selectAll<SVGPathElement, LegendItem>('path')
+    .data((d) => (isDiamond(d) ? [d] : []))
+    .join('path')
+    .attr('transform', 'translate(8,0)')
+    .attr('d', symbol(symbolDiamond, 70)() ?? '')
+    .attr('fill', (d) => (d.symbol === 'diamond' ? d.color : CHART_STYLE.background))
+    .attr('stroke', (d) => (d.symbol === 'diamond' ? CHART_STYLE.background : d.color))
+    .attr('stroke-width', (d) => (d.symbol === 'diamond' ? 1 : 1.25));
+  // A dot on the line (a curve through points), or a ring of the entry's colour alone.
+  item
+    .selectAll<SVGCircleElement, LegendItem>('circle')
+    .data((d) => (d.symbol === 'line-dot' || d.symbol === 'ring' ? [d] : []))
+    .join('circle')
+    .attr('cx', 8)
+    .attr('cy', 0)
+    .attr('r', (d) => (d.symbol === 'ring' ? 3.5 : 3))
+    .attr('fill', (d) => (d.symbol === 'ring' ? CHART_STYLE.background : d.color))
+    .attr('stroke', (d) => (d.symbol === 'ring' ? d.color : CHART_STYLE.background))
+    .attr('stroke-width', (d) => (d.symbol === 'ring' ? 2 : 1));
+  item
     .select('text')
     .attr('x', 21)
     .attr('y', 4)
     .attr('fill', CHART_STYLE.text)
     .text((d) => d.label);
+  return legendRows(items, maxWidth);
 }
 
 /** Horizontal grid lines (class gy) at yTicks across width pixels, in group g. */
@@ -181,20 +241,6 @@ export function drawGridX(
     .attr('x1', (d) => x(d))
     .attr('x2', (d) => x(d))
     .attr('stroke', CHART_STYLE.gridColor);
-}
-
-/** Grid lines: horizontal at yTicks (class gy) across width, vertical at xTicks (class gx) down height; pixels. */
-export function drawGridLines(
-  grid: Selection<SVGGElement, unknown, null, undefined>,
-  width: number,
-  height: number,
-  yTicks: readonly number[],
-  y: (v: number) => number,
-  xTicks?: readonly number[],
-  x?: (v: number) => number,
-): void {
-  drawGridY(grid, width, yTicks, y);
-  if (xTicks && x) drawGridX(grid, height, xTicks, x);
 }
 
 /** A rotated y-axis label and the vertical centre of the panel it names (pixels from the SVG top). */

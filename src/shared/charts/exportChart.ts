@@ -3,7 +3,7 @@ import { svgToPngBytes, svgToText } from '../canvas/rasterize';
 import { detachedSvg } from '../canvas/svgContext';
 import type { PngSize } from '../fileNames';
 import { PNG_DPI, PNG_SCALE } from '../fileNames';
-import type { ChartSpec, ChartTexts } from './chart';
+import type { ChartSizeOptions, ChartSpec, ChartTexts } from './chart';
 import { createChart } from './chart';
 
 /** Draws a chart into svg at width x height CSS pixels, in one call (data, texts and marker included). */
@@ -16,14 +16,18 @@ export interface ChartExport {
   height: number;
 }
 
-/** The drawing of a chart spec with these texts, data and marker (the marker inside the SVG, as exports need it). */
+/**
+ * The drawing of a chart spec with these texts, data and marker (the marker inside the SVG, as exports need it),
+ * with the spec's margins and tick spacing (default the kit's).
+ */
 export function specDrawing<D, M, T extends ChartTexts>(
   spec: ChartSpec<D, M, T>,
   text: T,
   data: D,
   marker: M | null,
+  size: Omit<ChartSizeOptions, 'width' | 'height'> = {},
 ): ChartDrawing {
-  return (svg, width, height) => createChart(svg, { width, height }, text, spec, data).setMarker(marker);
+  return (svg, width, height) => createChart(svg, { ...size, width, height }, text, spec, data).setMarker(marker);
 }
 
 /**

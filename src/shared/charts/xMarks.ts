@@ -1,7 +1,7 @@
 import type { Selection } from 'd3-selection';
 import type { TextBox } from './chartFrame';
 import { CHART_STYLE, estimateTextWidth } from './chartFrame';
-import type { ScaleLinear } from 'd3-scale';
+import type { ScaleContinuousNumeric } from 'd3-scale';
 
 /** A faint vertical rule on a theta2 axis with a small label: a dead centre, say. xDeg in the axis's degrees. */
 export interface XMark {
@@ -15,7 +15,7 @@ export const X_MARK_FONT_SIZE = 10;
 /** The marks to draw and their x in plot pixels: those with a finite xDeg inside the scale's domain, in order. */
 export function xMarkPositions(
   marks: readonly XMark[],
-  x: ScaleLinear<number, number>,
+  x: ScaleContinuousNumeric<number, number>,
 ): { xPx: number; label: string }[] {
   const [d0, d1] = x.domain();
   return marks
@@ -59,7 +59,7 @@ export function xMarkBaselines(shown: readonly { xPx: number; label: string }[],
 export function drawXMarks(
   g: Selection<SVGGElement, unknown, null, undefined>,
   marks: readonly XMark[],
-  x: ScaleLinear<number, number>,
+  x: ScaleContinuousNumeric<number, number>,
   height: number,
   avoid: readonly TextBox[] = [],
 ): void {

@@ -1,6 +1,6 @@
 import { extent } from 'd3-array';
 import { scaleLinear } from 'd3-scale';
-import type { ScaleLinear } from 'd3-scale';
+import type { ScaleContinuousNumeric, ScaleLinear } from 'd3-scale';
 import type { Chart, ChartOptions, ChartSpec, ChartTexts, ChartScales, MarkerAt, PlotArea } from './chart';
 import { createChart } from './chart';
 import { estimateTextWidth, minus } from './chartFrame';
@@ -127,7 +127,7 @@ export function xyFrame(data: XYChartData, plot: PlotArea, fit: XYFit = {}): Omi
 }
 
 /** d3's tick format for a scale's ticks, with a typographic minus. */
-const tickFormatOf = (scale: ScaleLinear<number, number>, ticks: readonly number[]) => {
+const tickFormatOf = (scale: ScaleContinuousNumeric<number, number>, ticks: readonly number[]) => {
   const f = scale.tickFormat(Math.max(1, ticks.length));
   return (d: number) => minus(f(d));
 };

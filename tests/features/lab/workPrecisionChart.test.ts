@@ -8,15 +8,15 @@ import {
   formatTol,
   shownTol,
   hasTrouble,
-  legendLayout,
   orderedCurvePoints,
   placePointLabels,
   plottedError,
   workPrecisionDomains,
-  drawWorkPrecisionChart,
+  workPrecisionDrawing,
   FAILURE_COLOR,
 } from '../../../src/features/lab/workPrecisionChart';
 import { fakeSvg } from '../../shared/charts/fakeSvgDom';
+import { legendLayout } from '../../../src/shared/charts/chartFrame';
 
 function pt(tol: number | null, nsPerPoint: number, maxError: number, failures = 0): LabPoint {
   return {
@@ -269,17 +269,17 @@ describe('METHOD_COLORS', () => {
   });
 });
 
-describe('drawWorkPrecisionChart', () => {
+describe('workPrecisionDrawing', () => {
   const series: LabSeries[] = [
     { method: 'newton', label: 'NR', points: [pt(1e-3, 200, 1e-4), pt(1e-9, 400, 1e-10), pt(null, 300, 1e-12, 1)] },
     { method: 'closed-form', label: 'closed form', points: [pt(null, 50, 0)] },
   ];
-  const options = { width: 640, height: 400, title: 'Work-precision diagram', xLabel: 'ns', yLabel: 'rad' };
+  const options = { title: 'Work-precision diagram', xLabel: 'ns', yLabel: 'rad' };
 
   it('traces a method over its tolerances, marks defaults and trouble, rings the chosen point and labels tolerances', () => {
     const svg = fakeSvg();
-    drawWorkPrecisionChart(svg, series, { ...options, highlight: { method: 'newton', tol: 1e-9 } });
-    expect(svg.querySelectorAll('g.curves path')).toHaveLength(1);
+    workPrecisionDrawing(series, { ...options, highlight: { method: 'newton', tol: 1e-9 } })(svg, 640, 400);
+    expect(svg.querySelectorAll('g.lines path')).toHaveLength(1);
     const marks = [...svg.querySelectorAll('g.markers path')];
     expect(marks).toHaveLength(4);
     // Defaults (diamonds) are drawn first, so traced dots stay on top.
@@ -288,16 +288,16 @@ describe('drawWorkPrecisionChart', () => {
     expect(svg.querySelectorAll('g.highlight circle')).toHaveLength(1);
     expect([...svg.querySelectorAll('g.tol-labels text')].map((t) => t.textContent)).toContain('1e\u22129');
     // The exact zero of the closed form sits on the dashed floor.
-    expect(svg.querySelectorAll('g.grid line.floor')).toHaveLength(1);
+    expect(svg.querySelectorAll('g.grid-y line.floor')).toHaveLength(1);
     expect(svg.querySelector('text.title')?.textContent).toBe('Work-precision diagram');
   });
 
   it('leaves the tolerance labels out when asked, and shows the empty text without data', () => {
     const svg = fakeSvg();
-    drawWorkPrecisionChart(svg, series, { ...options, tolLabels: false });
+    workPrecisionDrawing(series, { ...options, tolLabels: false })(svg, 640, 400);
     expect(svg.querySelectorAll('g.tol-labels text')).toHaveLength(0);
     const empty = fakeSvg();
-    drawWorkPrecisionChart(empty, [], { ...options, emptyText: 'Run…' });
+    workPrecisionDrawing([], { ...options, emptyText: 'Run…' })(empty, 640, 400);
     expect(empty.querySelector('text.empty')?.textContent).toBe('Run…');
     expect(empty.querySelector('g.plot')?.getAttribute('display')).toBe('none');
   });

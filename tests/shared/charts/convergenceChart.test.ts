@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { convergenceFrame, formatPowerOfTen, residualDomain } from '../../../src/shared/charts/convergenceChart';
+import {
+  CONVERGENCE_SIZE,
+  convergenceFrame,
+  formatPowerOfTen,
+  residualDomain,
+} from '../../../src/shared/charts/convergenceChart';
+import { chartSize, plotArea } from '../../../src/shared/charts/chart';
 
 describe('residualDomain', () => {
   it('spans whole decades with room for exact zeros below the smallest residual', () => {
@@ -25,13 +31,7 @@ describe('formatPowerOfTen', () => {
 });
 
 describe('convergenceFrame', () => {
-  const size = (width: number, height: number) => ({
-    width,
-    height,
-    margins: { top: 46, right: 14, bottom: 40, left: 64 },
-    xTickSpacing: 40,
-    yTickSpacing: 22,
-  });
+  const size = (width: number, height: number) => plotArea(chartSize({ ...CONVERGENCE_SIZE, width, height }));
   const runs = [
     {
       label: '',
