@@ -211,6 +211,13 @@ test.describe('Spatial page', () => {
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'no-webgl');
     const o = sphericalOracle(60, 20, 55, 45, 30);
     expectNear(await shownPin(page, 'B'), o.B, 'B');
+    // The PNG of the 3D view cannot be made: its button is off and says why; the CSV and the link stay on.
+    const png = page.getByRole('button', { name: 'Export 3D view PNG' });
+    await expect(png).toBeDisabled();
+    await expect(png).toHaveAccessibleDescription(/needs WebGL/);
+    await expect(page.getByText('The PNG of the 3D view needs WebGL')).toBeVisible();
+    await expect(page.getByRole('button', { name: 'Export CSV' })).toBeEnabled();
+    await expect(page.getByRole('button', { name: 'Copy link' })).toBeEnabled();
     await expect(page.getByTestId('spatial-plot-theta4').locator('path').first()).toBeAttached();
     const [download] = await Promise.all([
       page.waitForEvent('download'),

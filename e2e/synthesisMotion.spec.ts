@@ -314,13 +314,17 @@ test.describe('synthesis: motion, six to twenty poses by least squares (issue 34
     await page.screenshot({ path: artifact('synthesis-motion-eight-1280.png'), fullPage: true });
   });
 
-  test('Add pose goes past five into least squares; at 390×844 too', async ({ browser }) => {
+  test('Add pose goes past five into least squares and offers a four-bar; at 390×844 too', async ({ browser }) => {
     const context = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
     const page = await context.newPage();
     await page.goto(`${test.info().project.use.baseURL}?page=syn&syn=motion`);
     for (let k = 0; k < 3; k++) await page.getByRole('button', { name: 'Add pose' }).click();
     await expect(page.getByTestId('motion-mode')).toHaveAttribute('data-count', '6');
     await expect(page.getByTestId('approx-count')).toHaveText(/best-fit dyads/);
+    // The sixth pose is the default crank-rocker's next: a four-bar fits all six (it was none, "pivots coincide").
+    await expect(page.getByTestId('approx-fourbars').getByRole('radio').first()).toBeChecked();
+    await expect(page.getByTestId('motion-problem')).toHaveCount(0);
+    await expect(page.getByTestId('motion-errors').locator('tbody tr')).toHaveCount(6);
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
     expect(overflow).toBeLessThanOrEqual(0);
     await page.screenshot({ path: artifact('synthesis-motion-six-390.png'), fullPage: true });

@@ -76,6 +76,36 @@ test.describe('the synthesis page, Path mode', () => {
     expect(Number(await first.getAttribute('data-error'))).toBeLessThan(1e-12 * SIZE * SIZE);
   });
 
+  test('a link names the chosen candidate (cd): Synthesize with its seed shows it again (issue 34, 13)', async ({
+    page,
+  }) => {
+    // Two runs of the search.
+    test.setTimeout(180_000);
+    const six = TARGETS.slice(0, 6)
+      .map((p) => `${p.x},${p.y}`)
+      .join(';');
+    await page.goto(`./?page=syn&tg=${encodeURIComponent(six)}&sd=3`);
+    await synthesize(page);
+    const list = page.getByTestId('candidates').getByRole('button');
+    expect(await list.count()).toBeGreaterThan(2);
+    const third = list.nth(2);
+    const error = await third.getAttribute('data-error');
+    await third.click();
+    await expect(third).toHaveAttribute('aria-pressed', 'true');
+    await expect.poll(() => new URL(page.url()).searchParams.get('cd')).toBe('2');
+    // The link opened afresh: no answers until Synthesize, which shows the same candidate chosen.
+    const link = page.url();
+    await page.goto('about:blank');
+    await page.goto(link);
+    await synthesize(page);
+    const again = page.getByTestId('candidates').getByRole('button').nth(2);
+    await expect(again).toHaveAttribute('aria-pressed', 'true');
+    expect(await again.getAttribute('data-error')).toBe(error);
+    // An edit of the task shows the best first again.
+    await page.getByRole('radio', { name: 'Equal steps' }).check();
+    await expect.poll(() => new URL(page.url()).searchParams.get('cd')).toBeNull();
+  });
+
   test('Stop ends a run at once and keeps the best candidates found so far (issue 34, 4)', async ({ page }) => {
     // Twelve points on a figure eight: no four-bar passes them exactly, so the search runs its whole budget.
     const eight = Array.from({ length: 12 }, (_, k) => {

@@ -22,6 +22,12 @@ export interface LeastSquaresProblem {
   project?: (x: Float64Array) => void;
   /** Nonlinear constraints: false rejects x. */
   feasible?: (x: Float64Array) => boolean;
+  /**
+   * Linear constraints a · x ≥ c near x (those of the convex piece project keeps x in): a step that would cross one
+   * is solved again with it as an equality, so the method moves along the face instead of being cut short by the
+   * projection (a length m each).
+   */
+  faces?: (x: Float64Array) => { a: Float64Array; c: number }[];
 }
 
 /** Options of levenbergMarquardt. */
@@ -45,8 +51,8 @@ export interface LevenbergMarquardtResult {
   evaluations: number;
 }
 
-/** Cholesky solve of the m × m SPD system M y = b in place (b becomes y); false when M is not positive definite. */
-function choleskySolve(M: Float64Array, b: Float64Array, m: number): boolean {
+/** Cholesky factor of the m × m SPD matrix M in place (lower triangle); false when M is not positive definite. */
+function choleskyFactor(M: Float64Array, m: number): boolean {
   for (let j = 0; j < m; j++) {
     let d = M[j * m + j];
     for (let k = 0; k < j; k++) d -= M[j * m + k] * M[j * m + k];
@@ -59,6 +65,11 @@ function choleskySolve(M: Float64Array, b: Float64Array, m: number): boolean {
       M[i * m + j] = s / l;
     }
   }
+  return true;
+}
+
+/** Solves L Lᵀ y = b in place (b becomes y) with the factor of choleskyFactor. */
+function choleskySubst(M: Float64Array, b: Float64Array, m: number): void {
   for (let i = 0; i < m; i++) {
     let s = b[i];
     for (let k = 0; k < i; k++) s -= M[i * m + k] * b[k];
@@ -68,6 +79,98 @@ function choleskySolve(M: Float64Array, b: Float64Array, m: number): boolean {
     let s = b[i];
     for (let k = i + 1; k < m; k++) s -= M[k * m + i] * b[k];
     b[i] = s / M[i * m + i];
+  }
+}
+
+/** Largest number of faces held as equalities in one step. */
+const MAX_FACES = 4;
+
+/**
+ * Corrects the step s (free variables free[0 … nf)) so that the faces it would cross hold as equalities:
+ * s ← s + M⁻¹ N λ with (Nᵀ M⁻¹ N) λ = c − N ᵀ(x + s), M the factored damped normal matrix (the minimiser of the
+ * model on those faces). Faces whose normal has no free component are left to the projection.
+ */
+function holdFaces(
+  faces: { a: Float64Array; c: number }[],
+  x: Float64Array,
+  s: Float64Array,
+  free: number[],
+  M: Float64Array,
+): void {
+  const nf = free.length;
+  const held: { a: Float64Array; c: number; w: Float64Array }[] = [];
+  const slack = (f: { a: Float64Array; c: number }) => {
+    let v = -f.c;
+    for (let i = 0; i < x.length; i++) v += f.a[i] * x[i];
+    for (let q = 0; q < nf; q++) v += f.a[free[q]] * s[q];
+    return v;
+  };
+  const s0 = Float64Array.from(s.subarray(0, nf));
+  for (let pass = 0; pass < MAX_FACES; pass++) {
+    let worst: { a: Float64Array; c: number } | null = null;
+    let worstV = 0;
+    for (const f of faces) {
+      if (held.some((h) => h.a === f.a)) continue;
+      const v = slack(f);
+      if (v < worstV) {
+        worstV = v;
+        worst = f;
+      }
+    }
+    if (!worst) return;
+    const w = new Float64Array(nf);
+    let any = false;
+    for (let q = 0; q < nf; q++) {
+      w[q] = worst.a[free[q]];
+      if (w[q] !== 0) any = true;
+    }
+    if (!any) return;
+    choleskySubst(M, w, nf);
+    held.push({ ...worst, w });
+    // Solve the k × k system (Nᵀ M⁻¹ N) λ = c − Nᵀ(x + s0) by Gaussian elimination (k ≤ MAX_FACES).
+    const k = held.length;
+    const G = new Float64Array(k * k);
+    const rhs = new Float64Array(k);
+    for (let i = 0; i < k; i++) {
+      let v = held[i].c;
+      for (let j = 0; j < x.length; j++) v -= held[i].a[j] * x[j];
+      for (let q = 0; q < nf; q++) v -= held[i].a[free[q]] * s0[q];
+      rhs[i] = v;
+      for (let j = 0; j < k; j++) {
+        let g = 0;
+        for (let q = 0; q < nf; q++) g += held[i].a[free[q]] * held[j].w[q];
+        G[i * k + j] = g;
+      }
+    }
+    if (!solveSmall(G, rhs, k)) return;
+    for (let q = 0; q < nf; q++) {
+      let v = s0[q];
+      for (let j = 0; j < k; j++) v += held[j].w[q] * rhs[j];
+      s[q] = v;
+    }
+  }
+}
+
+/** Gaussian elimination with partial pivoting of a k × k system in place (b becomes the solution). */
+function solveSmall(G: Float64Array, b: Float64Array, k: number): boolean {
+  for (let c = 0; c < k; c++) {
+    let p = c;
+    for (let r = c + 1; r < k; r++) if (Math.abs(G[r * k + c]) > Math.abs(G[p * k + c])) p = r;
+    if (!(Math.abs(G[p * k + c]) > 0)) return false;
+    if (p !== c) {
+      for (let j = 0; j < k; j++) [G[c * k + j], G[p * k + j]] = [G[p * k + j], G[c * k + j]];
+      [b[c], b[p]] = [b[p], b[c]];
+    }
+    for (let r = c + 1; r < k; r++) {
+      const f = G[r * k + c] / G[c * k + c];
+      for (let j = c; j < k; j++) G[r * k + j] -= f * G[c * k + j];
+      b[r] -= f * b[c];
+    }
+  }
+  for (let c = k - 1; c >= 0; c--) {
+    let v = b[c];
+    for (let j = c + 1; j < k; j++) v -= G[c * k + j] * b[j];
+    b[c] = v / G[c * k + c];
   }
   return true;
 }
@@ -171,10 +274,12 @@ export function* levenbergMarquardtSteps(
         M[a * nf + a] += lambda * Math.max(A[i * m + i], floor) + floor;
         step[a] = -g[i];
       }
-      if (!choleskySolve(M, step, nf)) {
+      if (!choleskyFactor(M, nf)) {
         lambda *= 4;
         continue;
       }
+      choleskySubst(M, step, nf);
+      if (p.faces) holdFaces(p.faces(x), x, step, free, M);
       // Full step first; where it leaves the feasible set, shorter steps along it.
       for (let t = 1; t >= 0.1; t *= 0.5) {
         xt.set(x);

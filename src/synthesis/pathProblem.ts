@@ -182,6 +182,7 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
   };
   const project = (x: Float64Array): void => {
     if (t.timing === 'free' && n > 1) projectCappedSimplex(x, T + 1, n - 1, TWO_PI);
+    if (t.crank) projectCrank(x, L, t.lenMin, t.lenMax);
   };
   const feasible = (x: Float64Array): boolean => {
     const r1 = x[L];
@@ -202,7 +203,78 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
     thetas(x, th);
     return sweepWithinRange(r1, r2, r3, r4, Math.min(th[0], th[n - 1]), Math.max(th[0], th[n - 1]));
   };
-  return { lsq: { m, k, evaluate, lo, hi, project, feasible }, layout, sigma, dir, thetas, placementOf };
+  const faces = t.crank ? (x: Float64Array) => crankFaces(x, L, m) : undefined;
+  return { lsq: { m, k, evaluate, lo, hi, project, feasible, faces }, layout, sigma, dir, thetas, placementOf };
+}
+
+/**
+ * The two cones of lengths whose input turns fully (turnsFully): a crank-rocker or double crank with r2 the
+ * shortest (t3, t1, t2 ≥ 0) and a drag link with r1 the shortest (t3, −t1, −t2 ≥ 0); each row is a normal a with
+ * a · (r1, r2, r3, r4) ≥ 0 (t3 = r3 + r4 − r1 − r2, t1 = r1 + r3 − r2 − r4, t2 = r1 + r4 − r2 − r3).
+ */
+const CRANK_CONES: readonly (readonly (readonly number[])[])[] = [
+  [
+    [-1, -1, 1, 1],
+    [1, -1, 1, -1],
+    [1, -1, -1, 1],
+  ],
+  [
+    [-1, -1, 1, 1],
+    [-1, 1, -1, 1],
+    [-1, 1, 1, -1],
+  ],
+];
+/** Sweeps of alternating projections onto a cone's faces and the length box. */
+const CRANK_SWEEPS = 30;
+
+/**
+ * Moves the lengths x[L .. L+4) onto the nearer cone of full-turning inputs (a little inside its faces), staying in
+ * [lo, hi], in place; no change when they already turn fully. Without it a best fit that lies on the Grashof face (a
+ * crank at its change point) is met only by shortened steps that stop short of it: with it the step slides along
+ * the face, as the active set does on a box face (issue 34 item 6).
+ */
+export function projectCrank(x: Float64Array, L: number, lo: number, hi: number): void {
+  const r0 = [x[L], x[L + 1], x[L + 2], x[L + 3]];
+  if (turnsFully(r0[0], r0[1], r0[2], r0[3])) return;
+  let best: number[] | null = null;
+  let bestD = Infinity;
+  for (const cone of CRANK_CONES) {
+    const r = r0.slice();
+    for (let sweep = 0; sweep < CRANK_SWEEPS; sweep++) {
+      const e = 4 * CRANK_MARGIN * (r[0] + r[1] + r[2] + r[3]);
+      for (const a of cone) {
+        const g = a[0] * r[0] + a[1] * r[1] + a[2] * r[2] + a[3] * r[3] - e;
+        if (g < 0) for (let j = 0; j < 4; j++) r[j] -= (g * a[j]) / 4;
+      }
+      for (let j = 0; j < 4; j++) r[j] = Math.min(hi, Math.max(lo, r[j]));
+      if (turnsFully(r[0], r[1], r[2], r[3])) break;
+    }
+    if (!turnsFully(r[0], r[1], r[2], r[3])) continue;
+    const d = Math.hypot(r[0] - r0[0], r[1] - r0[1], r[2] - r0[2], r[3] - r0[3]);
+    if (d < bestD) {
+      bestD = d;
+      best = r;
+    }
+  }
+  if (best) for (let j = 0; j < 4; j++) x[L + j] = best[j];
+}
+
+/**
+ * The faces of the cone of full-turning inputs that the lengths x[L .. L+4) lie in (margin included), as linear
+ * constraints on all m variables; [] when they lie in neither cone.
+ */
+export function crankFaces(x: Float64Array, L: number, m: number): { a: Float64Array; c: number }[] {
+  const r = [x[L], x[L + 1], x[L + 2], x[L + 3]];
+  const e = 2 * CRANK_MARGIN * (r[0] + r[1] + r[2] + r[3]);
+  for (const cone of CRANK_CONES) {
+    if (!cone.every((a) => a[0] * r[0] + a[1] * r[1] + a[2] * r[2] + a[3] * r[3] > 0)) continue;
+    return cone.map((a) => {
+      const v = new Float64Array(m);
+      for (let j = 0; j < 4; j++) v[L + j] = a[j];
+      return { a: v, c: e };
+    });
+  }
+  return [];
 }
 
 /** Projects x[from .. from+count) (each already in [0, cap]) onto { δ ≥ 0, Σδ ≤ cap } (Euclidean), in place. */

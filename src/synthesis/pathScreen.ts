@@ -17,13 +17,20 @@ import type { PathSolution, PathTask, PlacedFourBar } from './types';
 
 /** Most answers returned. */
 export const MAX_SOLUTIONS = 10;
-/** Candidates polished with a longer local solve before screening. */
+/** Candidates polished with a longer local solve before screening, at least. */
 const POLISHED = 24;
-/** Iteration cap of the polishing solve of the best few: long, because a best fit often lies along a flat valley. */
-const POLISH_LONG_ITERATIONS = 4000;
-/** How many of the best candidates get the long polish; the rest get POLISH_ITERATIONS. */
-const POLISH_LONG = 4;
-const POLISH_ITERATIONS = 300;
+/**
+ * Candidates polished at most: past POLISHED, polishing goes on down the list while fewer than MAX_SOLUTIONS
+ * distinct answers have been found, so that "up to ten" means ten different linkages where the rounds found them.
+ */
+const POLISHED_MAX = 64;
+/**
+ * Iteration cap of the polishing solve: long, because a fit often lies along a flat valley, and every answer listed
+ * should be at its basin's optimum (a solve that converges stops long before it).
+ */
+const POLISH_ITERATIONS = 4000;
+/** Fresh starts of the polishing solve from where it stalled, at most. */
+const POLISH_RESTARTS = 8;
 /**
  * Two designs whose pivots, links and coupler point all agree to this share of the target size are one linkage: the
  * flat valleys of an overdetermined fit leave copies that differ far above rounding (issue 34 item 2).
@@ -127,10 +134,51 @@ export function sameDesign(a: PlacedFourBar, b: PlacedFourBar, size: number): bo
   );
 }
 
+/** A candidate's design in normalised units, as sameDesign compares designs: branch, O2, O4, r2, r3, r4, offset. */
+export interface DesignKey {
+  sigma: number;
+  k: Float64Array;
+}
+
+/** The design key of a candidate (normalised units: the size of the targets is 1). */
+export function designKey(t: NormalisedTask, c: PathCandidate): DesignKey {
+  const lay = pathLayout(t);
+  const L = lay.links;
+  const x = c.x;
+  const o = t.placement ?? { x: x[lay.place], y: x[lay.place + 1], angle: x[lay.place + 2] };
+  const [r1, r2, r3, r4, rho, phi] = [x[L], x[L + 1], x[L + 2], x[L + 3], x[L + 4], x[L + 5]];
+  return {
+    sigma: c.sigma,
+    k: Float64Array.from([
+      o.x,
+      o.y,
+      o.x + r1 * Math.cos(o.angle),
+      o.y + r1 * Math.sin(o.angle),
+      r2,
+      r3,
+      r4,
+      rho * Math.cos(phi),
+      rho * Math.sin(phi),
+    ]),
+  };
+}
+
+/** True when two keys are one design by sameDesign's rule (SAME_DESIGN of the size, which is 1 here). */
+export function sameKey(a: DesignKey, b: DesignKey): boolean {
+  if (a.sigma !== b.sigma) return false;
+  const k = a.k;
+  const q = b.k;
+  const near = (i: number) => Math.hypot(k[i] - q[i], k[i + 1] - q[i + 1]) <= SAME_DESIGN;
+  const close = (i: number) => Math.abs(k[i] - q[i]) <= SAME_DESIGN;
+  return near(0) && near(2) && close(4) && close(5) && close(6) && near(7);
+}
+
 /**
  * Merges candidate lists (from one run or from several workers' slices), polishes the best, and returns the
- * checked, distinct answers best first (at most MAX_SOLUTIONS). Deterministic in its input unless the deadline
- * (Date.now(), ms) or the signal cuts the polishing short.
+ * checked, distinct answers best first (at most MAX_SOLUTIONS). At least POLISHED candidates are polished; past
+ * them, polishing goes on (to POLISHED_MAX) while fewer than MAX_SOLUTIONS distinct answers are in hand, skipping
+ * candidates that are already, unpolished, the same design as an answer. Deterministic in its input unless the
+ * deadline (Date.now(), ms) or the signal cuts the polishing short.
  */
 export function screenCandidates(
   t: NormalisedTask,
@@ -143,26 +191,39 @@ export function screenCandidates(
   all.sort((a, b) => a.f - b.f || a.sigma - b.sigma || a.dir - b.dir);
   const m = pathLayout(t).m;
   const polished: PathCandidate[] = [];
+  const out: PathSolution[] = [];
+  const outKeys: DesignKey[] = [];
   for (const c of all) {
-    if (polished.length >= POLISHED) break;
+    if (polished.length >= POLISHED_MAX) break;
+    if (polished.length >= POLISHED && out.length >= MAX_SOLUTIONS) break;
     if (c.x.length !== m) continue;
     // Skip near-copies before spending a polish on them.
     if (polished.some((p) => p.sigma === c.sigma && p.x.every((v, i) => Math.abs(v - c.x[i]) <= 1e-6))) continue;
+    if (polished.length >= POLISHED && outKeys.some((k) => sameKey(k, designKey(t, c)))) continue;
     const problem = createPathProblem(t, c.sigma, c.dir);
-    const r = levenbergMarquardt(problem.lsq, Float64Array.from(c.x), {
-      maxIterations: polished.length < POLISH_LONG ? POLISH_LONG_ITERATIONS : POLISH_ITERATIONS,
-      fTarget: EXACT_F,
-      deadline,
-      signal,
-    });
-    polished.push(r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c);
-  }
-  const out: PathSolution[] = [];
-  for (const c of polished) {
-    const sol = solutionOf(t, task, c);
+    const options = { maxIterations: POLISH_ITERATIONS, fTarget: EXACT_F, deadline, signal };
+    let r = levenbergMarquardt(problem.lsq, Float64Array.from(c.x), options);
+    // Restarts with fresh damping while they gain: along a flat valley the damping grows until the steps stall.
+    for (let restart = 0; restart < POLISH_RESTARTS; restart++) {
+      const again = levenbergMarquardt(problem.lsq, r.x, options);
+      if (!(again.f < r.f * (1 - 1e-12))) break;
+      r = again;
+    }
+    const p = r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c;
+    polished.push(p);
+    const sol = solutionOf(t, task, p);
     if (!sol || !Number.isFinite(sol.error)) continue;
-    if (out.some((o) => sameDesign(o.design, sol.design, t.scale))) continue;
+    const same = out.findIndex((o) => sameDesign(o.design, sol.design, t.scale));
+    if (same >= 0) {
+      // One linkage: keep the better of the two.
+      if (sol.error < out[same].error) {
+        out[same] = sol;
+        outKeys[same] = designKey(t, p);
+      }
+      continue;
+    }
     out.push(sol);
+    outKeys.push(designKey(t, p));
   }
   out.sort((a, b) => a.error - b.error);
   return out.slice(0, MAX_SOLUTIONS);

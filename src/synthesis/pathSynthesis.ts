@@ -11,7 +11,8 @@ import type { PathCandidate } from './globalSearch';
 import { EXACT_F, pathRoundSteps } from './globalSearch';
 import { pathLayout } from './pathProblem';
 import { normaliseTask } from './pathTask';
-import { screenCandidates } from './pathScreen';
+import type { DesignKey } from './pathScreen';
+import { designKey, sameKey, screenCandidates } from './pathScreen';
 import type { PathSolution, PathTask } from './types';
 import { checkFiniteNumber, show } from './validate';
 
@@ -245,8 +246,17 @@ export function mergePathCandidates(
   const all = parts.flat();
   let cut = Infinity;
   for (const c of all) if (c.f <= EXACT_F) cut = Math.min(cut, c.round + MIN_ROUNDS_AFTER_EXACT);
-  const kept = all.filter((c) => c.round <= cut).sort(byQuality);
-  if (kept.length > KEEP) kept.length = KEEP;
+  // Clearing: a candidate that is, unpolished, the same design as a better one kept (sameDesign's rule) gives way,
+  // so that copies of one basin do not fill the places of distinct designs (issue 34 item 2).
+  const kept: PathCandidate[] = [];
+  const keys: DesignKey[] = [];
+  for (const c of all.filter((c) => c.round <= cut).sort(byQuality)) {
+    if (kept.length >= KEEP) break;
+    const key = designKey(t, c);
+    if (keys.some((k) => sameKey(k, key))) continue;
+    kept.push(c);
+    keys.push(key);
+  }
   return screenCandidates(t, task, [kept], deadline, signal);
 }
 

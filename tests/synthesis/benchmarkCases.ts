@@ -32,6 +32,7 @@ export interface BenchmarkCase {
 }
 
 const deg = (d: number) => (d * Math.PI) / 180;
+const round4 = (v: number) => Math.round(v * 1e4) / 1e4;
 
 const WIDE_60 = {
   length: [5, 60] as [number, number],
@@ -159,6 +160,29 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
   },
   {
+    id: 'semicircle-6-timed',
+    title: 'Six points on a semicircle of radius 10 with prescribed timing θ2 = 30°, 60°, … 180°',
+    task: {
+      targets: [
+        [0, 0],
+        [1.9098, 5.8779],
+        [6.9098, 9.5106],
+        [13.09, 9.5106],
+        [18.09, 5.8779],
+        [20, 0],
+      ].map(([x, y]) => ({ x, y })),
+      timing: { kind: 'given', theta2: [30, 60, 90, 120, 150, 180].map(deg) },
+      bounds: WIDE_50,
+      input: 'crank',
+    },
+    exact: false,
+    published: {
+      f: 1.21622,
+      source: 'best published, as quoted in issue 34',
+      note: 'lengths ≤ 50, pivot box ±50, crank input; the published design itself was not available here, so the value is quoted, not recomputed',
+    },
+  },
+  {
     id: 'ellipse-10',
     title: 'Ten points on an ellipse (the tenth repeats the first), free timing',
     task: {
@@ -183,6 +207,21 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
       source: 'Cabrera et al. 2011; Ortiz et al.; Bulatović & Đorđević 2012',
       note: 'x = 10 + 10 cos t, y = 10 + 8 sin t at 40° steps; bounds as recalled; published f not verified here',
     },
+  },
+  {
+    id: 'figure-eight-12',
+    title: 'Twelve points on a figure-eight (lemniscate of Gerono), free timing',
+    task: {
+      // x = 10 + 10 cos t, y = 10 + 5 sin 2t at t = 0°, 30°, … 330°, rounded to 1e-4 (issue 34 item 2).
+      targets: Array.from({ length: 12 }, (_, i) => {
+        const a = deg(30 * i);
+        return { x: round4(10 + 10 * Math.cos(a)), y: round4(10 + 5 * Math.sin(2 * a)) };
+      }),
+      timing: { kind: 'free' },
+      bounds: WIDE_50,
+    },
+    exact: false,
+    published: { f: null, source: 'not a literature case', note: 'the figure-eight of issue 34 item 2' },
   },
   {
     id: 'exact-free-9',

@@ -95,3 +95,34 @@ export function oracleLocalPoint(
   const p = localPoint([l.r1, l.r2, l.r3, l.r4, l.u, l.v].map(dec), dec(theta2), sigma);
   return p ? [p[0].toNumber(), p[1].toNumber()] : null;
 }
+
+/** Σd² of a placed design at the θ2 given (radians), by the 50-digit oracle; Infinity where it does not assemble. */
+export function oracleError(
+  design: {
+    links: { r1: number; r2: number; r3: number; r4: number };
+    branch: 'open' | 'crossed';
+    O2: { x: number; y: number };
+    groundAngle: number;
+    pDist: number;
+    pAngle: number;
+  },
+  theta2: number[],
+  targets: { x: number; y: number }[],
+): number {
+  const od = {
+    ...design.links,
+    u: design.pDist * Math.cos(design.pAngle),
+    v: design.pDist * Math.sin(design.pAngle),
+    O2x: design.O2.x,
+    O2y: design.O2.y,
+    g: design.groundAngle,
+    sigma: design.branch === 'open' ? (1 as const) : (-1 as const),
+  };
+  let sum: Dec = new D(0);
+  for (let i = 0; i < targets.length; i++) {
+    const p = oraclePoint(od, theta2[i]);
+    if (!p) return Infinity;
+    sum = sum.plus(new D(p.x).minus(targets[i].x).pow(2)).plus(new D(p.y).minus(targets[i].y).pow(2));
+  }
+  return sum.toNumber();
+}

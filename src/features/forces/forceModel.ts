@@ -9,6 +9,7 @@ import { effectiveInputMotion } from '../../shared/state/inputMotion';
 import type { ForcesState, LinkMassProps, MovingLink } from '../../shared/state/slices/forcesSlice';
 import { MOVING_LINKS } from '../../shared/state/slices/forcesSlice';
 import { METRES_PER_UNIT } from '../../shared/state/slices/designSlice';
+import { slenderBar } from '../../shared/linkage/slenderBar';
 import type { LengthUnit } from '../../shared/state/slices/designSlice';
 
 /**
@@ -29,12 +30,6 @@ export interface ForceSetup {
 /** The link lengths of the crank, coupler and rocker (the state's unit). */
 function linkLength(l: Linkage, link: MovingLink): number {
   return link === 'crank' ? l.r2 : link === 'coupler' ? l.r3 : l.r4;
-}
-
-/** A uniform slender bar of length L (m) and mass per length rho (kg/m): m = rho L, I = m L² / 12, CG at mid-link. */
-export function slenderBar(lengthM: number, rhoKgPerM: number): LinkInertia {
-  const mass = rhoKgPerM * lengthM;
-  return { mass, inertia: (mass * lengthM * lengthM) / 12, cg: { dist: lengthM / 2, angle: 0 } };
 }
 
 /** A link's properties as the user gave them, in SI (the CG offset from the length unit to metres). */

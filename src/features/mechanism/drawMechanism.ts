@@ -10,6 +10,7 @@ import { drawGroundPivot } from '../../shared/linkage/drawLinkage';
 import { drawJoint, drawLink } from '../../shared/linkage/linkPrimitives';
 import { COLORS, STROKES } from '../../shared/theme/tokens';
 import type { MechPose, Pt } from './mechPose';
+import { hull } from './hull';
 
 /** Colours of the moving links, in the spec's order of links (the ground is grey). */
 export const LINK_COLORS = [
@@ -72,25 +73,6 @@ export function pictureBounds(p: Pick<MechPicture, 'pose' | 'traces'>): Bounds {
 /** A slider's slide direction at the pose: its drawn angle turned with its guide link. */
 function slideDirection(j: MechanismSpec['joints'][number], pose: MechPose): number {
   return (j.angle ?? 0) + (j.links[1] === GROUND ? 0 : (pose.rotation[j.links[1]] ?? 0));
-}
-
-/** The convex hull of points (Andrew's monotone chain), counter-clockwise; fewer than three: as given. */
-function hull(points: Pt[]): Pt[] {
-  const p = [...points].sort((a, b) => a.x - b.x || a.y - b.y);
-  if (p.length < 3) return p;
-  const cross = (o: Pt, a: Pt, b: Pt) => (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  const lower: Pt[] = [];
-  for (const q of p) {
-    while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], q) <= 0) lower.pop();
-    lower.push(q);
-  }
-  const upper: Pt[] = [];
-  for (let i = p.length - 1; i >= 0; i--) {
-    const q = p[i];
-    while (upper.length >= 2 && cross(upper[upper.length - 2], upper[upper.length - 1], q) <= 0) upper.pop();
-    upper.push(q);
-  }
-  return [...lower.slice(0, -1), ...upper.slice(0, -1)];
 }
 
 /** The ends of a slider's guide line at the pose (length unit): its slide range about the block, plus a margin. */

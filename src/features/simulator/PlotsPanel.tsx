@@ -48,8 +48,11 @@ export interface AnglePlotsPanelProps {
   secondHeld?: boolean;
 }
 
-/** The plots' choosers: which plots (angles, velocities, accelerations, extras) and whether θ3 and θ4 share a chart. */
-function PlotsHead({
+/**
+ * The plots' choosers: which plots (angles, velocities, accelerations, extras) and whether θ3 and θ4 share a chart.
+ * Memoised: the panel re-renders every frame of Play for its markers, the choosers only when a choice changes.
+ */
+const PlotsHead = memo(function PlotsHead({
   kind,
   layout,
   dispatch,
@@ -83,7 +86,7 @@ function PlotsHead({
       ) : null}
     </div>
   );
-}
+});
 
 const NO_EXTRA: readonly SegmentedOption<PlotKind>[] = [];
 

@@ -10,27 +10,7 @@ import { playFrameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
 import { ExternalValue } from '../../shared/state/externalValue';
 import type { LiveStage } from '../../shared/linkage/liveStage';
-
-/**
- * How often Play commits its frame to the app state at most, ms. Every frame moves the playhead (canvas and plot
- * markers follow it); the panels, the θ2 field, the worker's numbers and the address bar follow the state,
- * five times a second, in a transition that frames may interrupt.
- */
-export const PLAY_COMMIT_MS = 200;
-/** A slow device commits less often: the gap is at least this many times the last commit's render (ms). */
-const COMMIT_SHARE = 8;
-/** ...and at most this (ms): the panels still follow Play. */
-const PLAY_COMMIT_MAX_MS = 1000;
-
-/**
- * The gap before Play's next commit, ms: PLAY_COMMIT_MS, or longer on a device where rendering the committed state
- * took lastRenderMs, so the commits take at most about 1/COMMIT_SHARE of the time the animation has (at most
- * PLAY_COMMIT_MAX_MS).
- */
-export function playCommitGapMs(lastRenderMs: number): number {
-  const ms = Number.isFinite(lastRenderMs) && lastRenderMs > 0 ? lastRenderMs : 0;
-  return Math.min(PLAY_COMMIT_MAX_MS, Math.max(PLAY_COMMIT_MS, COMMIT_SHARE * ms));
-}
+import { CommitPacer, playCommitGapMs } from './commitPacer';
 
 /**
  * A drag of θ2 with nothing moving it for this long (ms) has ended: its value is committed. A pointer's release
@@ -64,7 +44,7 @@ export interface AnimationHandlers {
  * Plays the input while state.playing (time based: speed in degrees per nominal 60 FPS frame, rocking
  * between limits when the input cannot turn fully) and returns the step handler: +1 one cycle sample
  * forward in the play direction (so clockwise when Clockwise is chosen), -1 one back. Play waits for the
- * first cycle's input range. Each frame moves the playhead (see PLAY_COMMIT_MS); when Play stops, the frame
+ * first cycle's input range. Each frame moves the playhead (see commitPacer.ts); when Play stops, the frame
  * on screen is committed and the playhead handed back to the state. A θ2 drag (Theta2Scrub) moves the same playhead.
  * With a live stage (LiveStage: Play drawn in a worker with its own clock) the playhead follows the stage's newest
  * frame; the page advances it itself only until the stage has drawn one, and restarts the stage from any frame
@@ -90,11 +70,15 @@ export function useAnimation(
     renderMs.current = performance.now() - dispatchedAt.current;
     dispatchedAt.current = null;
   }, [state.motion]);
-  // Commits a frame in a transition when the last commit is at least playCommitGapMs ago (Play and drags).
+  // The gap before the next commit: playCommitGapMs of the last render, longer while Play's frames are dropped.
+  const [pacer] = useState(() => new CommitPacer());
+  const gapMs = useRef(playCommitGapMs(0));
+  // Commits a frame in a transition when the last commit is at least that gap ago (Play and drags).
   const commitThrottled = (now: number, action: Action): boolean => {
-    if (now - lastCommitMs.current < playCommitGapMs(renderMs.current)) return false;
+    if (now - lastCommitMs.current < gapMs.current) return false;
     lastCommitMs.current = now;
     dispatchedAt.current = performance.now();
+    gapMs.current = pacer.nextGap(renderMs.current);
     startTransition(() => dispatch(action));
     return true;
   };
@@ -103,9 +87,12 @@ export function useAnimation(
   // The frame this loop last put on the playhead, and what the stage was started with (null: not started).
   const lastSet = useRef<PlayFrame | null>(null);
   const stageRun = useRef<{ speed: number; range: InputRangeDeg } | null>(null);
+  const lastFrameAt = useRef<number | null>(null);
   useAnimationFrame(state.motion.playing, (dt, now) => {
     // A frame can still come between Pause's render and the loop's cancellation: it must not move on.
     if (!rangeDeg || !state.motion.playing) return;
+    if (lastFrameAt.current !== null) pacer.noteFrame(now - lastFrameAt.current);
+    lastFrameAt.current = now;
     const own = playFrameOf(state);
     const i = committed.current.findIndex((c) => sameFrame(c, own));
     const base = playBase(own, seen.current, playhead.get(), committed.current);
@@ -130,6 +117,9 @@ export function useAnimation(
   // the stop (a "Go to" sets θ2 as it stops Play) wins over the frame on screen: the state already holds the pose.
   useEffect(() => {
     if (state.motion.playing) return;
+    pacer.reset();
+    lastFrameAt.current = null;
+    gapMs.current = playCommitGapMs(renderMs.current);
     // The stage's newest frame is the one on screen: it is the one Pause keeps. A drag that stopped Play goes on
     // showing its frames on the stage (the drag's end stops it).
     const drawn = stageRun.current ? stage?.latest() : null;
@@ -152,7 +142,7 @@ export function useAnimation(
     // Compared as the reducer stores it, so a frame the state cannot hold more exactly still hands back.
     if (sameFrame({ ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) }, playFrameOf(state))) playhead.set(null);
     else dispatch({ type: 'animate', ...frame });
-  }, [state, playhead, dispatch, stage]);
+  }, [state, playhead, dispatch, stage, pacer]);
   const step = useCallback(
     (sign: 1 | -1) =>
       dispatch({

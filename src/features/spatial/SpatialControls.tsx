@@ -118,6 +118,22 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
           ]}
           onChange={(branch) => dispatch({ type: 'setSpatial', patch: { branch } })}
         />
+        <div className="spatial-fields spatial-rates">
+          <SpatialFieldControl
+            field="omega2RadPerS"
+            value={s.omega2RadPerS}
+            slider={{ min: -20, max: 20, step: 0.1 }}
+            onCommit={set('omega2RadPerS')}
+            sm={sm}
+          />
+          <SpatialFieldControl
+            field="alpha2RadPerS2"
+            value={s.alpha2RadPerS2}
+            slider={{ min: -50, max: 50, step: 0.5 }}
+            onCommit={set('alpha2RadPerS2')}
+            sm={sm}
+          />
+        </div>
       </div>
     </div>
   );

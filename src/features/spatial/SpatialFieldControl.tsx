@@ -29,7 +29,7 @@ export interface SpatialFieldControlProps {
 export function rangeText(field: SpatialField): string {
   const f = SPATIAL_FIELDS[field];
   const n = (x: number) => (Math.abs(x) >= 1e6 ? x.toExponential(0) : String(x));
-  return `${f.minOpen ? '(' : '['}${n(f.min)}, ${n(f.max)}${f.maxOpen ? ')' : ']'}${f.angle ? '°' : ''}`;
+  return `${f.minOpen ? '(' : '['}${n(f.min)}, ${n(f.max)}${f.maxOpen ? ')' : ']'}${f.angle ? '°' : f.unit ? ` ${f.unit}` : ''}`;
 }
 
 /**
@@ -52,7 +52,7 @@ export function SpatialFieldControl({ field, value, slider, onCommit, sm, decima
     }
   }
   const label = sm.fieldNames[field];
-  const angle = SPATIAL_FIELDS[field].angle;
+  const { angle, unit } = SPATIAL_FIELDS[field];
   const onText = (text: string) => {
     setDraft(text);
     const echo = truncateText(text.trim(), ECHO_MAX_CHARS);
@@ -101,7 +101,7 @@ export function SpatialFieldControl({ field, value, slider, onCommit, sm, decima
             }}
           />
           <span className="numctl-unit" aria-hidden="true">
-            {angle ? '°' : ''}
+            {angle ? '°' : (unit ?? '')}
           </span>
         </span>
       </div>

@@ -86,7 +86,9 @@ export function SpatialNumbers({ analysis, pose, muRad, theta2Deg, sm }: Spatial
               {hasP ? <PinRow name={sm.pinP} p={pose.P} id="P" /> : null}
             </tbody>
           </table>
-          <p className="note">{sm.omegaNote}</p>
+          <p className="note">
+            {sm.omegaNote(formatNumber(analysis.input.omega2, 6), formatNumber(analysis.input.alpha2, 6))}
+          </p>
         </>
       ) : (
         <p className="spatial-warning" role="status">

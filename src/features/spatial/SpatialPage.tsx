@@ -16,6 +16,7 @@ import { spatialMessagesFor } from './spatialMessages';
 import { SpatialNumbers } from './SpatialNumbers';
 import { SpatialPlots } from './SpatialPlots';
 import type { SpatialScene } from './spatialScene';
+import type { ViewStatus } from './SpatialView';
 import { SpatialView } from './SpatialView';
 import { muAt, poseAt, useSpatialAnalysis } from './useSpatialAnalysis';
 
@@ -37,7 +38,11 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
   const sm = spatialMessagesFor(state.shell.locale);
   const { analysis, error } = useSpatialAnalysis(s);
   const model = analysis?.model ?? null;
-  const pose = useMemo(() => (model ? poseAt(model, s.theta2Deg, s.branch) : null), [model, s.theta2Deg, s.branch]);
+  const input = analysis?.input ?? null;
+  const pose = useMemo(
+    () => (model && input ? poseAt(model, s.theta2Deg, s.branch, input) : null),
+    [model, input, s.theta2Deg, s.branch],
+  );
   const muRad = useMemo(() => (model ? muAt(model, s.theta2Deg, s.branch) : null), [model, s.theta2Deg, s.branch]);
   const linkage = analysis?.scene ?? null;
   const shownPose = useMemo(() => (linkage && pose ? scenePose(linkage, pose) : null), [linkage, pose]);
@@ -45,11 +50,13 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
   const [playing, setPlaying] = useState(false);
   const [direction, setDirection] = useState<1 | -1>(1);
   const [notice, setNotice] = useState<string | null>(null);
+  const [viewStatus, setViewStatus] = useState<ViewStatus>('loading');
+  const pngOff = viewStatus === 'ready' ? null : viewStatus === 'no-webgl' ? sm.pngNeedsWebgl : sm.pngLoading;
 
   useAnimationFrame(playing && model !== null, (dt) => {
     if (!model) return;
     const next = normalizeTheta2Deg(s.theta2Deg + direction * PLAY_DEG_PER_S * dt);
-    if (poseAt(model, next, s.branch) === null) {
+    if (muAt(model, next, s.branch) === null) {
       // The input's limit: a real linkage goes back on the other branch (the two meet there).
       setDirection(direction === 1 ? -1 : 1);
       dispatch({ type: 'setSpatial', patch: { branch: s.branch === 'open' ? 'crossed' : 'open' } });
@@ -72,9 +79,9 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
       .catch(fail);
   };
   const onCsv = () => {
-    if (!model) return;
+    if (!model || !input) return;
     try {
-      downloadText(spatialCsvText(model, s.branch), `${spatialFileStem(s)}.csv`, 'text/csv;charset=utf-8');
+      downloadText(spatialCsvText(model, s.branch, input), `${spatialFileStem(s)}.csv`, 'text/csv;charset=utf-8');
     } catch (e) {
       fail(e);
     }
@@ -99,6 +106,7 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
             sm={sm}
             sceneRef={sceneRef}
             warning={sm.cannotClose(`${formatDeg(s.theta2Deg)}°`)}
+            onStatus={setViewStatus}
           />
         </section>
         <div className="spatial-side">
@@ -118,7 +126,14 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
           </PanelSection>
           <PanelSection id="spatial-exports-title" title={sm.exportsTitle}>
             <div className="spatial-exports">
-              <button type="button" className="btn" onClick={onPng}>
+              <button
+                type="button"
+                className="btn"
+                onClick={onPng}
+                disabled={pngOff !== null}
+                title={pngOff ?? undefined}
+                aria-describedby={viewStatus === 'no-webgl' ? 'spatial-png-off' : undefined}
+              >
                 {sm.exportPng}
               </button>
               <button type="button" className="btn" onClick={onCsv} disabled={!model}>
@@ -128,6 +143,11 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
                 {sm.copyLink}
               </button>
             </div>
+            {viewStatus === 'no-webgl' ? (
+              <p id="spatial-png-off" className="note spatial-png-off">
+                {pngOff}
+              </p>
+            ) : null}
             {notice ? (
               <p className="note" role="status">
                 {notice}

@@ -14,6 +14,8 @@ export interface SpatialViewProps {
   sceneRef: RefObject<SpatialScene | null>;
   /** Shown over the view when the loop cannot close at θ2. */
   warning: string;
+  /** Told each time the view's status changes (the page turns its PNG export on only when ready). */
+  onStatus?: (status: ViewStatus) => void;
 }
 
 /** Where the view is: its code loading, drawing, or without WebGL (the fallback message). */
@@ -28,7 +30,7 @@ const ZOOM_STEP = 1.2;
  * The 3D view: three.js (its chunk loads here, on this page only) on a canvas sized to its box; orbit, zoom and pan by
  * mouse, touch and keys; reset and projection tools. Without WebGL a message says so and the rest of the page works.
  */
-export function SpatialView({ linkage, pose, sm, sceneRef, warning }: SpatialViewProps) {
+export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus }: SpatialViewProps) {
   const hostRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const [status, setStatus] = useState<ViewStatus>('loading');
@@ -64,6 +66,9 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning }: SpatialVie
     };
   }, [sceneRef]);
 
+  useEffect(() => {
+    onStatus?.(status);
+  }, [status, onStatus]);
   useEffect(() => {
     if (status === 'ready' && linkage) sceneRef.current?.setLinkage(linkage);
   }, [status, linkage, sceneRef]);

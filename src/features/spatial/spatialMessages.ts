@@ -50,7 +50,8 @@ export interface SpatialMessages {
   outputSwing: string;
   transmission: string;
   transmissionRange: string;
-  omegaNote: string;
+  /** The input motion the rates are for (ω2, α2 as text). */
+  omegaNote: (omega2: string, alpha2: string) => string;
   pinA: string;
   pinB: string;
   pinP: string;
@@ -64,6 +65,9 @@ export interface SpatialMessages {
   /** Exports and share. */
   exportsTitle: string;
   exportPng: string;
+  /** Why the PNG export is off: the 3D view has no WebGL (or is still loading). */
+  pngNeedsWebgl: string;
+  pngLoading: string;
   exportCsv: string;
   copyLink: string;
   linkCopied: string;

@@ -18,12 +18,21 @@ import { modelOf } from './spatialModel';
 /** Steps per turn of the plots' and the 3D view's sweep (half a degree). */
 export const SWEEP_STEPS = 720;
 
-/** Input motion the page's rates are for: ω2 = 1 rad/s, α2 = 0 (the numbers panel says so). */
-export const PAGE_INPUT = { omega2: 1, alpha2: 0 } as const;
+/** The input motion the page's rates are for (the state's ω2 and α2, as the numerics take them). */
+export interface SpatialInput {
+  omega2: number;
+  alpha2: number;
+}
+
+/** The state's input motion. */
+export function inputOf(s: Pick<SpatialState, 'omega2RadPerS' | 'alpha2RadPerS2'>): SpatialInput {
+  return { omega2: s.omega2RadPerS, alpha2: s.alpha2RadPerS2 };
+}
 
 /** What the page shows of one linkage (changes only when the linkage or branch does). */
 export interface SpatialAnalysis {
   model: SpatialModel;
+  input: SpatialInput;
   sweep: SpatialSweep;
   classification: SpatialClassification;
   motion: OutputMotion;
@@ -34,21 +43,30 @@ export interface SpatialAnalysis {
 export function analyse(s: SpatialState): { analysis: SpatialAnalysis | null; error: string | null } {
   try {
     const model = modelOf(s);
-    const sweep = sweepSpatial(model, s.branch, { steps: SWEEP_STEPS, omega2: PAGE_INPUT.omega2 });
+    const input = inputOf(s);
+    const sweep = sweepSpatial(model, s.branch, { steps: SWEEP_STEPS, ...input });
     const classification = model.kind === 'spherical' ? classifySpherical(model.linkage) : classifyRSSR(model.linkage);
     const motion = outputMotion(model, s.branch);
-    return { analysis: { model, sweep, classification, motion, scene: sceneLinkage(model, sweep) }, error: null };
+    return {
+      analysis: { model, input, sweep, classification, motion, scene: sceneLinkage(model, sweep) },
+      error: null,
+    };
   } catch (e) {
     return { analysis: null, error: e instanceof Error ? e.message : String(e) };
   }
 }
 
-/** The pose at θ2 with the page's input motion, or null where the loop cannot close. */
-export function poseAt(model: SpatialModel, theta2Deg: number, branch: SpatialState['branch']): SpatialPose | null {
+/** The pose at θ2 with the input motion, or null where the loop cannot close. */
+export function poseAt(
+  model: SpatialModel,
+  theta2Deg: number,
+  branch: SpatialState['branch'],
+  input: SpatialInput,
+): SpatialPose | null {
   const t2 = degToRad(theta2Deg);
   return model.kind === 'spherical'
-    ? solveSpherical(model.linkage, t2, branch, PAGE_INPUT)
-    : solveRSSR(model.linkage, t2, branch, PAGE_INPUT);
+    ? solveSpherical(model.linkage, t2, branch, input)
+    : solveRSSR(model.linkage, t2, branch, input);
 }
 
 /** The transmission angle at θ2 (radians) or null. */
@@ -56,9 +74,10 @@ export function muAt(model: SpatialModel, theta2Deg: number, branch: SpatialStat
   return transmissionAngle(model, degToRad(theta2Deg), branch);
 }
 
-/** The analysis of the state's linkage, recomputed when a linkage value or the branch changes (not θ2). */
+/** The analysis of the state's linkage, recomputed when a linkage value, the branch or the input motion changes (not θ2). */
 export function useSpatialAnalysis(s: SpatialState): { analysis: SpatialAnalysis | null; error: string | null } {
   const { kind, a1Deg, a2Deg, a3Deg, a4Deg, pDistDeg, pAngleDeg, r2, r3, r4, a, h2, h4, betaDeg, branch } = s;
+  const { omega2RadPerS, alpha2RadPerS2 } = s;
   return useMemo(
     () =>
       analyse({
@@ -78,7 +97,27 @@ export function useSpatialAnalysis(s: SpatialState): { analysis: SpatialAnalysis
         betaDeg,
         branch,
         theta2Deg: 0,
+        omega2RadPerS,
+        alpha2RadPerS2,
       }),
-    [kind, a1Deg, a2Deg, a3Deg, a4Deg, pDistDeg, pAngleDeg, r2, r3, r4, a, h2, h4, betaDeg, branch],
+    [
+      kind,
+      a1Deg,
+      a2Deg,
+      a3Deg,
+      a4Deg,
+      pDistDeg,
+      pAngleDeg,
+      r2,
+      r3,
+      r4,
+      a,
+      h2,
+      h4,
+      betaDeg,
+      branch,
+      omega2RadPerS,
+      alpha2RadPerS2,
+    ],
   );
 }

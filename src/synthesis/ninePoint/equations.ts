@@ -22,32 +22,143 @@ export const AH = 5;
 export const YH = 6;
 export const BH = 7;
 
-// Products without allocation: the result of the last cm() lands in T (a typed array, so no number is boxed, as a
-// module-level `let` would be on every write).
-const T = new Float64Array(2);
-function cm(ar: number, ai: number, br: number, bi: number): void {
-  T[0] = ar * br - ai * bi;
-  T[1] = ar * bi + ai * br;
+/**
+ * Scratch of one pose j, complex entries (re, im) in a Float64Array: each dyad's (p, q, r) (u₁ = U1, u₂ = U2),
+ * c = u₁ × u₂ = (N1, N2, D), e = ∂E/∂c and g_k = ∂E/∂u_k (G1, G2). Module-level: evaluate is not reentrant.
+ */
+const W = new Float64Array(36);
+const U1 = 0,
+  U2 = 6,
+  C = 12,
+  EC = 18,
+  G1 = 24,
+  G2 = 30;
+
+/** W[o] = W[s]·W[t] − W[u]·W[v] (complex entries at those offsets). */
+function det2(s: number, t: number, u: number, v: number, o: number): void {
+  const sr = W[s],
+    si = W[s + 1],
+    tr = W[t],
+    ti = W[t + 1],
+    ur = W[u],
+    ui = W[u + 1],
+    vr = W[v],
+    vi = W[v + 1];
+  W[o] = sr * tr - si * ti - (ur * vr - ui * vi);
+  W[o + 1] = sr * ti + si * tr - (ur * vi + ui * vr);
 }
 
-/** Scratch for one equation's intermediates: p1 q1 r1 p2 q2 r2 N1 N2 D and the partials Ep1 … Er2 (complex each). */
-const S = new Float64Array(2 * 16);
-const P1 = 0,
-  Q1 = 2,
-  R1 = 4,
-  P2 = 6,
-  Q2 = 8,
-  R2 = 10,
-  EP1 = 12,
-  EQ1 = 14,
-  ER1 = 16,
-  EP2 = 18,
-  EQ2 = 20,
-  ER2 = 22;
+/** The complex cross product W[o..o+6) = W[a..a+6) × W[b..b+6) (three complex entries each). */
+function cross(a: number, b: number, o: number): void {
+  det2(a + 2, b + 4, a + 4, b + 2, o);
+  det2(a + 4, b, a, b + 4, o + 2);
+  det2(a, b + 2, a + 2, b, o + 4);
+}
+
+/**
+ * One dyad's coefficients at pose j into W[o..o+6): p = x (â − δ̂), q = x̂ (a − δ), r = (â − x̂) δ + (a − x) δ̂ − δ δ̂,
+ * with x, a the dyad's moving and ground unknowns (indices m, g) and x̂, â at m + 4, g + 4.
+ */
+function dyad(z: Float64Array, m: number, g: number, dr: number, di: number, Dr: number, Di: number, o: number): void {
+  const xr = z[2 * m],
+    xi = z[2 * m + 1],
+    ar = z[2 * g],
+    ai = z[2 * g + 1],
+    Xr = z[2 * m + 8],
+    Xi = z[2 * m + 9],
+    Ar = z[2 * g + 8],
+    Ai = z[2 * g + 9];
+  const ur = Ar - Dr,
+    ui = Ai - Di,
+    vr = ar - dr,
+    vi = ai - di,
+    sr = Ar - Xr,
+    si = Ai - Xi,
+    tr = ar - xr,
+    ti = ai - xi;
+  W[o] = xr * ur - xi * ui;
+  W[o + 1] = xr * ui + xi * ur;
+  W[o + 2] = Xr * vr - Xi * vi;
+  W[o + 3] = Xr * vi + Xi * vr;
+  W[o + 4] = sr * dr - si * di + tr * Dr - ti * Di - (dr * Dr - di * Di);
+  W[o + 5] = sr * di + si * dr + tr * Di + ti * Dr - (dr * Di + di * Dr);
+}
+
+/** u₁, u₂ and c = (N1, N2, D) of pose j (0-based, for the point P_{j+1}) into W. */
+function pose(z: Float64Array, p: Float64Array, j: number): void {
+  const dr = p[2 * j],
+    di = p[2 * j + 1],
+    Dr = p[16 + 2 * j],
+    Di = p[17 + 2 * j];
+  dyad(z, X, A, dr, di, Dr, Di, U1);
+  dyad(z, Y, B, dr, di, Dr, Di, U2);
+  cross(U1, U2, C);
+}
+
+/**
+ * One dyad's share of row j: with (Ep, Eq, Er) = W[G..G+6), ∂x = Ep (â − δ̂) − Er δ̂, ∂â = Ep x + Er δ,
+ * ∂x̂ = Eq (a − δ) − Er δ, ∂a = Eq x̂ + Er δ̂ into J; returns nothing. Then, when Fp is wanted, its share of ∂E/∂δ
+ * (−Eq x̂ + Er (â − x̂ − δ̂)) and ∂E/∂δ̂ (−Ep x + Er (a − x − δ)) is added to PD[0..4).
+ */
+function dyadPartials(
+  z: Float64Array,
+  m: number,
+  g: number,
+  G: number,
+  dr: number,
+  di: number,
+  Dr: number,
+  Di: number,
+  J: Float64Array | undefined,
+  row: number,
+  withP: boolean,
+): void {
+  const xr = z[2 * m],
+    xi = z[2 * m + 1],
+    ar = z[2 * g],
+    ai = z[2 * g + 1],
+    Xr = z[2 * m + 8],
+    Xi = z[2 * m + 9],
+    Ar = z[2 * g + 8],
+    Ai = z[2 * g + 9];
+  const pr = W[G],
+    pi = W[G + 1],
+    qr = W[G + 2],
+    qi = W[G + 3],
+    rr = W[G + 4],
+    ri = W[G + 5];
+  if (J) {
+    const ur = Ar - Dr,
+      ui = Ai - Di,
+      vr = ar - dr,
+      vi = ai - di;
+    J[row + 2 * m] = pr * ur - pi * ui - (rr * Dr - ri * Di);
+    J[row + 2 * m + 1] = pr * ui + pi * ur - (rr * Di + ri * Dr);
+    J[row + 2 * g + 8] = pr * xr - pi * xi + (rr * dr - ri * di);
+    J[row + 2 * g + 9] = pr * xi + pi * xr + (rr * di + ri * dr);
+    J[row + 2 * m + 8] = qr * vr - qi * vi - (rr * dr - ri * di);
+    J[row + 2 * m + 9] = qr * vi + qi * vr - (rr * di + ri * dr);
+    J[row + 2 * g] = qr * Xr - qi * Xi + (rr * Dr - ri * Di);
+    J[row + 2 * g + 1] = qr * Xi + qi * Xr + (rr * Di + ri * Dr);
+  }
+  if (withP) {
+    const sr = Ar - Xr - Dr,
+      si = Ai - Xi - Di,
+      tr = ar - xr - dr,
+      ti = ai - xi - di;
+    PD[0] += rr * sr - ri * si - (qr * Xr - qi * Xi);
+    PD[1] += rr * si + ri * sr - (qr * Xi + qi * Xr);
+    PD[2] += rr * tr - ri * ti - (pr * xr - pi * xi);
+    PD[3] += rr * ti + ri * tr - (pr * xi + pi * xr);
+  }
+}
+/** ∂E_j/∂δ_j and ∂E_j/∂δ̂_j (complex each), summed over the two dyads by dyadPartials. */
+const PD = new Float64Array(4);
 
 /**
  * Evaluates the 8 equations at z for parameters p into F (16 floats); when J is given, the 8×8 Jacobian ∂F/∂z
  * (row-major, 128 floats); when dp and Fp are given, the directional derivative ∂F/∂p · dp into Fp (16 floats).
+ * E_j = N1 N2 + D (N1 + N2) with c = (N1, N2, D) = u₁ × u₂, so ∂E/∂u₁ = u₂ × e and ∂E/∂u₂ = e × u₁, e = ∂E/∂c.
  */
 export function evaluate(
   z: Float64Array,
@@ -57,230 +168,56 @@ export function evaluate(
   dp?: Float64Array,
   Fp?: Float64Array,
 ): void {
-  const xr = z[0],
-    xi = z[1],
-    ar = z[2],
-    ai = z[3],
-    yr = z[4],
-    yi = z[5],
-    br = z[6],
-    bi = z[7];
-  const Xr = z[8],
-    Xi = z[9],
-    Ar = z[10],
-    Ai = z[11],
-    Yr = z[12],
-    Yi = z[13],
-    Br = z[14],
-    Bi = z[15];
+  const withP = !!(dp && Fp);
   for (let j = 0; j < 8; j++) {
+    pose(z, p, j);
+    const n1r = W[C],
+      n1i = W[C + 1],
+      n2r = W[C + 2],
+      n2i = W[C + 3],
+      dtr = W[C + 4],
+      dti = W[C + 5];
+    F[2 * j] = n1r * n2r - n1i * n2i + dtr * (n1r + n2r) - dti * (n1i + n2i);
+    F[2 * j + 1] = n1r * n2i + n1i * n2r + dtr * (n1i + n2i) + dti * (n1r + n2r);
+    if (!J && !withP) continue;
+    // e = ∂E/∂(N1, N2, D) = (N2 + D, N1 + D, N1 + N2)
+    W[EC] = n2r + dtr;
+    W[EC + 1] = n2i + dti;
+    W[EC + 2] = n1r + dtr;
+    W[EC + 3] = n1i + dti;
+    W[EC + 4] = n1r + n2r;
+    W[EC + 5] = n1i + n2i;
+    cross(U2, EC, G1);
+    cross(EC, U1, G2);
     const dr = p[2 * j],
       di = p[2 * j + 1],
       Dr = p[16 + 2 * j],
       Di = p[17 + 2 * j];
-    cm(dr, di, Dr, Di);
-    const ddr = T[0],
-      ddi = T[1];
-    // p1 = x (â − δ̂), q1 = x̂ (a − δ), r1 = (â − x̂) δ + (a − x) δ̂ − δ δ̂; likewise for the second dyad.
-    cm(xr, xi, Ar - Dr, Ai - Di);
-    S[P1] = T[0];
-    S[P1 + 1] = T[1];
-    cm(Xr, Xi, ar - dr, ai - di);
-    S[Q1] = T[0];
-    S[Q1 + 1] = T[1];
-    cm(Ar - Xr, Ai - Xi, dr, di);
-    let tr = T[0] - ddr,
-      ti = T[1] - ddi;
-    cm(ar - xr, ai - xi, Dr, Di);
-    S[R1] = tr + T[0];
-    S[R1 + 1] = ti + T[1];
-    cm(yr, yi, Br - Dr, Bi - Di);
-    S[P2] = T[0];
-    S[P2 + 1] = T[1];
-    cm(Yr, Yi, br - dr, bi - di);
-    S[Q2] = T[0];
-    S[Q2 + 1] = T[1];
-    cm(Br - Yr, Bi - Yi, dr, di);
-    tr = T[0] - ddr;
-    ti = T[1] - ddi;
-    cm(br - yr, bi - yi, Dr, Di);
-    S[R2] = tr + T[0];
-    S[R2 + 1] = ti + T[1];
-    const p1r = S[P1],
-      p1i = S[P1 + 1],
-      q1r = S[Q1],
-      q1i = S[Q1 + 1],
-      r1r = S[R1],
-      r1i = S[R1 + 1];
-    const p2r = S[P2],
-      p2i = S[P2 + 1],
-      q2r = S[Q2],
-      q2i = S[Q2 + 1],
-      r2r = S[R2],
-      r2i = S[R2 + 1];
-    // N1 = q1 r2 − r1 q2 (γ·D), N2 = r1 p2 − p1 r2 (γ̂·D), D = p1 q2 − q1 p2.
-    cm(q1r, q1i, r2r, r2i);
-    tr = T[0];
-    ti = T[1];
-    cm(r1r, r1i, q2r, q2i);
-    const n1r = tr - T[0],
-      n1i = ti - T[1];
-    cm(r1r, r1i, p2r, p2i);
-    tr = T[0];
-    ti = T[1];
-    cm(p1r, p1i, r2r, r2i);
-    const n2r = tr - T[0],
-      n2i = ti - T[1];
-    cm(p1r, p1i, q2r, q2i);
-    tr = T[0];
-    ti = T[1];
-    cm(q1r, q1i, p2r, p2i);
-    const Dtr = tr - T[0],
-      Dti = ti - T[1];
-    cm(n1r, n1i, n2r, n2i);
-    tr = T[0];
-    ti = T[1];
-    cm(Dtr, Dti, n1r + n2r, n1i + n2i);
-    F[2 * j] = tr + T[0];
-    F[2 * j + 1] = ti + T[1];
-    if (!J && !Fp) continue;
-    // ∂E/∂N1 = N2 + D, ∂E/∂N2 = N1 + D, ∂E/∂D = N1 + N2; then the chain rule to p1 … r2.
-    const e1r = n2r + Dtr,
-      e1i = n2i + Dti,
-      e2r = n1r + Dtr,
-      e2i = n1i + Dti,
-      eDr = n1r + n2r,
-      eDi = n1i + n2i;
-    cm(eDr, eDi, q2r, q2i);
-    tr = T[0];
-    ti = T[1];
-    cm(e2r, e2i, r2r, r2i);
-    S[EP1] = tr - T[0];
-    S[EP1 + 1] = ti - T[1];
-    cm(e1r, e1i, r2r, r2i);
-    tr = T[0];
-    ti = T[1];
-    cm(eDr, eDi, p2r, p2i);
-    S[EQ1] = tr - T[0];
-    S[EQ1 + 1] = ti - T[1];
-    cm(e2r, e2i, p2r, p2i);
-    tr = T[0];
-    ti = T[1];
-    cm(e1r, e1i, q2r, q2i);
-    S[ER1] = tr - T[0];
-    S[ER1 + 1] = ti - T[1];
-    cm(e2r, e2i, r1r, r1i);
-    tr = T[0];
-    ti = T[1];
-    cm(eDr, eDi, q1r, q1i);
-    S[EP2] = tr - T[0];
-    S[EP2 + 1] = ti - T[1];
-    cm(eDr, eDi, p1r, p1i);
-    tr = T[0];
-    ti = T[1];
-    cm(e1r, e1i, r1r, r1i);
-    S[EQ2] = tr - T[0];
-    S[EQ2 + 1] = ti - T[1];
-    cm(e1r, e1i, q1r, q1i);
-    tr = T[0];
-    ti = T[1];
-    cm(e2r, e2i, p1r, p1i);
-    S[ER2] = tr - T[0];
-    S[ER2 + 1] = ti - T[1];
-    if (J) {
-      const row = 16 * j;
-      // ∂x = Ep1 (â − δ̂) − Er1 δ̂ ; ∂â = Ep1 x + Er1 δ ; ∂x̂ = Eq1 (a − δ) − Er1 δ ; ∂a = Eq1 x̂ + Er1 δ̂
-      sum2(J, row + 2 * X, EP1, Ar - Dr, Ai - Di, ER1, -Dr, -Di);
-      sum2(J, row + 2 * AH, EP1, xr, xi, ER1, dr, di);
-      sum2(J, row + 2 * XH, EQ1, ar - dr, ai - di, ER1, -dr, -di);
-      sum2(J, row + 2 * A, EQ1, Xr, Xi, ER1, Dr, Di);
-      sum2(J, row + 2 * Y, EP2, Br - Dr, Bi - Di, ER2, -Dr, -Di);
-      sum2(J, row + 2 * BH, EP2, yr, yi, ER2, dr, di);
-      sum2(J, row + 2 * YH, EQ2, br - dr, bi - di, ER2, -dr, -di);
-      sum2(J, row + 2 * B, EQ2, Yr, Yi, ER2, Dr, Di);
-    }
-    if (dp && Fp) {
-      // ∂δ = −Eq1 x̂ + Er1 (â − x̂ − δ̂) − Eq2 ŷ + Er2 (b̂ − ŷ − δ̂); ∂δ̂ = −Ep1 x + Er1 (a − x − δ) − Ep2 y + Er2 (b − y − δ)
-      let gr = 0,
-        gi = 0,
-        hr = 0,
-        hi = 0;
-      cm(S[EQ1], S[EQ1 + 1], -Xr, -Xi);
-      gr += T[0];
-      gi += T[1];
-      cm(S[ER1], S[ER1 + 1], Ar - Xr - Dr, Ai - Xi - Di);
-      gr += T[0];
-      gi += T[1];
-      cm(S[EQ2], S[EQ2 + 1], -Yr, -Yi);
-      gr += T[0];
-      gi += T[1];
-      cm(S[ER2], S[ER2 + 1], Br - Yr - Dr, Bi - Yi - Di);
-      gr += T[0];
-      gi += T[1];
-      cm(S[EP1], S[EP1 + 1], -xr, -xi);
-      hr += T[0];
-      hi += T[1];
-      cm(S[ER1], S[ER1 + 1], ar - xr - dr, ai - xi - di);
-      hr += T[0];
-      hi += T[1];
-      cm(S[EP2], S[EP2 + 1], -yr, -yi);
-      hr += T[0];
-      hi += T[1];
-      cm(S[ER2], S[ER2 + 1], br - yr - dr, bi - yi - di);
-      hr += T[0];
-      hi += T[1];
-      cm(gr, gi, dp[2 * j], dp[2 * j + 1]);
-      tr = T[0];
-      ti = T[1];
-      cm(hr, hi, dp[16 + 2 * j], dp[17 + 2 * j]);
-      Fp[2 * j] = tr + T[0];
-      Fp[2 * j + 1] = ti + T[1];
+    PD.fill(0);
+    dyadPartials(z, X, A, G1, dr, di, Dr, Di, J, 16 * j, withP);
+    dyadPartials(z, Y, B, G2, dr, di, Dr, Di, J, 16 * j, withP);
+    if (withP) {
+      const ar = dp![2 * j],
+        ai = dp![2 * j + 1],
+        br = dp![16 + 2 * j],
+        bi = dp![17 + 2 * j];
+      Fp![2 * j] = PD[0] * ar - PD[1] * ai + PD[2] * br - PD[3] * bi;
+      Fp![2 * j + 1] = PD[0] * ai + PD[1] * ar + PD[2] * bi + PD[3] * br;
     }
   }
 }
 
-/** J[at] = S[i]·(ur + i ui) + S[k]·(vr + i vi). */
-function sum2(J: Float64Array, at: number, i: number, ur: number, ui: number, k: number, vr: number, vi: number) {
-  cm(S[i], S[i + 1], ur, ui);
-  const tr = T[0],
-    ti = T[1];
-  cm(S[k], S[k + 1], vr, vi);
-  J[at] = tr + T[0];
-  J[at + 1] = ti + T[1];
-}
-
 /** The coupler rotation θ_j = 1 + γ_j (complex, into out[0..1]) at root z for parameters p; NaN where D = 0. */
 export function rotation(z: Float64Array, p: Float64Array, j: number, out: Float64Array): void {
-  const c = (k: number) => [z[2 * k], z[2 * k + 1]] as const;
-  const [xr, xi] = c(X),
-    [ar, ai] = c(A),
-    [yr, yi] = c(Y),
-    [br, bi] = c(B);
-  const [Xr, Xi] = c(XH),
-    [Ar, Ai] = c(AH),
-    [Yr, Yi] = c(YH),
-    [Br, Bi] = c(BH);
-  const dr = p[2 * j],
-    di = p[2 * j + 1],
-    Dr = p[16 + 2 * j],
-    Di = p[17 + 2 * j];
-  const mul = (u: readonly number[], v: readonly number[]) => [u[0] * v[0] - u[1] * v[1], u[0] * v[1] + u[1] * v[0]];
-  const sub = (u: readonly number[], v: readonly number[]) => [u[0] - v[0], u[1] - v[1]];
-  const add = (u: readonly number[], v: readonly number[]) => [u[0] + v[0], u[1] + v[1]];
-  const d = [dr, di],
-    D = [Dr, Di];
-  const p1 = mul([xr, xi], [Ar - Dr, Ai - Di]);
-  const q1 = mul([Xr, Xi], [ar - dr, ai - di]);
-  const r1 = sub(add(mul([Ar - Xr, Ai - Xi], d), mul([ar - xr, ai - xi], D)), mul(d, D));
-  const p2 = mul([yr, yi], [Br - Dr, Bi - Di]);
-  const q2 = mul([Yr, Yi], [br - dr, bi - di]);
-  const r2 = sub(add(mul([Br - Yr, Bi - Yi], d), mul([br - yr, bi - yi], D)), mul(d, D));
-  const n1 = sub(mul(q1, r2), mul(r1, q2));
-  const det = sub(mul(p1, q2), mul(q1, p2));
-  const m = det[0] * det[0] + det[1] * det[1];
+  pose(z, p, j);
   // γ = N1 / D
-  out[0] = 1 + (n1[0] * det[0] + n1[1] * det[1]) / m;
-  out[1] = (n1[1] * det[0] - n1[0] * det[1]) / m;
+  const nr = W[C],
+    ni = W[C + 1],
+    dr = W[C + 4],
+    di = W[C + 5];
+  const m = dr * dr + di * di;
+  out[0] = 1 + (nr * dr + ni * di) / m;
+  out[1] = (ni * dr - nr * di) / m;
 }
 
 /** Relative size below which a link or coordinate counts as zero in isDegenerate. */

@@ -1,86 +1,17 @@
 /** Dense complex linear algebra on Float64Array (re, im interleaved), without allocation. */
 
 /**
- * Solves M w = rhs for an n×n complex M (row-major, destroyed) by Gaussian elimination with partial pivoting; w
- * overwrites rhs. Returns false when a pivot is exactly zero or not finite.
- */
-export function solveInPlace(M: Float64Array, rhs: Float64Array, n: number): boolean {
-  for (let k = 0; k < n; k++) {
-    let best = -1;
-    let bestAbs = -1;
-    for (let i = k; i < n; i++) {
-      const re = M[2 * (i * n + k)];
-      const im = M[2 * (i * n + k) + 1];
-      const m = re * re + im * im;
-      if (m > bestAbs) {
-        bestAbs = m;
-        best = i;
-      }
-    }
-    if (!(bestAbs > 0) || !Number.isFinite(bestAbs)) return false;
-    if (best !== k) {
-      for (let c = 2 * k; c < 2 * n; c++) {
-        const t = M[2 * k * n + c];
-        M[2 * k * n + c] = M[2 * best * n + c];
-        M[2 * best * n + c] = t;
-      }
-      for (let c = 0; c < 2; c++) {
-        const t = rhs[2 * k + c];
-        rhs[2 * k + c] = rhs[2 * best + c];
-        rhs[2 * best + c] = t;
-      }
-    }
-    const pr = M[2 * (k * n + k)];
-    const pi = M[2 * (k * n + k) + 1];
-    // 1 / pivot
-    const ir = pr / bestAbs;
-    const ii = -pi / bestAbs;
-    for (let i = k + 1; i < n; i++) {
-      const ar = M[2 * (i * n + k)];
-      const ai = M[2 * (i * n + k) + 1];
-      const fr = ar * ir - ai * ii;
-      const fi = ar * ii + ai * ir;
-      if (fr === 0 && fi === 0) continue;
-      for (let c = k + 1; c < n; c++) {
-        const br = M[2 * (k * n + c)];
-        const bi = M[2 * (k * n + c) + 1];
-        M[2 * (i * n + c)] -= fr * br - fi * bi;
-        M[2 * (i * n + c) + 1] -= fr * bi + fi * br;
-      }
-      const rr = rhs[2 * k];
-      const ri = rhs[2 * k + 1];
-      rhs[2 * i] -= fr * rr - fi * ri;
-      rhs[2 * i + 1] -= fr * ri + fi * rr;
-    }
-  }
-  for (let k = n - 1; k >= 0; k--) {
-    let sr = rhs[2 * k];
-    let si = rhs[2 * k + 1];
-    for (let c = k + 1; c < n; c++) {
-      const mr = M[2 * (k * n + c)];
-      const mi = M[2 * (k * n + c) + 1];
-      sr -= mr * rhs[2 * c] - mi * rhs[2 * c + 1];
-      si -= mr * rhs[2 * c + 1] + mi * rhs[2 * c];
-    }
-    const pr = M[2 * (k * n + k)];
-    const pi = M[2 * (k * n + k) + 1];
-    const m = pr * pr + pi * pi;
-    rhs[2 * k] = (sr * pr + si * pi) / m;
-    rhs[2 * k + 1] = (si * pr - sr * pi) / m;
-  }
-  return true;
-}
-
-/**
  * Factors an n×n complex M (row-major) in place into L U with partial pivoting, the row swaps in piv; false when a
  * pivot is exactly zero or not finite. luSolve then solves with it as many times as needed (a chord corrector).
  */
 export function luFactor(M: Float64Array, piv: Int32Array, n: number): boolean {
+  const w = 2 * n;
   for (let k = 0; k < n; k++) {
-    let best = -1;
+    const kk = k * w + 2 * k;
+    let best = k;
     let bestAbs = -1;
-    for (let i = k; i < n; i++) {
-      const m = M[2 * (i * n + k)] ** 2 + M[2 * (i * n + k) + 1] ** 2;
+    for (let i = k, at = kk; i < n; i++, at += w) {
+      const m = M[at] * M[at] + M[at + 1] * M[at + 1];
       if (m > bestAbs) {
         bestAbs = m;
         best = i;
@@ -89,28 +20,27 @@ export function luFactor(M: Float64Array, piv: Int32Array, n: number): boolean {
     if (!(bestAbs > 0) || !Number.isFinite(bestAbs)) return false;
     piv[k] = best;
     if (best !== k) {
-      for (let c = 0; c < 2 * n; c++) {
-        const t = M[2 * k * n + c];
-        M[2 * k * n + c] = M[2 * best * n + c];
-        M[2 * best * n + c] = t;
+      for (let c = k * w, d = best * w, end = c + w; c < end; c++, d++) {
+        const t = M[c];
+        M[c] = M[d];
+        M[d] = t;
       }
     }
-    const ir = M[2 * (k * n + k)] / bestAbs;
-    const ii = -M[2 * (k * n + k) + 1] / bestAbs;
-    for (let i = k + 1; i < n; i++) {
-      const ar = M[2 * (i * n + k)];
-      const ai = M[2 * (i * n + k) + 1];
+    const ir = M[kk] / bestAbs;
+    const ii = -M[kk + 1] / bestAbs;
+    for (let ik = kk + w; ik < n * w; ik += w) {
+      const ar = M[ik];
+      const ai = M[ik + 1];
       const fr = ar * ir - ai * ii;
       const fi = ar * ii + ai * ir;
-      // The multiplier stays in L's place below the diagonal.
-      M[2 * (i * n + k)] = fr;
-      M[2 * (i * n + k) + 1] = fi;
-      if (fr === 0 && fi === 0) continue;
-      for (let c = k + 1; c < n; c++) {
-        const br = M[2 * (k * n + c)];
-        const bi = M[2 * (k * n + c) + 1];
-        M[2 * (i * n + c)] -= fr * br - fi * bi;
-        M[2 * (i * n + c) + 1] -= fr * bi + fi * br;
+      // The multiplier stays in L's place below the diagonal; row i minus f times row k right of it.
+      M[ik] = fr;
+      M[ik + 1] = fi;
+      for (let c = 2, end = w - 2 * k; c < end; c += 2) {
+        const br = M[kk + c];
+        const bi = M[kk + c + 1];
+        M[ik + c] -= fr * br - fi * bi;
+        M[ik + c + 1] -= fr * bi + fi * br;
       }
     }
   }

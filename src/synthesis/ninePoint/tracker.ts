@@ -1,5 +1,5 @@
 import { NV, evaluate } from './equations';
-import { luFactor, luSolve, norm, solveInPlace } from './linear';
+import { luFactor, luSolve, norm } from './linear';
 
 /** How a tracked path ended: at a finite regular root, lost (step underflow, singular end), or off to infinity. */
 export type PathStatus = 'finished' | 'failed' | 'diverged';
@@ -47,6 +47,8 @@ export class Tracker {
   /** LU factors of the corrector's Jacobian, and the tangent it leaves for the next step. */
   private readonly JL = new Float64Array(2 * NV * NV);
   private readonly piv = new Int32Array(NV);
+  /** Row swaps of J's factors (the tangent's and the polishing Newton's). */
+  private readonly pivJ = new Int32Array(NV);
   private readonly kNext = new Float64Array(2 * NV);
   /** Size of the last corrector's first update, relative to 1 + |z|. */
   private first = 0;
@@ -58,6 +60,10 @@ export class Tracker {
   private gi = 0;
   private p0: Float64Array = new Float64Array(4 * NV);
   private p1: Float64Array = new Float64Array(4 * NV);
+  /** Evaluations of E and its Jacobian so far (for the benchmark's evaluations per path). */
+  evaluations = 0;
+  /** Steps rejected so far (predictor singular or corrector not contracting). */
+  rejected = 0;
 
   /** Sets the segment: from parameters p0 to p1 with γ = (gr, gi). */
   setSegment(p0: Float64Array, p1: Float64Array, gr: number, gi: number): void {
@@ -101,8 +107,11 @@ export class Tracker {
   private tangent(z: Float64Array, s: number, out: Float64Array): boolean {
     this.params(s);
     evaluate(z, this.p, this.F, this.J, this.dp, this.Fp);
+    this.evaluations++;
     for (let i = 0; i < out.length; i++) out[i] = -this.Fp[i];
-    return solveInPlace(this.J, out, NV);
+    if (!luFactor(this.J, this.pivJ, NV)) return false;
+    luSolve(this.J, this.pivJ, out, NV);
+    return true;
   }
 
   /**
@@ -117,6 +126,7 @@ export class Tracker {
     const { dz, JL, piv, F, Fp, kNext } = this;
     for (let it = 1; it <= maxIt; it++) {
       evaluate(z, this.p, F, JL, this.dp, Fp);
+      this.evaluations++;
       if (!luFactor(JL, piv, NV)) return -1;
       for (let i = 0; i < dz.length; i++) dz[i] = -F[i];
       luSolve(JL, piv, dz, NV);
@@ -146,9 +156,11 @@ export class Tracker {
     let last = Infinity;
     for (let it = 1; it <= maxIt; it++) {
       evaluate(z, this.p, this.F, this.J);
+      this.evaluations++;
       const dz = this.dz;
       for (let i = 0; i < dz.length; i++) dz[i] = -this.F[i];
-      if (!solveInPlace(this.J, dz, NV)) return -1;
+      if (!luFactor(this.J, this.pivJ, NV)) return -1;
+      luSolve(this.J, this.pivJ, dz, NV);
       const n = norm(dz);
       if (!Number.isFinite(n)) return -1;
       if (n <= tol * (1 + norm(z))) {
@@ -190,12 +202,14 @@ export class Tracker {
       const sNew = s + h >= 1 - 1e-15 ? 1 : s + h;
       ok = ok && this.tangent(zt, sNew, k4);
       if (!ok) {
+        this.rejected++;
         h *= 0.5;
         continue;
       }
       for (let i = 0; i < n; i++) zp[i] = z[i] + (h / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
       const it = this.correct(zp, sNew, 3, tol);
       if (it < 0) {
+        this.rejected++;
         h *= 0.5;
         continue;
       }

@@ -6,7 +6,8 @@ import { parseUrl } from '../../../src/shared/url/url';
 import type { AppState } from '../../../src/shared/state/appState';
 import type { LengthUnit } from '../../../src/shared/state/slices/designSlice';
 import { localPose } from '../../../src/shared/linkage/localPose';
-import { barSeeds, forceSetup, linkInertias, poseForces, slenderBar } from '../../../src/features/forces/forceModel';
+import { barSeeds, forceSetup, linkInertias, poseForces } from '../../../src/features/forces/forceModel';
+import { slenderBar } from '../../../src/shared/linkage/slenderBar';
 
 /** The 6-2-5-5 linkage as long as 6, 2, 5 and 5 decimetres, written in a unit (mm, cm, m or in). */
 function stateIn(unit: LengthUnit, perDecimetre: number, extra: Partial<AppState['forces']> = {}): AppState {

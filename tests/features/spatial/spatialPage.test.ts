@@ -17,6 +17,60 @@ import { modelOf, presetOf, presetPatch } from '../../../src/features/spatial/sp
 const D = Decimal.clone({ precision: 40 });
 const PI = D.acos(-1);
 
+/** The input motion of the rates before ω2 and α2 were fields: ω2 = 1 rad/s, α2 = 0. */
+const UNIT_INPUT = { omega2: 1, alpha2: 0 };
+
+type V = [Decimal, Decimal, Decimal];
+const dot = (a: V, b: V) => a[0].times(b[0]).plus(a[1].times(b[1])).plus(a[2].times(b[2]));
+const lin = (...terms: [Decimal, V][]): V =>
+  [0, 1, 2].map((i) => terms.reduce((acc, [k, v]) => acc.plus(k.times(v[i])), new D(0))) as V;
+const rad = (deg: number | Decimal) => new D(deg).times(PI).div(180);
+
+/**
+ * The open-branch spherical pose at θ2 (degrees) for the input ω2, α2, at 40 digits from docs/spatial.md's
+ * conventions: A = Rz(θ2)(sin a2, 0, cos a2), B = cos a4 O4 + sin a4 (cos θ4 u + sin θ4 y), A·B = cos a3, open where
+ * (A − B)·∂B/∂θ4 > 0; ω4 and α4 from F = A·B − cos a3 differentiated once and twice in time.
+ */
+function sphericalOracle(arcsDeg: [number, number, number, number], t2Deg: number, omega2: number, alpha2: number) {
+  const [a1, a2, a3, a4] = arcsDeg.map(rad);
+  const t2 = rad(t2Deg);
+  const [w2, al2] = [new D(omega2), new D(alpha2)];
+  const zero = new D(0);
+  const A: V = [a2.sin().times(t2.cos()), a2.sin().times(t2.sin()), a2.cos()];
+  const dA: V = [a2.sin().times(t2.sin()).neg(), a2.sin().times(t2.cos()), zero];
+  const ddA: V = [A[0].neg(), A[1].neg(), zero];
+  const O4: V = [a1.sin(), zero, a1.cos()];
+  const u: V = [a1.cos(), zero, a1.sin().neg()];
+  const y: V = [zero, new D(1), zero];
+  const P = a4.sin().times(dot(A, u));
+  const Q = a4.sin().times(dot(A, y));
+  const R = a3.cos().minus(a4.cos().times(dot(A, O4)));
+  const phi = D.atan2(Q, P);
+  const psi = D.acos(R.div(P.pow(2).plus(Q.pow(2)).sqrt()));
+  const at = (t4: Decimal) => ({
+    t4,
+    B: lin([a4.cos(), O4], [a4.sin().times(t4.cos()), u], [a4.sin().times(t4.sin()), y]),
+    dB: lin([a4.sin().times(t4.sin()).neg(), u], [a4.sin().times(t4.cos()), y]),
+    ddB: lin([a4.sin().times(t4.cos()).neg(), u], [a4.sin().times(t4.sin()).neg(), y]),
+  });
+  const open = [at(phi.minus(psi)), at(phi.plus(psi))].find((c) =>
+    dot(lin([new D(1), A], [new D(-1), c.B]), c.dB).gt(0),
+  )!;
+  const F4 = dot(A, open.dB);
+  const omega4 = dot(dA, open.B).times(w2).neg().div(F4);
+  const alpha4 = dot(ddA, open.B)
+    .times(w2.pow(2))
+    .plus(dot(dA, open.B).times(al2))
+    .plus(dot(dA, open.dB).times(w2).times(omega4).times(2))
+    .plus(dot(A, open.ddB).times(omega4.pow(2)))
+    .neg()
+    .div(F4);
+  let t4Deg = open.t4.times(180).div(PI);
+  while (t4Deg.gt(180)) t4Deg = t4Deg.minus(360);
+  while (t4Deg.lte(-180)) t4Deg = t4Deg.plus(360);
+  return { A, B: open.B, t4Deg, omega4, alpha4 };
+}
+
 /** The state of a preset on top of the defaults. */
 const presetState = (id: string): SpatialState => ({
   ...DEFAULT_SPATIAL,
@@ -51,7 +105,7 @@ describe('modelOf and the presets', () => {
 describe('spatialCsvText', () => {
   it("writes the issue's columns and, for the planar RSSR, a first row equal to the planar closed form", () => {
     const s = presetState('rssr-planar');
-    const lines = spatialCsvText(modelOf(s), 'open').trim().split('\n');
+    const lines = spatialCsvText(modelOf(s), 'open', UNIT_INPUT).trim().split('\n');
     expect(lines[0]).toBe('theta2_deg,A_x,A_y,A_z,B_x,B_y,B_z,theta4_deg,omega4_rad_s,alpha4_rad_s2');
     expect(lines).toHaveLength(362);
     // 6-2-5-5 at θ2 = 0: A = (2, 0, 0), |A − B| = 5 gives cos θ4 = −0.4, the open branch sin θ4 > 0.
@@ -73,10 +127,40 @@ describe('spatialCsvText', () => {
     expect(Math.abs(row[8] - F2.neg().div(F4).toNumber())).toBeLessThan(1e-14);
   });
 
+  it("writes rates for the state's ω2 and α2 (ω2 = 2.5 rad/s, α2 = −3 rad/s²), each row the oracle's", () => {
+    const s = { ...DEFAULT_SPATIAL, pDistDeg: 0, omega2RadPerS: 2.5, alpha2RadPerS2: -3 };
+    const lines = spatialCsvText(modelOf(s), 'open', { omega2: 2.5, alpha2: -3 }).trim().split('\n');
+    const head = lines[0].split(',');
+    expect(head).toEqual([
+      'theta2_deg',
+      'A_x',
+      'A_y',
+      'A_z',
+      'B_x',
+      'B_y',
+      'B_z',
+      'theta4_deg',
+      'omega4_rad_s',
+      'alpha4_rad_s2',
+    ]);
+    // A crank-rocker: one row per degree, 0 to 360; rows 0, 37, 181 and 359 against the oracle.
+    expect(lines).toHaveLength(362);
+    for (const t2 of [0, 37, 181, 359]) {
+      const row = lines[1 + t2].split(',').map(Number);
+      const o = sphericalOracle([60, 20, 55, 45], t2, 2.5, -3);
+      const want = [new D(t2), ...o.A, ...o.B, o.t4Deg, o.omega4, o.alpha4];
+      // Full precision: within 1e-13 relative (a few ulps through the solve's conditioning), 1e-13 absolute near 0.
+      want.forEach((w, i) => {
+        const x = w.toNumber();
+        expect(Math.abs(row[i] - x), `θ2 = ${t2}: ${head[i]}`).toBeLessThanOrEqual(1e-13 * Math.max(1, Math.abs(x)));
+      });
+    }
+  });
+
   it('adds P_x, P_y, P_z with a coupler point only', () => {
-    const withP = spatialCsvText(modelOf(DEFAULT_SPATIAL), 'open').split('\n')[0];
+    const withP = spatialCsvText(modelOf(DEFAULT_SPATIAL), 'open', UNIT_INPUT).split('\n')[0];
     expect(withP).toBe('theta2_deg,A_x,A_y,A_z,B_x,B_y,B_z,P_x,P_y,P_z,theta4_deg,omega4_rad_s,alpha4_rad_s2');
-    const without = spatialCsvText(modelOf({ ...DEFAULT_SPATIAL, pDistDeg: 0 }), 'open').split('\n')[0];
+    const without = spatialCsvText(modelOf({ ...DEFAULT_SPATIAL, pDistDeg: 0 }), 'open', UNIT_INPUT).split('\n')[0];
     expect(without).not.toContain('P_x');
   });
 

@@ -35,11 +35,19 @@ describe('mechReducer', () => {
   it('opens a template unedited, and keeps the same object when nothing changes', () => {
     const edited = { ...DEFAULT_MECH, spec: MECHANISM_TEMPLATES.jansen.spec };
     expect(mechReducer(edited, { type: 'setMechTemplate', template: 'jansen' })).toEqual({
+      ...DEFAULT_MECH,
       template: 'jansen',
       spec: null,
     });
     expect(mechReducer(DEFAULT_MECH, { type: 'setMechTemplate', template: DEFAULT_MECH.template })).toBe(DEFAULT_MECH);
     expect(mechReducer(DEFAULT_MECH, { type: 'setLocale', locale: 'zh-TW' })).toBe(DEFAULT_MECH);
+  });
+
+  it('sets the forces, keeps them when a template opens, and keeps the same object for a patch that changes nothing', () => {
+    const on = mechReducer(DEFAULT_MECH, { type: 'setMechForces', patch: { enabled: true, rhoKgPerM: 2 } });
+    expect(on.forces).toEqual({ ...DEFAULT_MECH.forces, enabled: true, rhoKgPerM: 2 });
+    expect(mechReducer(on, { type: 'setMechForces', patch: { enabled: true } })).toBe(on);
+    expect(mechReducer(on, { type: 'setMechTemplate', template: 'jansen' }).forces).toBe(on.forces);
   });
 });
 
@@ -109,10 +117,32 @@ describe('mechSpecCodec', () => {
   });
 
   it('parses a link whose mech= is corrupted by naming it, and keeps the last good linkage', () => {
-    const good = { ...DEFAULT_STATE, mech: { template: 'jansen' as const, spec: MECHANISM_TEMPLATES.klann.spec } };
+    const good = {
+      ...DEFAULT_STATE,
+      mech: { ...DEFAULT_MECH, template: 'jansen' as const, spec: MECHANISM_TEMPLATES.klann.spec },
+    };
     const r = parseUrl('page=mech&tpl=jansen&mech=m1*2*ground', good, quiet);
     expect(r.state.mech.spec).toBe(MECHANISM_TEMPLATES.klann.spec);
     expect(r.ignored.map((p) => [p.key, p.why])).toEqual([['mech', 'the code ends before links[1]']]);
+  });
+
+  it('writes the forces’ keys only when they differ from their defaults, and reads them back', () => {
+    const forces = { enabled: true, rhoKgPerM: 2.5, gravityMPerS2: 0, inputSpeed: -3, joint: 'B', arrows: true };
+    const state = { ...DEFAULT_STATE, mech: { ...DEFAULT_MECH, forces } };
+    const query = new URLSearchParams(serializeState(state));
+    expect(['mfrc', 'mrho', 'mgr', 'mw', 'mrj', 'mfv'].map((k) => query.get(k))).toEqual([
+      '1',
+      '2.5',
+      '0',
+      '-3',
+      'B',
+      '1',
+    ]);
+    expect(new URLSearchParams(serializeState(DEFAULT_STATE)).has('mfrc')).toBe(false);
+    const back = parseUrl(serializeState(state), DEFAULT_STATE, quiet);
+    expect(back.state.mech.forces).toEqual(forces);
+    const bad = parseUrl('page=mech&mrho=-1&mgr=x', DEFAULT_STATE, quiet);
+    expect(bad.ignored.map((p) => p.key)).toEqual(['mrho', 'mgr']);
   });
 
   it('round-trips any state of the slice through a link', () => {

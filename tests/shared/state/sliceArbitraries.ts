@@ -5,7 +5,7 @@ import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import { OMEGA_UNITS } from '../../../src/shared/state/inputMotion';
 import { LENGTH_UNITS } from '../../../src/shared/state/slices/designSlice';
 import { DEFAULT_LINK_MASS, FORCES_LIMITS, MOVING_LINKS } from '../../../src/shared/state/slices/forcesSlice';
-import { MAX_TARGETS } from '../../../src/shared/state/slices/synthesisSlice';
+import { MAX_PATH_CHOICE, MAX_TARGETS } from '../../../src/shared/state/slices/synthesisSlice';
 import {
   COORD_MAX,
   MAX_CHOICE,
@@ -20,7 +20,7 @@ import {
   RANGE_DEG_MAX,
   X_ABS_MAX,
 } from '../../../src/shared/state/slices/synFunctionSlice';
-import { MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
+import { MECH_FORCES_LIMITS, MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
 import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import type { MechanismSpec } from '../../../src/mechanism';
 import { SPATIAL_LENGTH_MAX } from '../../../src/shared/state/slices/spatialSlice';
@@ -144,8 +144,8 @@ const synPath: fc.Arbitrary<AppState['synPath']> = fc.record({
   pivotBox: fc.option(pivotBox, { nil: null }),
   input: fc.constantFrom('crank' as const, 'any' as const),
   seed: fc.integer({ min: 1, max: 2 ** 31 - 1 }),
-  // The candidate shown is not in the link (a link reruns the search): always the best.
-  chosen: fc.constant(0),
+  // The candidate shown (URL cd): a rerun with the link's seed shows it again.
+  chosen: fc.integer({ min: 0, max: MAX_PATH_CHOICE }),
 });
 
 const linkMass = fc.record({
@@ -254,6 +254,14 @@ const mechSpec: fc.Arbitrary<MechanismSpec> = fc
 const mech: fc.Arbitrary<AppState['mech']> = fc.record({
   template: fc.constantFrom(...MECH_TEMPLATE_KEYS),
   spec: fc.option(mechSpec, { nil: null }),
+  forces: fc.record({
+    enabled: fc.boolean(),
+    rhoKgPerM: double(0, MECH_FORCES_LIMITS.rho),
+    gravityMPerS2: double(0, MECH_FORCES_LIMITS.gravity),
+    inputSpeed: double(-MECH_FORCES_LIMITS.speed, MECH_FORCES_LIMITS.speed),
+    joint: fc.oneof(fc.constant(''), anyName),
+    arrows: fc.boolean(),
+  }),
 });
 
 /** A value on the spatial page's degree grid (9 decimals) strictly inside (lo, hi) or in [lo, hi) as asked. */
@@ -278,6 +286,8 @@ const spatial: fc.Arbitrary<AppState['spatial']> = fc.record({
   betaDeg: angle180,
   theta2Deg: degrees(0, 359.999999999),
   branch: fc.constantFrom('open' as const, 'crossed' as const),
+  omega2RadPerS: fc.oneof(fc.constant(1), double(-1e6, 1e6)),
+  alpha2RadPerS2: fc.oneof(fc.constant(0), double(-1e9, 1e9)),
 });
 
 /** One generator per slice of SLICES: a new slice without one here does not typecheck. */

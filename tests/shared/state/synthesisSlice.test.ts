@@ -77,6 +77,31 @@ describe('synPathReducer', () => {
   });
 });
 
+describe('the chosen candidate (issue 34, item 13)', () => {
+  it('is kept by the URL as cd and set back to the best by every edit of the task or the seed', () => {
+    const chosen = reducer(DEFAULT_STATE, { type: 'chooseCandidate', index: 4 });
+    expect(new URLSearchParams(serializeState(chosen)).get('cd')).toBe('4');
+    expect(parseUrl('cd=4', DEFAULT_STATE, quiet).state.synPath.chosen).toBe(4);
+    expect(parseUrl('cd=64', DEFAULT_STATE, quiet).ignored.map((i) => i.key)).toEqual(['cd']);
+    const edits = [
+      { type: 'setTargets', targets: [{ x: 1, y: 2 }] },
+      { type: 'removeTarget', index: 0 },
+      { type: 'setTiming', timing: 'step' },
+      { type: 'setTimingStep', stepDeg: 20 },
+      { type: 'setGivenTheta2', theta2Deg: [10] },
+      { type: 'setPathBounds', bounds: { boundLength: 5 } },
+      { type: 'setPathInput', input: 'any' },
+      { type: 'setPathSeed', seed: 7 },
+    ] as const;
+    const withTarget = reducer(chosen, { type: 'setTargets', targets: [{ x: 1, y: 2 }] });
+    const again = reducer(withTarget, { type: 'chooseCandidate', index: 4 });
+    for (const edit of edits) expect(reducer(again, edit).synPath.chosen, edit.type).toBe(0);
+    // What is not the task keeps it: the mode, and setting a field to the value it has.
+    expect(reducer(again, { type: 'setSynthesisMode', mode: 'motion' }).synPath.chosen).toBe(4);
+    expect(reducer(again, { type: 'setPathSeed', seed: 1 }).synPath.chosen).toBe(4);
+  });
+});
+
 describe('synthesis URL keys', () => {
   it('writes nothing for the default slice', () => {
     const params = new URLSearchParams(serializeState(DEFAULT_STATE));
@@ -100,6 +125,7 @@ describe('synthesis URL keys', () => {
       pivotBox: { min: { x: -5, y: -6 }, max: { x: 5, y: 6 } },
       input: 'any' as const,
       seed: 42,
+      chosen: 3,
     };
     const state = { ...DEFAULT_STATE, synPath, shell: { ...DEFAULT_STATE.shell, page: 'synthesis' as const } };
     const back = parseUrl(serializeState(state), DEFAULT_STATE, quiet);

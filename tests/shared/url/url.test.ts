@@ -315,6 +315,8 @@ const RANGE_CASES: ReadonlyArray<readonly [key: string, text: string, accepted: 
   ['in', 'rocker', false],
   ['sd', '7', true],
   ['sd', '0', false],
+  ['cd', '2', true],
+  ['cd', '-1', false],
   ['ps', '0,0,0;1,2,45', true],
   ['ps', '0,0,0', false],
   ['pc', 'fixed', true],
@@ -433,6 +435,10 @@ const SPATIAL_RANGE_CASES: [string, string, boolean][] = [
   ['t2', 'x', false],
   ['br', 'crossed', true],
   ['br', 'up', false],
+  ['w2', '-2.5', true],
+  ['w2', '1000001', false],
+  ['al2', '-1e9', true],
+  ['al2', 'fast', false],
 ];
 
 describe('parseUrl range checks', () => {

@@ -5,21 +5,23 @@
 import type { Point } from '../../../solver';
 import { placedJoints, toFrame } from '../../../synthesis';
 import type { PivotChoice, PoseDeg } from '../../../shared/state/slices/synMotionSlice';
-import { DEFAULT_POSES_FIVE, MAX_POSES } from '../../../shared/state/slices/synMotionSlice';
+import { DEFAULT_POSES_TURN, MAX_POSES } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionCandidate } from './motionSolve';
 import { toPose } from './motionSolve';
 
 const same = (a: PoseDeg, b: PoseDeg) => a.x === b.x && a.y === b.y && a.angleDeg === b.angleDeg;
 
 /**
- * The pose Add pose appends: the default set's next pose while the poses are still the default set's first ones
- * (so the defaults grow into a Burmester problem with real answers), else one step further along the last two.
+ * The pose Add pose appends: the default crank-rocker's next pose while the poses are still its first ones (so the
+ * defaults grow into a Burmester problem with real answers, then into six to nine poses a four-bar fits closely: a
+ * pose extrapolated from the default five leaves the least-squares fit a single dyad), else one step further along
+ * the last two.
  */
 export function nextPose(poses: readonly PoseDeg[]): PoseDeg | null {
   const n = poses.length;
   if (n >= MAX_POSES) return null;
-  if (n < DEFAULT_POSES_FIVE.length && poses.every((p, i) => same(p, DEFAULT_POSES_FIVE[i])))
-    return DEFAULT_POSES_FIVE[n];
+  if (n < DEFAULT_POSES_TURN.length && poses.every((p, i) => same(p, DEFAULT_POSES_TURN[i])))
+    return DEFAULT_POSES_TURN[n];
   const a = poses[n - 2];
   const b = poses[n - 1];
   const r = (v: number) => Number(v.toPrecision(10));

@@ -87,6 +87,8 @@ export interface MotionMessages {
     noCrankPivot: (ground: string, rocker: string) => string;
     noBurmester: string;
     noApprox: string;
+    /** Six or more poses: the least-squares fit found `found` (0 or 1) distinct dyads. */
+    fewDyads: (found: number) => string;
     pickTwo: (picked: number) => string;
   };
 }

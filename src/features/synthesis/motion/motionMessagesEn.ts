@@ -98,6 +98,8 @@ export const motionMessagesEn: MotionMessages = {
     noCrankPivot: (ground, rocker) =>
       `No crank pivot lies at ground length ${ground} (rocker ${rocker}). Try a longer ground: for Q = 1 it must exceed the rocker.`,
     noApprox: 'No two best-fit dyads make a four-bar (their pivots coincide). Move a pose.',
+    fewDyads: (found) =>
+      `The best fit to these poses found ${found === 0 ? 'no dyad' : 'only one dyad'}, and a four-bar needs two different ones. Move or remove a pose that strays from the others' motion.`,
     noBurmester: 'These five poses have no Burmester points, so no four-bar reaches all five exactly. Move a pose.',
     pickTwo: (picked) => (picked === 0 ? 'Pick two dyads on the centre-point curve.' : 'Pick one more dyad.'),
   },

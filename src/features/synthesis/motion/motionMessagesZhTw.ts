@@ -89,6 +89,8 @@ export const motionMessagesZhTw: MotionMessages = {
     noCrankPivot: (ground, rocker) =>
       `在機架長度 ${ground}（搖桿 ${rocker}）處沒有曲柄樞軸。請加長機架：Q = 1 時機架必須長於搖桿。`,
     noApprox: '沒有兩個最佳擬合雙桿組能構成四連桿（其樞軸重合）。請移動一個姿態。',
+    fewDyads: (found) =>
+      `對這些姿態的最佳擬合${found === 0 ? '找不到雙桿組' : '只找到一個雙桿組'}，而四連桿需要兩個不同的雙桿組。請移動或刪除偏離其他姿態運動的姿態。`,
     noBurmester: '這五個姿態沒有 Burmester 點，因此沒有四連桿能精確到達全部五個姿態。請移動一個姿態。',
     pickTwo: (picked) => (picked === 0 ? '請在中心點曲線上選取兩個雙桿組。' : '請再選取一個雙桿組。'),
   },

@@ -52,6 +52,8 @@ export type MotionProblem =
   | { code: 'noCrankPivot'; ground: number; rocker: number }
   | { code: 'noBurmester' }
   | { code: 'noApprox' }
+  /** Six or more poses: the least-squares fit found fewer than the two distinct dyads a four-bar is made of. */
+  | { code: 'fewDyads'; found: number }
   | { code: 'pickTwo'; picked: number };
 
 /** Two poses: the pole they turn about (the rocker pivot O4) and the crank-rockers that swing it between them. */
@@ -216,7 +218,12 @@ function manyPoses(poses: Pose[], s: SynMotionState): ManyPoseOutcome {
     errors: b.errors,
     rms: b.rms,
   }));
-  if (!fourBars.length) return { count: 6, dyads: out.dyads, fourBars, chosen: null, problem: { code: 'noApprox' } };
+  if (!fourBars.length) {
+    // Fewer than two dyads is not two dyads whose pivots coincide: say which it is.
+    const problem: MotionProblem =
+      out.dyads.length < 2 ? { code: 'fewDyads', found: out.dyads.length } : { code: 'noApprox' };
+    return { count: 6, dyads: out.dyads, fourBars, chosen: null, problem };
+  }
   const chosen = fourBars[Math.min(s.choice, fourBars.length - 1)];
   return { count: 6, dyads: out.dyads, fourBars, chosen, problem: null };
 }

@@ -9,6 +9,8 @@ export function problemText(mt: MotionMessages, p: MotionProblem): string {
       return mt.problems.collinear(mt.pivotName[p.pivot]);
     case 'noCrankPivot':
       return mt.problems.noCrankPivot(formatNumber(p.ground, 4), formatNumber(p.rocker, 4));
+    case 'fewDyads':
+      return mt.problems.fewDyads(p.found);
     case 'pickTwo':
       return mt.problems.pickTwo(p.picked);
     default:

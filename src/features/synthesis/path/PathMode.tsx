@@ -83,7 +83,7 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           hold={holdText(fieldErrors, s, st)}
           summary={summary}
           onRun={() => {
-            dispatch({ type: 'chooseCandidate', index: 0 });
+            // The candidate chosen stays (a task edit chose the best): a link's or a file's cd shows again.
             setShown(0);
             void run.run(task, s.seed);
           }}

@@ -2,9 +2,9 @@ import { validateStructure } from '../../../mechanism/validate';
 import type { MechanismSpec } from '../../../mechanism/types';
 import { describe } from '../../../solver/validate';
 import type { Codec, Decoded } from '../../url/urlCodec';
-import { enumCodec, exactText } from '../../url/urlCodec';
+import { boolCodec, enumCodec, exactText, numberCodec } from '../../url/urlCodec';
 import type { UrlKey } from '../../url/urlKey';
-import { optionalKey, sliceLens } from '../../url/urlKey';
+import { nestedLens, optionalKey, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
 import type { Slice } from '../slice';
 
@@ -49,25 +49,67 @@ export interface MechState {
   template: MechTemplateKey;
   /** The linkage as edited, or null: the template's own. */
   spec: MechanismSpec | null;
+  /** The forces over the cycle (kept when another template opens). */
+  forces: MechForcesSettings;
 }
+
+/**
+ * The mechanism page's forces, as on the simulator (SI, the linkage's lengths in the app's length unit lu): every
+ * moving link a set of uniform bars of rhoKgPerM along the edges of its outline, gravity down, the input at a
+ * constant speed.
+ */
+export interface MechForcesSettings {
+  /** Solve and show the forces (URL mfrc); default off, and nothing about forces is computed while off. */
+  enabled: boolean;
+  /** Mass per length of the links' bars, kg/m (URL mrho); default 1, as the simulator's rho. */
+  rhoKgPerM: number;
+  /** Gravity, m/s² pointing -y (URL mgr, 0 turns it off); default 9.81. */
+  gravityMPerS2: number;
+  /** The input's constant speed (URL mw): rad/s for a pin input, lu/s for a slider input; default 10. */
+  inputSpeed: number;
+  /** The joint whose reaction is plotted and shown (URL mrj); '' (default): the first joint after the input. */
+  joint: string;
+  /** Reaction arrows at the joints on the canvas (URL mfv); default off. */
+  arrows: boolean;
+}
+
+/** Forces off; bars of 1 kg/m; g = 9.81 m/s²; the input at 10 rad/s (or lu/s); the default joint; no arrows. */
+export const DEFAULT_MECH_FORCES: MechForcesSettings = {
+  enabled: false,
+  rhoKgPerM: 1,
+  gravityMPerS2: 9.81,
+  inputSpeed: 10,
+  joint: '',
+  arrows: false,
+};
+
+/** Largest mass per length (kg/m), gravity (m/s²) and input speed (rad/s or lu/s) accepted. */
+export const MECH_FORCES_LIMITS = { rho: 1e6, gravity: 1000, speed: 1e6 } as const;
 
 /** Most links, joints or tracers a linkage in a link may have (a link is typed by people, and read by the app). */
 export const MECH_MAX_PARTS = 64;
 
 /** The offset slider-crank, unedited. */
-export const DEFAULT_MECH: MechState = { template: 'sliderCrank', spec: null };
+export const DEFAULT_MECH: MechState = { template: 'sliderCrank', spec: null, forces: DEFAULT_MECH_FORCES };
 
 /** Actions only the mechanism slice handles. */
 export type MechAction =
-  { type: 'setMechTemplate'; template: MechTemplateKey } | { type: 'setMechSpec'; spec: MechanismSpec | null };
+  | { type: 'setMechTemplate'; template: MechTemplateKey }
+  | { type: 'setMechSpec'; spec: MechanismSpec | null }
+  | { type: 'setMechForces'; patch: Partial<MechForcesSettings> };
 
 /** The mechanism slice's reducer: pure, returns the same object when nothing changes. */
 export function mechReducer(s: MechState, action: Action): MechState {
   switch (action.type) {
     case 'setMechTemplate':
-      return action.template === s.template && s.spec === null ? s : { template: action.template, spec: null };
+      return action.template === s.template && s.spec === null ? s : { ...s, template: action.template, spec: null };
     case 'setMechSpec':
       return action.spec === s.spec ? s : { ...s, spec: action.spec };
+    case 'setMechForces': {
+      const p = action.patch;
+      const same = (Object.keys(p) as (keyof MechForcesSettings)[]).every((k) => Object.is(s.forces[k], p[k]));
+      return same ? s : { ...s, forces: { ...s.forces, ...p } };
+    }
     default:
       return s;
   }
@@ -250,8 +292,27 @@ export const mechSpecCodec: Codec<MechanismSpec | null> = {
 };
 
 const field = sliceLens('mech');
+const forcesField = nestedLens('mech', 'forces');
 
-/** The mechanism page's URL keys: tpl (the template, kebab case), and mech (the edited linkage) when edited. */
+/** A joint's id as typed (any text up to 200 characters; the page falls back to its default joint when none has it). */
+const jointIdCodec: Codec<string> = {
+  parse: (raw) => (raw.length <= 200 ? { ok: true, value: raw } : { ok: false, why: 'at most 200 characters' }),
+  format: (id) => id,
+};
+
+/** A forces key, written only when its text differs from the default's. */
+function forcesKey<K extends keyof MechForcesSettings>(
+  name: string,
+  codec: Codec<MechForcesSettings[K]>,
+  k: K,
+): UrlKey<unknown> {
+  return optionalKey(name, codec, forcesField(k), DEFAULT_MECH_FORCES[k]);
+}
+
+/**
+ * The mechanism page's URL keys: tpl (the template, kebab case), mech (the edited linkage) when edited, and the
+ * forces' mfrc, mrho, mgr, mw, mrj, mfv (each only when it differs from its default).
+ */
 export const MECH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey(
     'tpl',
@@ -260,11 +321,17 @@ export const MECH_URL_KEYS: readonly UrlKey<unknown>[] = [
     DEFAULT_MECH.template,
   ),
   optionalKey('mech', mechSpecCodec, field('spec'), DEFAULT_MECH.spec),
+  forcesKey('mfrc', boolCodec, 'enabled'),
+  forcesKey('mrho', numberCodec({ min: 0, max: MECH_FORCES_LIMITS.rho }), 'rhoKgPerM'),
+  forcesKey('mgr', numberCodec({ min: 0, max: MECH_FORCES_LIMITS.gravity }), 'gravityMPerS2'),
+  forcesKey('mw', numberCodec({ min: -MECH_FORCES_LIMITS.speed, max: MECH_FORCES_LIMITS.speed }), 'inputSpeed'),
+  forcesKey('mrj', jointIdCodec, 'joint'),
+  forcesKey('mfv', boolCodec, 'arrows'),
 ];
 
 /** The mech slice's registration in SLICES (appState.ts). */
 export const MECH_SLICE: Slice<MechState, MechAction> = {
-  summary: 'the mechanism page: the template opened and the linkage as edited',
+  summary: 'the mechanism page: the template opened, the linkage as edited and its forces',
   defaults: DEFAULT_MECH,
   reducer: mechReducer,
   urlKeys: MECH_URL_KEYS,

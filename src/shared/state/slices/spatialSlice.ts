@@ -43,12 +43,15 @@ export interface SpatialState {
   /** Input angle, degrees in [0, 360). */
   theta2Deg: number;
   branch: SpatialBranchName;
+  /** The input's speed ω2 (rad/s, |ω2| ≤ 1e6) and acceleration α2 (rad/s², |α2| ≤ 1e9) the rates are for. */
+  omega2RadPerS: number;
+  alpha2RadPerS2: number;
 }
 
 /** The numeric fields of the spatial state. */
 export type SpatialField = Exclude<keyof SpatialState, 'kind' | 'branch'>;
 
-/** What a spatial field accepts: [min, max], each end open or closed, and whether it is an angle (degrees). */
+/** What a spatial field accepts: [min, max], each end open or closed, whether it is an angle (degrees), its rate unit. */
 export interface SpatialFieldSpec {
   /** The field's URL key (and its name in messages). */
   key: string;
@@ -57,6 +60,8 @@ export interface SpatialFieldSpec {
   minOpen: boolean;
   maxOpen: boolean;
   angle: boolean;
+  /** The unit of a rate field, shown beside it (ω2, α2). */
+  unit?: 'rad/s' | 'rad/s²';
 }
 
 /** Largest length the RSSR fields take (the numerics rescale, so 1e±300 solves like 1). */
@@ -104,6 +109,9 @@ export const SPATIAL_FIELDS: Readonly<Record<SpatialField, SpatialFieldSpec>> = 
   h4: offset('h4'),
   betaDeg: turn('beta'),
   theta2Deg: { key: 't2', min: 0, max: 360, minOpen: false, maxOpen: true, angle: true },
+  // The simulator's bounds of w2 and a2; α2's key is al2, as a2 is the crank arc here.
+  omega2RadPerS: { key: 'w2', min: -1e6, max: 1e6, minOpen: false, maxOpen: false, angle: false, unit: 'rad/s' },
+  alpha2RadPerS2: { key: 'al2', min: -1e9, max: 1e9, minOpen: false, maxOpen: false, angle: false, unit: 'rad/s²' },
 };
 
 /** The spherical crank-rocker preset (sph-crank-rocker) at θ2 = 30°, with the RSSR fields at the skew drive's. */
@@ -124,6 +132,8 @@ export const DEFAULT_SPATIAL: SpatialState = {
   betaDeg: 60,
   theta2Deg: 30,
   branch: 'open',
+  omega2RadPerS: 1,
+  alpha2RadPerS2: 0,
 };
 
 /**
@@ -205,7 +215,7 @@ function kindKey(kind: SpatialKind, f: SpatialField): UrlKey<unknown> {
 /**
  * The spatial page's URL keys (issue 32's names, angles in degrees), read and written only on page=3d, where r2, r3,
  * r4, t2, br, pd, pa and a2 are the spatial linkage's, not the simulator's: sk, a1..a4, pd, pa, r2 r3 r4 a beta h2 h4,
- * t2, br.
+ * t2, br, and w2 (ω2, rad/s) and al2 (α2, rad/s²) when not the defaults 1 and 0.
  */
 export const SPATIAL_URL_KEYS: readonly UrlKey<unknown>[] = onPage('spatial', [
   urlKey('sk', enumCodec(sameText(['sph', 'rssr'] as const)), field('kind')),
@@ -213,6 +223,8 @@ export const SPATIAL_URL_KEYS: readonly UrlKey<unknown>[] = onPage('spatial', [
   ...KIND_FIELDS.rssr.map((f) => kindKey('rssr', f)),
   urlKey('t2', fieldCodec('theta2Deg'), field('theta2Deg')),
   urlKey('br', enumCodec(sameText(['open', 'crossed'] as const)), field('branch')),
+  optionalKey('w2', fieldCodec('omega2RadPerS'), field('omega2RadPerS'), DEFAULT_SPATIAL.omega2RadPerS),
+  optionalKey('al2', fieldCodec('alpha2RadPerS2'), field('alpha2RadPerS2'), DEFAULT_SPATIAL.alpha2RadPerS2),
 ]);
 
 /** The spatial slice's registration in SLICES (appState.ts). */

@@ -62,6 +62,18 @@ export const DEFAULT_POSES_FIVE: readonly PoseDeg[] = [
   { x: -6.1, y: -2.3, angleDeg: 36 },
 ];
 
+/**
+ * The same crank-rocker's poses over its whole turn, θ2 = 40°, 80°, …, 360° (the first five are DEFAULT_POSES_FIVE,
+ * rounded alike): Add pose appends them in order, so six to nine poses still have a four-bar that fits them closely.
+ */
+export const DEFAULT_POSES_TURN: readonly PoseDeg[] = [
+  ...DEFAULT_POSES_FIVE,
+  { x: -5.9, y: -3.6, angleDeg: 49 },
+  { x: -4.9, y: -4, angleDeg: 60 },
+  { x: -3.3, y: -3, angleDeg: 62 },
+  { x: -1.5, y: -1, angleDeg: 50 },
+];
+
 /** Three of the crank-rocker's poses with its moving pivots (rounded): a defect-free crank-rocker from the start. */
 export const DEFAULT_SYN_MOTION: SynMotionState = {
   poses: DEFAULT_POSES_FIVE.slice(0, 3),

@@ -43,9 +43,15 @@ export interface SynPathState {
   input: PathInput;
   /** Seed of the search (a whole number ≥ 1). */
   seed: number;
-  /** Index of the candidate shown (0 = best). */
+  /**
+   * Index of the candidate shown (0 = best; URL cd, 0-based like the Motion mode's mc). A task edit sets it back to
+   * 0; Synthesize keeps it, so a link or a design file reopens its chosen candidate when the same seed is run again.
+   */
   chosen: number;
 }
+
+/** Largest index of a chosen candidate the URL takes (the search lists at most 64 candidates). */
+export const MAX_PATH_CHOICE = 63;
 
 /** Most targets a task may have (the URL and the paste keep at most this many). */
 export const MAX_TARGETS = 40;
@@ -86,6 +92,11 @@ function setField<K extends keyof SynPathState>(s: SynPathState, key: K, value: 
   return Object.is(s[key], value) ? s : { ...s, [key]: value };
 }
 
+/** A field of the task set: the candidate shown goes back to the best when it changes. */
+function taskField<K extends keyof SynPathState>(s: SynPathState, key: K, value: SynPathState[K]): SynPathState {
+  return Object.is(s[key], value) ? s : { ...s, [key]: value, chosen: 0 };
+}
+
 /** The synthesis slice's reducer: pure, returns the same object when nothing changes. */
 export function synPathReducer(s: SynPathState, action: Action): SynPathState {
   switch (action.type) {
@@ -101,18 +112,19 @@ export function synPathReducer(s: SynPathState, action: Action): SynPathState {
         givenTheta2Deg: s.givenTheta2Deg.filter((_, k) => k !== action.index),
         chosen: 0,
       };
+    // A new task (or seed) makes new candidates: the best is shown first.
     case 'setTiming':
-      return setField(s, 'timing', action.timing);
+      return taskField(s, 'timing', action.timing);
     case 'setTimingStep':
-      return setField(s, 'timingStepDeg', action.stepDeg);
+      return taskField(s, 'timingStepDeg', action.stepDeg);
     case 'setGivenTheta2':
-      return { ...s, givenTheta2Deg: action.theta2Deg.slice(0, MAX_TARGETS) };
+      return { ...s, givenTheta2Deg: action.theta2Deg.slice(0, MAX_TARGETS), chosen: 0 };
     case 'setPathBounds':
-      return { ...s, ...action.bounds };
+      return { ...s, ...action.bounds, chosen: 0 };
     case 'setPathInput':
-      return setField(s, 'input', action.input);
+      return taskField(s, 'input', action.input);
     case 'setPathSeed':
-      return setField(s, 'seed', action.seed);
+      return taskField(s, 'seed', action.seed);
     case 'chooseCandidate':
       return setField(s, 'chosen', action.index);
     default:
@@ -212,7 +224,8 @@ const field = sliceLens('synPath');
  * nine; function is read as fn),
  * tg (targets x,y;x,y;…), tm (free | step | given), ts (step, degrees), tt (given θ2 per target, degrees; empty: not
  * given),
- * bl (longest link), bc (coupler offset), bp (pivot box x0,y0,x1,y1), in (crank | any), sd (seed).
+ * bl (longest link), bc (coupler offset), bp (pivot box x0,y0,x1,y1), in (crank | any), sd (seed), cd (the chosen
+ * candidate, 0-based).
  */
 export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey(
@@ -237,6 +250,7 @@ export const SYN_PATH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey('bp', nullableCodec(pivotBoxCodec, 'auto'), field('pivotBox'), DEFAULT_SYN_PATH.pivotBox),
   optionalKey('in', enumCodec(sameText(['crank', 'any'] as const)), field('input'), DEFAULT_SYN_PATH.input),
   optionalKey('sd', integerCodec(1, 2 ** 31 - 1), field('seed'), DEFAULT_SYN_PATH.seed),
+  optionalKey('cd', integerCodec(0, MAX_PATH_CHOICE), field('chosen'), DEFAULT_SYN_PATH.chosen),
 ];
 
 /** The synPath slice's registration in SLICES (appState.ts). */

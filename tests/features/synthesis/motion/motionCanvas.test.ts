@@ -9,7 +9,11 @@ import {
 } from '../../../../src/features/synthesis/motion/motionPicture';
 import { nextPose, pivotsFor } from '../../../../src/features/synthesis/motion/motionEdits';
 import { solveMotion, toPose } from '../../../../src/features/synthesis/motion/motionSolve';
-import { DEFAULT_POSES_FIVE, DEFAULT_SYN_MOTION } from '../../../../src/shared/state/slices/synMotionSlice';
+import {
+  DEFAULT_POSES_FIVE,
+  DEFAULT_POSES_TURN,
+  DEFAULT_SYN_MOTION,
+} from '../../../../src/shared/state/slices/synMotionSlice';
 import type { ViewTransform } from '../../../../src/shared/canvas/view';
 import { toScreenX, toScreenY } from '../../../../src/shared/canvas/view';
 import { placedJoints } from '../../../../src/synthesis';
@@ -83,15 +87,18 @@ describe('roundToPixel', () => {
 });
 
 describe('nextPose', () => {
-  it('grows the default poses into the default five, then steps along the last two up to twenty', () => {
+  it('grows the default poses along the default crank-rocker’s turn, then steps along the last two up to twenty', () => {
     expect(nextPose(DEFAULT_POSES_FIVE.slice(0, 3))).toEqual(DEFAULT_POSES_FIVE[3]);
+    // Past five, the same crank-rocker's next poses (least squares takes 6 to 20), then steps along the last two.
+    expect(nextPose(DEFAULT_POSES_FIVE)).toEqual(DEFAULT_POSES_TURN[5]);
+    expect(nextPose(DEFAULT_POSES_TURN.slice(0, 8))).toEqual(DEFAULT_POSES_TURN[8]);
+    expect(nextPose(DEFAULT_POSES_TURN)).toEqual({ x: 0.3, y: 1, angleDeg: 38 });
     const mine = [
       { x: 0, y: 0, angleDeg: 10 },
       { x: 1, y: 2, angleDeg: 30 },
     ];
     expect(nextPose(mine)).toEqual({ x: 2, y: 4, angleDeg: 50 });
-    // Past five the poses step on (least squares takes 6 to 20); twenty is the most.
-    expect(nextPose(DEFAULT_POSES_FIVE)).toEqual({ x: -6.8, y: -4, angleDeg: 45 });
+    // Twenty is the most.
     const twenty = Array.from({ length: 20 }, (_, i) => ({ x: i, y: 0, angleDeg: i }));
     expect(nextPose(twenty)).toBeNull();
   });

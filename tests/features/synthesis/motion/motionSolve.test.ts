@@ -1,6 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import type { SynMotionState } from '../../../../src/shared/state/slices/synMotionSlice';
-import { DEFAULT_SYN_MOTION } from '../../../../src/shared/state/slices/synMotionSlice';
+import {
+  DEFAULT_POSES_FIVE,
+  DEFAULT_POSES_TURN,
+  DEFAULT_SYN_MOTION,
+} from '../../../../src/shared/state/slices/synMotionSlice';
+import { nextPose } from '../../../../src/features/synthesis/motion/motionEdits';
+import { motionMessages } from '../../../../src/features/synthesis/motion/motionMessages';
+import { problemText } from '../../../../src/features/synthesis/motion/motionText';
 import { nearestDyad, rotationPole, solveMotion, toPose } from '../../../../src/features/synthesis/motion/motionSolve';
 import { placedJoints, threePositionSynthesis } from '../../../../src/synthesis';
 import { KNOWN, inPlane, knownPose } from './knownLinkage';
@@ -263,6 +270,66 @@ describe('solveMotion with six to twenty poses (issue 34, item 9)', () => {
     const worst = Math.max(...o.chosen.errors!.map((e) => e.position));
     expect(worst).toBeGreaterThan(1e-3);
     expect(worst).toBeLessThan(0.2);
+  });
+});
+
+describe('Add pose past the default five (issue 34, item 9)', () => {
+  /**
+   * The default crank-rocker's coupler pose at θ2 (degrees), computed here by circle intersection, independently of
+   * src/synthesis: r1..r4 = 10, 3, 9, 7, O2 = (−5, −6), ground along +x, P at 5 from A at 34° from AB, open branch.
+   */
+  function crankRockerPose(theta2Deg: number) {
+    const t = deg(theta2Deg);
+    const O2 = { x: -5, y: -6 };
+    const O4 = { x: 5, y: -6 };
+    const A = { x: O2.x + 3 * Math.cos(t), y: O2.y + 3 * Math.sin(t) };
+    const d = dist(A, O4);
+    const along = (d * d + 81 - 49) / (2 * d);
+    const h = Math.sqrt(81 - along * along);
+    const u = { x: (O4.x - A.x) / d, y: (O4.y - A.y) / d };
+    const B = { x: A.x + along * u.x - h * u.y, y: A.y + along * u.y + h * u.x };
+    const th3 = Math.atan2(B.y - A.y, B.x - A.x);
+    return {
+      x: A.x + 5 * Math.cos(th3 + deg(34)),
+      y: A.y + 5 * Math.sin(th3 + deg(34)),
+      angleDeg: (th3 * 180) / Math.PI,
+    };
+  }
+
+  it('appends the default crank-rocker’s own poses, θ2 = 240° to 360°, rounded to 0.1 and 1°', () => {
+    // Half a rounding step, and a little more: the first pose's x, −0.84997, was rounded to −0.9.
+    DEFAULT_POSES_TURN.forEach((p, i) => {
+      const q = crankRockerPose(40 * (i + 1));
+      expect(Math.abs(p.x - q.x), `x${i}`).toBeLessThanOrEqual(0.06);
+      expect(Math.abs(p.y - q.y), `y${i}`).toBeLessThanOrEqual(0.06);
+      expect(Math.abs(p.angleDeg - q.angleDeg), `angle${i}`).toBeLessThanOrEqual(0.6);
+    });
+  });
+
+  it('offers a defect-free four-bar near the crank-rocker for six to nine poses grown by Add pose', () => {
+    let poses = [...DEFAULT_POSES_FIVE];
+    for (let n = 6; n <= 9; n++) {
+      poses = [...poses, nextPose(poses)!];
+      const o = solveMotion(motion({ poses }));
+      if (o.count !== 6) throw new Error('not least squares');
+      expect(o.problem, `${n} poses`).toBeNull();
+      const chosen = o.chosen!;
+      expect(chosen.defects, `${n} poses`).toEqual([]);
+      // The poses are rounded to 0.1: the fit lands within a few tenths of the crank-rocker, its error below 0.05.
+      expect(dist(chosen.design.O2, { x: -5, y: -6 }), `${n} poses`).toBeLessThan(0.5);
+      expect(chosen.design.links.r2, `${n} poses`).toBeCloseTo(3, 0);
+      expect(chosen.rms!, `${n} poses`).toBeLessThan(0.05);
+    }
+  });
+
+  it('says the fit found a single dyad, not that pivots coincide, when a pose strays from the motion', () => {
+    const poses = [...DEFAULT_POSES_FIVE, { x: -6.8, y: -4, angleDeg: 45 }];
+    const o = solveMotion(motion({ poses }));
+    expect(o.chosen).toBeNull();
+    expect(o.problem).toEqual({ code: 'fewDyads', found: 1 });
+    const text = problemText(motionMessages.get('en'), o.problem!);
+    expect(text).toContain('only one dyad');
+    expect(text).not.toMatch(/coincide/);
   });
 });
 
