@@ -1,5 +1,5 @@
 import { expect, test } from '@playwright/test';
-import type { ElementHandle } from '@playwright/test';
+import type { BrowserContext, CDPSession, ElementHandle, Locator, Page } from '@playwright/test';
 import {
   artifact,
   chartPath,
@@ -10,6 +10,24 @@ import {
   waitReady,
   withoutLiveStage,
 } from './helpers';
+
+/**
+ * The app at 6x CPU from the first load with every overlay on (query), once its live stage's worker is ready: the
+ * slow page starts it from its first draws, before any drag or Play (seconds at 6x on a busy machine).
+ */
+async function slowPageWithStage(
+  page: Page,
+  context: BrowserContext,
+  query: string,
+): Promise<{ cdp: CDPSession; live: Locator }> {
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
+  await page.goto(`./?${query}`);
+  await waitReady(page, 60_000);
+  const live = page.locator('canvas.linkage-live');
+  await expect(live).toHaveAttribute('data-stage', 'ready', { timeout: 60_000 });
+  return { cdp, live };
+}
 
 test.describe('the simulator', () => {
   test('renders the default linkage, its numbers and its plots', async ({ page }) => {
@@ -182,13 +200,7 @@ test.describe('the simulator', () => {
   }) => {
     // 6x CPU from the first load: the page's own drawing of every overlay is slow, so the drag goes to the stage.
     test.setTimeout(120_000);
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
-    await page.goto('./?t2=45&vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
-    await waitReady(page, 60_000);
-    const live = page.locator('canvas.linkage-live');
-    // The slow page starts the stage's worker from its first draws, before any drag (seconds at 6x on a busy machine).
-    await expect(live).toHaveAttribute('data-stage', 'ready', { timeout: 60_000 });
+    const { cdp, live } = await slowPageWithStage(page, context, 't2=45&vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
     const field = page.getByRole('textbox', { name: /^θ2/ });
     // What the stage's canvas shows at each of its changes, with the field's value then (read in the page: a poll
     // from here takes long enough on a busy machine for the drag to rest and end between two reads).
@@ -229,13 +241,7 @@ test.describe('the simulator', () => {
     context,
   }) => {
     test.setTimeout(120_000);
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 6 });
-    await page.goto('./?vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
-    await waitReady(page, 60_000);
-    const live = page.locator('canvas.linkage-live');
-    // The slow page starts the stage's worker from its first draws, before Play (seconds at 6x on a busy machine).
-    await expect(live).toHaveAttribute('data-stage', 'ready', { timeout: 60_000 });
+    const { cdp, live } = await slowPageWithStage(page, context, 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1');
     await page.getByRole('button', { name: 'Play' }).click();
     // From the stage's third frame of the run (the page's thread at 6x on a busy machine hears of them slowly).
     await expect(live).toBeVisible({ timeout: 30_000 });

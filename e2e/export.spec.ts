@@ -3,7 +3,7 @@ import { expect, test } from '@playwright/test';
 import type { Page } from '@playwright/test';
 import { csvParseRows } from 'd3-dsv';
 import { solveClosedForm } from '../src/solver';
-import { pngFacts, waitReady } from './helpers';
+import { csvRowsOf, pngFacts, waitReady } from './helpers';
 
 async function download(page: Page, name: string) {
   const [d] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name }).click()]);
@@ -96,7 +96,7 @@ test.describe('exports', () => {
     await page.goto('./?r1=4&r2=3&r3=3.5&r4=3&t2=0');
     await waitReady(page);
     const d = await download(page, 'Export cycle CSV');
-    const all = csvParseRows(readFileSync(await d.path(), 'utf8')).filter((r) => r.length > 1);
+    const all = await csvRowsOf(d);
     const status = all[0].indexOf('status');
     const rows = all.slice(1);
     expect(rows).toHaveLength(361);

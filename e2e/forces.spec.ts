@@ -1,10 +1,9 @@
 import { readFileSync } from 'node:fs';
 import { expect, test } from '@playwright/test';
 import type { Locator, Page } from '@playwright/test';
-import { csvParseRows } from 'd3-dsv';
 import { oracleForces } from '../tests/solver/forcesOracle';
 import type { OracleInertia, OracleLoads } from '../tests/solver/forcesOracle';
-import { artifact, waitReady } from './helpers';
+import { CYCLE_CSV_FORCE_COLUMNS, artifact, csvRowsOf, waitReady } from './helpers';
 
 /**
  * Forces (issue 20) driven as a person does: a link with the forces on, the panel's input torque against the
@@ -107,22 +106,12 @@ test.describe('forces', () => {
     await page.goto(URL_MM);
     await waitReady(page);
     const d = await download(page, 'Export cycle CSV');
-    const rows = csvParseRows(readFileSync(await d.path(), 'utf8')).filter((r) => r.length > 1);
+    const rows = await csvRowsOf(d);
     const header = rows[0];
     // After every existing column (the position, motion and status columns all come first).
     expect(header.indexOf('torque_Nm')).toBeGreaterThan(header.indexOf('residual'));
     expect(header.indexOf('torque_Nm')).toBeGreaterThan(header.indexOf('apy'));
-    expect(header.slice(-9)).toEqual([
-      'torque_Nm',
-      'f12x_N',
-      'f12y_N',
-      'f32x_N',
-      'f32y_N',
-      'f43x_N',
-      'f43y_N',
-      'f14x_N',
-      'f14y_N',
-    ]);
+    expect(header.slice(-9)).toEqual(CYCLE_CSV_FORCE_COLUMNS);
     const data = rows.slice(1);
     expect(data).toHaveLength(361);
     const col = (r: string[], name: string) => Number(r[header.indexOf(name)]);

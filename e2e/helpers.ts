@@ -1,3 +1,4 @@
+import { csvParseRows } from 'd3-dsv';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -105,3 +106,129 @@ export async function theta2Slider(page: Page): Promise<{ x: (deg: number) => nu
   // Chromium's thumb is 16 px wide: its centre runs from 8 px in to 8 px short of the track's ends.
   return { x: (deg) => box.x + 8 + ((box.width - 16) * deg) / 360, y: box.y + box.height / 2 };
 }
+
+// The coupler-point oracle of the synthesis specs: a placed four-bar read from the simulator's URL and its coupler
+// curve, computed here independently of the app.
+
+/** A point of the plane (length unit). */
+export type Pt = { x: number; y: number };
+
+/** A placed four-bar as the URL gives it: lengths, branch, coupler point (degrees), O2 and ground angle (degrees). */
+export interface UrlDesign {
+  r1: number;
+  r2: number;
+  r3: number;
+  r4: number;
+  open: boolean;
+  pd: number;
+  paDeg: number;
+  ox: number;
+  oy: number;
+  ogDeg: number;
+}
+
+/** Degrees to radians. */
+export const rad = (deg: number) => (deg * Math.PI) / 180;
+
+/**
+ * The coupler point at θ2 (radians), written here independently of the app: B is the intersection of the circles
+ * about A (radius r3) and O4 (radius r4) left of the ray A→O4 (open) or right of it (crossed), P is read in the frame
+ * of AB, and the whole is turned by the ground angle and moved to O2. Null where the circles do not meet.
+ */
+export function couplerPoint(d: UrlDesign, theta2: number): Pt | null {
+  const A = { x: d.r2 * Math.cos(theta2), y: d.r2 * Math.sin(theta2) };
+  const O4 = { x: d.r1, y: 0 };
+  const dx = O4.x - A.x;
+  const dy = O4.y - A.y;
+  const s = Math.hypot(dx, dy);
+  const a = (d.r3 * d.r3 - d.r4 * d.r4 + s * s) / (2 * s);
+  const h2 = d.r3 * d.r3 - a * a;
+  if (h2 < 0) return null;
+  const h = Math.sqrt(h2) * (d.open ? 1 : -1);
+  // Left of the ray A→O4 is the +90° turn of (dx, dy).
+  const B = { x: A.x + (a * dx - h * dy) / s, y: A.y + (a * dy + h * dx) / s };
+  const t3 = Math.atan2(B.y - A.y, B.x - A.x);
+  const P = { x: A.x + d.pd * Math.cos(t3 + rad(d.paDeg)), y: A.y + d.pd * Math.sin(t3 + rad(d.paDeg)) };
+  const g = rad(d.ogDeg);
+  return { x: d.ox + Math.cos(g) * P.x - Math.sin(g) * P.y, y: d.oy + Math.sin(g) * P.x + Math.cos(g) * P.y };
+}
+
+/** Distance from t to the design's coupler curve: a fine sweep of θ2, then a golden-section refinement. */
+export function distanceToCurve(d: UrlDesign, t: Pt): number {
+  const dist = (th: number) => {
+    const p = couplerPoint(d, th);
+    return p ? Math.hypot(p.x - t.x, p.y - t.y) : Infinity;
+  };
+  const n = 20_000;
+  let best = 0;
+  for (let i = 1; i < n; i++) if (dist((2 * Math.PI * i) / n) < dist((2 * Math.PI * best) / n)) best = i;
+  let lo = (2 * Math.PI * (best - 1)) / n;
+  let hi = (2 * Math.PI * (best + 1)) / n;
+  const k = (Math.sqrt(5) - 1) / 2;
+  for (let i = 0; i < 80; i++) {
+    const m1 = hi - k * (hi - lo);
+    const m2 = lo + k * (hi - lo);
+    if (dist(m1) < dist(m2)) hi = m2;
+    else lo = m1;
+  }
+  return dist((lo + hi) / 2);
+}
+
+/** The design the simulator's URL holds. */
+export function designOfUrl(url: string): UrlDesign {
+  const q = new URL(url).searchParams;
+  const n = (k: string, dflt = 0) => (q.has(k) ? Number(q.get(k)) : dflt);
+  return {
+    r1: n('r1'),
+    r2: n('r2'),
+    r3: n('r3'),
+    r4: n('r4'),
+    open: q.get('br') !== 'crossed',
+    pd: n('pd'),
+    paDeg: n('pa'),
+    ox: n('ox'),
+    oy: n('oy'),
+    ogDeg: n('og'),
+  };
+}
+
+/** A downloaded CSV's rows (d3-dsv's parser, not the app's writer), without the empty line after the last newline. */
+export async function csvRowsOf(download: Download): Promise<string[][]> {
+  return csvParseRows(readFileSync(await download.path(), 'utf8')).filter((r) => r.length > 1);
+}
+
+/** The cycle CSV's columns with the motion columns, in the issues' order (written here, not read from the app). */
+export const CYCLE_CSV_MOTION_COLUMNS = [
+  'theta2_deg',
+  'theta3_deg',
+  'theta4_deg',
+  'omega3_rad_s',
+  'omega4_rad_s',
+  'alpha3_rad_s2',
+  'alpha4_rad_s2',
+  'mu_deg',
+  'px',
+  'py',
+  'vpx',
+  'vpy',
+  'apx',
+  'apy',
+  'status',
+  'iterations',
+  'residual',
+  'omega2_rad_s',
+  'alpha2_rad_s2',
+];
+
+/** The force columns the cycle CSV ends with while Forces is on, in the issue's order. */
+export const CYCLE_CSV_FORCE_COLUMNS = [
+  'torque_Nm',
+  'f12x_N',
+  'f12y_N',
+  'f32x_N',
+  'f32y_N',
+  'f43x_N',
+  'f43y_N',
+  'f14x_N',
+  'f14y_N',
+];

@@ -1,9 +1,7 @@
-import { readFileSync } from 'node:fs';
 import { expect, test } from '@playwright/test';
 import type { Page } from '@playwright/test';
-import { csvParseRows } from 'd3-dsv';
 import { referenceMotion } from '../tests/oracle/rates';
-import { artifact, waitReady } from './helpers';
+import { CYCLE_CSV_MOTION_COLUMNS, artifact, csvRowsOf, waitReady } from './helpers';
 
 /** The report's linkage, the app's default: r1 = 6, r2 = 2, r3 = 5, r4 = 5, P at 2.5 and 30 degrees. */
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };
@@ -144,29 +142,9 @@ test.describe('velocity and acceleration', () => {
       page.waitForEvent('download'),
       page.getByRole('button', { name: 'Export cycle CSV' }).click(),
     ]);
-    const rows = csvParseRows(readFileSync(await d.path(), 'utf8')).filter((r) => r.length > 1);
+    const rows = await csvRowsOf(d);
     const header = rows[0];
-    expect(header).toEqual([
-      'theta2_deg',
-      'theta3_deg',
-      'theta4_deg',
-      'omega3_rad_s',
-      'omega4_rad_s',
-      'alpha3_rad_s2',
-      'alpha4_rad_s2',
-      'mu_deg',
-      'px',
-      'py',
-      'vpx',
-      'vpy',
-      'apx',
-      'apy',
-      'status',
-      'iterations',
-      'residual',
-      'omega2_rad_s',
-      'alpha2_rad_s2',
-    ]);
+    expect(header).toEqual(CYCLE_CSV_MOTION_COLUMNS);
     const col = (name: string) => header.indexOf(name);
     const data = rows.slice(1);
     expect(data).toHaveLength(361);

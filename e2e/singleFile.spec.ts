@@ -3,8 +3,7 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, test } from '@playwright/test';
 import type { Page } from '@playwright/test';
-import { csvParseRows } from 'd3-dsv';
-import { ORIGIN, waitReady } from './helpers';
+import { ORIGIN, csvRowsOf, waitReady } from './helpers';
 
 // The offline file from `npm run build:single` (npm run test:e2e builds it first).
 const SINGLE = join(dirname(fileURLToPath(import.meta.url)), '..', 'dist-single', 'fourbar-lab.html');
@@ -19,7 +18,7 @@ async function changeR3AndExportCsv(page: Page): Promise<string[][]> {
     page.getByRole('button', { name: 'Export cycle CSV' }).click(),
   ]);
   expect(d.suggestedFilename()).toBe('fourbar_6-2-4.5-5_open_cycle_n360.csv');
-  const rows = csvParseRows(readFileSync(await d.path(), 'utf8')).filter((r) => r.length > 1);
+  const rows = await csvRowsOf(d);
   return rows;
 }
 

@@ -1,9 +1,9 @@
-import '../../shared/ui/NumberControl.css';
-import { useId, useState } from 'react';
 import { parseDecimal } from '../../shared/decimal';
-import { fieldText, truncateText } from '../../shared/format';
+import { truncateText } from '../../shared/format';
 import type { SpatialField } from '../../shared/state/slices/spatialSlice';
 import { SPATIAL_FIELDS, normalizeSpatial, spatialFieldProblem } from '../../shared/state/slices/spatialSlice';
+import type { FieldRead } from '../../shared/ui/NumberControl';
+import { NumberControlView, useFieldDraft } from '../../shared/ui/NumberControl';
 import { ECHO_MAX_CHARS } from '../../shared/ui/validateNumber';
 import type { SpatialMessages } from './spatialMessages';
 
@@ -33,98 +33,38 @@ export function rangeText(field: SpatialField): string {
 }
 
 /**
- * A slider and a field for one spatial value. A typed value outside the field's range or not a number shows a
- * message naming the field and the text and keeps the last valid value; Escape restores it.
+ * A slider and a field for one spatial value (the shared NumberControlView and useFieldDraft). A typed value outside
+ * the field's range or not a number shows a message naming the field and the text and keeps the last valid value;
+ * Escape restores it.
  */
 export function SpatialFieldControl({ field, value, slider, onCommit, sm, decimals }: SpatialFieldControlProps) {
-  const id = useId();
-  const shown = fieldText(value, decimals);
-  const [draft, setDraft] = useState(shown);
-  const [error, setError] = useState<string | null>(null);
-  const [focused, setFocused] = useState(false);
-  const [shownValue, setShownValue] = useState(value);
-  if (value !== shownValue) {
-    // Follow outside changes (slider, preset, Play) unless the person is typing.
-    setShownValue(value);
-    if (!focused) {
-      setDraft(shown);
-      setError(null);
-    }
-  }
   const label = sm.fieldNames[field];
   const { angle, unit } = SPATIAL_FIELDS[field];
-  const onText = (text: string) => {
-    setDraft(text);
+  const read = (text: string): FieldRead => {
     const echo = truncateText(text.trim(), ECHO_MAX_CHARS);
     const x = parseDecimal(text);
-    if (Number.isNaN(x)) {
-      setError(sm.notNumber(label, echo));
-      return;
-    }
+    if (Number.isNaN(x)) return { ok: false, message: sm.notNumber(label, echo) };
     const v = normalizeSpatial(field, x);
-    if (spatialFieldProblem(field, v) !== null) {
-      setError(sm.fieldError(label, echo, rangeText(field)));
-      return;
-    }
-    setError(null);
-    if (v !== value) onCommit(v);
+    if (spatialFieldProblem(field, v) !== null)
+      return { ok: false, message: sm.fieldError(label, echo, rangeText(field)) };
+    return { ok: true, value: v };
   };
-  const sliderValue = Math.min(slider.max, Math.max(slider.min, value));
+  const draft = useFieldDraft(value, decimals, true, read, onCommit);
   return (
-    <div className={`numctl${error ? ' numctl-invalid' : ''}`}>
-      <div className="numctl-row">
-        <label className="numctl-label" htmlFor={`${id}-field`}>
-          {label}
-        </label>
-        <span className="numctl-field-wrap">
-          <input
-            id={`${id}-field`}
-            className="numctl-field"
-            type="text"
-            inputMode="decimal"
-            autoComplete="off"
-            spellCheck={false}
-            value={draft}
-            aria-invalid={error ? true : undefined}
-            aria-describedby={error ? `${id}-error` : undefined}
-            onFocus={() => setFocused(true)}
-            onBlur={() => {
-              setFocused(false);
-              if (!error) setDraft(shown);
-            }}
-            onChange={(e) => onText(e.target.value)}
-            onKeyDown={(e) => {
-              if (e.key === 'Escape') {
-                setDraft(shown);
-                setError(null);
-              }
-            }}
-          />
-          <span className="numctl-unit" aria-hidden="true">
-            {angle ? '°' : (unit ?? '')}
-          </span>
-        </span>
-      </div>
-      <input
-        className="numctl-slider"
-        type="range"
-        aria-label={label}
-        min={slider.min}
-        max={slider.max}
-        step={slider.step}
-        value={sliderValue}
-        onChange={(e) => {
-          const v = normalizeSpatial(field, Number(e.target.value));
+    <NumberControlView
+      label={label}
+      field={draft}
+      unit={angle ? '°' : (unit ?? '')}
+      slider={{
+        ...slider,
+        value,
+        onSlide: (x) => {
+          const v = normalizeSpatial(field, x);
           if (spatialFieldProblem(field, v) !== null) return;
-          setError(null);
+          draft.clearError();
           onCommit(v);
-        }}
-      />
-      {error ? (
-        <p id={`${id}-error`} className="numctl-error" role="alert">
-          {error}
-        </p>
-      ) : null}
-    </div>
+        },
+      }}
+    />
   );
 }

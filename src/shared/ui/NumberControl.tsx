@@ -1,5 +1,6 @@
 import './NumberControl.css';
 import { useEffect, useId, useRef, useState } from 'react';
+import type { KeyboardEvent, RefObject } from 'react';
 import type { FieldName } from './validateNumber';
 import { ECHO_MAX_CHARS, parseField } from './validateNumber';
 import { fieldText, formatNumber, truncateText } from '../format';
@@ -48,8 +49,11 @@ function LockMark() {
   );
 }
 
+/** What a field's text reads as: a valid value, or the message naming the field, the text and the problem. */
+export type FieldRead = { ok: true; value: number } | { ok: false; message: string };
+
 /** The field's text as typed, its error, and what the field's events do with them. */
-interface FieldDraft {
+export interface FieldDraft {
   draft: string;
   error: string | null;
   onText: (text: string) => void;
@@ -61,17 +65,16 @@ interface FieldDraft {
 }
 
 /**
- * The text of a number field: it follows the value unless the person is typing, commits each valid text, and
- * for a bad one keeps the last valid value and names the problem.
+ * The text of a number field: it follows the value unless the person is typing, commits each text that reads
+ * (read) as a new value, and for a bad one keeps the last valid value and shows read's message.
  */
-function useFieldDraft(
-  field: FieldName,
+export function useFieldDraft(
   value: number,
   decimals: number | undefined,
   editable: boolean,
+  read: (text: string) => FieldRead,
   onCommit: (value: number) => void,
 ): FieldDraft {
-  const t = useMessages();
   const shown = fieldText(value, decimals);
   const [draft, setDraft] = useState(shown);
   const [error, setError] = useState<string | null>(null);
@@ -92,16 +95,11 @@ function useFieldDraft(
 
   const onText = (text: string) => {
     setDraft(text);
-    const r = parseField(field, text);
+    const r = read(text);
     if (r.ok) {
       setError(null);
       if (r.value !== value) onCommit(r.value);
-    } else {
-      const e = r.error;
-      setError(
-        `${t.fieldError(e, { raw: truncateText(text.trim(), ECHO_MAX_CHARS), min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
-      );
-    }
+    } else setError(r.message);
   };
   return {
     draft,
@@ -149,6 +147,99 @@ function NumberLabel({ htmlFor, label, locked }: { htmlFor: string; label: strin
   );
 }
 
+/** Props of NumberControlView: the label, the field's draft, the unit and the slider (its value and what a move does). */
+export interface NumberControlViewProps {
+  label: string;
+  field: FieldDraft;
+  /** Unit text after the field ('°'); absent: no unit box ('' keeps an empty one, so fields line up). */
+  unit?: string;
+  disabled?: boolean;
+  locked?: boolean;
+  /** The slider element (NumberControl listens for its release). */
+  sliderRef?: RefObject<HTMLInputElement | null>;
+  slider: {
+    min: number;
+    max: number;
+    step: number;
+    value: number;
+    onKeyDown?: (e: KeyboardEvent<HTMLInputElement>) => void;
+    /** The slider moved to a value (a number, maybe NaN). */
+    onSlide: (value: number) => void;
+  };
+}
+
+/**
+ * The look of a number control (NumberControl, the spatial page's fields): the label and the text field with its
+ * unit on one row, the slider under them (its value clamped to its range), and the field's error (role alert).
+ */
+export function NumberControlView({
+  label,
+  field,
+  unit,
+  disabled = false,
+  locked = false,
+  sliderRef,
+  slider,
+}: NumberControlViewProps) {
+  const id = useId();
+  const { draft, error } = field;
+  return (
+    <div className={`numctl${error ? ' numctl-invalid' : ''}${locked ? ' is-locked' : ''}`}>
+      <div className="numctl-row">
+        <NumberLabel htmlFor={`${id}-field`} label={label} locked={locked} />
+        <span className="numctl-field-wrap">
+          <input
+            id={`${id}-field`}
+            className="numctl-field"
+            type="text"
+            inputMode="decimal"
+            autoComplete="off"
+            spellCheck={false}
+            value={draft}
+            disabled={disabled}
+            readOnly={locked}
+            aria-readonly={locked ? true : undefined}
+            aria-disabled={locked ? true : undefined}
+            aria-invalid={error ? true : undefined}
+            aria-describedby={error ? `${id}-error` : undefined}
+            onFocus={field.onFocus}
+            onBlur={field.onBlur}
+            onChange={(e) => {
+              if (!locked) field.onText(e.target.value);
+            }}
+            onKeyDown={(e) => {
+              if (e.key === 'Escape') field.onEscape();
+            }}
+          />
+          {unit !== undefined ? (
+            <span className="numctl-unit" aria-hidden="true">
+              {unit}
+            </span>
+          ) : null}
+        </span>
+      </div>
+      <input
+        ref={sliderRef}
+        className="numctl-slider"
+        type="range"
+        aria-label={label}
+        min={slider.min}
+        max={slider.max}
+        step={slider.step}
+        value={Math.min(slider.max, Math.max(slider.min, slider.value))}
+        disabled={disabled || locked}
+        onKeyDown={slider.onKeyDown}
+        onChange={(e) => slider.onSlide(Number(e.target.value))}
+      />
+      {error ? (
+        <p id={`${id}-error`} className="numctl-error" role="alert">
+          {error}
+        </p>
+      ) : null}
+    </div>
+  );
+}
+
 /**
  * A slider and a numeric field for one value. Typing a bad value (empty, text, zero, negative, too large)
  * shows an inline message naming the field and the value (cut to ECHO_MAX_CHARS) and keeps the last valid
@@ -169,82 +260,46 @@ export function NumberControl({
   drag = null,
 }: NumberControlProps) {
   const t = useMessages();
-  const id = useId();
   const sliderRef = useSliderRelease(drag);
-  const { draft, error, onText, onFocus, onBlur, onEscape, clearError } = useFieldDraft(
-    field,
-    value,
-    decimals,
-    !locked && !disabled,
-    onCommit,
-  );
+  const read = (text: string): FieldRead => {
+    const r = parseField(field, text);
+    if (r.ok) return r;
+    const e = r.error;
+    const raw = truncateText(text.trim(), ECHO_MAX_CHARS);
+    return {
+      ok: false,
+      message: `${t.fieldError(e, { raw, min: formatNumber(e.min), max: formatNumber(e.max) })} ${t.keepingLast(formatNumber(value, 10))}`,
+    };
+  };
+  const draft = useFieldDraft(value, decimals, !locked && !disabled, read, onCommit);
   const label = t.fieldLabels[field];
-  const sliderValue = Math.min(max, Math.max(min, value));
   return (
-    <div className={`numctl${error ? ' numctl-invalid' : ''}${locked ? ' is-locked' : ''}`}>
-      <div className="numctl-row">
-        <NumberLabel htmlFor={`${id}-field`} label={label} locked={locked} />
-        <span className="numctl-field-wrap">
-          <input
-            id={`${id}-field`}
-            className="numctl-field"
-            type="text"
-            inputMode="decimal"
-            autoComplete="off"
-            spellCheck={false}
-            value={draft}
-            disabled={disabled}
-            readOnly={locked}
-            aria-readonly={locked ? true : undefined}
-            aria-disabled={locked ? true : undefined}
-            aria-invalid={error ? true : undefined}
-            aria-describedby={error ? `${id}-error` : undefined}
-            onFocus={onFocus}
-            onBlur={onBlur}
-            onChange={(e) => {
-              if (!locked) onText(e.target.value);
-            }}
-            onKeyDown={(e) => {
-              if (e.key === 'Escape') onEscape();
-            }}
-          />
-          {unit ? (
-            <span className="numctl-unit" aria-hidden="true">
-              {unit}
-            </span>
-          ) : null}
-        </span>
-      </div>
-      <input
-        ref={sliderRef}
-        className="numctl-slider"
-        type="range"
-        aria-label={label}
-        min={min}
-        max={max}
-        step={step}
-        value={sliderValue}
-        disabled={disabled || locked}
-        onKeyDown={(e) => {
+    <NumberControlView
+      label={label}
+      field={draft}
+      unit={unit || undefined}
+      disabled={disabled}
+      locked={locked}
+      sliderRef={sliderRef}
+      slider={{
+        min,
+        max,
+        step,
+        value,
+        onKeyDown: (e) => {
           const next = turn ? turnKeyValue(e.key, value, min, max, turn) : null;
           if (next === null) return;
           e.preventDefault();
-          clearError();
+          draft.clearError();
           onCommit(next);
-        }}
-        onChange={(e) => {
-          const v = Number(e.target.value);
+        },
+        onSlide: (v) => {
           if (!Number.isFinite(v)) return;
-          clearError();
+          draft.clearError();
           if (drag) drag.move(v);
           else onCommit(field === 'theta2' || field === 'couplerAngle' || field === 'speed' ? v : Math.max(min, v));
-        }}
-      />
-      {error ? (
-        <p id={`${id}-error`} className="numctl-error" role="alert">
-          {error}
-        </p>
-      ) : null}
-    </div>
+        },
+      }}
+    />
   );
 }

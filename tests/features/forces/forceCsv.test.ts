@@ -5,10 +5,10 @@
  * (tests/oracle/rates.ts) for the torque. The test converts the design from millimetres and builds the uniform
  * bars (m = ρL, I = mL²/12, CG mid-link) itself.
  */
-import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
 import { CSV_FORCE_HEADER, CSV_HEADER, CSV_MOTION_HEADER, cycleToCsv } from '../../../src/shared/csv';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
+import { CYCLE_CSV_FORCE_COLUMNS, csvTable } from '../../shared/csvTable';
 import type { AppState } from '../../../src/shared/state/appState';
 import { effectiveInputMotion } from '../../../src/shared/state/inputMotion';
 import { computeTable } from '../../../src/features/simulator/solve/compute';
@@ -68,28 +68,14 @@ function csvOf(state: AppState, samples = 72) {
     },
   });
   const forces = forceColumnsFor(s)?.(tbl) ?? null;
-  const rows = csvParseRows(cycleToCsv({ ...cycleTableOf(tbl), forces })).filter((r) => r.length > 1);
-  const header = rows[0];
-  const col = (row: string[], name: string) => Number(row[header.indexOf(name)]);
-  return { header, data: rows.slice(1), col };
+  return csvTable(cycleToCsv({ ...cycleTableOf(tbl), forces }));
 }
 
 describe('the cycle CSV with Forces on', () => {
   it('adds torque_Nm, f12x_N … f14y_N after every existing column, at the n samples', () => {
     const { header, data } = csvOf(STATE, 36);
     const without = csvOf({ ...STATE, forces: { ...STATE.forces, enabled: false } }, 36).header;
-    expect(header).toEqual([
-      ...without,
-      'torque_Nm',
-      'f12x_N',
-      'f12y_N',
-      'f32x_N',
-      'f32y_N',
-      'f43x_N',
-      'f43y_N',
-      'f14x_N',
-      'f14y_N',
-    ]);
+    expect(header).toEqual([...without, ...CYCLE_CSV_FORCE_COLUMNS]);
     expect(without).toEqual(expect.arrayContaining([...CSV_HEADER, ...CSV_MOTION_HEADER]));
     expect(CSV_FORCE_HEADER).toEqual(header.slice(-9));
     expect(data).toHaveLength(37);
