@@ -105,6 +105,7 @@ function holdFaces(
     for (let q = 0; q < nf; q++) v += f.a[free[q]] * s[q];
     return v;
   };
+  if (!faces.some((f) => slack(f) < 0)) return;
   const s0 = Float64Array.from(s.subarray(0, nf));
   for (let pass = 0; pass < MAX_FACES; pass++) {
     let worst: { a: Float64Array; c: number } | null = null;

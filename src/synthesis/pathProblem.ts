@@ -203,7 +203,7 @@ export function createPathProblem(t: NormalisedTask, sigma: number, dir: number)
     thetas(x, th);
     return sweepWithinRange(r1, r2, r3, r4, Math.min(th[0], th[n - 1]), Math.max(th[0], th[n - 1]));
   };
-  const faces = t.crank ? (x: Float64Array) => crankFaces(x, L, m) : undefined;
+  const faces = t.crank ? crankFaces(L, m) : undefined;
   return { lsq: { m, k, evaluate, lo, hi, project, feasible, faces }, layout, sigma, dir, thetas, placementOf };
 }
 
@@ -261,20 +261,31 @@ export function projectCrank(x: Float64Array, L: number, lo: number, hi: number)
 
 /**
  * The faces of the cone of full-turning inputs that the lengths x[L .. L+4) lie in (margin included), as linear
- * constraints on all m variables; [] when they lie in neither cone.
+ * constraints on all m variables; [] when they lie in neither cone. Returns a function that reuses its arrays (it is
+ * called at every damping trial of a local solve).
  */
-export function crankFaces(x: Float64Array, L: number, m: number): { a: Float64Array; c: number }[] {
-  const r = [x[L], x[L + 1], x[L + 2], x[L + 3]];
-  const e = 2 * CRANK_MARGIN * (r[0] + r[1] + r[2] + r[3]);
-  for (const cone of CRANK_CONES) {
-    if (!cone.every((a) => a[0] * r[0] + a[1] * r[1] + a[2] * r[2] + a[3] * r[3] > 0)) continue;
-    return cone.map((a) => {
+export function crankFaces(L: number, m: number): (x: Float64Array) => { a: Float64Array; c: number }[] {
+  const faces = CRANK_CONES.map((cone) =>
+    cone.map((a) => {
       const v = new Float64Array(m);
       for (let j = 0; j < 4; j++) v[L + j] = a[j];
-      return { a: v, c: e };
-    });
-  }
-  return [];
+      return { a: v, c: 0 };
+    }),
+  );
+  return (x) => {
+    const r1 = x[L];
+    const r2 = x[L + 1];
+    const r3 = x[L + 2];
+    const r4 = x[L + 3];
+    const e = 2 * CRANK_MARGIN * (r1 + r2 + r3 + r4);
+    for (let k = 0; k < CRANK_CONES.length; k++) {
+      const cone = CRANK_CONES[k];
+      if (!cone.every((a) => a[0] * r1 + a[1] * r2 + a[2] * r3 + a[3] * r4 > 0)) continue;
+      for (const f of faces[k]) f.c = e;
+      return faces[k];
+    }
+    return [];
+  };
 }
 
 /** Projects x[from .. from+count) (each already in [0, cap]) onto { δ ≥ 0, Σδ ≤ cap } (Euclidean), in place. */

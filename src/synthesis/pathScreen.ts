@@ -24,13 +24,18 @@ const POLISHED = 24;
  * distinct answers have been found, so that "up to ten" means ten different linkages where the rounds found them.
  */
 const POLISHED_MAX = 64;
+/** Iteration cap of the first polish of a candidate. */
+const POLISH_ITERATIONS = 300;
 /**
- * Iteration cap of the polishing solve: long, because a fit often lies along a flat valley, and every answer listed
- * should be at its basin's optimum (a solve that converges stops long before it).
+ * Iteration cap of the long polish of the best POLISH_LONG candidates: the best fit often lies along a flat valley
+ * (a solve that converges stops long before the cap).
  */
-const POLISH_ITERATIONS = 4000;
-/** Fresh starts of the polishing solve from where it stalled, at most. */
-const POLISH_RESTARTS = 8;
+const POLISH_LONG_ITERATIONS = 4000;
+const POLISH_LONG = 4;
+/** Iteration cap of the polish every other answer listed gets, so that each is at its basin's optimum. */
+const POLISH_ANSWER_ITERATIONS = 1500;
+/** Fresh starts of the long polish from where it stalled, at most (along a flat valley the damping grows until the steps stall). */
+const POLISH_RESTARTS = 1;
 /**
  * Two designs whose pivots, links and coupler point all agree to this share of the target size are one linkage: the
  * flat valleys of an overdetermined fit leave copies that differ far above rounding (issue 34 item 2).
@@ -190,41 +195,47 @@ export function screenCandidates(
   const all = lists.flat().filter((c) => Number.isFinite(c.f));
   all.sort((a, b) => a.f - b.f || a.sigma - b.sigma || a.dir - b.dir);
   const m = pathLayout(t).m;
-  const polished: PathCandidate[] = [];
-  const out: PathSolution[] = [];
-  const outKeys: DesignKey[] = [];
-  for (const c of all) {
-    if (polished.length >= POLISHED_MAX) break;
-    if (polished.length >= POLISHED && out.length >= MAX_SOLUTIONS) break;
-    if (c.x.length !== m) continue;
-    // Skip near-copies before spending a polish on them.
-    if (polished.some((p) => p.sigma === c.sigma && p.x.every((v, i) => Math.abs(v - c.x[i]) <= 1e-6))) continue;
-    if (polished.length >= POLISHED && outKeys.some((k) => sameKey(k, designKey(t, c)))) continue;
+  const polish = (c: PathCandidate, long: boolean, maxIterations: number): PathCandidate => {
     const problem = createPathProblem(t, c.sigma, c.dir);
-    const options = { maxIterations: POLISH_ITERATIONS, fTarget: EXACT_F, deadline, signal };
+    const options = { maxIterations, fTarget: EXACT_F, deadline, signal };
     let r = levenbergMarquardt(problem.lsq, Float64Array.from(c.x), options);
-    // Restarts with fresh damping while they gain: along a flat valley the damping grows until the steps stall.
-    for (let restart = 0; restart < POLISH_RESTARTS; restart++) {
+    for (let restart = 0; long && restart < POLISH_RESTARTS; restart++) {
       const again = levenbergMarquardt(problem.lsq, r.x, options);
       if (!(again.f < r.f * (1 - 1e-12))) break;
       r = again;
     }
-    const p = r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c;
+    return r.f <= c.f ? { ...c, x: Array.from(r.x), f: r.f } : c;
+  };
+  const polished: PathCandidate[] = [];
+  let answers: { sol: PathSolution; c: PathCandidate; key: DesignKey; long: boolean }[] = [];
+  /** Adds an answer, or keeps the better of two that are one linkage. */
+  const offer = (c: PathCandidate, long: boolean, list: typeof answers) => {
+    const sol = solutionOf(t, task, c);
+    if (!sol || !Number.isFinite(sol.error)) return;
+    const same = list.findIndex((o) => sameDesign(o.sol.design, sol.design, t.scale));
+    const entry = { sol, c, key: designKey(t, c), long };
+    if (same < 0) list.push(entry);
+    else if (sol.error < list[same].sol.error) list[same] = entry;
+  };
+  for (const c of all) {
+    if (polished.length >= POLISHED_MAX) break;
+    if (polished.length >= POLISHED && answers.length >= MAX_SOLUTIONS) break;
+    if (c.x.length !== m) continue;
+    // Skip near-copies before spending a polish on them.
+    if (polished.some((p) => p.sigma === c.sigma && p.x.every((v, i) => Math.abs(v - c.x[i]) <= 1e-6))) continue;
+    if (polished.length >= POLISHED && answers.some((a) => sameKey(a.key, designKey(t, c)))) continue;
+    const long = polished.length < POLISH_LONG;
+    const p = polish(c, long, long ? POLISH_LONG_ITERATIONS : POLISH_ITERATIONS);
     polished.push(p);
-    const sol = solutionOf(t, task, p);
-    if (!sol || !Number.isFinite(sol.error)) continue;
-    const same = out.findIndex((o) => sameDesign(o.design, sol.design, t.scale));
-    if (same >= 0) {
-      // One linkage: keep the better of the two.
-      if (sol.error < out[same].error) {
-        out[same] = sol;
-        outKeys[same] = designKey(t, p);
-      }
-      continue;
-    }
-    out.push(sol);
-    outKeys.push(designKey(t, p));
+    offer(p, long, answers);
   }
+  // Every answer listed gets a longer polish (the best ten only: the rest are not shown).
+  answers.sort((a, b) => a.sol.error - b.sol.error);
+  const final: typeof answers = [];
+  for (const a of answers.slice(0, MAX_SOLUTIONS))
+    offer(a.long ? a.c : polish(a.c, true, POLISH_ANSWER_ITERATIONS), true, final);
+  answers = final;
+  const out = answers.map((a) => a.sol);
   out.sort((a, b) => a.error - b.error);
   return out.slice(0, MAX_SOLUTIONS);
 }

@@ -35,7 +35,10 @@ export interface PathSynthesisOptions {
    * can merge them into answers (mergePathCandidates) instead of losing the work.
    */
   onProgress?: (p: PathProgress) => void;
-  /** Most rounds of the global stage (default 400); a run that ends by this or by an exact fit is reproducible. */
+  /**
+   * Most rounds of the global stage (default: no cap, the search goes on while the budget lasts); a run that ends by
+   * this or by an exact fit is reproducible, one that ends by the budget is a prefix of the same rounds.
+   */
   rounds?: number;
 }
 
@@ -71,8 +74,8 @@ export const MAX_SEED = 2 ** 32 - 1;
 
 /** Default wall-clock budget (ms). */
 export const DEFAULT_BUDGET_MS = 3000;
-/** Default cap on rounds. */
-export const DEFAULT_ROUNDS = 400;
+/** Default cap on rounds: none, so that a run keeps searching while its budget lasts (issue 34 item 6). */
+export const DEFAULT_ROUNDS = Infinity;
 /** Rounds run before an exact fit may end the search (so a few exact designs can be offered). */
 const MIN_ROUNDS_AFTER_EXACT = 2;
 /** Candidates the merge keeps from the rounds it counts (best first). */
@@ -263,7 +266,7 @@ export function mergePathCandidates(
 /**
  * Path generation: up to 10 distinct four-bars whose coupler point passes nearest the targets (Σd², recomputed
  * from each design), best first; [] when nothing feasible was found. Options: seed (default 1), budgetMs
- * (default 3000), signal, onProgress, rounds (default 400). Throws an Error naming the value for a bad task or options.
+ * (default 3000), signal, onProgress, rounds (default: no cap, the budget decides). Throws an Error naming the value for a bad task or options.
  */
 export async function pathSynthesis(task: PathTask, options: PathSynthesisOptions = {}): Promise<PathSolution[]> {
   if (typeof options !== 'object' || options === null) {

@@ -29,6 +29,8 @@ export interface BenchmarkCase {
   /** True when an exact solution is known to exist in the bounds (then f must reach 1e-20 of size²). */
   exact: boolean;
   published: { f: number | null; source: string; note: string };
+  /** Rounds the unit test (pathBenchmarks.test.ts) runs, when fewer than its default keep it quick. */
+  testRounds?: number;
 }
 
 const deg = (d: number) => (d * Math.PI) / 180;
@@ -222,6 +224,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: false,
     published: { f: null, source: 'not a literature case', note: 'the figure-eight of issue 34 item 2' },
+    testRounds: 4,
   },
   {
     id: 'exact-free-9',
