@@ -1,6 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_STATE, reducer } from '../../../src/shared/state/appState';
+import type { Action } from '../../../src/shared/state/appState';
 import {
   DEFAULT_SYN_PATH,
   MAX_TARGETS,
@@ -83,7 +84,7 @@ describe('the chosen candidate (issue 34, item 13)', () => {
     expect(new URLSearchParams(serializeState(chosen)).get('cd')).toBe('4');
     expect(parseUrl('cd=4', DEFAULT_STATE, quiet).state.synPath.chosen).toBe(4);
     expect(parseUrl('cd=64', DEFAULT_STATE, quiet).ignored.map((i) => i.key)).toEqual(['cd']);
-    const edits = [
+    const edits: Action[] = [
       { type: 'setTargets', targets: [{ x: 1, y: 2 }] },
       { type: 'removeTarget', index: 0 },
       { type: 'setTiming', timing: 'step' },
@@ -92,7 +93,7 @@ describe('the chosen candidate (issue 34, item 13)', () => {
       { type: 'setPathBounds', bounds: { boundLength: 5 } },
       { type: 'setPathInput', input: 'any' },
       { type: 'setPathSeed', seed: 7 },
-    ] as const;
+    ];
     const withTarget = reducer(chosen, { type: 'setTargets', targets: [{ x: 1, y: 2 }] });
     const again = reducer(withTarget, { type: 'chooseCandidate', index: 4 });
     for (const edit of edits) expect(reducer(again, edit).synPath.chosen, edit.type).toBe(0);
