@@ -240,6 +240,10 @@ export function pointLabelPlacements(
       ] as const)
         obstacles.push({ kind: 'segment', a, b, halfWidth: shown ? 5 : 2, weight });
       for (const q of [O2, A, B, O4, P]) box(q, 7, weight * 2);
+      // The ground symbols under the fixed pivots (drawn with the shown pose).
+      if (shown)
+        for (const q of [O2, O4])
+          obstacles.push({ kind: 'rect', rect: { x: q.x - 10, y: q.y, width: 20, height: 16 }, weight: 4 });
     });
   }
   for (const pose of pic.poses) {
