@@ -15,6 +15,9 @@ import { emptyBounds, extendBounds } from '../../../shared/canvas/view';
 import type { PivotChoice } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionOutcome, ThreePoseOutcome } from './motionSolve';
 import type { Px } from '../../../shared/canvas/rect';
+import type { LabelPlacement, Obstacle } from '../../../shared/canvas/labelPlacement';
+import { candidatesAround, placeLabels } from '../../../shared/canvas/labelPlacement';
+import { placedJoints } from '../../../synthesis';
 import { drawBackground, drawFourBar, drawLabel, drawMarker, drawPolyline, drawWorldCircle, px } from '../drawPlane';
 
 /** Everything the Motion canvas draws. */
@@ -182,22 +185,114 @@ function drawConstruction(ctx: DrawContext, v: ViewTransform, construction: Thre
   }
 }
 
-/** A dyad: its centre (fixed pivot) and its circle point at pose 1, joined; both labelled when a label is given. */
-function drawDyad(
-  ctx: DrawContext,
-  v: ViewTransform,
-  pose1: Pose,
-  d: BurmesterPair,
-  shape: 'dot' | 'diamond',
-  label?: string,
-): void {
+/** A dyad: its centre (fixed pivot) and its circle point at pose 1, joined (numbered later, over the linkage). */
+function drawDyad(ctx: DrawContext, v: ViewTransform, pose1: Pose, d: BurmesterPair, shape: 'dot' | 'diamond'): void {
   const circle = toPlane(pose1, d.circle);
   drawPolyline(ctx, v, [d.center, circle], THEME.text, 1, [3, 3]);
   drawMarker(ctx, v, d.center, shape, CENTRE_COLOR, 5);
   drawMarker(ctx, v, circle, shape === 'dot' ? 'ring' : 'hollowDiamond', CIRCLE_COLOR, 5);
-  if (label) {
-    drawLabel(ctx, v, d.center, label);
-    drawLabel(ctx, v, circle, label);
+}
+
+/** The numbered dyads (five poses: the Burmester points; six or more: the best-fit dyads), as the list names them. */
+function numberedDyads(pic: MotionPicture): BurmesterPair[] {
+  const o = pic.outcome;
+  return o.count === 5 ? o.points : o.count === 6 ? o.dyads : [];
+}
+
+/** Label text height (CSS pixels) for the placer: the canvas font's size and a pixel of halo each side. */
+const POINT_LABEL_HEIGHT = 16;
+/** Eight directions 45° apart, up-right first (where drawLabel used to put them), turning counter-clockwise. */
+const POINT_LABEL_TURNS = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => (-k * TWO_PI) / 8);
+const POINT_LABEL_START = { x: Math.SQRT1_2, y: -Math.SQRT1_2 };
+
+/**
+ * Where the Burmester points' numbers go (CSS pixels): beside each centre and circle point, clear of the other
+ * numbers and, as far as a spot allows, of the linkage drawn (its links and joints, ghosts too), the poses and the
+ * dyads' markers (the shared label placer). A number with no free spot in the view is dropped. Ids `c1`, `m1`, …:
+ * centre and circle point of dyad 1.
+ */
+export function pointLabelPlacements(
+  ctx: Pick<DrawContext, 'measureText' | 'font'>,
+  pic: MotionPicture,
+  v: ViewTransform,
+): { placements: LabelPlacement<string>[]; texts: Map<string, string> } {
+  const dyads = numberedDyads(pic);
+  const texts = new Map<string, string>();
+  if (dyads.length === 0) return { placements: [], texts };
+  ctx.font = THEME.font;
+  const obstacles: Obstacle[] = [];
+  const box = (p: Px, r: number, weight: number) =>
+    obstacles.push({ kind: 'rect', rect: { x: p.x - r, y: p.y - r, width: 2 * r, height: 2 * r }, weight });
+  const chosen = pic.outcome.chosen;
+  if (chosen) {
+    chosen.theta2.forEach((t, i) => {
+      const j = placedJoints(chosen.design, t);
+      if (!j) return;
+      const shown = i === Math.min(pic.shownPose, chosen.theta2.length - 1);
+      const [O2, A, B, O4, P] = [j.O2, j.A, j.B, j.O4, j.P].map((q) => px(v, q));
+      const weight = shown ? 4 : 1;
+      for (const [a, b] of [
+        [O2, A],
+        [A, B],
+        [B, O4],
+        [A, P],
+        [B, P],
+      ] as const)
+        obstacles.push({ kind: 'segment', a, b, halfWidth: shown ? 5 : 2, weight });
+      for (const q of [O2, A, B, O4, P]) box(q, 7, weight * 2);
+      // The ground symbols under the fixed pivots (drawn with the shown pose).
+      if (shown)
+        for (const q of [O2, O4])
+          obstacles.push({ kind: 'rect', rect: { x: q.x - 10, y: q.y, width: 20, height: 16 }, weight: 4 });
+    });
+  }
+  for (const pose of pic.poses) {
+    const p = px(v, pose);
+    box(p, 8, 3);
+    obstacles.push({ kind: 'segment', a: p, b: turnHandlePx(v, pose), halfWidth: 3, weight: 2 });
+  }
+  const requests = dyads.flatMap((d, i) => {
+    const text = String(i + 1);
+    const width = ctx.measureText(text).width + 4;
+    return (
+      [
+        ['c', d.center],
+        ['m', toPlane(pic.poses[0], d.circle)],
+      ] as const
+    ).map(([kind, at]) => {
+      const p = px(v, at);
+      box(p, 6, 3);
+      const id = `${kind}${i + 1}`;
+      texts.set(id, text);
+      const candidates = candidatesAround(
+        p,
+        POINT_LABEL_START,
+        POINT_LABEL_TURNS,
+        [2, 8, 16],
+        5,
+        width,
+        POINT_LABEL_HEIGHT,
+      );
+      return { id, width, height: POINT_LABEL_HEIGHT, candidates };
+    });
+  });
+  const bounds = { x: 0, y: 0, width: v.width, height: v.height };
+  return { placements: placeLabels(requests, bounds, [], obstacles).placed, texts };
+}
+
+/** The Burmester points' numbers, over everything else (pointLabelPlacements). */
+function drawPointLabels(ctx: DrawContext, v: ViewTransform, pic: MotionPicture): void {
+  const { placements, texts } = pointLabelPlacements(ctx, pic, v);
+  ctx.font = THEME.font;
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  ctx.lineWidth = 3;
+  for (const l of placements) {
+    const text = texts.get(l.id) ?? '';
+    ctx.strokeStyle = THEME.labelHalo;
+    ctx.strokeText(text, l.centre.x, l.centre.y);
+    ctx.fillStyle = THEME.text;
+    ctx.fillText(text, l.centre.x, l.centre.y);
   }
 }
 
@@ -248,9 +343,8 @@ function drawMethod(ctx: DrawContext, v: ViewTransform, pic: MotionPicture): voi
     for (const d of o.dyads) drawDyad(ctx, v, pic.poses[0], d, 'dot');
     if (pic.cursor) drawMarker(ctx, v, pic.cursor.center, 'ring', THEME.text, 8);
   }
-  // Numbered as the four-bar list names them ("points 1 + 3").
-  if (o.count === 5) o.points.forEach((d, i) => drawDyad(ctx, v, pic.poses[0], d, 'diamond', String(i + 1)));
-  if (o.count === 6) o.dyads.forEach((d, i) => drawDyad(ctx, v, pic.poses[0], d, 'diamond', String(i + 1)));
+  // Numbered as the four-bar list names them ("points 1 + 3"), over the linkage (drawPointLabels).
+  for (const d of numberedDyads(pic)) drawDyad(ctx, v, pic.poses[0], d, 'diamond');
   if (o.count === 2 && o.pole) {
     drawWorldCircle(ctx, v, o.pole, o.rocker, THEME.reference, [2, 3]);
     drawMarker(ctx, v, o.pole, 'cross', CONSTRUCTION_COLOR, 5);
@@ -299,5 +393,6 @@ export function drawMotion(ctx: DrawContext, pic: MotionPicture, v: ViewTransfor
   }
   pivotPoints(pic).forEach((p) => drawMarker(ctx, v, p, 'ring', THEME.text, 7));
   drawPoses(ctx, v, pic);
+  drawPointLabels(ctx, v, pic);
   if (pic.outcome.count === 4) drawLegend(ctx, pic.legend);
 }

@@ -1,13 +1,19 @@
 import { describe, expect, it } from 'vitest';
 import type { MotionPicture } from '../../../../src/features/synthesis/motion/motionPicture';
-import { drawMotion, motionBounds } from '../../../../src/features/synthesis/motion/motionPicture';
+import {
+  drawMotion,
+  motionBounds,
+  pointLabelPlacements,
+} from '../../../../src/features/synthesis/motion/motionPicture';
 import { solveMotion, toPose } from '../../../../src/features/synthesis/motion/motionSolve';
 import { DEFAULT_POSES_FIVE, DEFAULT_SYN_MOTION } from '../../../../src/shared/state/slices/synMotionSlice';
 import type { Bounds } from '../../../../src/shared/canvas/view';
 import { fitView } from '../../../../src/shared/canvas/view';
 import type { DrawContext } from '../../../../src/shared/canvas/drawContext';
 import type { Point } from '../../../../src/solver';
-import { burmesterCurves, burmesterPoints, toPlane } from '../../../../src/synthesis';
+import { burmesterCurves, burmesterPoints, placedJoints, toPlane } from '../../../../src/synthesis';
+import { segmentHitsBox } from '../../../../src/shared/canvas/rect';
+import { toScreenX, toScreenY } from '../../../../src/shared/canvas/view';
 import { RecordingContext } from '../../../shared/linkage/fixtures';
 
 function pictureOf(count: 4 | 5): MotionPicture {
@@ -76,8 +82,82 @@ describe('drawMotion', () => {
     const v = fitView(motionBounds(pic), 800, 500, { zoom: 1, panX: 0, panY: 0 });
     drawMotion(ctx as unknown as DrawContext, pic, v);
     const texts = ctx.calls.filter((k) => k.op === 'fillText').map((k) => k.text);
-    // Each number twice (centre point and circle point); pose numbers 1 to 5 once each.
-    for (const n of ['1', '2', '3', '4']) expect(texts.filter((t) => t === n)).toHaveLength(3);
+    // Each number twice (centre point and circle point) where the point is in view; pose numbers 1 to 5 once each.
+    const onCanvas = (p: Point) => {
+      const x = toScreenX(v, p.x);
+      const y = toScreenY(v, p.y);
+      return x >= 0 && x <= 800 && y >= 0 && y <= 500;
+    };
+    const o = pic.outcome;
+    ['1', '2', '3', '4'].forEach((n, i) => {
+      const d = o.points[i];
+      const shown = [d.center, toPlane(pic.poses[0], d.circle)].filter(onCanvas).length;
+      expect(texts.filter((t) => t === n)).toHaveLength(1 + shown);
+    });
     expect(texts.filter((t) => t === '5')).toHaveLength(1);
   });
+
+  it('numbers the Burmester points over the linkage, not under it (issue 34)', () => {
+    const pic = pictureOf(5);
+    if (pic.outcome.count !== 5 || !pic.outcome.chosen) throw new Error('five poses, a four-bar');
+    const ctx = new RecordingContext();
+    const v = fitView(motionBounds(pic), 800, 500, { zoom: 1, panX: 0, panY: 0 });
+    drawMotion(ctx as unknown as DrawContext, pic, v);
+    // The pose numbers are drawn after the linkage; every Burmester number comes after all of them.
+    const texts = ctx.calls.map((k, i) => ({ ...k, i })).filter((k) => k.op === 'fillText');
+    const lastPose = texts.filter((k) => k.text === '5')[0].i;
+    const points = texts.filter((k) => k.i > lastPose);
+    // Every number (but those of a point out of view: the far one, 540 units away) and none before.
+    expect(points.length).toBeGreaterThanOrEqual(2 * pic.outcome.points.length - 2);
+    expect(texts.filter((k) => k.i < lastPose && /^[1-4]$/.test(k.text ?? '')).length).toBe(4);
+  });
+
+  for (const [w, h] of [
+    [800, 500],
+    [360, 300],
+  ] as const) {
+    it(`places the Burmester numbers off the linkage shown and apart, at ${w}×${h}`, () => {
+      const pic = pictureOf(5);
+      if (pic.outcome.count !== 5 || !pic.outcome.chosen) throw new Error('five poses, a four-bar');
+      const ctx = new RecordingContext();
+      const v = fitView(motionBounds(pic), w, h, { zoom: 1, panX: 0, panY: 0 });
+      const { placements } = pointLabelPlacements(ctx as unknown as DrawContext, pic, v);
+      expect(placements.length).toBeGreaterThanOrEqual(6);
+      // The linkage drawn solid, in screen pixels, computed here from the design (not the placer's obstacles).
+      const c = pic.outcome.chosen;
+      const j = placedJoints(c.design, c.theta2[0])!;
+      const s = (p: Point) => ({ x: toScreenX(v, p.x), y: toScreenY(v, p.y) });
+      const links = [
+        [j.O2, j.A],
+        [j.A, j.B],
+        [j.B, j.O4],
+        [j.A, j.P],
+        [j.B, j.P],
+      ].map(([a, b]) => [s(a), s(b)] as const);
+      for (const l of placements) {
+        for (const [a, b] of links) {
+          // The link's line widened by 3 px each side: the box grown by 3 px.
+          const { x, y, width, height } = l.box;
+          expect(segmentHitsBox(a.x, a.y, b.x, b.y, x - 3, y - 3, x + width + 3, y + height + 3), l.id).toBe(false);
+        }
+        for (const q of [j.O2, j.A, j.B, j.O4, j.P].map(s)) {
+          const inside =
+            q.x > l.box.x - 5 &&
+            q.x < l.box.x + l.box.width + 5 &&
+            q.y > l.box.y - 5 &&
+            q.y < l.box.y + l.box.height + 5;
+          expect(inside, l.id).toBe(false);
+        }
+        for (const o of placements) {
+          if (o === l) continue;
+          const overlap =
+            l.box.x < o.box.x + o.box.width &&
+            o.box.x < l.box.x + l.box.width &&
+            l.box.y < o.box.y + o.box.height &&
+            o.box.y < l.box.y + l.box.height;
+          expect(overlap, `${l.id} ${o.id}`).toBe(false);
+        }
+      }
+    });
+  }
 });
