@@ -2,6 +2,9 @@ import type { Locator, Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
 import { artifact, waitReady } from './helpers';
 
+/** The marker line's colour (the theme's chart marker), as the screen shows it. */
+const MARKER_COLOR = '#e2590c';
+
 /** The number of marker dots a live chart shows (its marker box's data-dots). */
 async function markerDots(chart: Locator): Promise<number> {
   return chart.evaluate((svg) => {
@@ -10,9 +13,69 @@ async function markerDots(chart: Locator): Promise<number> {
   });
 }
 
-/** For each marker dot of a chart: its distance (px) to the solid path of its own colour at the dot's x, and to the nearest other path. */
+/**
+ * The chart's box as the screen shows it: an element screenshot (what the compositor drew, marker layers included)
+ * decoded in the page, sampled at CSS-pixel points of the box: each point's [r, g, b].
+ */
+async function screenPixels(chart: Locator, points: Array<[number, number]>): Promise<Array<[number, number, number]>> {
+  const png = await chart.locator('xpath=..').screenshot();
+  return chart.evaluate(
+    async (svg: SVGSVGElement, { b64, at }: { b64: string; at: Array<[number, number]> }) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const canvas = document.createElement('canvas');
+      canvas.width = img.naturalWidth;
+      canvas.height = img.naturalHeight;
+      const ctx = canvas.getContext('2d')!;
+      ctx.drawImage(img, 0, 0);
+      const k = img.naturalWidth / svg.parentElement!.getBoundingClientRect().width;
+      return at.map(([x, y]) => {
+        const [r, g, b] = ctx.getImageData(Math.floor(x * k), Math.floor(y * k), 1, 1).data;
+        return [r, g, b] as [number, number, number];
+      });
+    },
+    { b64: png.toString('base64'), at: points },
+  );
+}
+
+/** A rows of the chart's box as the screen shows it (element screenshot, CSS-pixel y): the x (CSS px) of every pixel within 40 of rgb. */
+async function screenRowMatches(chart: Locator, y: number, rgb: [number, number, number]): Promise<number[]> {
+  const png = await chart.locator('xpath=..').screenshot();
+  return chart.evaluate(
+    async (svg: SVGSVGElement, { b64, y, rgb }: { b64: string; y: number; rgb: [number, number, number] }) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const canvas = document.createElement('canvas');
+      canvas.width = img.naturalWidth;
+      canvas.height = img.naturalHeight;
+      const ctx = canvas.getContext('2d')!;
+      ctx.drawImage(img, 0, 0);
+      const k = img.naturalWidth / svg.parentElement!.getBoundingClientRect().width;
+      const row = ctx.getImageData(0, Math.round(y * k), canvas.width, 1).data;
+      const xs: number[] = [];
+      for (let i = 0; i < canvas.width; i++) {
+        const d = Math.abs(row[4 * i] - rgb[0]) + Math.abs(row[4 * i + 1] - rgb[1]) + Math.abs(row[4 * i + 2] - rgb[2]);
+        if (d < 40) xs.push((i + 0.5) / k);
+      }
+      return xs;
+    },
+    { b64: png.toString('base64'), y, rgb },
+  );
+}
+
+/** '#rrggbb' as [r, g, b]. */
+function rgbOf(color: string): [number, number, number] {
+  return [1, 3, 5].map((i) => parseInt(color.slice(i, i + 2), 16)) as [number, number, number];
+}
+
+/**
+ * For each marker dot of a chart: its distance (px) to the solid path of its own colour at the dot's x, and to the
+ * nearest other path, and whether the screen shows the dot's colour at its centre.
+ */
 async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other: number; painted: boolean }>> {
-  return chart.evaluate((svg: SVGSVGElement) => {
+  const placed = await chart.evaluate((svg: SVGSVGElement) => {
     const paths = [...svg.querySelectorAll<SVGPathElement>('g.lines path')];
     // y of a path at x: the path's own geometry, bisected along its length within each monotone-in-x piece.
     const yAt = (p: SVGPathElement, x: number): number[] => {
@@ -32,21 +95,11 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
     // The live chart draws its marker over the SVG and states the dots' plot-pixel centres on its box.
     const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
     const dots = JSON.parse(box?.dataset.dots ?? '[]') as Array<{ cx: number; cy: number; color: string }>;
-    // The marker canvas really paints each dot there: its pixel at the dot's centre is the dot's colour.
-    const canvas = box?.querySelector('canvas');
     const [left, top] = (
       /translate\(([-\d.]+),([-\d.]+)\)/.exec(svg.querySelector('g.plot')?.getAttribute('transform') ?? '') ?? []
     )
       .slice(1)
       .map(Number);
-    const painted = (cx: number, cy: number, color: string) => {
-      const ctx = canvas?.getContext('2d');
-      if (!canvas || !ctx) return false;
-      const k = canvas.width / svg.clientWidth;
-      const [r, g, b] = ctx.getImageData(Math.round((left + cx) * k), Math.round((top + cy) * k), 1, 1).data;
-      const want = [1, 3, 5].map((i) => parseInt(color.slice(i, i + 2), 16));
-      return Math.abs(r - want[0]) + Math.abs(g - want[1]) + Math.abs(b - want[2]) < 30;
-    };
     return dots.map(({ cx, cy, color: fill }) => {
       const dist = (p: SVGPathElement) => Math.min(Infinity, ...yAt(p, cx).map((y) => Math.abs(y - cy)));
       const own = paths.filter((p) => p.getAttribute('stroke') === fill && !p.getAttribute('stroke-dasharray'));
@@ -54,9 +107,24 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
       return {
         own: own.length === 1 ? dist(own[0]) : Infinity,
         other: Math.min(Infinity, ...others.map(dist)),
-        painted: painted(cx, cy, fill),
+        at: [left + cx, top + cy] as [number, number],
+        fill,
       };
     });
+  });
+  // The screen really shows each dot there: its pixel at the dot's centre is the dot's colour.
+  const shown = await screenPixels(
+    chart,
+    placed.map((d) => d.at),
+  );
+  return placed.map((d, i) => {
+    const want = rgbOf(d.fill);
+    const got = shown[i];
+    return {
+      own: d.own,
+      other: d.other,
+      painted: Math.abs(got[0] - want[0]) + Math.abs(got[1] - want[1]) + Math.abs(got[2] - want[2]) < 30,
+    };
   });
 }
 
@@ -230,24 +298,20 @@ test.describe('chart markers on a high-density screen', () => {
         expect(d.own).toBeLessThan(1.5);
         expect(d.painted).toBe(true);
       }
-      // The marker line is painted at θ2 = 200° on the chart's x scale, not offset by the plot's left margin.
-      const offset = await chart.evaluate((svg: SVGSVGElement) => {
+      // The marker line is painted at θ2 = 200° on the chart's x scale, not offset by the plot's left margin: the
+      // screen's pixels of the marker's colour on a row just under the plot's top.
+      const { left, top, x } = await chart.evaluate((svg: SVGSVGElement) => {
         const box = svg.parentElement?.querySelector<HTMLElement>('.chart-marker');
-        const canvas = box?.querySelector('canvas');
-        const ctx = canvas?.getContext('2d');
-        const plot = svg.querySelector('g.plot');
-        if (!canvas || !ctx || !plot || !box) return Infinity;
-        const [left, top] = (/translate\(([-\d.]+),([-\d.]+)\)/.exec(plot.getAttribute('transform') ?? '') ?? [])
+        const [l, t] = (
+          /translate\(([-\d.]+),([-\d.]+)\)/.exec(svg.querySelector('g.plot')?.getAttribute('transform') ?? '') ?? []
+        )
           .slice(1)
           .map(Number);
-        const k = canvas.width / svg.clientWidth;
-        const row = ctx.getImageData(0, Math.round((top + 4) * k), canvas.width, 1).data;
-        const painted: number[] = [];
-        for (let i = 0; i < canvas.width; i++) if (row[4 * i + 3] > 100) painted.push(i / k);
-        if (painted.length === 0) return Infinity;
-        const lineX = (painted[0] + painted[painted.length - 1]) / 2;
-        return Math.abs(lineX - (left + Number(box.dataset.x)));
+        return { left: l, top: t, x: Number(box?.dataset.x) };
       });
+      const painted = await screenRowMatches(chart, top + 4, rgbOf(MARKER_COLOR));
+      const offset =
+        painted.length === 0 ? Infinity : Math.abs((painted[0] + painted[painted.length - 1]) / 2 - (left + x));
       expect(offset).toBeLessThan(1.5);
     }
   });

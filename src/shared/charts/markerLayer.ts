@@ -1,4 +1,3 @@
-import { TWO_PI } from '../../solver/angles';
 import { select } from 'd3-selection';
 import { CHART_STYLE, child } from './chartFrame';
 
@@ -51,60 +50,65 @@ const DOT_RING = 1.5;
 /** Line width (CSS pixels). */
 const LINE_WIDTH = 1.25;
 
+/** Places a marker element: only its transform changes per frame, so the compositor moves it (no layout, no paint). */
+function place(el: HTMLElement, transform: string): void {
+  if (el.style.transform !== transform) el.style.transform = transform;
+}
+
+/** A marker element in host: absolutely placed at the host's top-left, on its own compositor layer, hidden at first. */
+function markerElement(host: HTMLElement, className: string): HTMLDivElement {
+  const el = host.ownerDocument.createElement('div');
+  el.className = className;
+  el.hidden = true;
+  host.append(el);
+  return el;
+}
+
 /**
- * Draws a chart's current-θ2 marker (a line and a dot per series) on a canvas in host, a box laid over the
- * chart's SVG at the same size. Play moves the marker every frame: inside the SVG each move repainted the
- * whole chart, curves and axes included, and re-layered the page; a canvas only redraws its own pixels.
+ * Draws a chart's current-θ2 marker (a line and a dot per series) in host, a box laid over the chart's SVG at the
+ * same size, as a few elements each on its own compositor layer (SvgChartView.css) moved by their transforms. Play
+ * moves the marker every frame: inside the SVG each move repainted the whole chart, curves and axes included; on a
+ * canvas each move cleared, drew and uploaded the canvas's pixels on the page's thread; a transform is composited
+ * off the page's thread. The line is a 1 px bar scaled to its length and turned to its direction; a dot is a
+ * round box of radius DOT_R + DOT_RING / 2 with a DOT_RING border in the chart's background colour.
  * host carries the plot-pixel placement for tests and tools: data-x (empty when hidden), data-dots, a
  * JSON list of { cx, cy, color } (the numbers an SVG marker's circles have), and data-segment, the line's
  * { x1, y1, x2, y2 } when it is a segment (empty otherwise).
  */
 export function createMarkerLayer(host: HTMLElement): MarkerLayer {
   host.setAttribute('aria-hidden', 'true');
-  const canvas = host.ownerDocument.createElement('canvas');
-  canvas.style.position = 'absolute';
-  canvas.style.inset = '0';
-  canvas.style.width = '100%';
-  canvas.style.height = '100%';
-  host.append(canvas);
-  let drawn = false;
+  const line = markerElement(host, 'chart-marker-line');
+  line.style.height = `${LINE_WIDTH}px`;
+  line.style.background = CHART_STYLE.marker;
+  const dots: HTMLDivElement[] = [];
+  // The colour each dot was given (the style reads back in another notation).
+  const colors: string[] = [];
+  const outer = DOT_R + DOT_RING / 2;
   return {
-    draw({ x, dots, segment }, box, width, height) {
-      const view = host.ownerDocument.defaultView;
-      const dpr = Math.max(1, Math.min(4, view?.devicePixelRatio ?? 1));
-      const pw = Math.round(width * dpr);
-      const ph = Math.round(height * dpr);
-      if (canvas.width !== pw || canvas.height !== ph) {
-        canvas.width = pw;
-        canvas.height = ph;
-        drawn = false;
-      }
-      const ctx = canvas.getContext('2d');
+    draw({ x, dots: placed, segment }, box) {
       host.dataset.x = x === null ? '' : String(x);
-      host.dataset.dots = JSON.stringify(x === null ? [] : dots);
+      host.dataset.dots = JSON.stringify(x === null ? [] : placed);
       host.dataset.segment = x === null || !segment ? '' : JSON.stringify(segment);
-      if (!ctx) return;
-      ctx.setTransform(1, 0, 0, 1, 0, 0);
-      if (drawn) ctx.clearRect(0, 0, pw, ph);
-      drawn = x !== null;
+      line.hidden = x === null;
+      const shown = x === null ? 0 : placed.length;
+      for (let i = 0; i < dots.length; i++) dots[i].hidden = i >= shown;
       if (x === null) return;
-      ctx.setTransform(dpr, 0, 0, dpr, dpr * box.left, dpr * box.top);
-      ctx.strokeStyle = CHART_STYLE.marker;
-      ctx.lineWidth = LINE_WIDTH;
       const l = lineOf(x, segment, box.height);
-      ctx.beginPath();
-      ctx.moveTo(l.x1, l.y1);
-      ctx.lineTo(l.x2, l.y2);
-      ctx.stroke();
-      ctx.lineWidth = DOT_RING;
-      ctx.strokeStyle = CHART_STYLE.background;
-      for (const d of dots) {
-        ctx.fillStyle = d.color;
-        ctx.beginPath();
-        ctx.arc(d.cx, d.cy, DOT_R, 0, TWO_PI);
-        ctx.fill();
-        ctx.stroke();
-      }
+      const length = Math.hypot(l.x2 - l.x1, l.y2 - l.y1);
+      const turn = Math.atan2(l.y2 - l.y1, l.x2 - l.x1);
+      const y0 = box.top + l.y1 - LINE_WIDTH / 2;
+      place(line, `translate(${box.left + l.x1}px, ${y0}px) rotate(${turn}rad) scaleX(${length})`);
+      placed.forEach((d, i) => {
+        if (!dots[i]) {
+          dots[i] = markerElement(host, 'chart-marker-dot');
+          dots[i].style.width = dots[i].style.height = `${2 * outer}px`;
+          dots[i].style.borderWidth = `${DOT_RING}px`;
+          dots[i].style.borderColor = CHART_STYLE.background;
+          dots[i].hidden = false;
+        }
+        if (colors[i] !== d.color) dots[i].style.backgroundColor = colors[i] = d.color;
+        place(dots[i], `translate(${box.left + d.cx - outer}px, ${box.top + d.cy - outer}px)`);
+      });
     },
   };
 }
