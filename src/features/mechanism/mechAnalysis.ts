@@ -110,3 +110,16 @@ export function runRange(a: MechAnalysis): [number, number] | null {
   if (!a.grid || !a.run) return null;
   return [a.grid.inputs[a.run[0]], a.grid.inputs[a.run[1]]];
 }
+
+/** Linear interpolation of a series on the grid at input t (NaN off the grid); on a sample (1e-9 of a step), its value. */
+export function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number {
+  if (!a.grid) return NaN;
+  const u = t / a.grid.step - a.grid.kLo;
+  const i = Math.max(0, Math.min(values.length - 2, Math.floor(u)));
+  const f = u - i;
+  if (!(f >= -1e-9 && f <= 1 + 1e-9)) return NaN;
+  // On a sample the other may be missing (the end of a rocking run).
+  if (Math.abs(f) <= 1e-9) return values[i];
+  if (Math.abs(f - 1) <= 1e-9) return values[i + 1];
+  return values[i] + (values[i + 1] - values[i]) * f;
+}
