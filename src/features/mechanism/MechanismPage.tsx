@@ -589,6 +589,6 @@ function statusText(a: MechAnalysis, m: MechMessages, inputText: (t: number) => 
   if (p?.code === 'invalid') return m.invalid(p.detail);
   if (p?.code === 'singular') return m.singular;
   if (a.fullTurn) return m.fullTurn;
-  const r = runRange(a);
+  const r = a.limits;
   return r ? m.rocking(inputText(r[0]), inputText(r[1])) : '';
 }
