@@ -285,7 +285,11 @@ test.describe('mechanism page', () => {
     expect(Math.abs(shown - expected)).toBeLessThan(1e-5 * Math.abs(expected));
     await expect(page.getByTestId('mech-force-chart-1')).toBeVisible();
     await page.getByRole('checkbox', { name: 'Reaction arrows' }).check();
-    await page.screenshot({ path: artifact('mechanism-forces-1280.png'), fullPage: true });
+    await page.locator('.mech-forces').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: artifact('mechanism-forces-1280.png') });
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.locator('.mech-force-values').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: artifact('mechanism-forces-390.png') });
   });
 
   test('a mobility-2 linkage refuses to run and says what to do', async ({ page }) => {
