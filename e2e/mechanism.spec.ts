@@ -81,6 +81,53 @@ function sliderPinX(a0: [string, string], b0: [string, string], theta: number): 
   return ax.plus(l2.minus(by0.minus(ay).pow(2)).sqrt());
 }
 
+/**
+ * The input torque (N·m) of the offset slider-crank at crank angle θ (rad), its crank r and rod l uniform bars of
+ * rho kg/m, its block massless, gravity g down and the crank at a constant ω: the power balance in closed form,
+ * derived here (' = d/dθ; l sin φ = e − r sin θ; G2 = A/2, G3 = A + (l/2)(cos φ, sin φ)):
+ * T = ω² (m2 G2''·G2' + m3 G3''·G3' + I3 φ'' φ') + g (m2 G2'y + m3 G3'y), in 40 digits.
+ */
+function sliderCrankTorque(r: number, l: number, e: number, rho: number, g: number, w: number, theta: number): number {
+  const D = (x: number) => new Decimal(x);
+  const [R, L, E] = [D(r), D(l), D(e)];
+  const c = Decimal.cos(theta);
+  const s = Decimal.sin(theta);
+  const sphi = E.minus(R.times(s)).div(L);
+  const cphi = D(1).minus(sphi.pow(2)).sqrt();
+  const p1 = R.times(c).neg().div(L.times(cphi));
+  const p2 = R.times(s)
+    .plus(L.times(sphi).times(p1.pow(2)))
+    .div(L.times(cphi));
+  const m2 = D(rho).times(R);
+  const m3 = D(rho).times(L);
+  const i3 = m3.times(L.pow(2)).div(12);
+  const h = L.div(2);
+  const g2d = [R.times(s).neg().div(2), R.times(c).div(2)];
+  const g2dd = [R.times(c).neg().div(2), R.times(s).neg().div(2)];
+  const g3d = [R.times(s).neg().minus(h.times(sphi).times(p1)), R.times(c).plus(h.times(cphi).times(p1))];
+  const g3dd = [
+    R.times(c)
+      .neg()
+      .minus(h.times(cphi.times(p1.pow(2)).plus(sphi.times(p2)))),
+    R.times(s)
+      .neg()
+      .minus(h.times(sphi.times(p1.pow(2)).minus(cphi.times(p2)))),
+  ];
+  const dot = (u: Decimal[], v: Decimal[]) => u[0].times(v[0]).plus(u[1].times(v[1]));
+  const inertial = m2
+    .times(dot(g2dd, g2d))
+    .plus(m3.times(dot(g3dd, g3d)))
+    .plus(i3.times(p2).times(p1));
+  return D(w)
+    .pow(2)
+    .times(inertial)
+    .plus(D(g).times(m2.times(g2d[1]).plus(m3.times(g3d[1]))))
+    .toNumber();
+}
+
+/** A number as the page writes it (U+2212 minus, a unit after it). */
+const shownNumber = (text: string) => Number(text.replace(/\u2212/g, '-').split(' ')[0]);
+
 test.describe('mechanism page', () => {
   test('opens every template from the gallery and from tpl=, each assembled and running', async ({ page }) => {
     await page.goto('./?page=mech');
@@ -221,6 +268,30 @@ test.describe('mechanism page', () => {
     await page.getByRole('button', { name: 'Pause' }).click();
   });
 
+  test('with Forces on, the slider-crank’s input torque at 30° is the closed form’s', async ({ page }) => {
+    // Lengths in metres (lu=m), bars of 2 kg/m (mrho), the crank at 12 rad/s (mw), gravity 9.81 m/s² down.
+    await page.goto('./?page=mech&tpl=slider-crank&lu=m&mrho=2&mw=12');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await page.getByRole('checkbox', { name: 'Solve the forces' }).check();
+    await expect(page).toHaveURL(/mfrc=1/);
+    await page.getByRole('slider', { name: /Input angle/ }).fill('30');
+    await expect(page.getByTestId('mech-input-value')).toHaveText('30°');
+    const effort = page.getByTestId('mech-effort');
+    await expect(effort).toHaveText(/N·m$/);
+    await expect(effort).not.toHaveText(/^—/);
+    const expected = sliderCrankTorque(2, 5, 1, 2, 9.81, 12, Math.PI / 6);
+    const shown = shownNumber((await effort.textContent())!);
+    // Six significant digits are shown.
+    expect(Math.abs(shown - expected)).toBeLessThan(1e-5 * Math.abs(expected));
+    await expect(page.getByTestId('mech-force-chart-1')).toBeVisible();
+    await page.getByRole('checkbox', { name: 'Reaction arrows' }).check();
+    await page.locator('.mech-forces').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: artifact('mechanism-forces-1280.png') });
+    await page.setViewportSize({ width: 390, height: 844 });
+    await page.locator('.mech-force-values').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: artifact('mechanism-forces-390.png') });
+  });
+
   test('a mobility-2 linkage refuses to run and says what to do', async ({ page }) => {
     // A five-bar: ground and four moving links in a loop, five pins: mobility 3·4 − 2·5 = 2.
     const fiveBar = {
@@ -277,11 +348,13 @@ test.describe('mechanism page', () => {
   });
 
   test('speaks zh-TW and has no axe violations', async ({ page }) => {
-    await page.goto('./?page=mech&tpl=slider-crank&lang=zh-TW');
+    await page.goto('./?page=mech&tpl=slider-crank&lang=zh-TW&mfrc=1');
     await expect(page.getByRole('tab', { name: '機構', exact: true })).toHaveAttribute('aria-selected', 'true');
     await expect(page.locator('.mech-name-title')).toHaveText('曲柄滑塊');
     await expect(status(page)).toHaveText('輸入可轉整圈。');
     await expect(page.getByRole('button', { name: '播放' })).toBeVisible();
+    await expect(page.getByRole('checkbox', { name: '求解力' })).toBeChecked();
+    await expect(page.getByTestId('mech-effort')).toHaveText(/N·m$/);
     await page.screenshot({ path: artifact('mechanism-zh-tw-1280.png') });
     const results = await new AxeBuilder({ page }).include('.mech').analyze();
     expect(results.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes[0]?.target}`)).toEqual([]);

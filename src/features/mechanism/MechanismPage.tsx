@@ -1,11 +1,13 @@
 import './MechanismPage.css';
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useMemo, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
-import type { MechanismSpec, MechanismSweep } from '../../mechanism';
+import type { MechanismSpec } from '../../mechanism';
 import { degToRad, radToDeg } from '../../solver/angles';
 import type { Action, AppState } from '../../shared/state/appState';
-import type { MechTemplateKey } from '../../shared/state/slices/mechSlice';
+import type { MechForcesSettings, MechTemplateKey } from '../../shared/state/slices/mechSlice';
+import { METRES_PER_UNIT } from '../../shared/state/slices/designSlice';
+import type { LengthUnit } from '../../shared/state/slices/designSlice';
 import { mechSpecCodec, templateUrlValue } from '../../shared/state/slices/mechSlice';
 import type { JobRunner } from '../../shared/jobs/jobClient';
 import type { Bounds, ViewTransform } from '../../shared/canvas/view';
@@ -20,7 +22,7 @@ import { formatNumber } from '../../shared/format';
 import type { ViewOffset } from '../../shared/state/appState';
 import type { MechanismJobs } from './jobs';
 import type { MechAnalysis } from './mechAnalysis';
-import { analyseMechanism, runRange } from './mechAnalysis';
+import { analyseMechanism, runRange, valueAt } from './mechAnalysis';
 import { csvInputs, mechCsv } from './mechCsv';
 import type { MechMessages } from './mechMessages';
 import { mechMessagesFor } from './mechMessages';
@@ -37,6 +39,10 @@ import type { PlaceKind } from './SpecEditor';
 import { SpecEditor } from './SpecEditor';
 import { addJoint, addLink, addTracer, emptySpec, moveJoint } from './specEdits';
 import { useMechDrive } from './useMechDrive';
+import { useMechSweepJob } from './useMechSweepJob';
+import type { MechForcesJob } from './mechForces';
+import { reactionJoint } from './mechForces';
+import { MechForcesPanel } from './MechForcesPanel';
 
 /** Props of MechanismPage: the app state and dispatch, and the solver client (null until it is made). */
 export interface MechanismPageProps {
@@ -57,7 +63,7 @@ export interface MechanismPageProps {
  */
 export function MechanismPage({ state, dispatch, client, embedded = false, openedSearch = '' }: MechanismPageProps) {
   const m = mechMessagesFor(state.shell.locale);
-  const { template, spec: edited } = state.mech;
+  const { template, spec: edited, forces } = state.mech;
   // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
   const [refused, setRefused] = useState(() => linkRefusal(openedSearch));
   return (
@@ -91,6 +97,8 @@ export function MechanismPage({ state, dispatch, client, embedded = false, opene
         key={template}
         template={template}
         edited={edited}
+        forces={forces}
+        lengthUnit={state.design.lengthUnit}
         dispatch={dispatch}
         client={client}
         m={m}
@@ -112,6 +120,8 @@ function linkRefusal(search: string): string | null {
 interface MechWorkspaceProps {
   template: MechTemplateKey;
   edited: MechanismSpec | null;
+  forces: MechForcesSettings;
+  lengthUnit: LengthUnit;
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
   m: MechMessages;
@@ -147,21 +157,11 @@ function slideRanges(a: MechAnalysis): Record<string, [number, number]> {
   return out;
 }
 
-/** Linear interpolation of a series on the grid at input t (NaN off the grid). */
-function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number {
-  if (!a.grid) return NaN;
-  const u = t / a.grid.step - a.grid.kLo;
-  const i = Math.max(0, Math.min(values.length - 2, Math.floor(u)));
-  const f = u - i;
-  if (!(f >= -1e-9 && f <= 1 + 1e-9)) return NaN;
-  return values[i] + (values[i + 1] - values[i]) * f;
-}
-
 /** The default traced points: every tracer. */
 const defaultTraced = (spec: MechanismSpec) => new Set((spec.points ?? []).map((p) => p.id));
 
 /** The page below the gallery, for one template (a new template remounts it: input 0, default plots and traces). */
-function MechWorkspace({ template, edited, dispatch, client, m, embedded }: MechWorkspaceProps) {
+function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client, m, embedded }: MechWorkspaceProps) {
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
@@ -202,18 +202,16 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
   // The rates (the plots' speeds and accelerations, the velocity arrows) come from the worker, for this spec.
   const plotChoicesParsed = plots.map((c) => parseChoice(spec, c));
   const wantRates = showVelocities || plotChoicesParsed.some((c) => c && needsRates(c.kind));
-  const [rates, setRates] = useState<{ spec: MechanismSpec; sweep: MechanismSweep } | null>(null);
-  useEffect(() => {
-    if (!client || !wantRates || !analysis.grid || analysis.problem) return;
-    const run = client.run(
-      'mechSweep',
-      { spec: analysis.spec, inputs: analysis.grid.inputs, rates: true },
-      { channel: 'mechRates' },
-    );
-    run.result.then((sweep) => sweep && setRates({ spec: analysis.spec, sweep })).catch(() => setRates(null));
-    return () => run.cancel();
-  }, [client, wantRates, analysis]);
-  const rateSweep = rates && rates.spec === spec ? rates.sweep : null;
+  const { enabled: forcesOn, rhoKgPerM, gravityMPerS2, inputSpeed } = forces;
+  const forceJob = useMemo<MechForcesJob | null>(
+    () => (forcesOn ? { metresPerUnit: METRES_PER_UNIT[lengthUnit], rhoKgPerM, gravityMPerS2, inputSpeed } : null),
+    [forcesOn, lengthUnit, rhoKgPerM, gravityMPerS2, inputSpeed],
+  );
+  const solved = useMechSweepJob(client, analysis, wantRates, forceJob);
+  const rateSweep = solved.rates;
+  const forceJoint = reactionJoint(spec, forces.joint);
+  const forceNow = (values: ArrayLike<number> | undefined) => (values ? valueAt(analysis, values, input) : NaN);
+  const reactionSeries = solved.forces?.joints[forceJoint];
 
   const pose =
     (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
@@ -223,6 +221,13 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
     for (const [id, at] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
       const s = rateSweep.joints[id] ?? rateSweep.points[id];
       if (s?.vx && s.vy) arrows.push({ at, vx: valueAt(analysis, s.vx, input), vy: valueAt(analysis, s.vy, input) });
+    }
+  }
+  const forceArrows: MechArrow[] = [];
+  if (forcesOn && forces.arrows && solved.forces) {
+    for (const [id, at] of Object.entries(pose.joints)) {
+      const r = solved.forces.joints[id];
+      if (r) forceArrows.push({ at, vx: forceNow(r.fx), vy: forceNow(r.fy) });
     }
   }
   const traces =
@@ -238,6 +243,7 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
     slideRange: useMemo(() => slideRanges(analysis), [analysis]),
     selected,
     arrows,
+    forceArrows,
     faint: analysis.problem !== null,
   };
 
@@ -296,6 +302,10 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
     [analysis, kind],
   );
   const xLabel = kind === 'R' ? m.axisInputDeg : m.axisInputLength;
+  const forceX = useMemo(
+    () => (analysis.run ? xDeg.subarray(analysis.run[0], analysis.run[1] + 1) : xDeg),
+    [analysis, xDeg],
+  );
   const plotViews = plots.map((choice, n) => {
     const c = parseChoice(spec, choice);
     const source = c && (needsRates(c.kind) ? rateSweep : analysis.sweep);
@@ -509,6 +519,25 @@ function MechWorkspace({ template, edited, dispatch, client, m, embedded }: Mech
           ))}
         </div>
       </section>
+      {(!embedded || forces.enabled) && (
+        <MechForcesPanel
+          spec={spec}
+          settings={forces}
+          joint={forceJoint}
+          kind={kind}
+          lengthUnit={lengthUnit}
+          forces={solved.forces}
+          pending={solved.pending}
+          error={solved.error}
+          x={forceX}
+          run={analysis.problem ? null : analysis.run}
+          xNow={kind === 'R' ? radToDeg(input) : input}
+          effortNow={forceNow(solved.forces?.input)}
+          reactionNow={{ fx: forceNow(reactionSeries?.fx), fy: forceNow(reactionSeries?.fy) }}
+          dispatch={dispatch}
+          m={m}
+        />
+      )}
       <section className="mech-exports" aria-label={m.exportsTitle} hidden={embedded}>
         <h3 className="mech-card-title">{m.exportsTitle}</h3>
         <div className="mech-export-row">
@@ -560,6 +589,6 @@ function statusText(a: MechAnalysis, m: MechMessages, inputText: (t: number) => 
   if (p?.code === 'invalid') return m.invalid(p.detail);
   if (p?.code === 'singular') return m.singular;
   if (a.fullTurn) return m.fullTurn;
-  const r = runRange(a);
+  const r = a.limits;
   return r ? m.rocking(inputText(r[0]), inputText(r[1])) : '';
 }

@@ -54,6 +54,8 @@ export interface MechPicture {
   slideRange: Record<string, [number, number]>;
   selected: string | null;
   arrows: MechArrow[];
+  /** Reaction arrows at the joints (N; the force on the joint's first link), drawn to their own scale; default none. */
+  forceArrows?: MechArrow[];
   /** Drawn faint (the linkage cannot move as it is: mobility ≠ 1, or not assembled). */
   faint: boolean;
   /** A thumbnail: no grid and no names; default false. */
@@ -214,7 +216,8 @@ export function drawMechanism(ctx: DrawContext, pic: MechPicture, v: ViewTransfo
     if (at) drawJoint(ctx, px(at), STROKES.couplerPointRadius, THEME.couplerPoint, THEME.jointStroke);
   }
   ctx.globalAlpha = 1;
-  drawArrows(ctx, pic.arrows, v);
+  drawArrows(ctx, pic.arrows, v, THEME.velocity);
+  drawArrows(ctx, pic.forceArrows ?? [], v, COLORS.force);
   // The chosen joint: a ring in the accent colour.
   const sel = pic.selected ? (pose.joints[pic.selected] ?? pose.points[pic.selected]) : null;
   if (sel) {
@@ -228,15 +231,15 @@ export function drawMechanism(ctx: DrawContext, pic: MechPicture, v: ViewTransfo
   if (!pic.compact) drawNames(ctx, pic, v);
 }
 
-/** Velocity arrows, scaled together so that the longest is about a fifth of the view's smaller side. */
-function drawArrows(ctx: DrawContext, arrows: MechArrow[], v: ViewTransform): void {
+/** Arrows in one colour, scaled together so that the longest is about a fifth of the view's smaller side. */
+function drawArrows(ctx: DrawContext, arrows: MechArrow[], v: ViewTransform, color: string): void {
   let longest = 0;
   for (const a of arrows)
     if (Number.isFinite(a.vx) && Number.isFinite(a.vy)) longest = Math.max(longest, Math.hypot(a.vx, a.vy));
   if (!(longest > 0)) return;
   const k = Math.min(v.width, v.height) / 5 / longest;
-  ctx.strokeStyle = THEME.velocity;
-  ctx.fillStyle = THEME.velocity;
+  ctx.strokeStyle = color;
+  ctx.fillStyle = color;
   ctx.lineWidth = 2;
   for (const a of arrows) {
     if (!Number.isFinite(a.vx) || !Number.isFinite(a.vy)) continue;

@@ -32,6 +32,8 @@ export interface MechAnalysis {
   run: [number, number] | null;
   /** A pin input that assembles over the whole turn: Play wraps instead of rocking. */
   fullTurn: boolean;
+  /** The run's ends refined to LIMIT_TOLERANCE of the grid's span where the linkage stops (refineLimits). */
+  limits: [number, number] | null;
 }
 
 /** The kind of the spec's input joint, or null when none is chosen (or it is not a joint). */
@@ -95,18 +97,64 @@ export function assembledRun(ok: ArrayLike<number>, i0: number): [number, number
 export function analyseMechanism(spec: MechanismSpec): MechAnalysis {
   const m = spec.links.includes(GROUND) ? mobility(spec) : NaN;
   const problem = mechProblem(spec);
-  const none = { spec, mobility: m, grid: null, sweep: null, run: null, fullTurn: false };
+  const none = { spec, mobility: m, grid: null, sweep: null, run: null, fullTurn: false, limits: null };
   if (problem) return { ...none, problem };
   const grid = inputGrid(spec)!;
   const sweep = sweepMechanism(spec, grid.inputs);
   const run = assembledRun(sweep.ok, -grid.kLo);
   if (!run) return { ...none, grid, sweep, problem: { code: 'singular' } };
   const fullTurn = grid.kind === 'R' && run[0] === 0 && run[1] === grid.inputs.length - 1;
-  return { spec, mobility: m, problem: null, grid, sweep, run, fullTurn };
+  const limits = fullTurn ? runEnds(grid, run) : refineLimits(spec, grid, run);
+  return { spec, mobility: m, problem: null, grid, sweep, run, fullTurn, limits };
 }
 
 /** The input range Play moves over: the run's ends (a full turn: [−π, π]). */
 export function runRange(a: MechAnalysis): [number, number] | null {
   if (!a.grid || !a.run) return null;
   return [a.grid.inputs[a.run[0]], a.grid.inputs[a.run[1]]];
+}
+
+/** Linear interpolation of a series on the grid at input t (NaN off the grid); on a sample (1e-9 of a step), its value. */
+export function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number {
+  if (!a.grid) return NaN;
+  const u = t / a.grid.step - a.grid.kLo;
+  const i = Math.max(0, Math.min(values.length - 2, Math.floor(u)));
+  const f = u - i;
+  if (!(f >= -1e-9 && f <= 1 + 1e-9)) return NaN;
+  // On a sample the other may be missing (the end of a rocking run).
+  if (Math.abs(f) <= 1e-9) return values[i];
+  if (Math.abs(f - 1) <= 1e-9) return values[i + 1];
+  return values[i] + (values[i + 1] - values[i]) * f;
+}
+
+/** How closely refineLimits finds a limit: this fraction of the grid's span (2π for a pin input). */
+export const LIMIT_TOLERANCE = 1e-9;
+
+const runEnds = (grid: InputGrid, run: [number, number]): [number, number] => [
+  grid.inputs[run[0]],
+  grid.inputs[run[1]],
+];
+
+/**
+ * Where a rocking input stops, to LIMIT_TOLERANCE of the grid's span: between the run's last assembled sample and
+ * the next one (not assembled), bisection on assembly, each trial a sweep from the drawn pose through the input
+ * known to assemble to the midpoint (so it stays on the drawn branch). An end of the run at the grid's end stays.
+ */
+export function refineLimits(spec: MechanismSpec, grid: InputGrid, run: [number, number]): [number, number] {
+  const n = grid.inputs.length;
+  const tol = LIMIT_TOLERANCE * (grid.inputs[n - 1] - grid.inputs[0]);
+  const refine = (ok: number, bad: number) => {
+    let [a, b] = [ok, bad];
+    while (Math.abs(b - a) > tol) {
+      const mid = (a + b) / 2;
+      if (sweepMechanism(spec, Float64Array.of(a, mid)).ok[1]) a = mid;
+      else b = mid;
+    }
+    return a;
+  };
+  const [lo, hi] = runEnds(grid, run);
+  return [
+    run[0] > 0 ? refine(lo, grid.inputs[run[0] - 1]) : lo,
+    run[1] < n - 1 ? refine(hi, grid.inputs[run[1] + 1]) : hi,
+  ];
 }

@@ -125,6 +125,27 @@ export const mechMessagesEn = {
   csvRates: 'Rates in the CSV',
   exportBusy: 'Preparing…',
   exportFailed: (why: string) => `The export failed: ${why}`,
+  forcesTitle: 'Forces',
+  forcesToggle: 'Solve the forces',
+  forcesNote: (unit: string) =>
+    `Each moving link is uniform bars along its outline (a slider’s block alone is massless); lengths in ${unit}, the simulator’s unit; forces in N and N·m; gravity points down; the input turns at a constant speed.`,
+  massPerLength: 'Mass per length',
+  gravity: 'Gravity',
+  inputSpeed: 'Input speed',
+  reactionJoint: 'Reaction at joint',
+  reactionArrows: 'Reaction arrows',
+  inputTorque: 'Input torque',
+  inputForce: 'Input force',
+  reactionAt: (id: string) => `Reaction at ${id}`,
+  components: 'Components (x, y)',
+  valuesNow: 'Forces at the input shown',
+  axisTorque: 'torque (N·m)',
+  axisForce: 'force (N)',
+  axisReaction: '|F| (N)',
+  forcesPending: 'Solving the forces…',
+  forcesFailed: (why: string) => `The forces could not be solved: ${why}`,
+  notANumber: (label: string, text: string) => `${label}: “${text}” is not a number.`,
+  outOfRange: (label: string, min: string, max: string) => `${label} must be from ${min} to ${max}.`,
 };
 
 /** The mechanism page's strings. */

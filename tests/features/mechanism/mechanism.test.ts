@@ -1,9 +1,15 @@
 import Decimal from 'decimal.js';
 import { csvParseRows } from 'd3-dsv';
 import { describe, expect, it } from 'vitest';
-import { MECHANISM_TEMPLATES, sweepMechanism } from '../../../src/mechanism';
+import { MECHANISM_TEMPLATES, fourBarSpec, sliderCrankSpec, sweepMechanism } from '../../../src/mechanism';
 import type { MechanismSpec } from '../../../src/mechanism';
-import { analyseMechanism, assembledRun, inputGrid, runRange } from '../../../src/features/mechanism/mechAnalysis';
+import {
+  LIMIT_TOLERANCE,
+  analyseMechanism,
+  assembledRun,
+  inputGrid,
+  runRange,
+} from '../../../src/features/mechanism/mechAnalysis';
 import { csvHeader, csvInputs, mechCsv } from '../../../src/features/mechanism/mechCsv';
 import { drawnPose, poseAt } from '../../../src/features/mechanism/mechPose';
 import { advanceInput } from '../../../src/features/mechanism/useMechDrive';
@@ -202,5 +208,40 @@ describe('plotValues', () => {
     expect(Math.abs(slide[1] - (sliderX(Math.PI / 2) - sliderX(0)))).toBeLessThan(1e-12);
     const speed = plotValues({ kind: 'speed', id: 'B' }, sweep);
     expect(Math.abs(speed[1] - Math.abs(sliderVx(Math.PI / 2)))).toBeLessThan(1e-9);
+  });
+});
+
+describe('refineLimits (through analyseMechanism)', () => {
+  it('finds a non-Grashof four-bar’s limits to 1e-9 of the turn: |θ2| ≤ acos((r1² + r2² − (r3 + r4)²) / (2 r1 r2))', () => {
+    // 4-3-3.5-3 (II-1, a triple rocker): the crank stops where coupler and rocker are in line, at ±135.95°.
+    const a = analyseMechanism(fourBarSpec(4, 3, 3.5, 3));
+    const [r1, r2, r3, r4] = [4, 3, 3.5, 3].map((x) => new Decimal(x));
+    const limit = Decimal.acos(
+      r1.pow(2).plus(r2.pow(2)).minus(r3.plus(r4).pow(2)).div(r1.times(r2).times(2)),
+    ).toNumber();
+    expect(a.fullTurn).toBe(false);
+    const [lo, hi] = a.limits!;
+    const tol = 2 * LIMIT_TOLERANCE * 2 * Math.PI;
+    expect(Math.abs(hi - limit)).toBeLessThan(tol);
+    expect(Math.abs(lo + limit)).toBeLessThan(tol);
+    // The grid alone knows it to a step (1°).
+    const [glo, ghi] = runRange(a)!;
+    expect(limit - ghi).toBeGreaterThan(1e-6);
+    expect(glo + limit).toBeGreaterThan(1e-6);
+  });
+
+  it('finds a slider-crank’s crank limits when the rod is shorter than crank plus offset: sin θ = (e − l) / r', () => {
+    // Crank 2, rod 2.5, offset 1: the rod cannot reach the guide below θ where r sin θ = e − l (the rod straight down).
+    const a = analyseMechanism(sliderCrankSpec(2, 2.5, 1));
+    const [r, l, e] = [2, 2.5, 1].map((x) => new Decimal(x));
+    // The crank pin A = r (cos θ, sin θ) must lie within l of the line y = e: r sin θ ≥ e − l.
+    const low = Decimal.asin(e.minus(l).div(r)).toNumber();
+    const high = Math.PI - low;
+    const tol = 2 * LIMIT_TOLERANCE * 2 * Math.PI;
+    const [lo, hi] = a.limits!;
+    expect(Math.abs(lo - low)).toBeLessThan(tol);
+    // Past π the input wraps in the grid (−π, π]: the upper limit π − low lies beyond the grid's end, so the run ends there.
+    expect(hi).toBeLessThanOrEqual(Math.PI);
+    expect(high).toBeGreaterThan(Math.PI);
   });
 });
