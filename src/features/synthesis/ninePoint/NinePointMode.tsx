@@ -7,6 +7,9 @@ import { formatSci } from '../../../shared/format';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
 import type { ViewOffset } from '../../../shared/state/appState';
 import { placedJoints } from '../../../synthesis/placed';
+import type { PlacedJoints } from '../../../synthesis/types';
+import type { DrawContext } from '../../../shared/canvas/drawContext';
+import type { ViewTransform } from '../../../shared/canvas/view';
 import { RECHECK_TOL } from '../../../synthesis/ninePoint/ninePointSynthesis';
 import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
@@ -24,6 +27,7 @@ import { useFitBounds } from '../path/useFitBounds';
 import type { SynthesisPool } from '../path/usePathSynthesis';
 import { lastPathRun } from '../path/usePathSynthesis';
 import { NineClassList } from './NineClassList';
+import { cognateFollowers, cognatePoses, drawCognatePoses } from './nineCognates';
 import type { NineFilters } from './nineClassFacts';
 import { NO_FILTERS, cognateDesign, filterClasses, nineClassFacts } from './nineClassFacts';
 import { ninePointCsv } from './nineCsv';
@@ -99,6 +103,15 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
     [choice],
   );
   const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  // The class's other cognates move with it, their coupler points on its own.
+  const shownIdx = Math.min(shownCognate, choices.length - 1);
+  const drawMoving = useMemo(() => {
+    const followers = cls && shownIdx >= 0 ? cognateFollowers(cls.cognates[shownIdx], cls.cognates) : [];
+    return followers.length > 0
+      ? (ctx: DrawContext, v: ViewTransform, pose: PlacedJoints) =>
+          drawCognatePoses(ctx, v, cognatePoses(pose, followers))
+      : undefined;
+  }, [cls, shownIdx]);
   const content = pathSceneBounds({
     targets: s.targets,
     curves: curves.filter((c) => !c.faint),
@@ -143,6 +156,7 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
           selected={selected}
           curves={curves}
           moving={moving}
+          drawMoving={drawMoving}
           bounds={bounds}
           view={view}
           onViewChange={setView}
