@@ -4,6 +4,9 @@ import type { Point } from '../../../solver/kinematics';
 import { downloadText } from '../../../shared/canvas/download';
 import { formatSci } from '../../../shared/format';
 import { useMessages } from '../../../shared/i18n/MessagesContext';
+import type { PlacedJoints } from '../../../synthesis/types';
+import type { DrawContext } from '../../../shared/canvas/drawContext';
+import type { ViewTransform } from '../../../shared/canvas/view';
 import { RECHECK_TOL } from '../../../synthesis/ninePoint/ninePointSynthesis';
 import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
@@ -21,6 +24,7 @@ import type { SynthesisPool } from '../path/usePathSynthesis';
 import { lastPathRun } from '../path/usePathSynthesis';
 import { useTargetEditing } from '../path/useTargetEditing';
 import { NineClassList } from './NineClassList';
+import { cognateFollowers, cognatePoses, drawCognatePoses } from './nineCognates';
 import type { NineFilters } from './nineClassFacts';
 import { NO_FILTERS, cognateDesign, filterClasses, nineClassFacts } from './nineClassFacts';
 import { ninePointCsv } from './nineCsv';
@@ -98,6 +102,15 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
     [choice],
   );
   const moving = choice ? { design: choice.design, motion: choice.facts.motion } : null;
+  // The class's other cognates move with it, their coupler points on its own.
+  const shownIdx = Math.min(shownCognate, choices.length - 1);
+  const drawMoving = useMemo(() => {
+    const followers = cls && shownIdx >= 0 ? cognateFollowers(cls.cognates[shownIdx], cls.cognates) : [];
+    return followers.length > 0
+      ? (ctx: DrawContext, v: ViewTransform, pose: PlacedJoints) =>
+          drawCognatePoses(ctx, v, cognatePoses(pose, followers))
+      : undefined;
+  }, [cls, shownIdx]);
   const content = pathSceneBounds({
     targets: s.targets,
     curves: curves.filter((c) => !c.faint),
@@ -127,6 +140,7 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
           selected={selected}
           curves={curves}
           moving={moving}
+          drawMoving={drawMoving}
           bounds={bounds}
           view={view}
           onViewChange={setView}

@@ -1,7 +1,8 @@
 import { useLayoutEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import type { Point } from '../../../solver/kinematics';
-import type { PlacedFourBar } from '../../../synthesis/types';
+import type { PlacedFourBar, PlacedJoints } from '../../../synthesis/types';
+import type { DrawContext } from '../../../shared/canvas/drawContext';
 import { placedJoints } from '../../../synthesis/placed';
 import type { ScreenPoint } from '../../../shared/canvas/canvasGestures';
 import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
@@ -27,6 +28,8 @@ export interface TargetCanvasProps {
   curves: readonly PathCurve[];
   /** The linkage to animate through its motion, or null. */
   moving: { design: PlacedFourBar; motion: MotionRange } | null;
+  /** Draws more with the moving linkage at each frame (its pose given), e.g. its cognates. */
+  drawMoving?: (ctx: DrawContext, v: ViewTransform, pose: PlacedJoints) => void;
   bounds: Bounds;
   view: ViewOffset;
   onViewChange: (view: ViewOffset) => void;
@@ -123,6 +126,7 @@ export function TargetCanvas(props: TargetCanvasProps) {
     const pose = moving ? placedJoints(moving.design, theta2AtPhase(moving.motion, phase.current)) : null;
     const scene: PathScene = { targets, selected, names, curves, pose };
     drawPathScene(ctx, scene, v);
+    if (pose && props.drawMoving) props.drawMoving(ctx, v, pose);
     canvas.dataset.view = JSON.stringify({
       scale: v.scale,
       centerX: v.centerX,
