@@ -109,7 +109,7 @@ function forceReportFacts(s: AppState): ReportFact[] {
       value: c.flywheel,
     },
   ];
-  return [...at.map((f) => ({ ...f, wide: true })), ...cycle];
+  return [...at, ...cycle];
 }
 
 /**
