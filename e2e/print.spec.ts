@@ -65,6 +65,11 @@ for (const lang of ['en', 'zh-TW'] as const) {
       alpha3: await at('motion-alpha3'),
       alpha4: await at('motion-alpha4'),
       mu: await at('analysis-mu'),
+      // The input and units: the length unit chosen and ω2 as its field shows it (the default unit, rad/s).
+      'length-unit': await page
+        .getByRole('radio', { checked: true, name: /^(mm|cm|m|in)$/ })
+        .evaluate((el) => (el as HTMLInputElement).labels?.[0]?.textContent?.trim() ?? ''),
+      omega2: `${await page.getByRole('textbox', { name: /^ω2\b/ }).inputValue()} rad/s`,
     };
 
     await page.emulateMedia({ media: 'print' });
@@ -119,4 +124,51 @@ test('the report prints the chosen plots: the velocity plot when velocities are 
   expect(await sheet.evaluate((el) => el.scrollHeight - el.clientHeight)).toBeLessThanOrEqual(1);
   const pdf = await page.pdf({ format: 'A4' });
   expect(pdfPages(pdf)).toBe(1);
+});
+
+test('with Forces on and a synthesized design: the forces panel, the coupler point, placement and targets (issue 34, 12)', async ({
+  page,
+}) => {
+  const tg = '1.5,2;-0.25,3.125';
+  await page.goto(`./?frc=1&ox=1.5&oy=-2&og=30&pd=2.5&pa=-15&tg=${encodeURIComponent(tg)}&t2=60`);
+  await waitReady(page);
+  await expect(page.getByTestId('forces-torque')).toBeVisible();
+  await expect(page.getByTestId('forces-flywheel')).not.toHaveText('');
+  const keys = [
+    'torque',
+    'F12',
+    'F32',
+    'F43',
+    'F14',
+    'shakingForce',
+    'shakingMoment',
+    'mean',
+    'rms',
+    'peak',
+    'energy',
+    'flywheel',
+  ];
+  const panels: Record<string, string> = {};
+  for (const k of keys) panels[`forces-${k}`] = (await page.getByTestId(`forces-${k}`).innerText()).trim();
+  await page.emulateMedia({ media: 'print' });
+  const sheet = page.getByTestId('print-report');
+  await expect(sheet).toBeVisible();
+  // Every force the report prints is the panel's, and it prints them all.
+  const printed = await sheet
+    .locator('[data-report^="forces-"]')
+    .evaluateAll((els) => els.map((el) => el.getAttribute('data-report')));
+  expect([...printed].sort()).toEqual(Object.keys(panels).sort());
+  for (const [key, value] of Object.entries(panels)) expect(await report(page, key), key).toBe(value);
+  // The synthesized design's coupler point, placement and targets: the numbers the link gave.
+  const numbers = async (key: string) =>
+    (await report(page, key)).match(/[-−]?\d+(\.\d+)?/g)!.map((x) => Number(x.replace('−', '-')));
+  expect(await numbers('coupler')).toEqual([2.5, -15]);
+  expect(await numbers('placement')).toEqual([2, 1.5, -2, 30]);
+  expect(await numbers('targets')).toEqual([1, 1.5, 2, 2, -0.25, 3.125]);
+  expect(await report(page, 'length-unit')).toBe('m');
+  await expect(sheet.getByRole('heading', { name: 'Forces', exact: true })).toBeVisible();
+  await page.screenshot({ path: artifact('print-forces-synthesized.png'), fullPage: true });
+  // The forces run onto a second page, nothing cut off.
+  const pdf = await page.pdf({ format: 'A4' });
+  expect(pdfPages(pdf)).toBeLessThanOrEqual(2);
 });

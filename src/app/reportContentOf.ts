@@ -14,6 +14,14 @@ import { motionFacts } from '../features/simulator/motionFacts';
 import type { DesignInfo } from '../features/simulator/useDesignMetrics';
 import type { ReportContent, ReportFact } from '../features/report/reportContent';
 import type { ReportMessages } from '../features/report/reportMessages';
+import { omegaToUnit } from '../shared/state/inputMotion';
+import { localPose } from '../shared/linkage/localPose';
+import { forceSetup } from '../features/forces/forceModel';
+import { poseForces } from '../features/forces/forceModel';
+import { cycleFacts, poseFacts } from '../features/forces/forceFacts';
+import { cycleForces } from '../features/forces/forceCycleData';
+import { forcesMessages } from '../features/forces/forcesMessages';
+import type { AppState } from '../shared/state/appState';
 
 /** The report figure's drawing size (CSS pixels): the canvas's scene drawn again at this size, as SVG. */
 export const REPORT_FIGURE_SIZE = { width: 560, height: 380 } as const;
@@ -38,6 +46,70 @@ function chosenPlots(frame: ShownFrame): Exclude<ExportSubject, 'linkage' | 'con
   if (plotKind === 'velocities') return ['omega'];
   if (plotKind === 'accelerations') return ['alpha'];
   return plotLayout === 'together' ? ['both'] : ['theta3', 'theta4'];
+}
+
+/**
+ * The input and units: ω2 in its unit and the length unit; for a placed design (a synthesized one: moved off the
+ * origin, turned, or with targets) its coupler point, placement and targets, numbers as the URL gives them (6 digits).
+ */
+function setupFacts(s: AppState, t: Messages, m: ReportMessages): ReportFact[] {
+  const n = (x: number) => formatNumber(x);
+  const unit = s.motion.omegaUnit;
+  const out: ReportFact[] = [
+    { key: 'length-unit', label: m.lengthUnit, value: s.design.lengthUnit },
+    {
+      key: 'omega2',
+      label: m.omega2,
+      value: `${n(omegaToUnit(s.motion.omega2RadPerS, unit))} ${t.omegaUnits[unit]}`,
+    },
+  ];
+  const pl = s.design.placement;
+  const targets = s.synPath.targets;
+  const placed = pl.x !== 0 || pl.y !== 0 || pl.angleDeg !== 0 || targets.length > 0;
+  if (!placed) return out;
+  const c = s.design.coupler;
+  out.push(
+    { key: 'coupler', label: m.couplerPoint, value: `${n(c.distance)} ${s.design.lengthUnit}, ${n(c.angleDeg)}°` },
+    { key: 'placement', label: m.placementLabel, value: m.placement(n(pl.x), n(pl.y), n(pl.angleDeg)), wide: true },
+  );
+  if (targets.length > 0)
+    out.push({
+      key: 'targets',
+      label: `${m.targets} (${targets.length})`,
+      value: targets.map((p, i) => `T${i + 1} (${n(p.x)}, ${n(p.y)})`).join('; '),
+      wide: true,
+    });
+  return out;
+}
+
+/**
+ * With Forces on, the forces panel's lines as it shows them (keys forces-<its test id>): T12, the pin forces and
+ * shaking at the state's θ2, and the cycle's mean, RMS and peak torque, ΔE and flywheel inertia; else none.
+ */
+function forceReportFacts(s: AppState): ReportFact[] {
+  if (!s.forces.enabled) return [];
+  const ft = forcesMessages.get(s.shell.locale);
+  const setup = forceSetup(s);
+  const { linkage, branch, coupler } = s.design;
+  const local = localPose(linkage, s.motion.theta2Deg, branch, coupler, false);
+  const at = poseFacts(poseForces(setup, local.theta2Rad, local.pose), ft).map((f) => ({
+    key: `forces-${f.key}`,
+    label: f.label,
+    value: f.value,
+  }));
+  const c = cycleFacts(cycleForces(setup, branch, s.solver.samples), setup.input.omega2, ft);
+  const cycle: ReportFact[] = [
+    { key: 'forces-mean', label: ft.meanTorque, value: c.mean },
+    { key: 'forces-rms', label: ft.rmsTorque, value: c.rms },
+    { key: 'forces-peak', label: ft.peakTorque, value: c.peak },
+    { key: 'forces-energy', label: ft.energyFluctuation, value: c.energy },
+    {
+      key: 'forces-flywheel',
+      label: ft.flywheelInertia(formatNumber(s.forces.speedFluctuation, 4)),
+      value: c.flywheel,
+    },
+  ];
+  return [...at, ...cycle];
 }
 
 /**
@@ -106,5 +178,7 @@ export function reportContentOf({ frame, cycle, design, deg, point, t, m }: Repo
     atTheta2Title: m.atTheta2(formatDeg(radToDeg360(frame.marker.theta2Rad), 2)),
     atTheta2,
     plots,
+    setup: setupFacts(s, t, m),
+    forces: forceReportFacts(s),
   };
 }

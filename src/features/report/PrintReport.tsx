@@ -22,13 +22,17 @@ function FactList({ facts }: { facts: readonly ReportFact[] }) {
 }
 
 /**
- * The printable report: one page with the title, the linkage figure and its lengths, the Grashof and type facts,
+ * The printable report (with Forces on it runs onto a second page): one page with the title, the linkage figure and its lengths, the Grashof and type facts,
  * the design metrics, a table of the values at the current θ2 and the chosen plots. Hidden on screen (PrintReport.css);
  * the SVGs are the app's own drawings (the canvas's scene and the chart kit), set as markup.
  */
 export function PrintReport({ content: c, m }: PrintReportProps) {
   return (
-    <article className="print-report" data-testid="print-report" aria-label={m.title}>
+    <article
+      className={c.forces.length > 0 ? 'print-report print-report-long' : 'print-report'}
+      data-testid="print-report"
+      aria-label={m.title}
+    >
       <header className="report-head">
         <h1>{c.title}</h1>
         <p>{c.subtitle}</p>
@@ -65,9 +69,19 @@ export function PrintReport({ content: c, m }: PrintReportProps) {
         </div>
       </div>
       <section>
+        <h2>{m.setup}</h2>
+        <FactList facts={c.setup} />
+      </section>
+      <section>
         <h2>{m.metrics}</h2>
         <FactList facts={c.metrics} />
       </section>
+      {c.forces.length > 0 ? (
+        <section>
+          <h2>{m.forces}</h2>
+          <FactList facts={c.forces} />
+        </section>
+      ) : null}
       <section>
         <h2>{m.plots}</h2>
         <div className={`report-plots report-plots-${c.plots.length}`}>

@@ -28,4 +28,8 @@ export interface ReportContent {
   atTheta2Title: string;
   atTheta2: ReportFact[];
   plots: ReportPlot[];
+  /** The input and units (ω2 in its unit, the length unit), and a synthesized design's coupler point, placement, targets. */
+  setup: ReportFact[];
+  /** With Forces on: the input torque, pin forces and shaking at θ2, the cycle's torque and flywheel; else empty. */
+  forces: ReportFact[];
 }

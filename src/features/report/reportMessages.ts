@@ -22,6 +22,16 @@ export interface ReportMessages {
   value: string;
   /** The figure's caption: the link lengths. */
   lengths: (text: string) => string;
+  /** The input and units section, and its facts' labels. */
+  setup: string;
+  lengthUnit: string;
+  omega2: string;
+  couplerPoint: string;
+  placement: (x: string, y: string, angle: string) => string;
+  placementLabel: string;
+  targets: string;
+  /** The forces section (Forces on). */
+  forces: string;
 }
 
 const EN: ReportMessages = {
@@ -38,6 +48,14 @@ const EN: ReportMessages = {
   quantity: 'Quantity',
   value: 'Value',
   lengths: (text) => `Link lengths: ${text}`,
+  setup: 'Input and units',
+  lengthUnit: 'Length unit',
+  omega2: 'Input speed ω2',
+  couplerPoint: 'Coupler point',
+  placement: (x, y, angle) => `O2 at (${x}, ${y}), ground at ${angle}°`,
+  placementLabel: 'Placement',
+  targets: 'Targets',
+  forces: 'Forces',
 };
 
 const ZH_TW: ReportMessages = {
@@ -53,6 +71,14 @@ const ZH_TW: ReportMessages = {
   quantity: '物理量',
   value: '數值',
   lengths: (text) => `桿長：${text}`,
+  setup: '輸入與單位',
+  lengthUnit: '長度單位',
+  omega2: '輸入轉速 ω2',
+  couplerPoint: '連桿點',
+  placement: (x, y, angle) => `O2 位於 (${x}, ${y})，機架角 ${angle}°`,
+  placementLabel: '擺放位置',
+  targets: '目標點',
+  forces: '力',
 };
 
 /** The report's strings in every language (small: both bundled). */
