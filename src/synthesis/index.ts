@@ -7,6 +7,7 @@ export { checkPlaced, fourBarFromJoints, placedCouplerPoint, placedJoints } from
 export {
   DEFAULT_BUDGET_MS,
   DEFAULT_ROUNDS,
+  POLISH_SHARE,
   PROGRESS_CANDIDATES,
   mergePathCandidates,
   pathSynthesis,

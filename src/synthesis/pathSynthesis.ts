@@ -82,6 +82,8 @@ const MIN_ROUNDS_AFTER_EXACT = 2;
 const KEEP = 64;
 /** Candidates a part keeps (best first): every one up to 400 rounds of 4 starts; beyond, the best. */
 const PART_KEEP = 4096;
+/** Share of pathSynthesis's budget kept for the final polish (the global stage stops before it). */
+export const POLISH_SHARE = 0.1;
 /** Most time the final polish may take past the budget (ms). */
 const MERGE_MS = 200;
 /** Work between yields to the event loop (ms), so an abort posted from another thread is seen. */
@@ -273,10 +275,13 @@ export async function pathSynthesis(task: PathTask, options: PathSynthesisOption
     throw new Error(`options must be an object, got ${show(options)}`);
   }
   const start = Date.now();
-  const run = await pathSynthesisPart(task, { ...options, part: 0, parts: 1 });
+  const budgetMs = options.budgetMs ?? DEFAULT_BUDGET_MS;
+  // The global stage stops at (1 − POLISH_SHARE) of the budget, so the final polish has the rest: a best fit along a
+  // flat valley is often reached there (the rounds' solves stop at LOCAL_ITERATIONS).
+  const partOptions = { ...options, part: 0, parts: 1, budgetMs: (1 - POLISH_SHARE) * budgetMs };
+  const run = await pathSynthesisPart(task, partOptions);
   // The merge's polish gets a tenth of the budget (at most MERGE_MS) past it, or MERGE_MS after an abort; with
   // rounds given and the run ended by its own rule, it is unbounded so that the answers are reproducible.
-  const budgetMs = options.budgetMs ?? DEFAULT_BUDGET_MS;
   const deadline = options.signal?.aborted
     ? Date.now() + MERGE_MS
     : options.rounds !== undefined && run.complete

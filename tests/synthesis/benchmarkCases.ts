@@ -70,6 +70,16 @@ export function exactTargets(design: OracleDesign, theta2: number[]): { x: numbe
   });
 }
 
+/** Six points at 36° steps on the circle of radius 10 about (10, 0), to 1e-4 as published. */
+const SEMICIRCLE = [
+  [0, 0],
+  [1.9098, 5.8779],
+  [6.9098, 9.5106],
+  [13.09, 9.5106],
+  [18.09, 5.8779],
+  [20, 0],
+].map(([x, y]) => ({ x, y }));
+
 const freeThetas = [0.3, 0.9, 1.4, 2.2, 2.9, 3.6, 4.3, 5.0, 5.7];
 const stepThetas = Array.from({ length: 12 }, (_, i) => -0.5 + i * deg(25));
 
@@ -143,14 +153,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     id: 'semicircle-6',
     title: 'Six points on a semicircle of radius 10, free timing',
     task: {
-      targets: [
-        [0, 0],
-        [1.9098, 5.8779],
-        [6.9098, 9.5106],
-        [13.09, 9.5106],
-        [18.09, 5.8779],
-        [20, 0],
-      ].map(([x, y]) => ({ x, y })),
+      targets: SEMICIRCLE,
       timing: { kind: 'free' },
       bounds: WIDE_50,
     },
@@ -165,14 +168,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     id: 'semicircle-6-timed',
     title: 'Six points on a semicircle of radius 10 with prescribed timing θ2 = 30°, 60°, … 180°',
     task: {
-      targets: [
-        [0, 0],
-        [1.9098, 5.8779],
-        [6.9098, 9.5106],
-        [13.09, 9.5106],
-        [18.09, 5.8779],
-        [20, 0],
-      ].map(([x, y]) => ({ x, y })),
+      targets: SEMICIRCLE,
       timing: { kind: 'given', theta2: [30, 60, 90, 120, 150, 180].map(deg) },
       bounds: WIDE_50,
       input: 'crank',
