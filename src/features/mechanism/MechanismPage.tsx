@@ -1,5 +1,5 @@
 import './MechanismPage.css';
-import { useMemo, useRef, useState } from 'react';
+import { useDeferredValue, useMemo, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
 import type { MechanismSpec } from '../../mechanism';
@@ -22,7 +22,7 @@ import { formatNumber } from '../../shared/format';
 import type { ViewOffset } from '../../shared/state/appState';
 import type { MechanismJobs } from './jobs';
 import type { MechAnalysis } from './mechAnalysis';
-import { analyseMechanism, runRange, valueAt } from './mechAnalysis';
+import { analyseMechanism, runRange, valueAt, withRefinedLimits } from './mechAnalysis';
 import { csvInputs, mechCsv } from './mechCsv';
 import type { MechMessages } from './mechMessages';
 import { mechMessagesFor } from './mechMessages';
@@ -165,7 +165,10 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
-  const analysis = useMemo(() => analyseMechanism(spec), [spec]);
+  // The rocking limits are refined once the edits settle (a deferred render), not at every move of a drag.
+  const analysis = useMemo(() => analyseMechanism(spec, false), [spec]);
+  const settled = useDeferredValue(analysis);
+  const refined = useMemo(() => withRefinedLimits(settled), [settled]);
   const range = runRange(analysis);
   const kind = analysis.grid?.kind ?? 'R';
   const span = range ? range[1] - range[0] : 0;
@@ -249,7 +252,7 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
 
   const inputJoint = spec.input.joint;
   const inputText = (t: number) => (kind === 'R' ? `${formatNumber(radToDeg(t), 4)}°` : formatNumber(t, 4));
-  const status = statusText(analysis, m, inputText);
+  const status = statusText(refined.spec === spec ? refined : analysis, m, inputText);
   const limitText = drive.limitAt !== null && drive.playing ? m.atLimit(inputText(drive.limitAt)) : null;
 
   const place = (kindToPlace: PlaceKind, at: Pt) => {

@@ -32,7 +32,7 @@ export interface MechAnalysis {
   run: [number, number] | null;
   /** A pin input that assembles over the whole turn: Play wraps instead of rocking. */
   fullTurn: boolean;
-  /** The run's ends refined to LIMIT_TOLERANCE of the grid's span where the linkage stops (refineLimits). */
+  /** The run's ends, refined to LIMIT_TOLERANCE of the grid's span where the linkage stops (withRefinedLimits). */
   limits: [number, number] | null;
 }
 
@@ -94,7 +94,7 @@ export function assembledRun(ok: ArrayLike<number>, i0: number): [number, number
  * Analyses a spec for the page: its mobility and what stops it, and when it runs, its poses on the input grid
  * (positions only: the rates come from the worker) and the run Play moves over.
  */
-export function analyseMechanism(spec: MechanismSpec): MechAnalysis {
+export function analyseMechanism(spec: MechanismSpec, refine = true): MechAnalysis {
   const m = spec.links.includes(GROUND) ? mobility(spec) : NaN;
   const problem = mechProblem(spec);
   const none = { spec, mobility: m, grid: null, sweep: null, run: null, fullTurn: false, limits: null };
@@ -104,8 +104,17 @@ export function analyseMechanism(spec: MechanismSpec): MechAnalysis {
   const run = assembledRun(sweep.ok, -grid.kLo);
   if (!run) return { ...none, grid, sweep, problem: { code: 'singular' } };
   const fullTurn = grid.kind === 'R' && run[0] === 0 && run[1] === grid.inputs.length - 1;
-  const limits = fullTurn ? runEnds(grid, run) : refineLimits(spec, grid, run);
-  return { spec, mobility: m, problem: null, grid, sweep, run, fullTurn, limits };
+  const analysis = { spec, mobility: m, problem: null, grid, sweep, run, fullTurn, limits: runEnds(grid, run) };
+  return refine ? withRefinedLimits(analysis) : analysis;
+}
+
+/**
+ * The analysis with a rocking input's limits refined (refineLimits: tens of sweeps, up to about 0.1 s on a six-bar),
+ * or itself where the input turns fully or does not run. The page refines once its edits settle, not per drag move.
+ */
+export function withRefinedLimits(a: MechAnalysis): MechAnalysis {
+  if (!a.grid || !a.run || a.fullTurn) return a;
+  return { ...a, limits: refineLimits(a.spec, a.grid, a.run) };
 }
 
 /** The input range Play moves over: the run's ends (a full turn: [−π, π]). */
