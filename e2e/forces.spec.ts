@@ -3,7 +3,8 @@ import { expect, test } from '@playwright/test';
 import type { Locator, Page } from '@playwright/test';
 import { oracleForces } from '../tests/solver/forcesOracle';
 import type { OracleInertia, OracleLoads } from '../tests/solver/forcesOracle';
-import { CYCLE_CSV_FORCE_COLUMNS, artifact, csvRowsOf, waitReady } from './helpers';
+import { CYCLE_CSV_FORCE_COLUMNS } from '../tests/shared/csvTable';
+import { artifact, csvRowsOf, waitReady } from './helpers';
 
 /**
  * Forces (issue 20) driven as a person does: a link with the forces on, the panel's input torque against the

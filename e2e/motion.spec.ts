@@ -1,7 +1,8 @@
 import { expect, test } from '@playwright/test';
 import type { Page } from '@playwright/test';
 import { referenceMotion } from '../tests/oracle/rates';
-import { CYCLE_CSV_MOTION_COLUMNS, artifact, csvRowsOf, waitReady } from './helpers';
+import { CYCLE_CSV_MOTION_COLUMNS } from '../tests/shared/csvTable';
+import { artifact, csvRowsOf, waitReady } from './helpers';
 
 /** The report's linkage, the app's default: r1 = 6, r2 = 2, r3 = 5, r4 = 5, P at 2.5 and 30 degrees. */
 const L = { r1: 6, r2: 2, r3: 5, r4: 5 };

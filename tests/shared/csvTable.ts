@@ -14,7 +14,10 @@ export function csvTable(text: string): {
   return { header, data: rows.slice(1), col: (row, name) => Number(row[header.indexOf(name)]) };
 }
 
-/** The cycle CSV's columns with the motion columns, in the issues' order (written here, not read from the app). */
+/**
+ * The cycle CSV's columns with the motion columns, in the issues' order (written here, not read from the app; the
+ * e2e specs read them too).
+ */
 export const CYCLE_CSV_MOTION_COLUMNS = [
   'theta2_deg',
   'theta3_deg',

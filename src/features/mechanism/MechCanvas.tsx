@@ -1,13 +1,12 @@
-import { useLayoutEffect, useRef, useState } from 'react';
+import { useLayoutEffect } from 'react';
 import type { KeyboardEvent } from 'react';
 import type { ViewOffset } from '../../shared/state/appState';
-import type { Bounds } from '../../shared/canvas/view';
+import type { Bounds, ViewTransform } from '../../shared/canvas/view';
 import { fitView, toScreenX, toScreenY, toWorld } from '../../shared/canvas/view';
-import { usePanZoom } from '../../shared/canvas/usePanZoom';
 import type { ScreenPoint } from '../../shared/canvas/canvasGestures';
 import { PanZoomCanvas } from '../../shared/canvas/PanZoomCanvas';
 import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
-import { useElementSize } from '../../shared/hooks/useElementSize';
+import { useFittedCanvas } from '../../shared/canvas/useFittedCanvas';
 import type { MechPicture } from './drawMechanism';
 import { drawMechanism } from './drawMechanism';
 import type { Pt } from './mechPose';
@@ -51,12 +50,7 @@ export function MechCanvas({
   placing,
   viewRef,
 }: MechCanvasProps) {
-  const wrapRef = useRef<HTMLDivElement>(null);
-  const canvasRef = useRef<HTMLCanvasElement>(null);
-  const { width, height } = useElementSize(wrapRef);
-  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
-  const transform = fitView(bounds, width, height, view);
-  const nearest = (p: ScreenPoint, pointerType: string): string | null => {
+  const nearest = (transform: ViewTransform, p: ScreenPoint, pointerType: string): string | null => {
     const r = pointerType === 'touch' || pointerType === 'pen' ? GRAB_PX.touch : GRAB_PX.mouse;
     let best: string | null = null;
     let bestD = r;
@@ -70,26 +64,23 @@ export function MechCanvas({
     }
     return best;
   };
-  const panZoom = usePanZoom<string>({
-    canvasRef,
-    view,
-    onViewChange: setView,
-    width,
-    height,
-    grab: (p, pointerType) => (placing ? null : nearest(p, pointerType)),
+  const fitted = useFittedCanvas<string>(bounds, (at) => ({
+    grab: (p, pointerType) => (placing ? null : nearest(at(), p, pointerType)),
     onGrab,
-    onDrag: (id, p) => onDrag(id, toWorld(transform, p.x, p.y)),
+    onDrag: (id, p) => onDrag(id, toWorld(at(), p.x, p.y)),
     onTap: (p) => {
-      const id = placing ? nearest(p, 'touch') : null;
-      onTap(id ? (picture.pose.joints[id] ?? picture.pose.points[id]) : toWorld(transform, p.x, p.y));
+      const id = placing ? nearest(at(), p, 'touch') : null;
+      onTap(id ? (picture.pose.joints[id] ?? picture.pose.points[id]) : toWorld(at(), p.x, p.y));
     },
-  });
+  }));
+  const { frame, canvasRef, width, height, view } = fitted;
+  const transform = fitted.transform();
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
     if (sized) drawMechanism(sized.ctx, picture, fitView(bounds, width, height, view));
     if (viewRef) viewRef.current = { width, height, offset: view };
-  }, [picture, bounds, view, width, height, viewRef]);
+  }, [canvasRef, picture, bounds, view, width, height, viewRef]);
   const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
     const step = e.shiftKey ? 10 : 1;
     const d: Record<string, [number, number]> = {
@@ -106,10 +97,8 @@ export function MechCanvas({
   };
   return (
     <PanZoomCanvas
-      wrapRef={wrapRef}
-      canvasRef={canvasRef}
+      frame={frame}
       wrapClassName="mech-canvas-wrap"
-      panZoom={panZoom}
       canvas={{
         className: 'mech-canvas',
         role: 'img',

@@ -130,10 +130,8 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
 
   return (
     <PanZoomCanvas
-      wrapRef={wrapRef}
-      canvasRef={canvasRef}
+      frame={{ wrapRef, canvasRef, panZoom }}
       wrapClassName="canvas-wrap"
-      panZoom={panZoom}
       canvas={{
         className: 'linkage-canvas',
         role: 'img',

@@ -11,13 +11,18 @@ type CanvasAttributes = Omit<
   'onKeyDown' | 'tabIndex' | 'title' | 'aria-describedby' | 'onPointerLeave' | keyof PanZoom['pointerHandlers']
 > & { [data: `data-${string}`]: string | number | undefined };
 
-/** Props of PanZoomCanvas: the refs, the canvas's pan and zoom (usePanZoom's), its attributes, keys, hint, overlays. */
-export interface PanZoomCanvasProps {
+/** The wrapper's and the canvas's refs and the canvas's pan and zoom (usePanZoom's): useFittedCanvas's frame. */
+export interface PanZoomFrame {
   wrapRef: RefObject<HTMLDivElement | null>;
   canvasRef: RefObject<HTMLCanvasElement | null>;
+  panZoom: PanZoom;
+}
+
+/** Props of PanZoomCanvas: the frame (refs, pan and zoom), the canvas's attributes, keys, hint, overlays. */
+export interface PanZoomCanvasProps {
+  frame: PanZoomFrame;
   /** The class of the wrapper (it sizes the canvas: useElementSize on wrapRef). */
   wrapClassName: string;
-  panZoom: PanZoom;
   canvas: CanvasAttributes;
   /** Told of each pointer move after the pan and zoom's handler (a cursor readout), and when the pointer leaves. */
   onPointerMove?: (e: PointerEvent<HTMLCanvasElement>) => void;
@@ -41,7 +46,8 @@ export interface PanZoomCanvasProps {
  * draws into canvasRef and holds the view.
  */
 export function PanZoomCanvas(props: PanZoomCanvasProps) {
-  const { wrapRef, canvasRef, wrapClassName, panZoom, canvas, onKeyDown, zoomLabels, hint } = props;
+  const { frame, wrapClassName, canvas, onKeyDown, zoomLabels, hint } = props;
+  const { wrapRef, canvasRef, panZoom } = frame;
   const hintId = useId();
   return (
     <div className={`pan-zoom-wrap ${wrapClassName}`} ref={wrapRef}>

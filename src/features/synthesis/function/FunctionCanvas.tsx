@@ -1,8 +1,6 @@
-import { useLayoutEffect, useRef, useState } from 'react';
-import type { ViewOffset } from '../../../shared/state/appState';
+import { useLayoutEffect } from 'react';
+import { useFittedCanvas } from '../../../shared/canvas/useFittedCanvas';
 import { fitView } from '../../../shared/canvas/view';
-import { usePanZoom } from '../../../shared/canvas/usePanZoom';
-import { useElementSize } from '../../../shared/hooks/useElementSize';
 import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import { sizeCanvas } from '../../../shared/canvas/sizeCanvas';
 import { CanvasExports } from '../CanvasExports';
@@ -17,29 +15,17 @@ export interface FunctionCanvasProps {
 
 /** The function generator on a pan-and-zoom canvas (drag pans, wheel or pinch zooms, + − 0 on the keyboard). */
 export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
-  const wrapRef = useRef<HTMLDivElement>(null);
-  const canvasRef = useRef<HTMLCanvasElement>(null);
-  const { width, height } = useElementSize(wrapRef);
-  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
   const bounds = functionBounds(picture);
-  const panZoom = usePanZoom<never>({
-    canvasRef,
-    view,
-    onViewChange: setView,
-    width,
-    height,
-  });
+  const { frame, canvasRef, width, height, view, transform } = useFittedCanvas(bounds);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
     if (sized) drawFunction(sized.ctx, picture, fitView(bounds, width, height, view));
-  }, [picture, bounds, view, width, height]);
+  }, [canvasRef, picture, bounds, view, width, height]);
   return (
     <PanZoomCanvas
-      wrapRef={wrapRef}
-      canvasRef={canvasRef}
+      frame={frame}
       wrapClassName="syn-canvas-wrap"
-      panZoom={panZoom}
       canvas={{
         className: 'synmode-canvas',
         role: 'img',
@@ -50,7 +36,7 @@ export function FunctionCanvas({ picture, labels }: FunctionCanvasProps) {
       zoomLabels={labels}
     >
       <CanvasExports
-        draw={(ctx) => drawFunction(ctx, picture, fitView(bounds, width, height, view))}
+        draw={(ctx) => drawFunction(ctx, picture, transform())}
         width={width}
         height={height}
         fileBase="synthesis-function"

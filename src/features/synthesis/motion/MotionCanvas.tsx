@@ -1,14 +1,12 @@
-import { useLayoutEffect, useRef, useState } from 'react';
-import type { KeyboardEvent, RefObject } from 'react';
+import { useLayoutEffect, useState } from 'react';
+import type { KeyboardEvent } from 'react';
 import { flushSync } from 'react-dom';
 import { radToDeg } from '../../../solver';
 import type { Point } from '../../../solver';
-import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
+import type { Bounds } from '../../../shared/canvas/view';
 import { fitView, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
 import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
-import { usePanZoom } from '../../../shared/canvas/usePanZoom';
-import { useElementSize } from '../../../shared/hooks/useElementSize';
-import type { ViewOffset } from '../../../shared/state/appState';
+import { useFittedCanvas } from '../../../shared/canvas/useFittedCanvas';
 import type { PoseDeg } from '../../../shared/state/slices/synMotionSlice';
 import type { MotionHandle, MotionPicture } from './motionPicture';
 import { drawMotion, handleAt, motionBounds, turnHandlePx } from './motionPicture';
@@ -72,23 +70,11 @@ function draggedPose(pose: PoseDeg, handle: MotionHandle, at: Point, scale: numb
 }
 
 /** Pointer, wheel and key handling of the Motion canvas; the fit holds while a handle is dragged. */
-function useMotionGestures(
-  props: MotionCanvasProps,
-  canvas: RefObject<HTMLCanvasElement | null>,
-  width: number,
-  height: number,
-) {
+function useMotionGestures(props: MotionCanvasProps) {
   const { picture, onPose, onPivot, onSelect, onTap } = props;
-  const [view, setView] = useState<ViewOffset>({ zoom: 1, panX: 0, panY: 0 });
   const [heldBounds, setHeldBounds] = useState<Bounds | null>(null);
   const bounds = heldBounds ?? motionBounds(picture);
-  const transform = (): ViewTransform => fitView(bounds, width, height, view);
-  const panZoom = usePanZoom<MotionHandle>({
-    canvasRef: canvas,
-    view,
-    onViewChange: setView,
-    width,
-    height,
+  const fitted = useFittedCanvas<MotionHandle>(bounds, (transform) => ({
     grab: (p, pointerType) => handleAt(picture, transform(), p, grabRadiusPx(pointerType)),
     onDrag: (handle, p) => {
       const v = transform();
@@ -110,7 +96,8 @@ function useMotionGestures(
       const v = transform();
       onTap(toWorld(v, p.x, p.y), 20 / v.scale);
     },
-  });
+  }));
+  const transform = fitted.transform;
   const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
     const n = Number(e.key);
     if (Number.isInteger(n) && n >= 1 && n <= picture.poses.length) {
@@ -130,7 +117,7 @@ function useMotionGestures(
       onPose(picture.selected, { x, y, angleDeg: deg });
     }
   };
-  return { bounds, view, panZoom, onKeyDown };
+  return { ...fitted, bounds, onKeyDown };
 }
 
 /**
@@ -140,10 +127,7 @@ function useMotionGestures(
  */
 export function MotionCanvas(props: MotionCanvasProps) {
   const { picture, labels } = props;
-  const wrapRef = useRef<HTMLDivElement>(null);
-  const canvasRef = useRef<HTMLCanvasElement>(null);
-  const { width, height } = useElementSize(wrapRef);
-  const { bounds, view, panZoom, onKeyDown } = useMotionGestures(props, canvasRef, width, height);
+  const { frame, canvasRef, width, height, view, bounds, onKeyDown } = useMotionGestures(props);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
     const sized = canvas && sizeCanvas(canvas, width, height);
@@ -161,14 +145,12 @@ export function MotionCanvas(props: MotionCanvasProps) {
     const c = picture.cursor?.center;
     if (c) canvas.dataset.cursor = at(toScreenX(v, c.x), toScreenY(v, c.y));
     else delete canvas.dataset.cursor;
-  }, [picture, bounds, view, width, height]);
+  }, [canvasRef, picture, bounds, view, width, height]);
 
   return (
     <PanZoomCanvas
-      wrapRef={wrapRef}
-      canvasRef={canvasRef}
+      frame={frame}
       wrapClassName="syn-canvas-wrap"
-      panZoom={panZoom}
       canvas={{
         className: 'synmode-canvas',
         role: 'img',

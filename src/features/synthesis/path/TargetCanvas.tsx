@@ -6,13 +6,12 @@ import type { DrawContext } from '../../../shared/canvas/drawContext';
 import { placedJoints } from '../../../synthesis/placed';
 import type { ScreenPoint } from '../../../shared/canvas/canvasGestures';
 import { grabRadiusPx } from '../../../shared/canvas/canvasGestures';
-import { usePanZoom } from '../../../shared/canvas/usePanZoom';
+import { useFittedCanvas } from '../../../shared/canvas/useFittedCanvas';
 import { PanZoomCanvas } from '../../../shared/canvas/PanZoomCanvas';
 import type { Bounds, ViewTransform } from '../../../shared/canvas/view';
-import { fitView, gridLines, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
+import { gridLines, niceStep, toScreenX, toScreenY, toWorld } from '../../../shared/canvas/view';
 import { formatNumber } from '../../../shared/format';
 import { useAnimationFrame } from '../../../shared/hooks/useAnimationFrame';
-import { useElementSize } from '../../../shared/hooks/useElementSize';
 import type { ViewOffset } from '../../../shared/state/appState';
 import type { SynthesisMessages } from '../synthesisMessages';
 import type { MotionRange } from './candidateFacts';
@@ -94,27 +93,22 @@ function keyMove(e: { key: string; shiftKey: boolean }): [number, number] | null
  */
 export function TargetCanvas(props: TargetCanvasProps) {
   const { targets, selected, curves, moving, bounds, view, onViewChange, canvasRef, st } = props;
-  const wrapRef = useRef<HTMLDivElement>(null);
   const phase = useRef(0);
   const [cursor, setCursor] = useState<Point | null>(null);
-  const { width, height } = useElementSize(wrapRef);
-  const transform = () => fitView(bounds, width, height, view);
-
-  const panZoom = usePanZoom<number>({
-    canvasRef,
-    view,
-    onViewChange,
-    width,
-    height,
-    grab: (p, pointerType) => targetAt(targets, transform(), p, grabRadiusPx(pointerType)),
-    onGrab: (i) => {
-      if (i !== null) props.onSelect(i);
-    },
-    onDrag: (i, p) => props.onMove(i, worldAt(transform(), p)),
-    onTap: (p) => {
-      props.onAdd(worldAt(transform(), p));
-    },
-  });
+  const { frame, width, height, transform } = useFittedCanvas<number>(
+    bounds,
+    (at) => ({
+      grab: (p, pointerType) => targetAt(targets, at(), p, grabRadiusPx(pointerType)),
+      onGrab: (i) => {
+        if (i !== null) props.onSelect(i);
+      },
+      onDrag: (i, p) => props.onMove(i, worldAt(at(), p)),
+      onTap: (p) => {
+        props.onAdd(worldAt(at(), p));
+      },
+    }),
+    { canvasRef, view, onViewChange },
+  );
 
   const names = targets.map((_, i) => st.targetName(i + 1));
   const draw = () => {
@@ -145,10 +139,8 @@ export function TargetCanvas(props: TargetCanvasProps) {
 
   return (
     <PanZoomCanvas
-      wrapRef={wrapRef}
-      canvasRef={canvasRef}
+      frame={frame}
       wrapClassName="syn-canvas-wrap"
-      panZoom={panZoom}
       canvas={{
         className: 'syn-canvas',
         role: 'application',
