@@ -275,7 +275,14 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   ];
   panels.forEach((p, i) => {
     const el = child(s, 'svg', p.cls).attr('x', 0).attr('y', p.y).node() as SVGSVGElement;
-    const size = chartSize({ width, height: p.h, margins: p.margins, xTickSpacing: 60, yTickSpacing: i ? 18 : 24 });
+    const size = chartSize({
+      width,
+      height: p.h,
+      margins: p.margins,
+      xTickSpacing: 60,
+      xMaxTicks: Infinity,
+      yTickSpacing: i ? 18 : 24,
+    });
     createChart(el, size, texts[i], p.spec, panel).setMarker(true);
   });
 }
