@@ -2,28 +2,12 @@ import type { ScaleContinuousNumeric } from 'd3-scale';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
-import type { ChartScales, ChartSpec, ChartTexts, GSel, MarkerAt, PlotArea } from '../../shared/charts/chart';
+import type { ChartScales, ChartSpec, ChartTexts, GSel, MarkerAt } from '../../shared/charts/chart';
 import { chartSize, createChart, logFloor } from '../../shared/charts/chart';
 import type { Margins } from '../../shared/charts/chartFrame';
-import {
-  CHART_STYLE,
-  LEGEND_ROW,
-  child,
-  estimateTextWidth,
-  legendRows,
-  minus,
-  prepareSvg,
-} from '../../shared/charts/chartFrame';
-import {
-  angleTicks,
-  fittedTicks,
-  dec,
-  decadeTicks,
-  integerTicks,
-  logTicks,
-  niceCountDomain,
-  niceLogDomain,
-} from '../../shared/charts/ticks';
+import { CHART_STYLE, LEGEND_ROW, child, legendRows, minus, prepareSvg } from '../../shared/charts/chartFrame';
+import { dec, decadeTicks, integerTicks, logTicks, niceCountDomain, niceLogDomain } from '../../shared/charts/ticks';
+import { theta2XAxis } from '../../shared/charts/theta2Chart';
 import { METHOD_COLORS } from './workPrecisionChart';
 
 /**
@@ -167,18 +151,6 @@ interface CyclePanelData {
   labels: Partial<Record<SweepMethod, string>>;
 }
 
-/** The θ2 axis of a panel: 0..360 degrees across iw, ticks on the angle lattice about 60 px apart whose labels fit. */
-function theta2Axis(plot: PlotArea): Pick<ChartScales, 'x' | 'xTicks'> {
-  const x = scaleLinear().domain([0, 360]).range([0, plot.iw]);
-  const xTicks = fittedTicks(
-    (c) => angleTicks(0, 360, c),
-    x,
-    (t) => estimateTextWidth(`${t}`),
-    plot.xCount,
-  );
-  return { x, xTicks };
-}
-
 /** Shades the stretches where the linkage cannot assemble (|det J| is NaN) over the panel's height. */
 function drawBands(g: GSel, { data }: CyclePanelData, frame: ChartScales): void {
   g.selectAll<SVGRectElement, [number, number]>('rect')
@@ -228,7 +200,7 @@ export const iterationsSpec: ChartSpec<CyclePanelData, true> = {
     const y: ScaleContinuousNumeric<number, number> = (itMax > 20 ? scaleSymlog() : scaleLinear())
       .domain([0, itAll[itAll.length - 1]])
       .range([plot.ih, 4]);
-    return { ...theta2Axis(plot), y, yTicks: spacedTicks(itAll, y, 13) };
+    return { ...theta2XAxis(plot), y, yTicks: spacedTicks(itAll, y, 13) };
   },
   curves: ({ data, labels }) => {
     const n = data.iterations.length;
@@ -253,7 +225,7 @@ export const detJSpec: ChartSpec<CyclePanelData, true> = {
   frame: ({ data }, plot) => {
     const [d0, d1] = detJDomain(data.detJ);
     return {
-      ...theta2Axis(plot),
+      ...theta2XAxis(plot),
       y: scaleLog().domain([d0, d1]).range([plot.ih, 0]),
       yTicks: decadeTicks(d0, d1, plot.yCount),
       yFloor: logFloor(d0, [data.detJ]),
@@ -303,7 +275,14 @@ export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options
   ];
   panels.forEach((p, i) => {
     const el = child(s, 'svg', p.cls).attr('x', 0).attr('y', p.y).node() as SVGSVGElement;
-    const size = chartSize({ width, height: p.h, margins: p.margins, xTickSpacing: 60, yTickSpacing: i ? 18 : 24 });
+    const size = chartSize({
+      width,
+      height: p.h,
+      margins: p.margins,
+      xTickSpacing: 60,
+      xMaxTicks: Infinity,
+      yTickSpacing: i ? 18 : 24,
+    });
     createChart(el, size, texts[i], p.spec, panel).setMarker(true);
   });
 }

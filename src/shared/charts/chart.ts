@@ -11,6 +11,7 @@ import {
   drawChartText,
   drawGridX,
   drawGridY,
+  drawHLines,
   drawLegend,
   legendBoxes,
   legendRows,
@@ -438,17 +439,7 @@ function drawXAxis(parts: ChartParts, frame: ChartScales, labels: readonly strin
 function drawYAxis(parts: ChartParts, frame: ChartScales, labels: readonly string[]): void {
   const { iw, y, yTicks, yFloor } = frame;
   drawGridY(parts.gridY, iw, yTicks, y);
-  parts.gridY
-    .selectAll<SVGLineElement, number>('line.floor')
-    .data(yFloor === undefined ? [] : [yFloor])
-    .join('line')
-    .attr('class', 'floor')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.tolerance)
-    .attr('stroke-dasharray', '3 3');
+  drawHLines(parts.gridY, 'floor', yFloor === undefined ? [] : [yFloor], iw, y, CHART_STYLE.tolerance, '3 3');
   parts.ay.call(
     axisLeft(y)
       .tickValues(yTicks)

@@ -207,6 +207,28 @@ export function drawLegend(s: SvgSel, items: readonly LegendItem[], x: number, y
   return legendRows(items, maxWidth);
 }
 
+/** Horizontal lines of class cls at these values (y maps a value to pixels) across width pixels in g; dashed when dash is given. */
+export function drawHLines(
+  g: Selection<SVGGElement, unknown, null, undefined>,
+  cls: string,
+  values: readonly number[],
+  width: number,
+  y: (v: number) => number,
+  stroke: string,
+  dash: string | null = null,
+): void {
+  g.selectAll<SVGLineElement, number>(`line.${cls}`)
+    .data(values)
+    .join('line')
+    .attr('class', cls)
+    .attr('x1', 0)
+    .attr('x2', width)
+    .attr('y1', (d) => y(d))
+    .attr('y2', (d) => y(d))
+    .attr('stroke', stroke)
+    .attr('stroke-dasharray', dash);
+}
+
 /** Horizontal grid lines (class gy) at yTicks across width pixels, in group g. */
 export function drawGridY(
   g: Selection<SVGGElement, unknown, null, undefined>,
@@ -214,15 +236,7 @@ export function drawGridY(
   yTicks: readonly number[],
   y: (v: number) => number,
 ): void {
-  g.selectAll<SVGLineElement, number>('line.gy')
-    .data(yTicks)
-    .join('line')
-    .attr('class', 'gy')
-    .attr('x1', 0)
-    .attr('x2', width)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.gridColor);
+  drawHLines(g, 'gy', yTicks, width, y, CHART_STYLE.gridColor);
 }
 
 /** Vertical grid lines (class gx) at xTicks down height pixels, in group g. */

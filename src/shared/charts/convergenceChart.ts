@@ -1,7 +1,7 @@
 import { scaleLinear, scaleLog } from 'd3-scale';
 import type { Chart, ChartScales, ChartSizeOptions, ChartSpec, ChartTexts, GSel, PlotArea } from './chart';
 import { createChart, logFloor } from './chart';
-import { CHART_STYLE, estimateTextWidth, minus } from './chartFrame';
+import { CHART_STYLE, drawHLines, estimateTextWidth, minus } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain } from './ticks';
 
 /**
@@ -114,15 +114,7 @@ function drawTolerance(g: GSel, data: ConvergenceChartData, frame: ChartScales):
   const { iw, y } = frame;
   const tol = drawnTolerance(data.tolerance);
   const shown = tol === undefined ? [] : [tol];
-  g.selectAll<SVGLineElement, number>('line')
-    .data(shown)
-    .join('line')
-    .attr('x1', 0)
-    .attr('x2', iw)
-    .attr('y1', (d) => y(d))
-    .attr('y2', (d) => y(d))
-    .attr('stroke', CHART_STYLE.tolerance)
-    .attr('stroke-dasharray', '5 4');
+  drawHLines(g, 'tol', shown, iw, y, CHART_STYLE.tolerance, '5 4');
   g.selectAll<SVGTextElement, number>('text')
     .data(shown)
     .join('text')

@@ -54,7 +54,7 @@ export type AngleChart = Theta2Chart<AngleSeries, AngleMarker>;
 export const NO_THETA2_DATA: Theta2ChartData<never> = { theta2Deg: [], series: [] };
 
 /** The θ2 axis of a plot area: 0..360 degrees across iw, ticks on the angle lattice whose labels fit (about xCount). */
-function theta2XAxis(plot: PlotArea): Pick<ChartScales, 'x' | 'xTicks'> {
+export function theta2XAxis(plot: PlotArea): Pick<ChartScales, 'x' | 'xTicks'> {
   const x = scaleLinear().domain([0, 360]).range([0, plot.iw]);
   const xTicks = fittedTicks(
     (c) => angleTicks(0, 360, c),
