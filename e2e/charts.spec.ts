@@ -13,14 +13,24 @@ async function markerDots(chart: Locator): Promise<number> {
   });
 }
 
+/** What screenOf reads off the screen: each point's [r, g, b], and the x of every pixel on a row within 40 of a colour. */
+interface ScreenRead {
+  pixels: Array<[number, number, number]>;
+  rowMatches: number[];
+}
+
 /**
  * The chart's box as the screen shows it: an element screenshot (what the compositor drew, marker layers included)
- * decoded in the page, sampled at CSS-pixel points of the box: each point's [r, g, b].
+ * decoded in the page, read at CSS-pixel points of the box, and along one row (CSS-pixel y) for pixels near a colour.
  */
-async function screenPixels(chart: Locator, points: Array<[number, number]>): Promise<Array<[number, number, number]>> {
+async function screenOf(
+  chart: Locator,
+  points: Array<[number, number]>,
+  row: { y: number; rgb: [number, number, number] } | null = null,
+): Promise<ScreenRead> {
   const png = await chart.locator('xpath=..').screenshot();
   return chart.evaluate(
-    async (svg: SVGSVGElement, { b64, at }: { b64: string; at: Array<[number, number]> }) => {
+    async (svg: SVGSVGElement, { b64, at, row }) => {
       const img = new Image();
       img.src = `data:image/png;base64,${b64}`;
       await img.decode();
@@ -30,38 +40,22 @@ async function screenPixels(chart: Locator, points: Array<[number, number]>): Pr
       const ctx = canvas.getContext('2d')!;
       ctx.drawImage(img, 0, 0);
       const k = img.naturalWidth / svg.parentElement!.getBoundingClientRect().width;
-      return at.map(([x, y]) => {
+      const pixels = at.map(([x, y]) => {
         const [r, g, b] = ctx.getImageData(Math.floor(x * k), Math.floor(y * k), 1, 1).data;
         return [r, g, b] as [number, number, number];
       });
-    },
-    { b64: png.toString('base64'), at: points },
-  );
-}
-
-/** A rows of the chart's box as the screen shows it (element screenshot, CSS-pixel y): the x (CSS px) of every pixel within 40 of rgb. */
-async function screenRowMatches(chart: Locator, y: number, rgb: [number, number, number]): Promise<number[]> {
-  const png = await chart.locator('xpath=..').screenshot();
-  return chart.evaluate(
-    async (svg: SVGSVGElement, { b64, y, rgb }: { b64: string; y: number; rgb: [number, number, number] }) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${b64}`;
-      await img.decode();
-      const canvas = document.createElement('canvas');
-      canvas.width = img.naturalWidth;
-      canvas.height = img.naturalHeight;
-      const ctx = canvas.getContext('2d')!;
-      ctx.drawImage(img, 0, 0);
-      const k = img.naturalWidth / svg.parentElement!.getBoundingClientRect().width;
-      const row = ctx.getImageData(0, Math.round(y * k), canvas.width, 1).data;
-      const xs: number[] = [];
-      for (let i = 0; i < canvas.width; i++) {
-        const d = Math.abs(row[4 * i] - rgb[0]) + Math.abs(row[4 * i + 1] - rgb[1]) + Math.abs(row[4 * i + 2] - rgb[2]);
-        if (d < 40) xs.push((i + 0.5) / k);
+      const rowMatches: number[] = [];
+      if (row) {
+        const d = ctx.getImageData(0, Math.round(row.y * k), canvas.width, 1).data;
+        for (let i = 0; i < canvas.width; i++) {
+          const off =
+            Math.abs(d[4 * i] - row.rgb[0]) + Math.abs(d[4 * i + 1] - row.rgb[1]) + Math.abs(d[4 * i + 2] - row.rgb[2]);
+          if (off < 40) rowMatches.push((i + 0.5) / k);
+        }
       }
-      return xs;
+      return { pixels, rowMatches };
     },
-    { b64: png.toString('base64'), y, rgb },
+    { b64: png.toString('base64'), at: points, row },
   );
 }
 
@@ -113,10 +107,12 @@ async function markerOffsets(chart: Locator): Promise<Array<{ own: number; other
     });
   });
   // The screen really shows each dot there: its pixel at the dot's centre is the dot's colour.
-  const shown = await screenPixels(
-    chart,
-    placed.map((d) => d.at),
-  );
+  const shown = (
+    await screenOf(
+      chart,
+      placed.map((d) => d.at),
+    )
+  ).pixels;
   return placed.map((d, i) => {
     const want = rgbOf(d.fill);
     const got = shown[i];
@@ -309,7 +305,7 @@ test.describe('chart markers on a high-density screen', () => {
           .map(Number);
         return { left: l, top: t, x: Number(box?.dataset.x) };
       });
-      const painted = await screenRowMatches(chart, top + 4, rgbOf(MARKER_COLOR));
+      const painted = (await screenOf(chart, [], { y: top + 4, rgb: rgbOf(MARKER_COLOR) })).rowMatches;
       const offset =
         painted.length === 0 ? Infinity : Math.abs((painted[0] + painted[painted.length - 1]) / 2 - (left + x));
       expect(offset).toBeLessThan(1.5);

@@ -274,6 +274,8 @@ export async function pathSynthesis(task: PathTask, options: PathSynthesisOption
   if (typeof options !== 'object' || options === null) {
     throw new Error(`options must be an object, got ${show(options)}`);
   }
+  // Checked as given, before the budget is split (a bad value is named as the caller wrote it).
+  checkOptions(options);
   const start = Date.now();
   const budgetMs = options.budgetMs ?? DEFAULT_BUDGET_MS;
   // The global stage stops at (1 − POLISH_SHARE) of the budget, so the final polish has the rest: a best fit along a
