@@ -502,7 +502,11 @@ function drawAxes<D, M, T extends ChartTexts>(parts: ChartParts, spec: ChartSpec
   const xKey = `${iw} ${ih} ${x.domain().join(',')} ${xTicks.join(',')} ${xLabels.join(',')}`;
   if (xKey !== keys.x) drawXAxis(parts, frame, xLabels);
   const yLabels = yTickLabels((spec.yTickFormat ?? plainFormat)(frame), frame);
-  const yKey = `${iw} ${ih} ${y.domain().join(',')} ${yTicks.join(',')} ${yLabels.join(',')} ${frame.yFloor}`;
+  // Keyed by what is drawn (the ticks' pixel rows, their labels, the floor's row), not by the domain: a log domain
+  // recomputed a rounding apart from the last one moves nothing on screen and must not rewrite the axis.
+  const yRow = (v: number) => y(v).toFixed(3);
+  const yFloorRow = frame.yFloor === undefined ? '' : yRow(frame.yFloor);
+  const yKey = `${iw} ${ih} ${yTicks.map(yRow).join(',')} ${yLabels.join(',')} ${yFloorRow}`;
   if (yKey !== keys.y) drawYAxis(parts, frame, yLabels);
   Object.assign(keys, { x: xKey, y: yKey });
 }

@@ -1,6 +1,6 @@
 import { scaleLinear, scaleLog } from 'd3-scale';
 import type { Chart, ChartScales, ChartSizeOptions, ChartSpec, ChartTexts, GSel, PlotArea } from './chart';
-import { createChart, logFloor } from './chart';
+import { createChart } from './chart';
 import { CHART_STYLE, drawHLines, estimateTextWidth, minus } from './chartFrame';
 import { dec, decadeTicks, fittedTicks, integerTicks, niceLogDomain } from './ticks';
 
@@ -85,7 +85,7 @@ export function formatPowerOfTen(v: number): string {
 
 /**
  * The convergence chart's frame: x 0..last iteration with whole-number ticks whose labels fit, y residualDomain
- * (log) with decade ticks, its floor (the domain's foot) when a residual is exactly zero.
+ * (log) with decade ticks, its floor at the domain's foot (exact zeros are drawn there).
  */
 export function convergenceFrame(data: ConvergenceChartData, plot: PlotArea): Omit<ChartScales, 'iw' | 'ih'> {
   const maxIt = Math.max(1, ...data.runs.map((r) => (r.iterations.length ? r.iterations[r.iterations.length - 1] : 0)));
@@ -102,10 +102,9 @@ export function convergenceFrame(data: ConvergenceChartData, plot: PlotArea): Om
       plot.xCount,
     ),
     yTicks: decadeTicks(d0, d1, plot.yCount),
-    yFloor: logFloor(
-      d0,
-      data.runs.map((r) => r.residuals),
-    ),
+    // Always the domain's foot: a floor shown only while some run has an exact zero made the axis flip between two
+    // layouts as θ2 stepped between poses that converge to 0 and poses that stop at 1e-17.
+    yFloor: d0,
   };
 }
 
