@@ -1,7 +1,7 @@
 import type { AppState } from '../../shared/state/appState';
 import { DEFAULT_STATE } from '../../shared/state/appState';
 import type { Page } from '../../shared/state/slices/shellSlice';
-import { MECH_URL_KEYS } from '../../shared/state/slices/mechSlice';
+import { MECH_URL_KEYS, templateUrlValue } from '../../shared/state/slices/mechSlice';
 import { PAGE_URL_VALUES, SHELL_URL_KEYS } from '../../shared/state/slices/shellSlice';
 import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
 import type { UrlTarget } from '../../shared/url/urlKeys';
@@ -115,10 +115,12 @@ export function writeDesignFile(state: AppState, name: string, savedAt: Date): s
 
 /**
  * The name Save offers on the synthesis page: the task's (path-6-targets, motion-8-poses, function-log10(x),
- * nine-points); null on
- * other pages (the lengths' file stem is the name there).
+ * nine-points); on the Mechanisms page the template's, as its exports name it (mechanism_jansen,
+ * mechanism_jansen_edited); null on other pages (the lengths' file stem is the name there).
  */
 export function taskName(state: AppState): string | null {
+  if (state.shell.page === 'mechanism')
+    return `mechanism_${templateUrlValue(state.mech.template)}${state.mech.spec ? '_edited' : ''}`;
   if (state.shell.page !== 'synthesis') return null;
   switch (state.synPath.mode) {
     case 'path':

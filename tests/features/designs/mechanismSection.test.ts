@@ -10,6 +10,7 @@ import {
   MECH_SECTION_KEYS,
   designValues,
   readDesignFile,
+  taskName,
   writeDesignFile,
 } from '../../../src/features/designs/designFile';
 import { SLICE_ARBITRARIES } from '../../shared/state/sliceArbitraries';
@@ -119,6 +120,13 @@ describe('the mechanism section of a design file (issue 33)', () => {
     const onPage = { ...DEFAULT_STATE, shell: { ...DEFAULT_STATE.shell, page: 'mechanism' as const } };
     expect(JSON.parse(writeDesignFile(onPage, 'x', SAVED_AT))).toMatchObject({ page: 'mech', mechanism: {} });
     expect(JSON.parse(writeDesignFile(DEFAULT_STATE, 'x', SAVED_AT))).not.toHaveProperty('mechanism');
+  });
+
+  it('names the work after the template on the Mechanisms page, as its exports do', () => {
+    expect(taskName(ON_MECH)).toBe('mechanism_jansen_edited');
+    expect(taskName({ ...ON_MECH, mech: { ...ON_MECH.mech, template: 'wattII', spec: null } })).toBe(
+      'mechanism_watt-ii',
+    );
   });
 
   it('reads the linkage written as the compact mech= text, or as a plain spec written by hand', () => {
