@@ -23,7 +23,8 @@ export interface DriveStep {
 
 /**
  * Advances the input by delta in its direction within [lo, hi]: wrapping into [−π, π) when the input turns fully,
- * else reversing at an end (the linkage cannot go on: it rocks) and reporting where.
+ * else reversing at an end (the linkage cannot go on: it rocks) and reporting where: a step that would pass the end
+ * lands on it, and a step from the end (or beyond it) goes back by delta.
  */
 export function advanceInput(
   input: number,
@@ -38,9 +39,16 @@ export function advanceInput(
     return { input: next, direction, limitAt: null };
   }
   const [lo, hi] = range;
-  if (next > hi) return { input: hi, direction: -1, limitAt: hi };
-  if (next < lo) return { input: lo, direction: 1, limitAt: lo };
+  // From inside, a step that would pass an end stops on it (the limit's pose is shown); from the end itself it
+  // turns back at once, so no frame or Step is spent standing at the limit.
+  if (next > hi) return input < hi ? { input: hi, direction: -1, limitAt: hi } : turnBack(hi, -1, delta, range);
+  if (next < lo) return input > lo ? { input: lo, direction: 1, limitAt: lo } : turnBack(lo, 1, delta, range);
   return { input: next, direction, limitAt: null };
+}
+
+/** From the end `at` of [lo, hi], delta the other way (within the range), reporting the limit met. */
+function turnBack(at: number, direction: 1 | -1, delta: number, [lo, hi]: [number, number]): DriveStep {
+  return { input: Math.min(hi, Math.max(lo, at + direction * delta)), direction, limitAt: at };
 }
 
 /** The committed drive (the mech slice's input, direction and speed) and how to change it. */
