@@ -43,6 +43,19 @@ describe('mechReducer', () => {
     expect(mechReducer(DEFAULT_MECH, { type: 'setLocale', locale: 'zh-TW' })).toBe(DEFAULT_MECH);
   });
 
+  it('opens a template afresh: as drawn, forward, the default traces, plots and speed (issue 33)', () => {
+    const moved = mechReducer(DEFAULT_MECH, {
+      type: 'setMechPage',
+      patch: { input: 1.25, direction: -1, speed: 90, traced: ['A'], plots: ['', 'speed:A'], velocities: true },
+    });
+    expect(moved).toMatchObject({ input: 1.25, direction: -1, speed: 90, traced: ['A'], velocities: true });
+    expect(mechReducer(moved, { type: 'setMechPage', patch: { input: 1.25 } })).toBe(moved);
+    expect(mechReducer(moved, { type: 'setMechTemplate', template: 'jansen' })).toEqual({
+      ...DEFAULT_MECH,
+      template: 'jansen',
+    });
+  });
+
   it('sets the forces, keeps them when a template opens, and keeps the same object for a patch that changes nothing', () => {
     const on = mechReducer(DEFAULT_MECH, { type: 'setMechForces', patch: { enabled: true, rhoKgPerM: 2 } });
     expect(on.forces).toEqual({ ...DEFAULT_MECH.forces, enabled: true, rhoKgPerM: 2 });
