@@ -16,7 +16,19 @@ export interface SpatialControlsProps {
   onPlay: (playing: boolean) => void;
   onStep: (deltaDeg: number) => void;
   sm: SpatialMessages;
+  /** What an embed locks (lock=params,theta2,branch,play); default nothing. */
+  locked?: SpatialLocks;
 }
+
+/** The spatial page's embed locks: the linkage's parameters (kind, preset, values), θ2 (and Step), branch, Play. */
+export interface SpatialLocks {
+  params: boolean;
+  theta2: boolean;
+  branch: boolean;
+  play: boolean;
+}
+
+const UNLOCKED: SpatialLocks = { params: false, theta2: false, branch: false, play: false };
 
 const ARC: SliderRange = { min: 0.5, max: 179.5, step: 0.5 };
 const TURN: SliderRange = { min: -180, max: 180, step: 1 };
@@ -44,7 +56,8 @@ const FIELDS: Record<SpatialState['kind'], [SpatialField, SliderRange][]> = {
 };
 
 /** The linkage's controls: kind, preset, its values, θ2 with Play and Step, and the branch. */
-export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: SpatialControlsProps) {
+export function SpatialControls(props: SpatialControlsProps) {
+  const { s, dispatch, playing, onPlay, onStep, sm, locked = UNLOCKED } = props;
   const set = (field: SpatialField) => (value: number) => dispatch({ type: 'setSpatialField', field, value });
   const preset = presetOf(s);
   return (
@@ -52,6 +65,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
       <Segmented
         legend={sm.kindLegend}
         value={s.kind}
+        locked={locked.params}
         options={[
           { value: 'sph', label: sm.kindSpherical },
           { value: 'rssr', label: sm.kindRssr },
@@ -63,6 +77,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
         <select
           className="select select-small"
           value={preset ?? ''}
+          disabled={locked.params}
           onChange={(e) => {
             if (!e.target.value) return;
             const p = presetById(e.target.value as SpatialPreset['id']);
@@ -86,6 +101,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
             slider={slider}
             onCommit={set(field)}
             sm={sm}
+            locked={locked.params}
           />
         ))}
       </div>
@@ -97,21 +113,40 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm }: Sp
           onCommit={set('theta2Deg')}
           sm={sm}
           decimals={2}
+          locked={locked.theta2}
         />
         <div className="spatial-play">
-          <button type="button" className="btn btn-small" onClick={() => onStep(-1)} aria-label={sm.stepBack}>
+          <button
+            type="button"
+            className="btn btn-small"
+            onClick={() => onStep(-1)}
+            aria-label={sm.stepBack}
+            disabled={locked.theta2}
+          >
             <span aria-hidden="true">◀ 1°</span>
           </button>
-          <button type="button" className="btn btn-primary btn-small" onClick={() => onPlay(!playing)}>
+          <button
+            type="button"
+            className="btn btn-primary btn-small"
+            onClick={() => onPlay(!playing)}
+            disabled={locked.play || locked.theta2}
+          >
             {playing ? sm.pause : sm.play}
           </button>
-          <button type="button" className="btn btn-small" onClick={() => onStep(1)} aria-label={sm.stepForward}>
+          <button
+            type="button"
+            className="btn btn-small"
+            onClick={() => onStep(1)}
+            aria-label={sm.stepForward}
+            disabled={locked.theta2}
+          >
             <span aria-hidden="true">1° ▶</span>
           </button>
         </div>
         <Segmented
           legend={sm.branchLegend}
           value={s.branch}
+          locked={locked.branch}
           options={[
             { value: 'open', label: sm.branchOpen },
             { value: 'crossed', label: sm.branchCrossed },

@@ -23,6 +23,8 @@ export interface SpatialFieldControlProps {
   sm: SpatialMessages;
   /** Decimals the field shows (trailing zeros dropped); absent: the exact value. */
   decimals?: number;
+  /** Locked by an embed: shown, not editable; default false. */
+  locked?: boolean;
 }
 
 /** The allowed range of a field as text: (0, 180)°. */
@@ -36,7 +38,8 @@ export function rangeText(field: SpatialField): string {
  * A slider and a field for one spatial value. A typed value outside the field's range or not a number shows a
  * message naming the field and the text and keeps the last valid value; Escape restores it.
  */
-export function SpatialFieldControl({ field, value, slider, onCommit, sm, decimals }: SpatialFieldControlProps) {
+export function SpatialFieldControl(props: SpatialFieldControlProps) {
+  const { field, value, slider, onCommit, sm, decimals, locked = false } = props;
   const id = useId();
   const shown = fieldText(value, decimals);
   const [draft, setDraft] = useState(shown);
@@ -85,6 +88,7 @@ export function SpatialFieldControl({ field, value, slider, onCommit, sm, decima
             autoComplete="off"
             spellCheck={false}
             value={draft}
+            disabled={locked}
             aria-invalid={error ? true : undefined}
             aria-describedby={error ? `${id}-error` : undefined}
             onFocus={() => setFocused(true)}
@@ -113,6 +117,7 @@ export function SpatialFieldControl({ field, value, slider, onCommit, sm, decima
         max={slider.max}
         step={slider.step}
         value={sliderValue}
+        disabled={locked}
         onChange={(e) => {
           const v = normalizeSpatial(field, Number(e.target.value));
           if (spatialFieldProblem(field, v) !== null) return;
