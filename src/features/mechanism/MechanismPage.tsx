@@ -419,9 +419,6 @@ function MechWorkspace(props: MechWorkspaceProps) {
             {editError}
           </p>
         )}
-        {embedded && embedOptions.positionsShown && (
-          <MechPositions spec={spec} pose={pose} label={embedOptions.positionsLabel} />
-        )}
         <div className="mech-drive" role="group" aria-label={m.play} hidden={embedded && !embedOptions.driveShown}>
           <button
             type="button"
@@ -474,6 +471,9 @@ function MechWorkspace(props: MechWorkspaceProps) {
             </output>
           </label>
         </div>
+        {embedded && embedOptions.positionsShown && (
+          <MechPositions spec={spec} pose={pose} label={embedOptions.positionsLabel} />
+        )}
       </div>
       <div className="mech-side" hidden={embedded}>
         <section className="mech-card" aria-label={m.editTitle}>

@@ -44,6 +44,8 @@ export interface PageEmbedOptions {
   locks: readonly LockableParam[];
   /** The lock that guards each URL key a host could set (postMessage, the element's attributes): locked, refused. */
   keyLocks: Readonly<Record<string, LockableParam>>;
+  /** Keys an embed URL of the page writes even at their default (tpl): an embed keeps its linkage if a default changes. */
+  pinnedKeys: readonly string[];
 }
 
 /** The spatial page's linkage keys (sk, arcs, coupler point, RSSR lengths and tilt, the input's ω2 and α2): the 'params' lock. */
@@ -87,13 +89,15 @@ export const PAGE_EMBEDS = {
       pa: 'coupler',
       play: 'play',
     },
+    pinnedKeys: [],
   },
   lab: null,
   synthesis: null,
   mechanism: {
-    panels: ['controls', 'plots'],
+    panels: ['controls', 'info', 'plots'],
     locks: ['template', 'edit'],
     keyLocks: { tpl: 'template', mech: 'edit' },
+    pinnedKeys: ['tpl'],
   },
   spatial: {
     panels: ['controls', 'info', 'plots'],
@@ -103,6 +107,7 @@ export const PAGE_EMBEDS = {
       t2: 'theta2',
       br: 'branch',
     },
+    pinnedKeys: [],
   },
 } satisfies Readonly<Record<Page, PageEmbedOptions | null>>;
 

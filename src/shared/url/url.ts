@@ -1,7 +1,7 @@
 import type { AppState, Page } from '../state/appState';
 import { DEFAULT_STATE } from '../state/appState';
 import type { EmbedOptions, PageEmbedOptions } from './embedOptions';
-import { DEFAULT_EMBED, PAGE_EMBEDS, isEmbedPage } from './embedOptions';
+import { DEFAULT_EMBED, PAGE_EMBEDS, isEmbedPage, pageEmbedOptions } from './embedOptions';
 import { truncateText } from '../format';
 import { PAGE_URL_VALUES } from '../state/slices/shellSlice';
 import type { UrlTarget } from './urlKeys';
@@ -153,13 +153,22 @@ export function serializeState(state: AppState, embed?: EmbedOptions, keysOf: Pa
   return p.toString();
 }
 
-/** The URL of the embed page beside the app page: same directory, embed.html, with the state and embed options. */
+/**
+ * The URL of the embed page beside the app page: same directory, embed.html, with the state and embed options, and
+ * the page's pinned keys (PAGE_EMBEDS: page=mech's tpl) written even at their default.
+ */
 export function embedUrl(appHref: string, state: AppState, embed: EmbedOptions): string {
   const u = new URL(appHref);
   u.search = '';
   u.hash = '';
   u.pathname = u.pathname.replace(/[^/]*$/, 'embed.html');
-  return `${u.toString()}?${serializeState(state, embed)}`;
+  const page = state.shell.page;
+  const query = new URLSearchParams(serializeState(state, embed));
+  for (const name of pageEmbedOptions(page).pinnedKeys) {
+    const k = urlKeysOn(page).find((x) => x.name === name);
+    if (k && !query.has(name)) query.set(name, k.format(k.get({ state, embed })));
+  }
+  return `${u.toString()}?${query.toString()}`;
 }
 
 /** The URL of the full app beside the embed page, carrying the state. */

@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { applyPatch } from '../../../src/features/share/embedMessages';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
-import { EMBED_PAGES, PAGE_EMBEDS, parseUrl, serializeState } from '../../../src/shared/url/url';
+import {
+  EMBED_PAGES,
+  PAGE_EMBEDS,
+  embedUrl,
+  pageEmbedOptions,
+  parseUrl,
+  serializeState,
+} from '../../../src/shared/url/url';
 
 const quiet = () => undefined;
 
@@ -13,6 +20,22 @@ describe('PAGE_EMBEDS', () => {
   it('offers only locks each page can apply', () => {
     expect(PAGE_EMBEDS.mechanism.locks).toEqual(['template', 'edit']);
     expect(PAGE_EMBEDS.spatial.locks).toEqual(['params', 'theta2', 'branch', 'play']);
+  });
+
+  it('guards the spatial input’s ω2 and α2 (w2, al2) with the params lock', () => {
+    expect(pageEmbedOptions('spatial').keyLocks.w2).toBe('params');
+    expect(pageEmbedOptions('spatial').keyLocks.al2).toBe('params');
+  });
+});
+
+describe('embedUrl with a page’s pinned keys', () => {
+  it('writes page=mech’s template even at its default, so the embed keeps its linkage', () => {
+    const state = parseUrl('page=mech', DEFAULT_STATE, quiet).state;
+    const q = new URL(embedUrl('https://x.test/lab/', state, { panels: ['plots'], locked: ['edit'] })).searchParams;
+    expect(q.get('page')).toBe('mech');
+    expect(q.get('tpl')).toBe('slider-crank');
+    expect(q.get('lock')).toBe('edit');
+    expect(parseUrl(q.toString(), DEFAULT_STATE, quiet).state.mech.template).toBe('sliderCrank');
   });
 });
 
