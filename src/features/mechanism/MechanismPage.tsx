@@ -5,7 +5,7 @@ import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
 import type { MechanismSpec } from '../../mechanism';
 import { degToRad, radToDeg } from '../../solver/angles';
 import type { Action, AppState } from '../../shared/state/appState';
-import type { MechForcesSettings, MechTemplateKey } from '../../shared/state/slices/mechSlice';
+import type { MechForcesSettings, MechPageSettings, MechTemplateKey } from '../../shared/state/slices/mechSlice';
 import { METRES_PER_UNIT } from '../../shared/state/slices/designSlice';
 import type { LengthUnit } from '../../shared/state/slices/designSlice';
 import { mechSpecCodec, templateUrlValue } from '../../shared/state/slices/mechSlice';
@@ -86,6 +86,11 @@ export function MechanismPage(props: MechanismPageProps) {
   const { state, dispatch, client, embedded = false, openedSearch = '', embedOptions = EMBED_DEFAULTS } = props;
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited, forces } = state.mech;
+  const { input, direction, speed, traced, plots, velocities } = state.mech;
+  const settings = useMemo<MechPageSettings>(
+    () => ({ input, direction, speed, traced, plots, velocities }),
+    [input, direction, speed, traced, plots, velocities],
+  );
   // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
   const [refused, setRefused] = useState(() => linkRefusal(openedSearch));
   return (
@@ -120,6 +125,7 @@ export function MechanismPage(props: MechanismPageProps) {
         template={template}
         edited={edited}
         forces={forces}
+        settings={settings}
         lengthUnit={state.design.lengthUnit}
         dispatch={dispatch}
         client={client}
@@ -144,6 +150,8 @@ interface MechWorkspaceProps {
   template: MechTemplateKey;
   edited: MechanismSpec | null;
   forces: MechForcesSettings;
+  /** The page's settings in the slice: the drive at rest, the traces, the plots, the velocity arrows. */
+  settings: MechPageSettings;
   lengthUnit: LengthUnit;
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
@@ -182,11 +190,14 @@ function slideRanges(a: MechAnalysis): Record<string, [number, number]> {
 }
 
 /** The default traced points: every tracer. */
-const defaultTraced = (spec: MechanismSpec) => new Set((spec.points ?? []).map((p) => p.id));
+const defaultTraced = (spec: MechanismSpec) => (spec.points ?? []).map((p) => p.id);
 
-/** The page below the gallery, for one template (a new template remounts it: input 0, default plots and traces). */
+/**
+ * The page below the gallery, for one template (a new template remounts it; the slice sets the input to 0 and the
+ * plots and traces to the defaults).
+ */
 function MechWorkspace(props: MechWorkspaceProps) {
-  const { template, edited, forces, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
+  const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
   const locked = embedded && embedOptions.editLocked;
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
@@ -199,12 +210,24 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const kind = analysis.grid?.kind ?? 'R';
   const span = range ? range[1] - range[0] : 0;
   const rate = (speed: number) => (kind === 'R' ? degToRad(speed) : (speed * span) / 360);
-  const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(range, analysis.fullTurn, rate);
+  const setSettings = (patch: Partial<MechPageSettings>) => dispatch({ type: 'setMechPage', patch });
+  const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(
+    range,
+    analysis.fullTurn,
+    rate,
+    settings,
+    setSettings,
+  );
   const input = range ? Math.min(range[1], Math.max(range[0], drive.input)) : 0;
   const [selected, setSelected] = useState<string | null>(null);
-  const [traced, setTraced] = useState<ReadonlySet<string>>(() => defaultTraced(spec));
-  const [plots, setPlots] = useState<[MechPlotChoice, MechPlotChoice]>(() => defaultPlots(spec));
-  const [showVelocities, setShowVelocities] = useState(false);
+  const traced = useMemo(() => new Set(settings.traced ?? defaultTraced(spec)), [settings.traced, spec]);
+  const setTraced = (change: (s: ReadonlySet<string>) => ReadonlySet<string>) =>
+    setSettings({ traced: [...change(traced)] });
+  const plots: readonly [MechPlotChoice, MechPlotChoice] = settings.plots ?? defaultPlots(spec);
+  const setPlots = (change: (old: readonly [MechPlotChoice, MechPlotChoice]) => [MechPlotChoice, MechPlotChoice]) =>
+    setSettings({ plots: change(plots) });
+  const showVelocities = settings.velocities;
+  const setShowVelocities = (velocities: boolean) => setSettings({ velocities });
   const [csvRates, setCsvRates] = useState(false);
   const [placing, setPlacing] = useState<PlaceKind | null>(null);
   const [editError, setEditError] = useState<string | null>(null);
