@@ -42,7 +42,9 @@ describe('pathPartParams', () => {
       last = Date.now();
     }, 5);
     const t0 = Date.now();
-    const result = await synthesisHandlers.pathPart(params, context).finally(() => clearInterval(timer));
+    const result = await Promise.resolve(synthesisHandlers.pathPart(params, context)).finally(() =>
+      clearInterval(timer),
+    );
     const elapsed = Date.now() - t0;
     expect(result.complete).toBe(false);
     expect(result.rounds).toBeGreaterThan(2);
