@@ -21,6 +21,7 @@
  * app makes them only when window.__FOURBAR_BENCH__ is set (this script sets it before any page script runs).
  * "End of the rendered frame" is the first message posted from a later requestAnimationFrame callback, which
  * runs after that frame's paint. BENCH_DIST serves another build (e.g. the previous commit's) for a comparison.
+ * BENCH_BOOST=1 puts the browser at the top of the scheduler on a shared machine (bench/boost.ts).
  * Writes bench/results/ui.json and prints a table. A benchmark: it reports, it does not fail.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -33,6 +34,7 @@ import { preview } from 'vite';
 import { findChromium } from '../scripts/ensure-chromium.mjs';
 import { WMS_PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { PHONE_PROFILE, gzipStaticServer, phoneColdLoad } from './phoneLoad';
+import { startBoost } from './boost';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
 const DIST = process.env.BENCH_DIST ? resolve(process.env.BENCH_DIST) : join(ROOT, 'dist');
@@ -516,6 +518,7 @@ async function measureSpatial(
 }
 
 async function main(): Promise<void> {
+  const stopBoost = startBoost();
   const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
   const server = await preview({
     root: ROOT,
@@ -798,6 +801,7 @@ async function main(): Promise<void> {
     ]);
     console.log(`wrote ${OUT}`);
   } finally {
+    stopBoost();
     await browser.close();
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
     await new Promise<void>((resolve) => gzipServer.close(() => resolve()));
