@@ -5,7 +5,7 @@ import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
 import type { MechanismSpec } from '../../mechanism';
 import { degToRad, radToDeg } from '../../solver/angles';
 import type { Action, AppState } from '../../shared/state/appState';
-import type { MechForcesSettings, MechTemplateKey } from '../../shared/state/slices/mechSlice';
+import type { MechForcesSettings, MechPageSettings, MechTemplateKey } from '../../shared/state/slices/mechSlice';
 import { METRES_PER_UNIT } from '../../shared/state/slices/designSlice';
 import type { LengthUnit } from '../../shared/state/slices/designSlice';
 import { mechSpecCodec, templateUrlValue } from '../../shared/state/slices/mechSlice';
@@ -33,6 +33,7 @@ import type { Pt } from './mechPose';
 import type { MechPlotChoice } from './mechPlots';
 import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
 import { MechCanvas } from './MechCanvas';
+import { MechPositions } from './MechPositions';
 import { XYChartView } from '../../shared/charts/XYChartView';
 import { TemplateGallery } from './TemplateGallery';
 import type { PlaceKind } from './SpecEditor';
@@ -53,7 +54,27 @@ export interface MechanismPageProps {
   openedSearch?: string;
   /** In the embed (page=mech in embed.html or <fourbar-lab>): the linkage, Play and the plots only; default false. */
   embedded?: boolean;
+  /** The embed's panels and lock (its URL's panels and lock=edit); default: drive and plots shown, editable. */
+  embedOptions?: MechEmbedOptions;
 }
+
+/** What an embed of the page shows and locks: the drive row, the joints' positions, the plots; dragging joints. */
+export interface MechEmbedOptions {
+  driveShown: boolean;
+  positionsShown: boolean;
+  plotsShown: boolean;
+  editLocked: boolean;
+  /** The positions table's accessible name. */
+  positionsLabel: string;
+}
+
+const EMBED_DEFAULTS: MechEmbedOptions = {
+  driveShown: true,
+  positionsShown: false,
+  plotsShown: true,
+  editLocked: false,
+  positionsLabel: '',
+};
 
 /**
  * The mechanism page (機構): any planar linkage of pins and sliders (src/mechanism). The template gallery, the
@@ -61,9 +82,15 @@ export interface MechanismPageProps {
  * against the input and the exports. The template and the edited linkage live in the mech slice (URL tpl, mech);
  * the input, Play and the view are the page's own. A new template starts the page afresh (its key).
  */
-export function MechanismPage({ state, dispatch, client, embedded = false, openedSearch = '' }: MechanismPageProps) {
+export function MechanismPage(props: MechanismPageProps) {
+  const { state, dispatch, client, embedded = false, openedSearch = '', embedOptions = EMBED_DEFAULTS } = props;
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited, forces } = state.mech;
+  const { input, direction, speed, traced, plots, velocities } = state.mech;
+  const settings = useMemo<MechPageSettings>(
+    () => ({ input, direction, speed, traced, plots, velocities }),
+    [input, direction, speed, traced, plots, velocities],
+  );
   // The reason a link's mech= was refused (the shell's notice names the key; this says why), read once on arrival.
   const [refused, setRefused] = useState(() => linkRefusal(openedSearch));
   return (
@@ -98,11 +125,13 @@ export function MechanismPage({ state, dispatch, client, embedded = false, opene
         template={template}
         edited={edited}
         forces={forces}
+        settings={settings}
         lengthUnit={state.design.lengthUnit}
         dispatch={dispatch}
         client={client}
         m={m}
         embedded={embedded}
+        embedOptions={embedOptions}
       />
     </div>
   );
@@ -121,11 +150,14 @@ interface MechWorkspaceProps {
   template: MechTemplateKey;
   edited: MechanismSpec | null;
   forces: MechForcesSettings;
+  /** The page's settings in the slice: the drive at rest, the traces, the plots, the velocity arrows. */
+  settings: MechPageSettings;
   lengthUnit: LengthUnit;
   dispatch: Dispatch<Action>;
   client: JobRunner<MechanismJobs> | null;
   m: MechMessages;
   embedded: boolean;
+  embedOptions: MechEmbedOptions;
 }
 
 /** Every joint and tracer over the run (and as drawn): the canvas fits this box, so Play does not move the view. */
@@ -158,10 +190,15 @@ function slideRanges(a: MechAnalysis): Record<string, [number, number]> {
 }
 
 /** The default traced points: every tracer. */
-const defaultTraced = (spec: MechanismSpec) => new Set((spec.points ?? []).map((p) => p.id));
+const defaultTraced = (spec: MechanismSpec) => (spec.points ?? []).map((p) => p.id);
 
-/** The page below the gallery, for one template (a new template remounts it: input 0, default plots and traces). */
-function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client, m, embedded }: MechWorkspaceProps) {
+/**
+ * The page below the gallery, for one template (a new template remounts it; the slice sets the input to 0 and the
+ * plots and traces to the defaults).
+ */
+function MechWorkspace(props: MechWorkspaceProps) {
+  const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
+  const locked = embedded && embedOptions.editLocked;
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
@@ -173,12 +210,24 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
   const kind = analysis.grid?.kind ?? 'R';
   const span = range ? range[1] - range[0] : 0;
   const rate = (speed: number) => (kind === 'R' ? degToRad(speed) : (speed * span) / 360);
-  const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(range, analysis.fullTurn, rate);
+  const setSettings = (patch: Partial<MechPageSettings>) => dispatch({ type: 'setMechPage', patch });
+  const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(
+    range,
+    analysis.fullTurn,
+    rate,
+    settings,
+    setSettings,
+  );
   const input = range ? Math.min(range[1], Math.max(range[0], drive.input)) : 0;
   const [selected, setSelected] = useState<string | null>(null);
-  const [traced, setTraced] = useState<ReadonlySet<string>>(() => defaultTraced(spec));
-  const [plots, setPlots] = useState<[MechPlotChoice, MechPlotChoice]>(() => defaultPlots(spec));
-  const [showVelocities, setShowVelocities] = useState(false);
+  const traced = useMemo(() => new Set(settings.traced ?? defaultTraced(spec)), [settings.traced, spec]);
+  const setTraced = (change: (s: ReadonlySet<string>) => ReadonlySet<string>) =>
+    setSettings({ traced: [...change(traced)] });
+  const plots: readonly [MechPlotChoice, MechPlotChoice] = settings.plots ?? defaultPlots(spec);
+  const setPlots = (change: (old: readonly [MechPlotChoice, MechPlotChoice]) => [MechPlotChoice, MechPlotChoice]) =>
+    setSettings({ plots: change(plots) });
+  const showVelocities = settings.velocities;
+  const setShowVelocities = (velocities: boolean) => setSettings({ velocities });
   const [csvRates, setCsvRates] = useState(false);
   const [placing, setPlacing] = useState<PlaceKind | null>(null);
   const [editError, setEditError] = useState<string | null>(null);
@@ -361,17 +410,18 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
           viewRef={viewRef}
           onGrab={(id) => {
+            if (locked) return;
             if (id) {
               stop(0);
               setSelected(id);
               setFrozenBounds(liveBounds);
             } else setFrozenBounds(null);
           }}
-          onDrag={(id, p) => edit((s) => moveJoint(s, id, p.x, p.y))}
+          onDrag={(id, p) => !locked && edit((s) => moveJoint(s, id, p.x, p.y))}
           placing={placing !== null}
           onTap={(p) => placing && place(placing, p)}
           onNudge={(dx, dy) => {
-            if (!selected) return;
+            if (!selected || locked) return;
             const j = spec.joints.find((x) => x.id === selected) ?? spec.points?.find((x) => x.id === selected);
             if (j) edit((s) => moveJoint(s, selected, j.x + dx, j.y + dy));
           }}
@@ -392,7 +442,7 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
             {editError}
           </p>
         )}
-        <div className="mech-drive" role="group" aria-label={m.play}>
+        <div className="mech-drive" role="group" aria-label={m.play} hidden={embedded && !embedOptions.driveShown}>
           <button
             type="button"
             className="btn btn-primary mech-play"
@@ -444,6 +494,9 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
             </output>
           </label>
         </div>
+        {embedded && embedOptions.positionsShown && (
+          <MechPositions spec={spec} pose={pose} label={embedOptions.positionsLabel} />
+        )}
       </div>
       <div className="mech-side" hidden={embedded}>
         <section className="mech-card" aria-label={m.editTitle}>
@@ -484,7 +537,7 @@ function MechWorkspace({ template, edited, forces, lengthUnit, dispatch, client,
           />
         </section>
       </div>
-      <section className="mech-plots" aria-label={m.plotsTitle}>
+      <section className="mech-plots" aria-label={m.plotsTitle} hidden={embedded && !embedOptions.plotsShown}>
         <div className="mech-plot-controls">
           {plotViews.map((p) => (
             <label key={p.n}>

@@ -43,41 +43,76 @@ export function advanceInput(
   return { input: next, direction, limitAt: null };
 }
 
-/** Default Play speed: 60 °/s (a turn in 6 s). */
-export const DEFAULT_MECH_SPEED = 60;
+/** The committed drive (the mech slice's input, direction and speed) and how to change it. */
+export interface CommittedDrive {
+  input: number;
+  direction: 1 | -1;
+  speed: number;
+}
+
+/** Where Play is while it runs (the frames stay in the page; the slice gets the input when Play stops). */
+interface Playing {
+  input: number;
+  direction: 1 | -1;
+  limitAt: number | null;
+}
 
 /**
- * The input and Play of the mechanism page: one animation-frame loop while playing (useAnimationFrame), Step, a
- * set input (clamped by the caller), direction and speed. rate converts speed to input units per second.
+ * The input and Play of the mechanism page. At rest the input, direction and speed are the slice's (committed):
+ * Step, the slider and Reverse commit to it, so a link or a design file holds them. While playing, one
+ * animation-frame loop (useAnimationFrame) moves a local input, so Play does not re-render the app every frame;
+ * Pause commits where it stopped. rate converts speed to input units per second.
  */
-export function useMechDrive(range: [number, number] | null, fullTurn: boolean, rate: (speed: number) => number) {
-  const [drive, setDrive] = useState<MechDrive>({
-    input: 0,
-    playing: false,
-    direction: 1,
-    speed: DEFAULT_MECH_SPEED,
-    limitAt: null,
-  });
+export function useMechDrive(
+  range: [number, number] | null,
+  fullTurn: boolean,
+  rate: (speed: number) => number,
+  committed: CommittedDrive,
+  commit: (patch: Partial<CommittedDrive>) => void,
+) {
+  const [play, setPlay] = useState<Playing | null>(null);
   const canRun = range !== null;
-  useAnimationFrame(drive.playing && canRun, (dt) => {
+  useAnimationFrame(play !== null && canRun, (dt) => {
     if (!range) return;
-    setDrive((d) => {
-      const s = advanceInput(d.input, d.direction, rate(d.speed) * dt, range, fullTurn);
-      return { ...d, ...s, limitAt: s.limitAt ?? d.limitAt };
+    setPlay((p) => {
+      if (!p) return p;
+      const s = advanceInput(p.input, p.direction, rate(committed.speed) * dt, range, fullTurn);
+      return { ...s, limitAt: s.limitAt ?? p.limitAt };
     });
   });
+  const drive: MechDrive = play
+    ? { ...play, playing: true, speed: committed.speed }
+    : { input: committed.input, direction: committed.direction, speed: committed.speed, playing: false, limitAt: null };
+  const from = play ?? committed;
   return {
     drive,
-    setPlaying: (playing: boolean) => setDrive((d) => ({ ...d, playing, limitAt: playing ? d.limitAt : null })),
-    step: (delta: number) =>
-      setDrive((d) => {
-        if (!range) return d;
-        const s = advanceInput(d.input, d.direction, delta, range, fullTurn);
-        return { ...d, ...s, playing: false };
-      }),
-    setInput: (input: number) => setDrive((d) => ({ ...d, input, limitAt: null })),
-    reverse: () => setDrive((d) => ({ ...d, direction: d.direction === 1 ? -1 : 1 })),
-    setSpeed: (speed: number) => setDrive((d) => ({ ...d, speed })),
-    stop: (input = 0) => setDrive((d) => ({ ...d, input, playing: false, limitAt: null })),
+    setPlaying: (playing: boolean) => {
+      if (playing === (play !== null)) return;
+      if (playing) setPlay({ input: committed.input, direction: committed.direction, limitAt: null });
+      else {
+        commit({ input: from.input, direction: from.direction });
+        setPlay(null);
+      }
+    },
+    step: (delta: number) => {
+      if (!range) return;
+      const s = advanceInput(from.input, from.direction, delta, range, fullTurn);
+      commit({ input: s.input, direction: s.direction });
+      setPlay(null);
+    },
+    setInput: (input: number) => {
+      if (play) setPlay({ ...play, input, limitAt: null });
+      else commit({ input });
+    },
+    reverse: () => {
+      const direction = from.direction === 1 ? -1 : 1;
+      if (play) setPlay({ ...play, direction });
+      else commit({ direction });
+    },
+    setSpeed: (speed: number) => commit({ speed }),
+    stop: (input = 0) => {
+      setPlay(null);
+      commit({ input });
+    },
   };
 }

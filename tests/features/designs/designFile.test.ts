@@ -11,6 +11,7 @@ import {
   designFileName,
   designNameOf,
   designValues,
+  mechanismValues,
   readDesignFile,
   taskName,
   writeDesignFile,
@@ -69,7 +70,7 @@ describe('writeDesignFile', () => {
     fc.assert(
       fc.property(anyState, (s) => {
         const linkKeys = [...new URLSearchParams(serializeState(s)).keys()].filter((k) => !NOT_IN_FILE.has(k));
-        expect(Object.keys(designValues(s))).toEqual(linkKeys);
+        expect([...Object.keys(designValues(s)), ...Object.keys(mechanismValues(s))]).toEqual(linkKeys);
       }),
       { seed: SEED, numRuns: 50 },
     );
@@ -316,7 +317,7 @@ describe('design files of synthesis work (issue 34, item 13)', () => {
 
   it('refuses a page it does not know, naming the field', () => {
     expect(badFields(edited(motion, (f) => (f.page = 'moon')))).toEqual([
-      { field: 'page', value: '"moon"', why: 'expected "syn"' },
+      { field: 'page', value: '"moon"', why: 'expected "syn" or "mech"' },
     ]);
   });
 

@@ -20,7 +20,12 @@ import {
   RANGE_DEG_MAX,
   X_ABS_MAX,
 } from '../../../src/shared/state/slices/synFunctionSlice';
-import { MECH_FORCES_LIMITS, MECH_TEMPLATE_KEYS } from '../../../src/shared/state/slices/mechSlice';
+import {
+  MECH_FORCES_LIMITS,
+  MECH_MAX_INPUT,
+  MECH_MAX_SPEED,
+  MECH_TEMPLATE_KEYS,
+} from '../../../src/shared/state/slices/mechSlice';
 import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import type { MechanismSpec } from '../../../src/mechanism';
 import { SPATIAL_LENGTH_MAX } from '../../../src/shared/state/slices/spatialSlice';
@@ -262,6 +267,23 @@ const mech: fc.Arbitrary<AppState['mech']> = fc.record({
     joint: fc.oneof(fc.constant(''), anyName),
     arrows: fc.boolean(),
   }),
+  // -0 is written as 0 (the state never needs to tell them apart).
+  input: double(-MECH_MAX_INPUT, MECH_MAX_INPUT).map((x) => x + 0),
+  direction: fc.constantFrom(1 as const, -1 as const),
+  speed: double(1e-9, MECH_MAX_SPEED),
+  // Traces and plots name joints as typed: any text, the empty list, or the default (null).
+  traced: fc.option(fc.array(anyName, { maxLength: 6 }), { nil: null }),
+  plots: fc.option(
+    fc.tuple(
+      fc.oneof(
+        fc.constant(''),
+        anyName.map((n) => `speed:${n}`),
+      ),
+      fc.oneof(fc.constant(''), anyName),
+    ),
+    { nil: null },
+  ),
+  velocities: fc.boolean(),
 });
 
 /** A value on the spatial page's degree grid (9 decimals) strictly inside (lo, hi) or in [lo, hi) as asked. */

@@ -51,7 +51,41 @@ export interface MechState {
   spec: MechanismSpec | null;
   /** The forces over the cycle (kept when another template opens). */
   forces: MechForcesSettings;
+  /** The input where the linkage stands (URL mi): radians for a pin input, length for a slider input; 0 = as drawn. */
+  input: number;
+  /** Play's direction along the input (URL mdir: fwd or rev); at a rocking limit Play turns it. */
+  direction: 1 | -1;
+  /** Play's speed (URL mspd): degrees per second for a pin input, 1/360 of the slide range per second for a slider. */
+  speed: number;
+  /** The joints and tracers whose paths are drawn (URL mtr), or null: every tracer (the template's own choice). */
+  traced: readonly string[] | null;
+  /** The two plots' choices, kind:id ('angle:coupler', '' none) (URL mp), or null: the linkage's default two. */
+  plots: readonly [string, string] | null;
+  /** Velocity arrows at the points (URL mvel). */
+  velocities: boolean;
 }
+
+/** The page's own settings: the drive (input, direction, speed) and what is drawn and plotted. */
+export type MechPageSettings = Pick<MechState, 'input' | 'direction' | 'speed' | 'traced' | 'plots' | 'velocities'>;
+
+/** Default Play speed: 60 °/s (a turn in 6 s). */
+export const DEFAULT_MECH_SPEED = 60;
+
+/** Largest Play speed (URL mspd), degrees per second. */
+export const MECH_MAX_SPEED = 3600;
+
+/** Largest |input| a link may set (URL mi): the input is clamped to the linkage's range anyway. */
+export const MECH_MAX_INPUT = 1e9;
+
+/** As drawn (input 0), forward at 60 °/s, the default traces and plots, no velocity arrows. */
+export const DEFAULT_MECH_PAGE: MechPageSettings = {
+  input: 0,
+  direction: 1,
+  speed: DEFAULT_MECH_SPEED,
+  traced: null,
+  plots: null,
+  velocities: false,
+};
 
 /**
  * The mechanism page's forces, as on the simulator (SI, the linkage's lengths in the app's length unit lu): every
@@ -90,25 +124,41 @@ export const MECH_FORCES_LIMITS = { rho: 1e6, gravity: 1000, speed: 1e6 } as con
 export const MECH_MAX_PARTS = 64;
 
 /** The offset slider-crank, unedited. */
-export const DEFAULT_MECH: MechState = { template: 'sliderCrank', spec: null, forces: DEFAULT_MECH_FORCES };
+export const DEFAULT_MECH: MechState = {
+  template: 'sliderCrank',
+  spec: null,
+  forces: DEFAULT_MECH_FORCES,
+  ...DEFAULT_MECH_PAGE,
+};
 
 /** Actions only the mechanism slice handles. */
 export type MechAction =
   | { type: 'setMechTemplate'; template: MechTemplateKey }
   | { type: 'setMechSpec'; spec: MechanismSpec | null }
-  | { type: 'setMechForces'; patch: Partial<MechForcesSettings> };
+  | { type: 'setMechForces'; patch: Partial<MechForcesSettings> }
+  | { type: 'setMechPage'; patch: Partial<MechPageSettings> };
 
-/** The mechanism slice's reducer: pure, returns the same object when nothing changes. */
+/**
+ * The mechanism slice's reducer: pure, returns the same object when nothing changes. A template opens afresh (as
+ * drawn, the default traces and plots); the forces stay.
+ */
 export function mechReducer(s: MechState, action: Action): MechState {
   switch (action.type) {
     case 'setMechTemplate':
-      return action.template === s.template && s.spec === null ? s : { ...s, template: action.template, spec: null };
+      return action.template === s.template && s.spec === null
+        ? s
+        : { ...s, ...DEFAULT_MECH_PAGE, template: action.template, spec: null };
     case 'setMechSpec':
       return action.spec === s.spec ? s : { ...s, spec: action.spec };
     case 'setMechForces': {
       const p = action.patch;
       const same = (Object.keys(p) as (keyof MechForcesSettings)[]).every((k) => Object.is(s.forces[k], p[k]));
       return same ? s : { ...s, forces: { ...s.forces, ...p } };
+    }
+    case 'setMechPage': {
+      const p = action.patch;
+      const same = (Object.keys(p) as (keyof MechPageSettings)[]).every((k) => Object.is(s[k], p[k]));
+      return same ? s : { ...s, ...p };
     }
     default:
       return s;
@@ -300,6 +350,49 @@ const jointIdCodec: Codec<string> = {
   format: (id) => id,
 };
 
+/**
+ * A list of names as count*name*name… (each percent-encoded as in mech=), so that an empty list (0) and any name
+ * (with * or commas) are told apart; '' is null (the default).
+ */
+function nameListCodec(what: string, fixedCount?: number): Codec<readonly string[] | null> {
+  return {
+    parse(raw): Decoded<readonly string[] | null> {
+      if (raw === '') return { ok: true, value: null };
+      try {
+        const r = new TokenReader(raw.split(SEP));
+        const n = r.count(`the ${what} count`);
+        if (fixedCount !== undefined && n !== fixedCount)
+          throw new Error(`the ${what} count must be ${fixedCount}, got ${n}`);
+        const names = Array.from({ length: n }, (_, i) => r.name(`${what}[${i}]`));
+        r.end();
+        return { ok: true, value: names };
+      } catch (e) {
+        return { ok: false, why: (e as Error).message };
+      }
+    },
+    format: (names) => (names === null ? '' : [String(names.length), ...names.map(nameToken)].join(SEP)),
+  };
+}
+
+/** mtr: the traced joints and tracers (count*id*id…); '' the default (every tracer). */
+const tracedCodec = nameListCodec('traced');
+
+/** mp: the two plots' choices (2*kind:id*kind:id); '' the default pair. */
+const plotPairCodec = nameListCodec('plots', 2);
+const plotsCodec: Codec<readonly [string, string] | null> = {
+  parse(raw) {
+    const r = plotPairCodec.parse(raw);
+    if (!r.ok) return r;
+    return { ok: true, value: r.value === null ? null : [r.value[0], r.value[1]] };
+  },
+  format: (pair) => plotPairCodec.format(pair),
+};
+
+/** A page key, written only when its text differs from the default's. */
+function pageKey<K extends keyof MechPageSettings>(name: string, codec: Codec<MechPageSettings[K]>, k: K) {
+  return optionalKey(name, codec, field(k), DEFAULT_MECH_PAGE[k]);
+}
+
 /** A forces key, written only when its text differs from the default's. */
 function forcesKey<K extends keyof MechForcesSettings>(
   name: string,
@@ -310,8 +403,9 @@ function forcesKey<K extends keyof MechForcesSettings>(
 }
 
 /**
- * The mechanism page's URL keys: tpl (the template, kebab case), mech (the edited linkage) when edited, and the
- * forces' mfrc, mrho, mgr, mw, mrj, mfv (each only when it differs from its default).
+ * The mechanism page's URL keys: tpl (the template, kebab case), mech (the edited linkage) when edited, the forces'
+ * mfrc, mrho, mgr, mw, mrj, mfv, and the page's mi (input), mdir, mspd, mtr (traces), mp (plots), mvel (each only
+ * when it differs from its default).
  */
 export const MECH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey(
@@ -327,11 +421,24 @@ export const MECH_URL_KEYS: readonly UrlKey<unknown>[] = [
   forcesKey('mw', numberCodec({ min: -MECH_FORCES_LIMITS.speed, max: MECH_FORCES_LIMITS.speed }), 'inputSpeed'),
   forcesKey('mrj', jointIdCodec, 'joint'),
   forcesKey('mfv', boolCodec, 'arrows'),
+  pageKey('mi', numberCodec({ min: -MECH_MAX_INPUT, max: MECH_MAX_INPUT }), 'input'),
+  pageKey(
+    'mdir',
+    enumCodec([
+      ['fwd', 1],
+      ['rev', -1],
+    ] as const),
+    'direction',
+  ),
+  pageKey('mspd', numberCodec({ min: 1e-9, max: MECH_MAX_SPEED }), 'speed'),
+  pageKey('mtr', tracedCodec, 'traced'),
+  pageKey('mp', plotsCodec, 'plots'),
+  pageKey('mvel', boolCodec, 'velocities'),
 ];
 
 /** The mech slice's registration in SLICES (appState.ts). */
 export const MECH_SLICE: Slice<MechState, MechAction> = {
-  summary: 'the mechanism page: the template opened, the linkage as edited and its forces',
+  summary: 'the mechanism page: the template, the linkage as edited, its forces, input and plots',
   defaults: DEFAULT_MECH,
   reducer: mechReducer,
   urlKeys: MECH_URL_KEYS,
