@@ -76,8 +76,11 @@ describe('adaptQuality', () => {
     // Slow long ago, fast in the last window: full.
     expect(adaptQuality(FULL_QUALITY, [...frames(300, 20), ...frames(16)])).toBe(FULL_QUALITY);
   });
-  it('never raises a lean look back', () => {
+  it('never raises a lean look back, and hands the same look back while slow (the scene rebuilds on a new one)', () => {
     expect(adaptQuality(LEAN_QUALITY, frames(5))).toBe(LEAN_QUALITY);
+    expect(adaptQuality(LEAN_QUALITY, frames(250))).toBe(LEAN_QUALITY);
+    const adapted = adaptQuality(FULL_QUALITY, frames(250));
+    expect(adaptQuality(adapted, frames(250))).toBe(adapted);
   });
   it('throws on a latency that is not a finite number >= 0, naming the value', () => {
     expect(() => adaptQuality(FULL_QUALITY, [...frames(16), Number.NaN])).toThrow(/latenciesMs.*NaN/);
