@@ -21,6 +21,7 @@
  * app makes them only when window.__FOURBAR_BENCH__ is set (this script sets it before any page script runs).
  * "End of the rendered frame" is the first message posted from a later requestAnimationFrame callback, which
  * runs after that frame's paint. BENCH_DIST serves another build (e.g. the previous commit's) for a comparison.
+ * BENCH_BOOST=1 puts the browser at the top of the scheduler on a shared machine (bench/boost.ts).
  * Writes bench/results/ui.json and prints a table. A benchmark: it reports, it does not fail.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -33,6 +34,7 @@ import { preview } from 'vite';
 import { findChromium } from '../scripts/ensure-chromium.mjs';
 import { WMS_PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { PHONE_PROFILE, gzipStaticServer, phoneColdLoad } from './phoneLoad';
+import { startBoost } from './boost';
 import { MECH_BENCH_QUERY, MECH_TARGETS, measureMechDrag, measureMechPlay } from './mechanismUi';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -517,6 +519,7 @@ async function measureSpatial(
 }
 
 async function main(): Promise<void> {
+  const stopBoost = startBoost();
   const executablePath = process.env.CHROMIUM_PATH || (await findChromium()) || undefined;
   const server = await preview({
     root: ROOT,
@@ -841,6 +844,7 @@ async function main(): Promise<void> {
     ]);
     console.log(`wrote ${OUT}`);
   } finally {
+    stopBoost();
     await browser.close();
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
     await new Promise<void>((resolve) => gzipServer.close(() => resolve()));

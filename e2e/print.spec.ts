@@ -1,5 +1,6 @@
-import type { Page } from '@playwright/test';
+import type { Locator, Page } from '@playwright/test';
 import { expect, test } from '@playwright/test';
+import { oracleForces } from '../tests/solver/forcesOracle';
 import { artifact, waitReady } from './helpers';
 
 // The printable report (issue 19): in print media the page is one report, with no controls, made of the same
@@ -9,6 +10,30 @@ const WORDS = {
   en: { print: 'Print report', pdf: /Save as PDF/, title: 'Four-bar linkage report' },
   'zh-TW': { print: '列印報告', pdf: /另存為 PDF/, title: '四連桿機構報告' },
 } as const;
+
+interface Pt {
+  x: number;
+  y: number;
+}
+
+/**
+ * The oracle's input torque T12 (N·m) at θ2 (degrees) for forces.spec.ts's crank-rocker in SI (lengths in metres,
+ * 2.5 kg/m bars, gravity, 40 N and −25 N at P, −3 N·m on the rocker, ω2 = 7.5 rad/s, α2 = 20 rad/s²; open branch).
+ */
+function oracleTorque(theta2Deg: number): number {
+  const L = { r1: 0.6, r2: 0.2, r3: 0.5, r4: 0.5 };
+  const bar = (len: number) => ({ mass: 2.5 * len, inertia: (2.5 * len ** 3) / 12, cg: { dist: len / 2, angle: 0 } });
+  const ref = oracleForces(
+    L,
+    (theta2Deg * Math.PI) / 180,
+    'open',
+    { omega2: 7.5, alpha2: 20 },
+    { crank: bar(L.r2), coupler: bar(L.r3), rocker: bar(L.r4) },
+    { gravity: { g: 9.81 }, couplerForce: { pDist: 0.25, pAngle: Math.PI / 6, fx: 40, fy: -25 }, outputTorque: -3 },
+  );
+  if (!ref) throw new Error(`the oracle has no answer at ${theta2Deg}°`);
+  return ref.torque;
+}
 
 /** Pages in a PDF: its /Type /Page objects (not the /Pages tree). */
 function pdfPages(pdf: Buffer): number {
@@ -171,4 +196,81 @@ test('with Forces on and a synthesized design: the forces panel, the coupler poi
   // The forces run onto a second page, nothing cut off.
   const pdf = await page.pdf({ format: 'A4' });
   expect(pdfPages(pdf)).toBeLessThanOrEqual(2);
+});
+
+/** A plot's pixels read back as values: y pixel → value by the y axis's own tick labels (two or more), x likewise. */
+async function plotEnds(svg: Locator): Promise<{ first: Pt; last: Pt; marker: Pt | null }> {
+  return svg.evaluate((el) => {
+    const num = (s: string) => Number(s.replace(/\u2212/g, '-').replace(/,/g, ''));
+    const ticks = (cls: string, axis: 0 | 1) =>
+      [...el.querySelectorAll(`g.${cls} g.tick`)].map((g) => {
+        const m = /translate\(([-\d.e]+),\s*([-\d.e]+)\)/.exec(g.getAttribute('transform') ?? '')!;
+        // d3-axis sets its ticks half a pixel off at devicePixelRatio 1 (crisp 1-pixel lines): the data's pixel is 0.5 less.
+        const half = window.devicePixelRatio > 1 ? 0 : 0.5;
+        return { px: Number(m[axis + 1]) - half, v: num(g.querySelector('text')?.textContent ?? '') };
+      });
+    const fit = (t: { px: number; v: number }[]) => {
+      const [a, b] = [t[0], t[t.length - 1]];
+      return (px: number) => a.v + ((px - a.px) * (b.v - a.v)) / (b.px - a.px);
+    };
+    const fx = fit(ticks('axis-x', 0));
+    const fy = fit(ticks('axis-y', 1));
+    const solid = [...el.querySelectorAll('g.lines path')].find((p) => !p.getAttribute('stroke-dasharray'))!;
+    const pts = [...(solid.getAttribute('d') ?? '').matchAll(/[ML]([-\d.e]+),([-\d.e]+)/g)].map((m) => ({
+      x: fx(Number(m[1])),
+      y: fy(Number(m[2])),
+    }));
+    const dot = el.querySelector('g.marker circle');
+    const marker = dot ? { x: fx(Number(dot.getAttribute('cx'))), y: fy(Number(dot.getAttribute('cy'))) } : null;
+    return { first: pts[0], last: pts[pts.length - 1], marker };
+  });
+}
+
+test('with Forces on, the report prints the chosen force plot with its axes and units, its ends the oracle’s (issue 34, 12)', async ({
+  page,
+}) => {
+  // forces.spec.ts's crank-rocker in mm with every load, θ2 = 60°.
+  await page.goto(
+    './?r1=600&r2=200&r3=500&r4=500&pd=250&pa=30&lu=mm&frc=1&rho=2.5&pfx=40&pfy=-25&tl=-3&w2=7.5&a2=20&t2=60&plot=trq',
+  );
+  await waitReady(page);
+  const shown = (await page.getByTestId('forces-torque').innerText()).trim();
+  await page.emulateMedia({ media: 'print' });
+  const sheet = page.getByTestId('print-report');
+  await expect(sheet).toBeVisible();
+  const plot = sheet.locator('[data-report-plot="torque"] svg');
+  await expect(plot).toBeVisible();
+  // The figure sits in the Forces section, with its title, its axis labels and units.
+  const forces = sheet.locator('section', { has: page.getByRole('heading', { name: 'Forces', exact: true }) });
+  await expect(forces.locator('[data-report-plot="torque"]')).toHaveCount(1);
+  await expect(plot.locator('text', { hasText: /^θ2 \(°\)$/ }).first()).toBeAttached();
+  await expect(plot.locator('text', { hasText: /^T12 \(N·m\)$/ }).first()).toBeAttached();
+  await expect(plot.locator('text', { hasText: /^Input torque T12 against θ2$/ }).first()).toBeAttached();
+  // Its ends are θ2 = 0° and 360°, both at the oracle's T12(0°) (the same pose); its marker at θ2 = 60° is the panel's.
+  const ends = await plotEnds(plot);
+  const ref0 = oracleTorque(0);
+  const ref60 = oracleTorque(60);
+  const span = Math.abs(ref0) + Math.abs(ref60);
+  // Read from pixels (3 decimals) through the tick labels: within 0.5 % of the torques' size.
+  expect(Math.abs(ends.first.x)).toBeLessThan(0.05);
+  expect(Math.abs(ends.last.x - 360)).toBeLessThan(0.05);
+  expect(Math.abs(ends.first.y - ref0), 'T12 at 0°').toBeLessThan(5e-3 * span);
+  expect(Math.abs(ends.last.y - ref0), 'T12 at 360°').toBeLessThan(5e-3 * span);
+  expect(Math.abs(ends.marker!.x - 60)).toBeLessThan(0.05);
+  const panelTorque = Number(shown.replace('\u2212', '-').split(' ')[0]);
+  expect(Math.abs(panelTorque - ref60)).toBeLessThanOrEqual(5e-6 * Math.abs(ref60));
+  expect(Math.abs(ends.marker!.y - panelTorque), 'marker').toBeLessThan(5e-3 * span);
+  await page.screenshot({ path: artifact('print-forces-plot.png'), fullPage: true });
+  const pdf = await page.pdf({ format: 'A4' });
+  expect(pdfPages(pdf)).toBeLessThanOrEqual(2);
+});
+
+test('with Forces on and Pin forces chosen, the report prints the pin-force plot instead', async ({ page }) => {
+  await page.goto('./?frc=1&plot=pin&lang=zh-TW');
+  await waitReady(page);
+  await page.emulateMedia({ media: 'print' });
+  const plot = page.locator('[data-testid="print-report"] [data-report-plot="pinForces"] svg');
+  await expect(plot).toBeVisible();
+  await expect(plot.locator('g.lines path')).toHaveCount(4);
+  await expect(plot.locator('text', { hasText: /^\|F\| \(k?N\)$/ }).first()).toBeAttached();
 });

@@ -115,6 +115,16 @@ test.describe('Spatial page', () => {
     await expect.poll(() => new URL(page.url()).searchParams.get('page')).toBe('3d');
     // Headless Chromium here has --disable-gpu: WebGL comes from SwiftShader; the view must reach "ready".
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    // SwiftShader is a software WebGL: the view draws its lean look (renderQuality), without MSAA.
+    await expect(page.getByTestId('spatial-canvas')).toHaveAttribute('data-quality', 'lean');
+    expect(
+      await page
+        .getByTestId('spatial-canvas')
+        .evaluate(
+          (c: HTMLCanvasElement) =>
+            (c.getContext('webgl2') ?? c.getContext('webgl'))?.getContextAttributes()?.antialias,
+        ),
+    ).toBe(false);
     const o = sphericalOracle(60, 20, 55, 45, 30);
     expectNear(await shownPin(page, 'A'), o.A, 'A');
     expectNear(await shownPin(page, 'B'), o.B, 'B');

@@ -1,19 +1,16 @@
 import './EmbedLayout.css';
-import { Suspense, lazy, useCallback, useState } from 'react';
+import { useCallback, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../shared/state/appState';
-import type { EmbedOptions, EmbedPanel, ParsedUrl } from '../shared/url/url';
-import { appUrl } from '../shared/url/url';
-import { ControlsPanel } from '../features/simulator/ControlsPanel';
+import type { EmbedOptions, ParsedUrl } from '../shared/url/url';
+import { appUrl, isEmbedPage } from '../shared/url/url';
+import { PAGE_URL_VALUES } from '../shared/state/slices/shellSlice';
 import type { EmbedBridge } from '../features/share/embedBridge';
 import { frameBridge } from '../features/share/embedBridge';
-import { EmbedPanels } from './EmbedPanels';
+import { EMBED_VIEWS } from './embedPages';
 import { LanguageSelect } from './LanguageSelect';
 import { FramePoseProvider } from '../features/simulator/FramePoseProvider';
-import { LinkageStage } from '../features/simulator/LinkageStage';
-import { createForceLayer } from '../features/forces/forceLayer';
 import { MessagesContext, useMessages } from '../shared/i18n/MessagesContext';
-import { shellMessages } from './shellMessages';
 import { useDocumentMeta } from './useDocumentMeta';
 import { useSimulatorSession } from './useSimulatorSession';
 import type { ShownFor } from './useSimulatorSession';
@@ -62,21 +59,33 @@ function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Di
   );
 }
 
-// The mechanism page (page=mech) loads only when an embed asks for it.
-const MechanismPage = lazy(() =>
-  import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
-);
+/**
+ * The parsed URL with a page that embeds: a page without an embed (page=lab) shows the simulator's, and the notice
+ * says so.
+ */
+export function embeddable(initial: ParsedUrl): ParsedUrl {
+  const page = initial.state.shell.page;
+  if (isEmbedPage(page)) return initial;
+  const value = PAGE_URL_VALUES[page];
+  const why = `page=${value} has no embed; the simulator is shown`;
+  return {
+    ...initial,
+    state: { ...initial.state, shell: { ...initial.state.shell, page: 'simulator' } },
+    warnings: [...initial.warnings, `Ignoring URL parameter page="${value}": ${why}.`],
+    ignored: [...initial.ignored, { key: 'page', value, shownKey: 'page', shownValue: value, why }],
+  };
+}
 
 /**
  * The compact widget for an iframe: title bar with language and a link to the full simulator, the linkage
  * with the controls beside it, then the panels the URL asks for (numbers, plots, export).
  */
-export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, ownsPage = true }: EmbedLayoutProps) {
+export function EmbedLayout(props: EmbedLayoutProps) {
+  const { bridge: givenBridge, embed: givenEmbed, ownsPage = true } = props;
+  const initial = useMemo(() => embeddable(props.initial), [props.initial]);
   const embed = givenEmbed ?? initial.embed;
   const [ownBridge] = useState(() => (givenBridge ? null : frameBridge()));
-  const [forceLayer] = useState(createForceLayer);
   const bridge = givenBridge ?? ownBridge;
-  const show = (p: EmbedPanel) => embed.panels.includes(p);
   const plotsShown = embed.panels.includes('plots');
   const numbersShown = embed.panels.includes('info');
   const shownFor = useCallback<ShownFor>(
@@ -84,11 +93,9 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
     [plotsShown, numbersShown],
   );
   const session = useSimulatorSession(initial.state, shownFor, numbersShown);
-  const { state, dispatch, cycle, point, t, rocking, design, playhead, onStep, onShown } = session;
-  const { onCanvasSize, onTheta2, onCoupler, onViewChange } = session;
-  const crankMovable = !embed.locked.includes('theta2');
-  const couplerMovable = !embed.locked.includes('coupler');
-  const shell = shellMessages(state.shell.locale);
+  const { state, dispatch, cycle, point, t, playhead } = session;
+  // The page's view from the registry; the options it does not offer were refused when the URL was read.
+  const page = isEmbedPage(state.shell.page) ? state.shell.page : 'simulator';
   useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
   useUrlSync(state, embed, ownsPage);
   useEmbedMessages(bridge, state, dispatch, embed.locked);
@@ -101,45 +108,7 @@ export function EmbedLayout({ initial, bridge: givenBridge, embed: givenEmbed, o
         <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
           <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
           <UrlNotice ignored={initial.ignored} source={ownsPage ? 'link' : 'attributes'} />
-          <main className="embed-main">
-            {state.shell.page === 'mechanism' ? (
-              <Suspense fallback={null}>
-                <MechanismPage state={state} dispatch={dispatch} client={session.client} embedded />
-              </Suspense>
-            ) : (
-              <>
-                <div className={`embed-body${show('controls') ? ' with-controls' : ''}`}>
-                  <div className="embed-stage">
-                    <LinkageStage
-                      cycle={cycle}
-                      design={design}
-                      onViewChange={onViewChange}
-                      onTheta2={crankMovable ? onTheta2 : undefined}
-                      onCoupler={couplerMovable ? onCoupler : undefined}
-                      onSize={onCanvasSize}
-                      hint={shell.canvasHint({ crank: crankMovable, coupler: couplerMovable })}
-                      onShown={onShown}
-                      forceLayer={forceLayer}
-                      stage={session.stage}
-                    />
-                  </div>
-                  {show('controls') ? (
-                    <div className="embed-controls">
-                      <ControlsPanel
-                        state={state}
-                        dispatch={dispatch}
-                        locked={embed.locked}
-                        compact
-                        rocking={rocking}
-                        onStep={onStep}
-                      />
-                    </div>
-                  ) : null}
-                </div>
-                <EmbedPanels session={session} show={show} theta2Locked={!crankMovable} />
-              </>
-            )}
-          </main>
+          <main className="embed-main">{EMBED_VIEWS[page]({ session, embed })}</main>
         </div>
       </FramePoseProvider>
     </MessagesContext.Provider>

@@ -1,3 +1,5 @@
+import { useCallback } from 'react';
+import type { Page } from '../shared/state/appState';
 import { AnalysisPanel } from '../features/simulator/AnalysisPanel';
 import { ConvergencePanel } from '../features/simulator/ConvergencePanel';
 import { DesignPanel } from '../features/simulator/DesignPanel';
@@ -13,6 +15,7 @@ import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { PanelSection } from '../shared/ui/PanelSection';
 import type { SimulatorSession } from './useSimulatorSession';
 import { exportBlocked } from './exportBlocked';
+import { PAGES } from './pages';
 
 /** Props of ResultsSidebar: the simulator session and the sidebar's accessible name. */
 export interface ResultsSidebarProps {
@@ -28,6 +31,9 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
   const { local } = useLinkagePose(state, false);
   const motion = useFrameMotion(state, local);
   const stateRef = useLatest(state);
+  const locale = state.shell.locale;
+  // Stable per language, so the memoised Share panel does not re-render with every state change.
+  const pageLabel = useCallback((p: Page) => PAGES[p].label[locale], [locale]);
   return (
     <aside className="rightbar" aria-label={label}>
       <PanelSection className="card" id="sec-analysis" title={t.sectionAnalysis}>
@@ -70,7 +76,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
       </PanelSection>
       <PrintReportSection session={session} />
       <PanelSection className="card" id="sec-share" title={t.sectionShare}>
-        <SharePanel stateRef={stateRef} />
+        <SharePanel stateRef={stateRef} pageLabel={pageLabel} />
       </PanelSection>
       <SolverStatus mode={session.solverMode} reason={session.solverReason} />
     </aside>

@@ -80,7 +80,12 @@ export class FourbarLabElement extends HTMLElement {
 
   attributeChangedCallback(name: string, old: string | null, value: string | null): void {
     if (!this.root || !this.parsed || old === value) return;
-    if (name === 'panels' || name === 'lock') {
+    if (name === 'page') {
+      // Another page is another widget (its panels, locks and keys): start it afresh from the attributes.
+      this.generation += 1;
+      this.parsed = this.parse();
+      this.render();
+    } else if (name === 'panels' || name === 'lock') {
       this.parsed = { ...this.parsed, embed: this.parse().embed };
       this.render();
     } else if (value !== null) {

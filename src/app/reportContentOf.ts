@@ -12,7 +12,7 @@ import { linkageSvg, plotExport } from '../features/export/exporters';
 import { grashofSumsText } from '../features/simulator/grashofText';
 import { motionFacts } from '../features/simulator/motionFacts';
 import type { DesignInfo } from '../features/simulator/useDesignMetrics';
-import type { ReportContent, ReportFact } from '../features/report/reportContent';
+import type { ReportContent, ReportFact, ReportPlot } from '../features/report/reportContent';
 import type { ReportMessages } from '../features/report/reportMessages';
 import { omegaToUnit } from '../shared/state/inputMotion';
 import { localPose } from '../shared/linkage/localPose';
@@ -20,14 +20,18 @@ import { forceSetup } from '../features/forces/forceModel';
 import { poseForces } from '../features/forces/forceModel';
 import { cycleFacts, poseFacts } from '../features/forces/forceFacts';
 import { cycleForces } from '../features/forces/forceCycleData';
+import { forceChartExport } from '../features/forces/forceCharts';
 import { forcesMessages } from '../features/forces/forcesMessages';
-import type { AppState } from '../shared/state/appState';
+import type { AppState, ForcePlotKind } from '../shared/state/appState';
 
 /** The report figure's drawing size (CSS pixels): the canvas's scene drawn again at this size, as SVG. */
 export const REPORT_FIGURE_SIZE = { width: 560, height: 380 } as const;
 
 /** The report plots' drawing size (CSS pixels), about two thirds of the exported plots'. */
 export const REPORT_PLOT_SIZE = { width: 440, height: 260 } as const;
+
+/** The report's bearing-load diagram size (CSS pixels): square, as its export, one newton as long on x as on y. */
+export const REPORT_FORCE_POLAR_SIZE = { width: 300, height: 300 } as const;
 
 /** What the report is made from: the frame on screen, the cycle, the design metrics, the plotted angles and the strings. */
 export interface ReportSources {
@@ -82,22 +86,31 @@ function setupFacts(s: AppState, t: Messages, m: ReportMessages): ReportFact[] {
   return out;
 }
 
+/** The force plot the report prints with Forces on: the one chosen in the plots card, else the input torque. */
+function chosenForcePlot(s: AppState): ForcePlotKind {
+  const k = s.display.plotKind;
+  return k === 'pinForces' || k === 'bearing' ? k : 'torque';
+}
+
 /**
  * With Forces on, the forces panel's lines as it shows them (keys forces-<its test id>): T12, the pin forces and
- * shaking at the state's θ2, and the cycle's mean, RMS and peak torque, ΔE and flywheel inertia; else none.
+ * shaking at the state's θ2, and the cycle's mean, RMS and peak torque, ΔE and flywheel inertia; and the chosen
+ * force plot over the turn, drawn as the plots card draws it (its axes, units and θ2 marker); else none.
  */
-function forceReportFacts(s: AppState): ReportFact[] {
-  if (!s.forces.enabled) return [];
+function forceReport(s: AppState): { facts: ReportFact[]; plot: ReportPlot | null } {
+  if (!s.forces.enabled) return { facts: [], plot: null };
   const ft = forcesMessages.get(s.shell.locale);
   const setup = forceSetup(s);
   const { linkage, branch, coupler } = s.design;
   const local = localPose(linkage, s.motion.theta2Deg, branch, coupler, false);
-  const at = poseFacts(poseForces(setup, local.theta2Rad, local.pose), ft).map((f) => ({
+  const pose = poseForces(setup, local.theta2Rad, local.pose);
+  const at = poseFacts(pose, ft).map((f) => ({
     key: `forces-${f.key}`,
     label: f.label,
     value: f.value,
   }));
-  const c = cycleFacts(cycleForces(setup, branch, s.solver.samples), setup.input.omega2, ft);
+  const turn = cycleForces(setup, branch, s.solver.samples);
+  const c = cycleFacts(turn, setup.input.omega2, ft);
   const cycle: ReportFact[] = [
     { key: 'forces-mean', label: ft.meanTorque, value: c.mean },
     { key: 'forces-rms', label: ft.rmsTorque, value: c.rms },
@@ -109,7 +122,11 @@ function forceReportFacts(s: AppState): ReportFact[] {
       value: c.flywheel,
     },
   ];
-  return [...at, ...cycle];
+  const kind = chosenForcePlot(s);
+  const size = kind === 'bearing' ? REPORT_FORCE_POLAR_SIZE : REPORT_PLOT_SIZE;
+  const chart = { ...forceChartExport(kind, turn, pose, radToDeg360(local.theta2Rad), ft), ...size };
+  const title = kind === 'torque' ? ft.chartTorque : kind === 'pinForces' ? ft.chartPinForces : ft.chartBearing;
+  return { facts: [...at, ...cycle], plot: { title, svg: exportChart(chart, 'svg'), kind } };
 }
 
 /**
@@ -168,6 +185,7 @@ export function reportContentOf({ frame, cycle, design, deg, point, t, m }: Repo
     const chart = { ...plotExport(subject, ctx), ...REPORT_PLOT_SIZE };
     return { title: subject, svg: exportChart(chart, 'svg') };
   });
+  const forces = forceReport(s);
   return {
     title: m.title,
     subtitle: `${lengths} · ${s.design.branch === 'open' ? t.branchOpen : t.branchCrossed}`,
@@ -179,6 +197,7 @@ export function reportContentOf({ frame, cycle, design, deg, point, t, m }: Repo
     atTheta2,
     plots,
     setup: setupFacts(s, t, m),
-    forces: forceReportFacts(s),
+    forces: forces.facts,
+    forcePlot: forces.plot,
   };
 }

@@ -39,6 +39,14 @@ const SCREEN_PAUSE = 10;
 const CURVE_SAMPLES = 40;
 /** Iteration cap of one local solve in the global stage. */
 export const LOCAL_ITERATIONS = 150;
+/**
+ * Iterations more for the round's best start when its local solve was stopped by LOCAL_ITERATIONS: a best fit along
+ * a long flat valley (cabrera-5-timed: 270 to 490 iterations) is then reached within the round, not only by the
+ * final polish, which a short budget on a busy machine can cut short (issue 34 item 6).
+ */
+export const ROUND_BEST_ITERATIONS = 1000;
+/** Capped starts of a round that go on (the best only: each more costs ~1000 iterations and found nothing more). */
+const ROUND_CONTINUED = 1;
 /** Σd² (normalised) at which a fit counts as exact and the solve stops: far below 1e-20 of the size². */
 export const EXACT_F = 1e-28;
 
@@ -349,11 +357,14 @@ export function* pathRoundSteps(
   const rand = createRandom(mixSeed(seed, round));
   const starts = yield* screen(t, rand, SAMPLES_PER_ROUND, STARTS_PER_ROUND);
   const candidates: PathCandidate[] = [];
+  /** Whether each candidate's solve was stopped by LOCAL_ITERATIONS short of an exact fit. */
+  const capped: boolean[] = [];
   let evaluations = SAMPLES_PER_ROUND;
   for (const s of starts) {
     yield;
     if (Date.now() > deadline || signal?.aborted) {
       candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(s.x), f: s.f, round });
+      capped.push(false);
       continue;
     }
     const problem = createPathProblem(t, s.sigma, s.dir);
@@ -364,7 +375,28 @@ export function* pathRoundSteps(
       signal,
     });
     evaluations += r.evaluations;
-    if (Number.isFinite(r.f)) candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(r.x), f: r.f, round });
+    if (Number.isFinite(r.f)) {
+      candidates.push({ sigma: s.sigma, dir: s.dir, x: Array.from(r.x), f: r.f, round });
+      capped.push(r.iterations >= LOCAL_ITERATIONS && r.f > EXACT_F);
+    }
+  }
+  // Starts whose solve was cut off by the cap go on (a solve that stopped by itself has converged), best first: a
+  // function of the round alone, so the work stays independent of how rounds are dealt to parts.
+  const order = candidates.map((_, i) => i).filter((i) => capped[i]);
+  order.sort((a, b) => candidates[a].f - candidates[b].f);
+  for (const i of order.slice(0, ROUND_CONTINUED)) {
+    yield;
+    if (Date.now() > deadline || signal?.aborted) break;
+    const c = candidates[i];
+    const problem = createPathProblem(t, c.sigma, c.dir);
+    const r = yield* levenbergMarquardtSteps(problem.lsq, Float64Array.from(c.x), {
+      maxIterations: ROUND_BEST_ITERATIONS,
+      fTarget: EXACT_F,
+      deadline,
+      signal,
+    });
+    evaluations += r.evaluations;
+    if (r.f < c.f) candidates[i] = { ...c, x: Array.from(r.x), f: r.f };
   }
   return { candidates, stats: { evaluations } };
 }

@@ -11,9 +11,15 @@
  * theirs and a lower f here is a fair comparison. Their constraints "Grashof, crank the shortest, sequence" are our
  * input 'crank' with targets reached in order within one turn.
  *
- * Published values: the best Σd² each paper reports could not be checked against the papers in this session (the
- * reference stores held no copy of their tables), so `published.f` is null and `published.note` says what is
- * known. Where an exact solution exists in the bounds (f at rounding), no published value can be lower.
+ * Published values: a published value is recorded only where it can be recomputed from a published design (its
+ * link lengths, pivot, coupler point and crank angles), so `published.f` is null where no design could be read. The
+ * reference stores searched for issue 34 item 6 (GitHub code, documentation and web pages: the papers of Cabrera et
+ * al., Acharyya & Mandal, Sleesongsom & Bureerat, Yao et al. 2022, and repositories of four-bar benchmarks such as
+ * jmejia8/eca-four-bar-mechanisms and ShengChiaYu/Fourbar-synthesis) held the papers' abstracts but none of their tables of
+ * designs, so no value is verified yet; `published.note` says what is known. Where an exact solution exists in the
+ * bounds (f at rounding), no published value can be lower. The target lists were checked against the one public
+ * copy found, jmejia8/eca-four-bar-mechanisms (testTrajectories.jl, the ECA study of Mejía-de-Dios and
+ * Mezura-Montes): its case 4 is our vertical line and its case 12 our eighteen points.
  */
 import type { PathTask } from '../../src/synthesis';
 import { oraclePoint } from './couplerOracle';
@@ -112,7 +118,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     published: {
       f: null,
       source: 'Cabrera et al. 2002 (case 1); Acharyya & Mandal 2009',
-      note: 'crank angles measured from the ground link (our given timing); bounds r ∈ [0, 50], others [-50, 50]; published f not verified here',
+      note: 'crank angles measured from the ground link (our given timing); bounds r ∈ [0, 50], others [-50, 50]; published f not verified here; our best, 2.4658641e-7 on every seed, is a design on the Grashof face with |AP| at its bound (tests/synthesis/pathQuality.test.ts recomputes it)',
     },
   },
   {
@@ -125,7 +131,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
         [0.3, 1.1],
         [0.2, 1.0],
         [0.1, 0.9],
-        [0.005, 0.75],
+        // (0.05, 0.75) as in jmejia8/eca-four-bar-mechanisms testTrajectories.jl, case 12; this table had 0.005, a
+        // slip in recalling the papers.
+        [0.05, 0.75],
         [0.02, 0.6],
         [0, 0.5],
         [0, 0.4],
@@ -146,7 +154,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     published: {
       f: null,
       source: 'Kunjur & Krishnamurty 1997; Cabrera et al. 2002 (case 2); Acharyya & Mandal 2009',
-      note: 'targets as recalled from those papers; bounds r ∈ [0, 50], others [-50, 50] as recalled; published f not verified here',
+      note: 'targets as in the public copy named above; bounds r ∈ [0, 50], others [-50, 50] as recalled; published f not verified here',
     },
   },
   {

@@ -9,7 +9,7 @@ import type { LabJobs } from './jobs';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { labMessagesFor } from './labMessages';
 import type { LabMessages } from './labMessages';
-import { SvgChartView } from '../../shared/charts/SvgChartView';
+import { LiveChartView } from '../../shared/charts/LiveChartView';
 import { useLab } from './useLab';
 import { useLabCharts } from './useLabCharts';
 import { useLabExports } from './useLabExports';
@@ -65,16 +65,11 @@ export function LabPanel({ client, state, dispatch }: LabPanelProps) {
         </h2>
         <p className="note">{lt.labIntro}</p>
         <LabToolbar lab={lab} stepDeg={state.lab.stepDeg} canRun={client !== null} lt={lt} dispatch={dispatch} />
-        <SvgChartView
-          draw={charts.drawDiagram}
-          label={lt.labDiagramTitle}
-          className="lab-diagram"
-          testId="work-precision"
-        />
+        <LiveChartView {...charts.diagram} label={lt.labDiagramTitle} className="lab-diagram" testId="work-precision" />
         <LabTable series={result?.series ?? []} method={state.solver.method} tol={state.solver.tol} lt={lt} />
         <LabMethodChoice method={state.solver.method} tol={state.solver.tol} lt={lt} dispatch={dispatch} />
         {result ? <LabLimits result={result} theta2Deg={state.motion.theta2Deg} lt={lt} /> : null}
-        <SvgChartView draw={charts.drawCycle} label={lt.labCycleTitle} className="lab-cycle" />
+        <LiveChartView {...charts.cycle} label={lt.labCycleTitle} className="lab-cycle" held={!result} />
         <LabExportButtons exports={exports} disabled={!result} lt={lt} />
         <p className="note">{lt.labWhatItMeans}</p>
       </section>

@@ -1,6 +1,7 @@
 import type { LabPoint, LabSeries } from '../../study/workPrecision';
 import type { SweepMethod } from '../../solver/types';
 import { useMessages } from '../../shared/i18n/MessagesContext';
+import { ColumnTable } from '../../shared/ui/ColumnTable';
 import type { LabMessages } from './labMessages';
 import { formatMaxError, shownTol } from './workPrecisionChart';
 
@@ -27,38 +28,26 @@ export function LabTable({ series, method, tol, lt }: LabTableProps) {
   const t = useMessages();
   const h = lt.labTableHeaders;
   return (
-    <div className="lab-table-wrap">
-      <table className="lab-table">
-        <thead>
-          <tr>
-            <th scope="col">{h.method}</th>
-            <th scope="col">{h.nsPerPoint}</th>
-            <th scope="col">{h.itersPerPoint}</th>
-            <th scope="col">{h.maxError}</th>
-            <th scope="col">{h.failed}</th>
-            <th scope="col">{h.wrongBranch}</th>
-            <th scope="col">{h.falseConvergence}</th>
+    <ColumnTable
+      className="lab-table"
+      columns={[h.method, h.nsPerPoint, h.itersPerPoint, h.maxError, h.failed, h.wrongBranch, h.falseConvergence]}
+    >
+      {series.flatMap((s) =>
+        rowsOf(s, method, tol).map(({ p, chosen }) => (
+          <tr key={`${s.method}-${p.tol}`} className={chosen ? 'chosen' : undefined}>
+            <th scope="row">
+              {t.methodNames[s.method]}
+              {p.tol !== null ? `, tol ${shownTol(p.tol)}` : ''}
+            </th>
+            <td className="mono">{p.nsPerPoint.toFixed(0)}</td>
+            <td className="mono">{p.itersPerPoint.toFixed(2)}</td>
+            <td className="mono">{formatMaxError(p.maxError)}</td>
+            <td className={`mono${p.failures ? ' bad' : ''}`}>{p.failures}</td>
+            <td className={`mono${p.wrongBranch ? ' bad' : ''}`}>{p.wrongBranch}</td>
+            <td className={`mono${p.falseConvergence ? ' bad' : ''}`}>{p.falseConvergence}</td>
           </tr>
-        </thead>
-        <tbody>
-          {series.flatMap((s) =>
-            rowsOf(s, method, tol).map(({ p, chosen }) => (
-              <tr key={`${s.method}-${p.tol}`} className={chosen ? 'chosen' : undefined}>
-                <th scope="row">
-                  {t.methodNames[s.method]}
-                  {p.tol !== null ? `, tol ${shownTol(p.tol)}` : ''}
-                </th>
-                <td className="mono">{p.nsPerPoint.toFixed(0)}</td>
-                <td className="mono">{p.itersPerPoint.toFixed(2)}</td>
-                <td className="mono">{formatMaxError(p.maxError)}</td>
-                <td className={`mono${p.failures ? ' bad' : ''}`}>{p.failures}</td>
-                <td className={`mono${p.wrongBranch ? ' bad' : ''}`}>{p.wrongBranch}</td>
-                <td className={`mono${p.falseConvergence ? ' bad' : ''}`}>{p.falseConvergence}</td>
-              </tr>
-            )),
-          )}
-        </tbody>
-      </table>
-    </div>
+        )),
+      )}
+    </ColumnTable>
   );
 }

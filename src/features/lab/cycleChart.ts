@@ -1,9 +1,10 @@
 import type { ScaleContinuousNumeric } from 'd3-scale';
 import { scaleLinear, scaleLog, scaleSymlog } from 'd3-scale';
+import { select } from 'd3-selection';
 import type { SweepMethod } from '../../solver/types';
 import { CHART_COLORS } from '../../shared/theme/tokens';
 import type { ChartScales, ChartSpec, ChartTexts, GSel, MarkerAt } from '../../shared/charts/chart';
-import { chartSize, createChart, logFloor } from '../../shared/charts/chart';
+import { createChart, logFloor } from '../../shared/charts/chart';
 import type { Margins } from '../../shared/charts/chartFrame';
 import { CHART_STYLE, LEGEND_ROW, child, legendRows, minus, prepareSvg } from '../../shared/charts/chartFrame';
 import { dec, decadeTicks, integerTicks, logTicks, niceCountDomain, niceLogDomain } from '../../shared/charts/ticks';
@@ -33,14 +34,10 @@ export interface CycleChartData {
   iterations: CycleIterations[];
   /** Input limit angles in degrees in (-180, 180]; empty for a full-turn crank. */
   limitsDeg: number[];
-  /** Current theta2 in degrees, drawn as an orange line; none when omitted or not finite. */
-  currentDeg?: number;
 }
 
-/** Options of drawCycleChart; sizes in CSS pixels. */
-export interface CycleChartOptions {
-  width: number;
-  height: number;
+/** Texts of the cycle chart. */
+export interface CycleChartText {
   title: string;
   /** Shared x axis label, e.g. 'θ2 (°)'. */
   xLabel: string;
@@ -48,12 +45,30 @@ export interface CycleChartOptions {
   iterationsLabel: string;
   /** Bottom panel's y label, e.g. '|det J| (length²)'. */
   detJLabel: string;
+}
+
+/** Options of createCycleChart, read once (texts and size change later through the handle); sizes in CSS pixels. */
+export interface CycleChartOptions extends CycleChartText {
+  width: number;
+  height: number;
   /** Legend and line label per method; default each entry's own label. */
   methodLabels?: Partial<Record<SweepMethod, string>>;
   /** Default { top: 46 plus 16 per extra legend row, right: 14, bottom: 40, left: 58 }. */
   margins?: Partial<Margins>;
   /** Vertical gap between the two panels in pixels; default 14. */
   panelGap?: number;
+}
+
+/** A live cycle chart; every method redraws only what its change touches. */
+export interface CycleChart {
+  /** Replaces the study's data: curves, bands and limits are redrawn, the axes only when their domain changes. */
+  update(data: CycleChartData): void;
+  /** Moves the current θ2 (degrees; the orange line in both panels, hidden when not finite); nothing else is redrawn. */
+  setMarker(theta2Deg: number): void;
+  /** Sets the chart size in CSS pixels; a no-op when unchanged. */
+  resize(width: number, height: number): void;
+  /** Sets the title and axis labels; a no-op when unchanged. */
+  setText(text: CycleChartText): void;
 }
 
 /** A limit or marker angle in degrees on the chart's 0..360 axis: values already in [0, 360] are kept, others wrapped (-90 -> 270). */
@@ -178,11 +193,9 @@ function drawLimits(g: GSel, { data }: CyclePanelData, frame: ChartScales): void
     .attr('stroke-dasharray', '5 4');
 }
 
-/** The current θ2 as the kit's marker line (no dots); hidden when not finite. */
-const currentMarker = (_m: true, { data }: CyclePanelData): MarkerAt | null =>
-  data.currentDeg !== undefined && Number.isFinite(data.currentDeg)
-    ? { x: toAxisDeg(data.currentDeg), dots: [] }
-    : null;
+/** The current θ2 (degrees) as the kit's marker line (no dots); hidden when not finite. */
+const currentMarker = (theta2Deg: number): MarkerAt | null =>
+  Number.isFinite(theta2Deg) ? { x: toAxisDeg(theta2Deg), dots: [] } : null;
 
 /** What both panels share: bands under the grid, limits over the curves, the current θ2 as the marker. */
 const panelLayers = {
@@ -192,7 +205,7 @@ const panelLayers = {
 };
 
 /** The top panel: each method's iterations per point as steps (a negative count is a gap), dodged 1.5 px apart. */
-export const iterationsSpec: ChartSpec<CyclePanelData, true> = {
+export const iterationsSpec: ChartSpec<CyclePanelData, number> = {
   frame: ({ data }, plot) => {
     const itMax = maxIterations(data.iterations);
     const itAll = iterationTicks(itMax, plot.yCount);
@@ -221,7 +234,7 @@ export const iterationsSpec: ChartSpec<CyclePanelData, true> = {
 };
 
 /** The bottom panel: |det J| on a log y, gaps where it is NaN, zeros on the floor, one style of decade labels. */
-export const detJSpec: ChartSpec<CyclePanelData, true> = {
+export const detJSpec: ChartSpec<CyclePanelData, number> = {
   frame: ({ data }, plot) => {
     const [d0, d1] = detJDomain(data.detJ);
     return {
@@ -243,46 +256,93 @@ export const detJSpec: ChartSpec<CyclePanelData, true> = {
 /** Vertical gap between the panels and the top panel's room below its plot (its tick marks), CSS pixels. */
 const PANEL_FOOT = 7;
 
-/**
- * Draws (or redraws in place) the lab's cycle chart: the two panels (iterationsSpec over detJSpec) as two kit charts
- * in nested SVGs, equal in height, the method legend's rows pushing both down; sizes in CSS pixels.
- */
-export function drawCycleChart(svg: SVGSVGElement, data: CycleChartData, options: CycleChartOptions): void {
-  const { width, height } = options;
-  const s = prepareSvg(svg, width, height);
-  const labels = options.methodLabels ?? {};
-  const panel: CyclePanelData = { data, labels };
-  const legend = iterationsSpec.curves(panel);
-  const m = { top: 46, right: 14, bottom: 40, left: 58, ...options.margins };
-  const gap = options.panelGap ?? 14;
+/** No study yet: what the cycle chart holds before its first update. */
+const NO_CYCLE_DATA: CycleChartData = {
+  theta2Deg: new Float64Array(0),
+  detJ: new Float64Array(0),
+  iterations: [],
+  limitsDeg: [],
+};
+
+/** The heights of the two panels (CSS pixels): equal plots, the top one grown by the method legend's extra rows. */
+function panelHeights(
+  width: number,
+  height: number,
+  legend: ReturnType<typeof iterationsSpec.curves>,
+  m: Margins,
+  gap: number,
+): [top: number, bottom: number] {
   const top = m.top + Math.max(0, legendRows(legend, width - 28) - 1) * LEGEND_ROW;
   const ihAll = Math.max(30, height - top - m.bottom);
   const hTop = Math.max(10, Math.round((ihAll - gap) * 0.5));
   const topHeight = top + hTop + PANEL_FOOT;
-  const panels = [
-    { cls: 'panel-top', spec: iterationsSpec, y: 0, h: topHeight, margins: { ...m, bottom: PANEL_FOOT } },
-    {
-      cls: 'panel-bottom',
-      spec: detJSpec,
-      y: topHeight,
-      h: Math.max(0, height - topHeight),
-      margins: { ...m, top: gap - PANEL_FOOT },
+  return [topHeight, Math.max(0, height - topHeight)];
+}
+
+/**
+ * Creates the lab's cycle chart in svg and returns its handle: the two panels (iterationsSpec over detJSpec) as
+ * two kit charts in nested SVGs, equal in height, the method legend's rows pushing both down; sizes in CSS pixels
+ * (0: nothing drawn until resize). A θ2 step only moves the marker; new data redraw the curves, and the axes only
+ * when their domain changes.
+ */
+export function createCycleChart(svg: SVGSVGElement, options: CycleChartOptions): CycleChart {
+  const labels = options.methodLabels ?? {};
+  const m: Margins = { top: 46, right: 14, bottom: 40, left: 58, ...options.margins };
+  const gap = options.panelGap ?? 14;
+  const s = select(svg);
+  let size = { width: Math.max(0, options.width), height: Math.max(0, options.height) };
+  let panel: CyclePanelData = { data: NO_CYCLE_DATA, labels };
+  let heights: [number, number] = [-1, -1];
+  const panelTexts = (t: CycleChartText): [ChartTexts, ChartTexts] => [
+    { title: t.title, xLabel: '', yLabel: t.iterationsLabel },
+    { title: '', xLabel: t.xLabel, yLabel: t.detJLabel },
+  ];
+  const texts = panelTexts(options);
+  const specs = [iterationsSpec, detJSpec];
+  const margins = [
+    { ...m, bottom: PANEL_FOOT },
+    { ...m, top: gap - PANEL_FOOT },
+  ];
+  // The background first: prepareSvg paints it later, and a rect made after the panels would cover them.
+  child(s, 'rect', 'bg');
+  const els = ['panel-top', 'panel-bottom'].map((cls) => child(s, 'svg', cls).attr('x', 0));
+  const panels = els.map((el, i) =>
+    createChart(
+      el.node() as SVGSVGElement,
+      { width: 0, height: 0, margins: margins[i], xTickSpacing: 60, xMaxTicks: Infinity, yTickSpacing: i ? 18 : 24 },
+      texts[i],
+      specs[i],
+      panel,
+    ),
+  );
+  /** Sizes the SVG and both panels when the size or the legend's rows changed the panels' heights. */
+  const layout = () => {
+    if (!(size.width > 0 && size.height > 0)) return;
+    const next = panelHeights(size.width, size.height, iterationsSpec.curves(panel), m, gap);
+    if (next[0] === heights[0] && next[1] === heights[1]) return;
+    heights = next;
+    prepareSvg(svg, size.width, size.height);
+    els[1].attr('y', heights[0]);
+    panels.forEach((p, i) => p.resize(size.width, heights[i]));
+  };
+  return {
+    update(data) {
+      panel = { data, labels };
+      panels.forEach((p) => p.update(panel));
+      layout();
     },
-  ];
-  const texts: ChartTexts[] = [
-    { title: options.title, xLabel: '', yLabel: options.iterationsLabel },
-    { title: '', xLabel: options.xLabel, yLabel: options.detJLabel },
-  ];
-  panels.forEach((p, i) => {
-    const el = child(s, 'svg', p.cls).attr('x', 0).attr('y', p.y).node() as SVGSVGElement;
-    const size = chartSize({
-      width,
-      height: p.h,
-      margins: p.margins,
-      xTickSpacing: 60,
-      xMaxTicks: Infinity,
-      yTickSpacing: i ? 18 : 24,
-    });
-    createChart(el, size, texts[i], p.spec, panel).setMarker(true);
-  });
+    setMarker(theta2Deg) {
+      panels.forEach((p) => p.setMarker(theta2Deg));
+    },
+    resize(width, height) {
+      if (width === size.width && height === size.height) return;
+      size = { width: Math.max(0, width), height: Math.max(0, height) };
+      heights = [-1, -1];
+      layout();
+    },
+    setText(text) {
+      const next = panelTexts(text);
+      panels.forEach((p, i) => p.setText(next[i]));
+    },
+  };
 }

@@ -33,6 +33,7 @@ import type { Pt } from './mechPose';
 import type { MechPlotChoice } from './mechPlots';
 import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
 import { MechCanvas } from './MechCanvas';
+import { MechPositions } from './MechPositions';
 import { XYChartView } from '../../shared/charts/XYChartView';
 import { TemplateGallery } from './TemplateGallery';
 import type { PlaceKind } from './SpecEditor';
@@ -53,7 +54,27 @@ export interface MechanismPageProps {
   openedSearch?: string;
   /** In the embed (page=mech in embed.html or <fourbar-lab>): the linkage, Play and the plots only; default false. */
   embedded?: boolean;
+  /** The embed's panels and lock (its URL's panels and lock=edit); default: drive and plots shown, editable. */
+  embedOptions?: MechEmbedOptions;
 }
+
+/** What an embed of the page shows and locks: the drive row, the joints' positions, the plots; dragging joints. */
+export interface MechEmbedOptions {
+  driveShown: boolean;
+  positionsShown: boolean;
+  plotsShown: boolean;
+  editLocked: boolean;
+  /** The positions table's accessible name. */
+  positionsLabel: string;
+}
+
+const EMBED_DEFAULTS: MechEmbedOptions = {
+  driveShown: true,
+  positionsShown: false,
+  plotsShown: true,
+  editLocked: false,
+  positionsLabel: '',
+};
 
 /**
  * The mechanism page (機構): any planar linkage of pins and sliders (src/mechanism). The template gallery, the
@@ -61,7 +82,8 @@ export interface MechanismPageProps {
  * against the input and the exports. The template and the edited linkage live in the mech slice (URL tpl, mech);
  * the input, Play and the view are the page's own. A new template starts the page afresh (its key).
  */
-export function MechanismPage({ state, dispatch, client, embedded = false, openedSearch = '' }: MechanismPageProps) {
+export function MechanismPage(props: MechanismPageProps) {
+  const { state, dispatch, client, embedded = false, openedSearch = '', embedOptions = EMBED_DEFAULTS } = props;
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited, forces } = state.mech;
   const { input, direction, speed, traced, plots, velocities } = state.mech;
@@ -109,6 +131,7 @@ export function MechanismPage({ state, dispatch, client, embedded = false, opene
         client={client}
         m={m}
         embedded={embedded}
+        embedOptions={embedOptions}
       />
     </div>
   );
@@ -134,6 +157,7 @@ interface MechWorkspaceProps {
   client: JobRunner<MechanismJobs> | null;
   m: MechMessages;
   embedded: boolean;
+  embedOptions: MechEmbedOptions;
 }
 
 /** Every joint and tracer over the run (and as drawn): the canvas fits this box, so Play does not move the view. */
@@ -172,17 +196,9 @@ const defaultTraced = (spec: MechanismSpec) => (spec.points ?? []).map((p) => p.
  * The page below the gallery, for one template (a new template remounts it; the slice sets the input to 0 and the
  * plots and traces to the defaults).
  */
-function MechWorkspace({
-  template,
-  edited,
-  forces,
-  settings,
-  lengthUnit,
-  dispatch,
-  client,
-  m,
-  embedded,
-}: MechWorkspaceProps) {
+function MechWorkspace(props: MechWorkspaceProps) {
+  const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
+  const locked = embedded && embedOptions.editLocked;
   const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
@@ -452,17 +468,18 @@ function MechWorkspace({
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
           viewRef={viewRef}
           onGrab={(id) => {
+            if (locked) return;
             if (id) {
               stop(0);
               setSelected(id);
               setFrozenBounds(liveBounds);
             } else setFrozenBounds(null);
           }}
-          onDrag={(id, p) => edit((s) => moveJoint(s, id, p.x, p.y))}
+          onDrag={(id, p) => !locked && edit((s) => moveJoint(s, id, p.x, p.y))}
           placing={placing !== null}
           onTap={(p) => placing && place(placing, p)}
           onNudge={(dx, dy) => {
-            if (!selected) return;
+            if (!selected || locked) return;
             const j = spec.joints.find((x) => x.id === selected) ?? spec.points?.find((x) => x.id === selected);
             if (j) edit((s) => moveJoint(s, selected, j.x + dx, j.y + dy));
           }}
@@ -483,7 +500,7 @@ function MechWorkspace({
             {editError}
           </p>
         )}
-        <div className="mech-drive" role="group" aria-label={m.play}>
+        <div className="mech-drive" role="group" aria-label={m.play} hidden={embedded && !embedOptions.driveShown}>
           <button
             type="button"
             className="btn btn-primary mech-play"
@@ -535,6 +552,9 @@ function MechWorkspace({
             </output>
           </label>
         </div>
+        {embedded && embedOptions.positionsShown && (
+          <MechPositions spec={spec} pose={pose} label={embedOptions.positionsLabel} />
+        )}
       </div>
       <div className="mech-side" hidden={embedded}>
         <section className="mech-card" aria-label={m.editTitle}>
@@ -542,7 +562,7 @@ function MechWorkspace({
           {editor}
         </section>
       </div>
-      <section className="mech-plots" aria-label={m.plotsTitle}>
+      <section className="mech-plots" aria-label={m.plotsTitle} hidden={embedded && !embedOptions.plotsShown}>
         <div className="mech-plot-controls">
           {plotViews.map((p) => (
             <label key={p.n}>

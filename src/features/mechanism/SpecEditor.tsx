@@ -3,6 +3,7 @@ import { GROUND } from '../../mechanism';
 import type { MechanismSpec } from '../../mechanism';
 import { degToRad, radToDeg } from '../../solver/angles';
 import { NumberField } from '../../shared/ui/NumberField';
+import { ColumnTable } from '../../shared/ui/ColumnTable';
 import type { MechMessages } from './mechMessagesEn';
 import {
   deleteJoint,
@@ -164,128 +165,124 @@ export function SpecEditor(p: SpecEditorProps) {
         ))}
       </ul>
       <h3 className="mech-subtitle">{m.jointsTitle}</h3>
-      <div className="mech-table-wrap">
-        <table className="mech-table">
-          <thead>
-            <tr>
-              <th scope="col">{m.colName}</th>
-              <th scope="col">{m.colKind}</th>
-              <th scope="col">{m.colLinks}</th>
-              <th scope="col">{m.colX}</th>
-              <th scope="col">{m.colY}</th>
-              <th scope="col">{m.colAngle}</th>
-              <th scope="col">{m.colTrace}</th>
-              <th scope="col">
-                <span className="visually-hidden">×</span>
-              </th>
+      <ColumnTable
+        className="mech-table"
+        columns={[
+          m.colName,
+          m.colKind,
+          m.colLinks,
+          m.colX,
+          m.colY,
+          m.colAngle,
+          m.colTrace,
+          <span key="del" className="visually-hidden">
+            ×
+          </span>,
+        ]}
+      >
+        {[
+          ...spec.joints.map((j) => ({ id: j.id, kind: j.kind as 'R' | 'P' | 'T', joint: j, point: null })),
+          ...(spec.points ?? []).map((t) => ({ id: t.id, kind: 'T' as const, joint: null, point: t })),
+        ].map((row) => {
+          const at = row.joint ?? row.point!;
+          return (
+            <tr key={row.id} className={p.selected === row.id ? 'mech-row-selected' : undefined}>
+              <td>
+                <span className="mech-name-cell">
+                  <input
+                    type="radio"
+                    name="mech-selected"
+                    aria-label={m.select(row.id)}
+                    checked={p.selected === row.id}
+                    onChange={() => p.onSelect(row.id)}
+                  />
+                  <NameField
+                    label={m.jointName(row.id)}
+                    value={row.id}
+                    onCommit={(v) => edit((s) => renameJoint(s, row.id, v))}
+                  />
+                </span>
+              </td>
+              <td>{row.kind === 'R' ? m.kindR : row.kind === 'P' ? m.kindP : m.kindT}</td>
+              <td>
+                {row.joint ? (
+                  <span className="mech-link-pair">
+                    <LinkSelect
+                      label={m.jointLinkA(row.id)}
+                      links={spec.links}
+                      value={row.joint.links[0]}
+                      onChange={(l) => edit((s) => setJointLinks(s, row.id, [l, row.joint!.links[1]]))}
+                    />
+                    <LinkSelect
+                      label={m.jointLinkB(row.id)}
+                      links={spec.links}
+                      value={row.joint.links[1]}
+                      onChange={(l) => edit((s) => setJointLinks(s, row.id, [row.joint!.links[0], l]))}
+                    />
+                  </span>
+                ) : (
+                  <LinkSelect
+                    label={m.jointLinkA(row.id)}
+                    links={spec.links}
+                    value={row.point!.link}
+                    onChange={(l) => edit((s) => setTracerLink(s, row.id, l))}
+                  />
+                )}
+              </td>
+              <td>
+                <NumberField
+                  label={m.jointX(row.id)}
+                  hideLabel
+                  value={num(at.x)}
+                  onCommit={(x) => edit((s) => moveJoint(s, row.id, x, at.y))}
+                  errorText={fieldError(m.jointX(row.id))}
+                  className="mech-num"
+                />
+              </td>
+              <td>
+                <NumberField
+                  label={m.jointY(row.id)}
+                  hideLabel
+                  value={num(at.y)}
+                  onCommit={(y) => edit((s) => moveJoint(s, row.id, at.x, y))}
+                  errorText={fieldError(m.jointY(row.id))}
+                  className="mech-num"
+                />
+              </td>
+              <td>
+                {row.joint?.kind === 'P' && (
+                  <NumberField
+                    label={m.jointAngle(row.id)}
+                    hideLabel
+                    value={num(radToDeg(row.joint.angle ?? 0))}
+                    onCommit={(deg) => edit((s) => setSlideAngle(s, row.id, degToRad(deg)))}
+                    errorText={fieldError(m.jointAngle(row.id))}
+                    className="mech-num"
+                  />
+                )}
+              </td>
+              <td>
+                <input
+                  type="checkbox"
+                  aria-label={m.traceOf(row.id)}
+                  checked={p.traced.has(row.id)}
+                  onChange={(e) => p.onTrace(row.id, e.target.checked)}
+                />
+              </td>
+              <td>
+                <button
+                  type="button"
+                  className="btn btn-small"
+                  aria-label={m.deleteJoint(row.id)}
+                  onClick={() => edit((s) => deleteJoint(s, row.id))}
+                >
+                  ×
+                </button>
+              </td>
             </tr>
-          </thead>
-          <tbody>
-            {[
-              ...spec.joints.map((j) => ({ id: j.id, kind: j.kind as 'R' | 'P' | 'T', joint: j, point: null })),
-              ...(spec.points ?? []).map((t) => ({ id: t.id, kind: 'T' as const, joint: null, point: t })),
-            ].map((row) => {
-              const at = row.joint ?? row.point!;
-              return (
-                <tr key={row.id} className={p.selected === row.id ? 'mech-row-selected' : undefined}>
-                  <td>
-                    <span className="mech-name-cell">
-                      <input
-                        type="radio"
-                        name="mech-selected"
-                        aria-label={m.select(row.id)}
-                        checked={p.selected === row.id}
-                        onChange={() => p.onSelect(row.id)}
-                      />
-                      <NameField
-                        label={m.jointName(row.id)}
-                        value={row.id}
-                        onCommit={(v) => edit((s) => renameJoint(s, row.id, v))}
-                      />
-                    </span>
-                  </td>
-                  <td>{row.kind === 'R' ? m.kindR : row.kind === 'P' ? m.kindP : m.kindT}</td>
-                  <td>
-                    {row.joint ? (
-                      <span className="mech-link-pair">
-                        <LinkSelect
-                          label={m.jointLinkA(row.id)}
-                          links={spec.links}
-                          value={row.joint.links[0]}
-                          onChange={(l) => edit((s) => setJointLinks(s, row.id, [l, row.joint!.links[1]]))}
-                        />
-                        <LinkSelect
-                          label={m.jointLinkB(row.id)}
-                          links={spec.links}
-                          value={row.joint.links[1]}
-                          onChange={(l) => edit((s) => setJointLinks(s, row.id, [row.joint!.links[0], l]))}
-                        />
-                      </span>
-                    ) : (
-                      <LinkSelect
-                        label={m.jointLinkA(row.id)}
-                        links={spec.links}
-                        value={row.point!.link}
-                        onChange={(l) => edit((s) => setTracerLink(s, row.id, l))}
-                      />
-                    )}
-                  </td>
-                  <td>
-                    <NumberField
-                      label={m.jointX(row.id)}
-                      hideLabel
-                      value={num(at.x)}
-                      onCommit={(x) => edit((s) => moveJoint(s, row.id, x, at.y))}
-                      errorText={fieldError(m.jointX(row.id))}
-                      className="mech-num"
-                    />
-                  </td>
-                  <td>
-                    <NumberField
-                      label={m.jointY(row.id)}
-                      hideLabel
-                      value={num(at.y)}
-                      onCommit={(y) => edit((s) => moveJoint(s, row.id, at.x, y))}
-                      errorText={fieldError(m.jointY(row.id))}
-                      className="mech-num"
-                    />
-                  </td>
-                  <td>
-                    {row.joint?.kind === 'P' && (
-                      <NumberField
-                        label={m.jointAngle(row.id)}
-                        hideLabel
-                        value={num(radToDeg(row.joint.angle ?? 0))}
-                        onCommit={(deg) => edit((s) => setSlideAngle(s, row.id, degToRad(deg)))}
-                        errorText={fieldError(m.jointAngle(row.id))}
-                        className="mech-num"
-                      />
-                    )}
-                  </td>
-                  <td>
-                    <input
-                      type="checkbox"
-                      aria-label={m.traceOf(row.id)}
-                      checked={p.traced.has(row.id)}
-                      onChange={(e) => p.onTrace(row.id, e.target.checked)}
-                    />
-                  </td>
-                  <td>
-                    <button
-                      type="button"
-                      className="btn btn-small"
-                      aria-label={m.deleteJoint(row.id)}
-                      onClick={() => edit((s) => deleteJoint(s, row.id))}
-                    >
-                      ×
-                    </button>
-                  </td>
-                </tr>
-              );
-            })}
-          </tbody>
-        </table>
-      </div>
+          );
+        })}
+      </ColumnTable>
     </div>
   );
 }

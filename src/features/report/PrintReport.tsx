@@ -1,5 +1,7 @@
+import '../../shared/print/PrintSheet.css';
 import './PrintReport.css';
-import type { ReportContent, ReportFact } from './reportContent';
+import { PrintFacts } from '../../shared/print/PrintFacts';
+import type { ReportContent } from './reportContent';
 import type { ReportMessages } from './reportMessages';
 
 /** Props of PrintReport: what it shows and its strings. */
@@ -8,28 +10,16 @@ export interface PrintReportProps {
   m: ReportMessages;
 }
 
-function FactList({ facts }: { facts: readonly ReportFact[] }) {
-  return (
-    <dl className="report-facts">
-      {facts.map((f) => (
-        <div key={f.key} className={f.wide ? 'report-fact report-fact-wide' : 'report-fact'}>
-          <dt>{f.label}</dt>
-          <dd data-report={f.key}>{f.value}</dd>
-        </div>
-      ))}
-    </dl>
-  );
-}
-
 /**
  * The printable report (with Forces on it runs onto a second page): one page with the title, the linkage figure and its lengths, the Grashof and type facts,
- * the design metrics, a table of the values at the current θ2 and the chosen plots. Hidden on screen (PrintReport.css);
+ * the design metrics, a table of the values at the current θ2 and the chosen plots; with Forces on, the forces'
+ * numbers beside the chosen force plot. Hidden on screen (PrintReport.css);
  * the SVGs are the app's own drawings (the canvas's scene and the chart kit), set as markup.
  */
 export function PrintReport({ content: c, m }: PrintReportProps) {
   return (
     <article
-      className={c.forces.length > 0 ? 'print-report print-report-long' : 'print-report'}
+      className={c.forces.length > 0 ? 'print-sheet print-report print-sheet-long' : 'print-sheet print-report'}
       data-testid="print-report"
       aria-label={m.title}
     >
@@ -45,7 +35,7 @@ export function PrintReport({ content: c, m }: PrintReportProps) {
         <div className="report-side">
           <section>
             <h2>{m.classification}</h2>
-            <FactList facts={c.classification} />
+            <PrintFacts facts={c.classification} />
           </section>
           <section>
             <h2>{c.atTheta2Title}</h2>
@@ -70,16 +60,23 @@ export function PrintReport({ content: c, m }: PrintReportProps) {
       </div>
       <section>
         <h2>{m.setup}</h2>
-        <FactList facts={c.setup} />
+        <PrintFacts facts={c.setup} />
       </section>
       <section>
         <h2>{m.metrics}</h2>
-        <FactList facts={c.metrics} />
+        <PrintFacts facts={c.metrics} />
       </section>
       {c.forces.length > 0 ? (
         <section>
           <h2>{m.forces}</h2>
-          <FactList facts={c.forces} />
+          <div className={c.forcePlot ? 'report-forces' : undefined}>
+            <PrintFacts facts={c.forces} />
+            {c.forcePlot ? (
+              <figure className="report-plot report-force-plot" data-report-plot={c.forcePlot.kind}>
+                <div className="report-svg" dangerouslySetInnerHTML={{ __html: c.forcePlot.svg }} />
+              </figure>
+            ) : null}
+          </div>
         </section>
       ) : null}
       <section>

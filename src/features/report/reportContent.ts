@@ -1,17 +1,14 @@
-/** One labelled value of the report: its label and its text as the panels show it. */
-export interface ReportFact {
-  label: string;
-  value: string;
-  /** A stable key e2e compares with the panel's own (e.g. 'theta3'). */
-  key: string;
-  /** Across the facts' two columns. */
-  wide?: boolean;
-}
+import type { PrintFact } from '../../shared/print/PrintFacts';
+
+/** One labelled value of the report: its label and its text as the panels show it (key: the panel's, e.g. 'theta3'). */
+export type ReportFact = PrintFact;
 
 /** One plot of the report: its title and its standalone SVG text (drawn by the chart kit). */
 export interface ReportPlot {
   title: string;
   svg: string;
+  /** What it plots (a stable key e2e finds it by, e.g. 'torque'); the chosen motion plots have none. */
+  kind?: string;
 }
 
 /** Everything the printed page shows, already formatted: the app composes it from the simulator and the exports. */
@@ -32,4 +29,6 @@ export interface ReportContent {
   setup: ReportFact[];
   /** With Forces on: the input torque, pin forces and shaking at θ2, the cycle's torque and flywheel; else empty. */
   forces: ReportFact[];
+  /** With Forces on: the chosen force plot over the turn (the torque unless the plots card shows another); else null. */
+  forcePlot: ReportPlot | null;
 }

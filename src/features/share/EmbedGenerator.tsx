@@ -1,7 +1,8 @@
 import type { EmbedPresetId } from './embedSnippet';
 import { DEFAULT_EMBED_PRESET, EMBED_PRESETS } from './embedSnippet';
+import type { Page } from '../../shared/state/appState';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
-import { EMBED_PANELS, LOCKABLE_PARAMS } from '../../shared/url/url';
+import { pageEmbedOptions } from '../../shared/url/url';
 import { EmbedPreview } from './EmbedPreview';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { Segmented } from '../../shared/ui/Segmented';
@@ -11,6 +12,10 @@ import { ShareText } from './ShareText';
 /** Props of EmbedGenerator: the chosen options, the widget URL and snippet for them, and how to change them. */
 export interface EmbedGeneratorProps {
   embed: EmbedOptions;
+  /** The page the embed shows, the pages that embed (named as their tabs) and how to choose one. */
+  page: Page;
+  pages: readonly { value: Page; label: string }[];
+  onPage: (page: Page) => void;
   presetId: EmbedPresetId;
   /** The embed URL for the current state and options (the preview's src). */
   src: string;
@@ -21,12 +26,18 @@ export interface EmbedGeneratorProps {
   onLock: (param: LockableParam, on: boolean) => void;
 }
 
-/** The Share panel's embed generator: size presets, panels, locks, a live scaled preview and the snippet. */
-export function EmbedGenerator({ embed, presetId, src, code, onPreset, onPanel, onLock }: EmbedGeneratorProps) {
+/**
+ * The Share panel's embed generator: the page, size presets, the page's panels and locks (PAGE_EMBEDS), a live
+ * scaled preview and the snippet.
+ */
+export function EmbedGenerator(props: EmbedGeneratorProps) {
+  const { embed, page, pages, onPage, presetId, src, code, onPreset, onPanel, onLock } = props;
   const t = useMessages();
   const preset = EMBED_PRESETS.find((p) => p.id === presetId) ?? DEFAULT_EMBED_PRESET;
+  const offered = pageEmbedOptions(page);
   return (
     <div className="embed-generator">
+      <Segmented legend={t.embedPage} value={page} options={pages} onChange={onPage} />
       <Segmented
         legend={t.embedSize}
         value={presetId}
@@ -35,13 +46,13 @@ export function EmbedGenerator({ embed, presetId, src, code, onPreset, onPanel, 
       />
       <fieldset className="checks">
         <legend>{t.embedPanels}</legend>
-        {EMBED_PANELS.map((p) => (
+        {offered.panels.map((p) => (
           <Toggle key={p} label={t.panelNames[p]} checked={embed.panels.includes(p)} onChange={(v) => onPanel(p, v)} />
         ))}
       </fieldset>
       <fieldset className="checks">
         <legend>{t.embedLock}</legend>
-        {LOCKABLE_PARAMS.map((p) => (
+        {offered.locks.map((p) => (
           <Toggle key={p} label={t.lockNames[p]} checked={embed.locked.includes(p)} onChange={(v) => onLock(p, v)} />
         ))}
       </fieldset>

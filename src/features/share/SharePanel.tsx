@@ -1,12 +1,12 @@
 import './SharePanel.css';
 import { Suspense, lazy, memo, useState } from 'react';
 import type { RefObject } from 'react';
-import type { AppState } from '../../shared/state/appState';
+import type { AppState, Page } from '../../shared/state/appState';
 import { reducer } from '../../shared/state/appState';
 import type { EmbedPresetId } from './embedSnippet';
 import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from './embedSnippet';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
-import { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS, embedUrl, serializeState } from '../../shared/url/url';
+import { DEFAULT_EMBED, EMBED_PAGES, embedUrl, pageEmbedOptions, serializeState } from '../../shared/url/url';
 import { copyText } from '../../shared/ui/clipboard';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { ShareText } from './ShareText';
@@ -17,6 +17,8 @@ export interface SharePanelProps {
   stateRef: RefObject<AppState>;
   /** The page's own address; default window.location.href (a file: address is the offline copy). */
   pageHref?: string;
+  /** A page's name as its tab shows it (the generator's page choice); default its id. */
+  pageLabel?: (page: Page) => string;
 }
 
 /** Whether the app runs as a file on this computer (the offline single file): its links only work here. */
@@ -49,16 +51,28 @@ function useCopy() {
   return { status, shown, copy };
 }
 
-function SharePanelImpl({ stateRef, pageHref = window.location.href }: SharePanelProps) {
+/** The embed options kept where the page offers them (its panels and locks, PAGE_EMBEDS). */
+function forPage(e: EmbedOptions, page: Page): EmbedOptions {
+  const o = pageEmbedOptions(page);
+  return { panels: e.panels.filter((p) => o.panels.includes(p)), locked: e.locked.filter((l) => o.locks.includes(l)) };
+}
+
+function SharePanelImpl({ stateRef, pageHref = window.location.href, pageLabel = (p) => p }: SharePanelProps) {
   const t = useMessages();
   const [embed, setEmbed] = useState<EmbedOptions>(DEFAULT_EMBED);
+  // The page the embed shows; the generator's page choice changes it.
+  const [embedPage, setEmbedPage] = useState<Page>('simulator');
   const [presetId, setPresetId] = useState<EmbedPresetId>(DEFAULT_EMBED_PRESET.id);
   const { status, shown, copy } = useCopy();
   // The generator (options, preview, code) renders only once opened; its URL is taken when an option changes.
   const [src, setSrc] = useState<string | null>(null);
 
   const pausedState = () => reducer(stateRef.current, { type: 'setPlaying', playing: false });
-  const srcFor = (e: EmbedOptions) => embedUrl(window.location.href, pausedState(), e);
+  const onPage = (page: Page): AppState => {
+    const s = pausedState();
+    return { ...s, shell: { ...s.shell, page } };
+  };
+  const srcFor = (e: EmbedOptions, page = embedPage) => embedUrl(window.location.href, onPage(page), e);
   const linkHref = () => {
     const u = new URL(window.location.href);
     u.search = `?${serializeState(pausedState())}`;
@@ -66,14 +80,17 @@ function SharePanelImpl({ stateRef, pageHref = window.location.href }: SharePane
     return u.toString();
   };
   const codeFor = (s: string, id: EmbedPresetId) => embedSnippet({ src: s, title: t.embedTitle, preset: presetOf(id) });
-  const change = (next: EmbedOptions) => {
+  const change = (next: EmbedOptions, page = embedPage) => {
     setEmbed(next);
-    if (src !== null) setSrc(srcFor(next));
+    setEmbedPage(page);
+    if (src !== null) setSrc(srcFor(next, page));
   };
+  const offered = pageEmbedOptions(embedPage);
   const togglePanel = (p: EmbedPanel, on: boolean) =>
-    change({ ...embed, panels: toggled(EMBED_PANELS, embed.panels, p, on) });
+    change({ ...embed, panels: toggled(offered.panels, embed.panels, p, on) });
   const toggleLock = (p: LockableParam, on: boolean) =>
-    change({ ...embed, locked: toggled(LOCKABLE_PARAMS, embed.locked, p, on) });
+    change({ ...embed, locked: toggled(offered.locks, embed.locked, p, on) });
+  const choosePage = (page: Page) => change(forPage(embed, page), page);
 
   // The offline file has no embed page beside it and no address anyone else can open: say so, offer no embed.
   if (isOfflineFile(pageHref))
@@ -110,6 +127,9 @@ function SharePanelImpl({ stateRef, pageHref = window.location.href }: SharePane
           <Suspense fallback={null}>
             <EmbedGenerator
               embed={embed}
+              page={embedPage}
+              pages={EMBED_PAGES.map((p) => ({ value: p, label: pageLabel(p) }))}
+              onPage={choosePage}
               presetId={presetId}
               src={src}
               code={codeFor(src, presetId)}

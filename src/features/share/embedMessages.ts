@@ -1,8 +1,8 @@
 import type { AppState } from '../../shared/state/appState';
 import type { LockableParam } from '../../shared/url/embedOptions';
-import { DEFAULT_EMBED } from '../../shared/url/embedOptions';
+import { DEFAULT_EMBED, pageEmbedOptions } from '../../shared/url/embedOptions';
 import type { UrlTarget } from '../../shared/url/urlKeys';
-import { URL_CONSTRAINTS, URL_KEYS } from '../../shared/url/urlKeys';
+import { URL_CONSTRAINTS, urlKeysOn } from '../../shared/url/urlKeys';
 import type { UrlValue } from '../../shared/url/urlValues';
 import { valueText } from '../../shared/url/urlValues';
 
@@ -31,18 +31,8 @@ export interface SetStateCommand {
 /** Longest string value a command may carry, characters (a URL value is never longer; more is refused unread). */
 export const MAX_VALUE_CHARS = 64;
 
-/** The lock that guards each URL key a command could set: a locked value is refused. */
-export const LOCK_OF_KEY: Readonly<Partial<Record<string, LockableParam>>> = {
-  r1: 'r1',
-  r2: 'r2',
-  r3: 'r3',
-  r4: 'r4',
-  t2: 'theta2',
-  br: 'branch',
-  pd: 'coupler',
-  pa: 'coupler',
-  play: 'play',
-};
+/** The lock that guards each of the simulator's URL keys a command could set: a locked value is refused. */
+export const LOCK_OF_KEY: Readonly<Partial<Record<string, LockableParam>>> = pageEmbedOptions('simulator').keyLocks;
 
 function isRecord(x: unknown): x is Record<string, unknown> {
   return typeof x === 'object' && x !== null && !Array.isArray(x);
@@ -74,8 +64,9 @@ export interface PatchResult {
 
 /**
  * Applies a patch of URL keys to the state through the URL table's codecs (the same parse as a link's query):
- * numbers, booleans and strings up to MAX_VALUE_CHARS are read as the URL text they stand for. Unknown keys,
- * embed-only keys (panels, lock), bad values and keys guarded by a lock in `locked` are refused and listed;
+ * numbers, booleans and strings up to MAX_VALUE_CHARS are read as the URL text they stand for, with the keys of the
+ * state's page (page=3d's r2 is the RSSR crank). Unknown keys, embed-only keys (panels, lock), bad values and keys
+ * guarded by a lock in `locked` (the page's keyLocks, PAGE_EMBEDS) are refused and listed;
  * the rules between keys (URL_CONSTRAINTS) revert the keys that break them. Never throws, never evaluates.
  */
 export function applyPatch(
@@ -84,16 +75,23 @@ export function applyPatch(
   locked: readonly LockableParam[] = [],
 ): PatchResult {
   const start: UrlTarget = { state, embed: DEFAULT_EMBED };
+  const keys = urlKeysOn(state.shell.page);
+  const keyLocks = pageEmbedOptions(state.shell.page).keyLocks;
   let target = start;
   const applied: string[] = [];
   const refused: RefusedKey[] = [];
   for (const name of Object.keys(patch)) {
-    const k = URL_KEYS.find((x) => x.name === name);
+    const k = keys.find((x) => x.name === name);
     if (!k || k.scope !== 'state') {
       refused.push({ key: name, why: 'unknown key' });
       continue;
     }
-    const lock = LOCK_OF_KEY[name];
+    if (name === 'page') {
+      // Its panels and locks are the page's: another page would come unlocked.
+      refused.push({ key: name, why: 'the page is fixed by the embed (its panels and locks are that page’s)' });
+      continue;
+    }
+    const lock = Object.hasOwn(keyLocks, name) ? keyLocks[name] : undefined;
     if (lock && locked.includes(lock)) {
       refused.push({ key: name, why: `locked (${lock})` });
       continue;
@@ -110,7 +108,7 @@ export function applyPatch(
   for (const c of URL_CONSTRAINTS) {
     if (c.holds(target.state)) continue;
     for (const name of c.keys) {
-      const k = URL_KEYS.find((x) => x.name === name);
+      const k = keys.find((x) => x.name === name);
       if (!k || !applied.includes(name)) continue;
       target = k.set(target, k.get(start));
       applied.splice(applied.indexOf(name), 1);

@@ -27,7 +27,7 @@ export function useEmbedMessages(
   const publish = useEffectEvent(() => {
     timer.current = null;
     if (!bridge) return;
-    const values = stateValues(latest.current);
+    const values = stateValues(latest.current, latest.current.shell.page);
     const text = JSON.stringify(values);
     if (text === sent.current) return;
     const first = sent.current === null;

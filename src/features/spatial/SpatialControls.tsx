@@ -20,7 +20,22 @@ export interface SpatialControlsProps {
   sm: SpatialMessages;
   /** Play's frame ahead of the state: the θ2 field follows it. */
   playhead: SpatialPlayhead;
+  /** What an embed locks (lock=params,theta2,branch,play); default nothing. */
+  locked?: SpatialLocks;
 }
+
+/**
+ * The spatial page's embed locks: the linkage's parameters (kind, preset, values, the input's ω2 and α2), θ2 (and
+ * Step), branch, Play.
+ */
+export interface SpatialLocks {
+  params: boolean;
+  theta2: boolean;
+  branch: boolean;
+  play: boolean;
+}
+
+const UNLOCKED: SpatialLocks = { params: false, theta2: false, branch: false, play: false };
 
 const ARC: SliderRange = { min: 0.5, max: 179.5, step: 0.5 };
 const TURN: SliderRange = { min: -180, max: 180, step: 1 };
@@ -53,11 +68,13 @@ function Theta2Field({
   playhead,
   onCommit,
   sm,
+  locked,
 }: {
   stateDeg: number;
   playhead: SpatialPlayhead;
   onCommit: (value: number) => void;
   sm: SpatialMessages;
+  locked: boolean;
 }) {
   const frame = useSyncExternalStore(playhead.subscribe, playhead.get);
   return (
@@ -68,12 +85,14 @@ function Theta2Field({
       onCommit={onCommit}
       sm={sm}
       decimals={2}
+      locked={locked}
     />
   );
 }
 
 /** The linkage's controls: kind, preset, its values, θ2 with Play and Step, and the branch. */
-export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, playhead }: SpatialControlsProps) {
+export function SpatialControls(props: SpatialControlsProps) {
+  const { s, dispatch, playing, onPlay, onStep, sm, playhead, locked = UNLOCKED } = props;
   const set = (field: SpatialField) => (value: number) => dispatch({ type: 'setSpatialField', field, value });
   const preset = presetOf(s);
   return (
@@ -81,6 +100,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, play
       <Segmented
         legend={sm.kindLegend}
         value={s.kind}
+        locked={locked.params}
         options={[
           { value: 'sph', label: sm.kindSpherical },
           { value: 'rssr', label: sm.kindRssr },
@@ -92,6 +112,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, play
         <select
           className="select select-small"
           value={preset ?? ''}
+          disabled={locked.params}
           onChange={(e) => {
             if (!e.target.value) return;
             const p = presetById(e.target.value as SpatialPreset['id']);
@@ -115,25 +136,50 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, play
             slider={slider}
             onCommit={set(field)}
             sm={sm}
+            locked={locked.params}
           />
         ))}
       </div>
       <div className="spatial-input">
-        <Theta2Field stateDeg={s.theta2Deg} playhead={playhead} onCommit={set('theta2Deg')} sm={sm} />
+        <Theta2Field
+          stateDeg={s.theta2Deg}
+          playhead={playhead}
+          onCommit={set('theta2Deg')}
+          sm={sm}
+          locked={locked.theta2}
+        />
         <div className="spatial-play">
-          <button type="button" className="btn btn-small" onClick={() => onStep(-1)} aria-label={sm.stepBack}>
+          <button
+            type="button"
+            className="btn btn-small"
+            onClick={() => onStep(-1)}
+            aria-label={sm.stepBack}
+            disabled={locked.theta2}
+          >
             <span aria-hidden="true">◀ 1°</span>
           </button>
-          <button type="button" className="btn btn-primary btn-small" onClick={() => onPlay(!playing)}>
+          <button
+            type="button"
+            className="btn btn-primary btn-small"
+            onClick={() => onPlay(!playing)}
+            disabled={locked.play || locked.theta2}
+          >
             {playing ? sm.pause : sm.play}
           </button>
-          <button type="button" className="btn btn-small" onClick={() => onStep(1)} aria-label={sm.stepForward}>
+          <button
+            type="button"
+            className="btn btn-small"
+            onClick={() => onStep(1)}
+            aria-label={sm.stepForward}
+            disabled={locked.theta2}
+          >
             <span aria-hidden="true">1° ▶</span>
           </button>
         </div>
         <Segmented
           legend={sm.branchLegend}
           value={s.branch}
+          locked={locked.branch}
           options={[
             { value: 'open', label: sm.branchOpen },
             { value: 'crossed', label: sm.branchCrossed },
@@ -147,6 +193,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, play
             slider={{ min: -20, max: 20, step: 0.1 }}
             onCommit={set('omega2RadPerS')}
             sm={sm}
+            locked={locked.params}
           />
           <SpatialFieldControl
             field="alpha2RadPerS2"
@@ -154,6 +201,7 @@ export function SpatialControls({ s, dispatch, playing, onPlay, onStep, sm, play
             slider={{ min: -50, max: 50, step: 0.5 }}
             onCommit={set('alpha2RadPerS2')}
             sm={sm}
+            locked={locked.params}
           />
         </div>
       </div>

@@ -23,6 +23,8 @@ export interface SpatialFieldControlProps {
   sm: SpatialMessages;
   /** Decimals the field shows (trailing zeros dropped); absent: the exact value. */
   decimals?: number;
+  /** Locked by an embed: shown read-only with the lock mark, the slider disabled; default false. */
+  locked?: boolean;
 }
 
 /** The allowed range of a field as text: (0, 180)°. */
@@ -37,7 +39,8 @@ export function rangeText(field: SpatialField): string {
  * the field's range or not a number shows a message naming the field and the text and keeps the last valid value;
  * Escape restores it.
  */
-export function SpatialFieldControl({ field, value, slider, onCommit, sm, decimals }: SpatialFieldControlProps) {
+export function SpatialFieldControl(props: SpatialFieldControlProps) {
+  const { field, value, slider, onCommit, sm, decimals, locked = false } = props;
   const label = sm.fieldNames[field];
   const { angle, unit } = SPATIAL_FIELDS[field];
   const read = (text: string): FieldRead => {
@@ -49,18 +52,19 @@ export function SpatialFieldControl({ field, value, slider, onCommit, sm, decima
       return { ok: false, message: sm.fieldError(label, echo, rangeText(field)) };
     return { ok: true, value: v };
   };
-  const draft = useFieldDraft(value, decimals, true, read, onCommit);
+  const draft = useFieldDraft(value, decimals, !locked, read, onCommit);
   return (
     <NumberControlView
       label={label}
       field={draft}
       unit={angle ? '°' : (unit ?? '')}
+      locked={locked}
       slider={{
         ...slider,
         value,
         onSlide: (x) => {
           const v = normalizeSpatial(field, x);
-          if (spatialFieldProblem(field, v) !== null) return;
+          if (locked || spatialFieldProblem(field, v) !== null) return;
           draft.clearError();
           onCommit(v);
         },

@@ -10,6 +10,7 @@ import { copyText } from '../../shared/ui/clipboard';
 import { PanelSection } from '../../shared/ui/PanelSection';
 import { serializeState } from '../../shared/url/url';
 import { scenePose } from './sceneData';
+import type { SpatialLocks } from './SpatialControls';
 import { SpatialControls } from './SpatialControls';
 import { spatialCsvText, spatialFileStem } from './spatialExports';
 import { spatialMessagesFor } from './spatialMessages';
@@ -26,6 +27,16 @@ import { muAt, poseAt, useSpatialAnalysis } from './useSpatialAnalysis';
 export interface SpatialPageProps {
   state: AppState;
   dispatch: Dispatch<Action>;
+  /** In the embed (page=3d in embed.html or <fourbar-lab>): its panels and locks; absent: the full page. */
+  embed?: SpatialEmbedOptions;
+}
+
+/** What an embed of the page shows (the controls, the numbers, the plots; the 3D view always) and locks. */
+export interface SpatialEmbedOptions {
+  controlsShown: boolean;
+  numbersShown: boolean;
+  plotsShown: boolean;
+  locks: SpatialLocks;
 }
 
 /** Play's speed, degrees of θ2 per second. */
@@ -35,7 +46,7 @@ export const PLAY_DEG_PER_S = 90;
  * The Spatial page (page=3d, issue 32): a spherical four-bar or an RSSR linkage in a three.js view, its controls and
  * presets, the numbers at θ2, θ4 ω4 α4 μ against θ2, and the PNG, CSV and link exports.
  */
-export function SpatialPage({ state, dispatch }: SpatialPageProps) {
+export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
   const s = state.spatial;
   const sm = spatialMessagesFor(state.shell.locale);
   const { analysis, error } = useSpatialAnalysis(s);
@@ -90,6 +101,7 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
     }
     setPlaying(on);
   };
+  const shows = (part: 'controlsShown' | 'numbersShown' | 'plotsShown') => !embed || embed[part];
   const onStep = (d: number) => {
     const f = playhead.get() ?? base;
     setPlaying(false);
@@ -119,11 +131,13 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
   };
 
   return (
-    <div className="spatial-page" data-testid="spatial-page">
-      <header className="spatial-head">
-        <h1 className="spatial-title">{sm.pageTitle}</h1>
-        <p className="note spatial-intro">{sm.pageIntro}</p>
-      </header>
+    <div className={`spatial-page${embed ? ' spatial-embedded' : ''}`} data-testid="spatial-page">
+      {embed ? null : (
+        <header className="spatial-head">
+          <h1 className="spatial-title">{sm.pageTitle}</h1>
+          <p className="note spatial-intro">{sm.pageIntro}</p>
+        </header>
+      )}
       <div className="spatial-main">
         <section className="spatial-view-area" aria-label={sm.viewLabel}>
           <SpatialView
@@ -135,7 +149,7 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
             onStatus={setViewStatus}
           />
         </section>
-        <div className="spatial-side">
+        <div className="spatial-side" hidden={!shows('controlsShown')}>
           <PanelSection id="spatial-controls-title" title={sm.kindLegend}>
             <SpatialControls
               s={s}
@@ -145,10 +159,11 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
               onStep={onStep}
               sm={sm}
               playhead={playhead}
+              locked={embed?.locks}
             />
           </PanelSection>
         </div>
-        <div className="spatial-results">
+        <div className="spatial-results" hidden={!shows('numbersShown')}>
           <PanelSection id="spatial-numbers-title" title={sm.numbersSection}>
             {analysis ? (
               <SpatialNumbers analysis={analysis} playhead={playhead} base={base} sm={sm} />
@@ -158,39 +173,41 @@ export function SpatialPage({ state, dispatch }: SpatialPageProps) {
               </p>
             )}
           </PanelSection>
-          <PanelSection id="spatial-exports-title" title={sm.exportsTitle}>
-            <div className="spatial-exports">
-              <button
-                type="button"
-                className="btn"
-                onClick={onPng}
-                disabled={pngOff !== null}
-                title={pngOff ?? undefined}
-                aria-describedby={viewStatus === 'no-webgl' ? 'spatial-png-off' : undefined}
-              >
-                {sm.exportPng}
-              </button>
-              <button type="button" className="btn" onClick={onCsv} disabled={!model}>
-                {sm.exportCsv}
-              </button>
-              <button type="button" className="btn" onClick={onCopyLink}>
-                {sm.copyLink}
-              </button>
-            </div>
-            {viewStatus === 'no-webgl' ? (
-              <p id="spatial-png-off" className="note spatial-png-off">
-                {pngOff}
-              </p>
-            ) : null}
-            {notice ? (
-              <p className="note" role="status">
-                {notice}
-              </p>
-            ) : null}
-          </PanelSection>
+          {embed ? null : (
+            <PanelSection id="spatial-exports-title" title={sm.exportsTitle}>
+              <div className="spatial-exports">
+                <button
+                  type="button"
+                  className="btn"
+                  onClick={onPng}
+                  disabled={pngOff !== null}
+                  title={pngOff ?? undefined}
+                  aria-describedby={viewStatus === 'no-webgl' ? 'spatial-png-off' : undefined}
+                >
+                  {sm.exportPng}
+                </button>
+                <button type="button" className="btn" onClick={onCsv} disabled={!model}>
+                  {sm.exportCsv}
+                </button>
+                <button type="button" className="btn" onClick={onCopyLink}>
+                  {sm.copyLink}
+                </button>
+              </div>
+              {viewStatus === 'no-webgl' ? (
+                <p id="spatial-png-off" className="note spatial-png-off">
+                  {pngOff}
+                </p>
+              ) : null}
+              {notice ? (
+                <p className="note" role="status">
+                  {notice}
+                </p>
+              ) : null}
+            </PanelSection>
+          )}
         </div>
       </div>
-      {analysis ? (
+      {analysis && shows('plotsShown') ? (
         <PanelSection id="spatial-plots-title" title={sm.plotsTitle} className="panel-section spatial-plots-section">
           <SpatialPlots analysis={analysis} playhead={playhead} base={base} sm={sm} />
         </PanelSection>

@@ -6,7 +6,12 @@ import {
   CylinderGeometry,
   DirectionalLight,
   DoubleSide,
+  FrontSide,
   Group,
+  Line,
+  LineBasicMaterial,
+  LineDashedMaterial,
+  LineSegments,
   Mesh,
   MeshBasicMaterial,
   MeshPhongMaterial,
@@ -32,6 +37,8 @@ import { PI, TWO_PI, degToRad } from '../../solver';
 import type { Vec3 } from '../../spatial';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import { arcPointsInto, chordPointsInto, sceneBounds } from './sceneData';
+import type { RenderQuality } from './renderQuality';
+import { ADAPT_WINDOW, adaptQuality, qualityForRenderer } from './renderQuality';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
 export type Projection = 'perspective' | 'orthographic';
@@ -57,6 +64,8 @@ export interface SpatialScene {
   pngBytes(scale: number): Promise<Uint8Array>;
   /** Frames rendered so far (for tests and bench). */
   frames(): number;
+  /** The look drawn now (lean on a software WebGL or after slow frames; see renderQuality). */
+  quality(): RenderQuality;
   dispose(): void;
 }
 
@@ -174,12 +183,79 @@ function disposeTree(root: Object3D): void {
 }
 
 /**
+ * The WebGL renderer's name (UNMASKED_RENDERER_WEBGL where exposed, else RENDERER), read on a throwaway context so
+ * the view's own context can be made with the right antialias; null when WebGL or the name is not available.
+ */
+function probeRenderer(): string | null {
+  const gl = document.createElement('canvas').getContext('webgl');
+  if (!gl) return null;
+  try {
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    const name: unknown = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
+    return typeof name === 'string' ? name : null;
+  } finally {
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
+  }
+}
+
+/** A fixed line through points (x y z flat): fat (pixels wide) in the full look, a 1 px line in the lean one. */
+function fixedLine(q: RenderQuality, color: string, widthPx: number, pts: number[], opacity = 1): Line2 | Line | null {
+  if (pts.length < 6) return null;
+  if (q.fatFixedLines) {
+    const l = fatLine(color, widthPx, opacity);
+    setLine(l, pts);
+    return l;
+  }
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(pts, 3));
+  return new Line(g, new LineBasicMaterial({ color, transparent: opacity < 1, opacity }));
+}
+
+/** Disjoint segments (pairs of points, x y z flat): fat in the full look, 1 px (dashed as asked) in the lean one. */
+function fixedSegments(
+  q: RenderQuality,
+  segments: number[],
+  style: { color: string; widthPx: number; opacity?: number; dash?: [number, number] },
+): LineSegments2 | LineSegments {
+  const opacity = style.opacity ?? 1;
+  const [dashSize, gapSize] = style.dash ?? [0, 0];
+  if (q.fatFixedLines) {
+    const seg = new LineSegments2(
+      new LineSegmentsGeometry(),
+      new LineMaterial({
+        color: new Color(style.color).getHex(),
+        linewidth: style.widthPx,
+        dashed: style.dash !== undefined,
+        dashSize,
+        gapSize,
+        transparent: opacity < 1,
+        opacity,
+      }),
+    );
+    seg.geometry.setPositions(segments);
+    if (style.dash) seg.computeLineDistances();
+    return seg;
+  }
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(segments, 3));
+  const m = style.dash
+    ? new LineDashedMaterial({ color: style.color, dashSize, gapSize, transparent: opacity < 1, opacity })
+    : new LineBasicMaterial({ color: style.color, transparent: opacity < 1, opacity });
+  const seg = new LineSegments(g, m);
+  if (style.dash) seg.computeLineDistances();
+  return seg;
+}
+
+/**
  * Makes the view on canvas: throws when WebGL cannot start (the caller shows its fallback). Orbit, zoom and pan by
  * mouse and touch come from three's OrbitControls; the keys from the caller (orbitBy, zoomBy, panBy).
  */
 export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
-  const renderer = new WebGLRenderer({ canvas, antialias: true, alpha: false });
-  renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
+  let quality = qualityForRenderer(probeRenderer());
+  const renderer = new WebGLRenderer({ canvas, antialias: quality.antialias, alpha: false });
+  const pixelRatio = () => Math.min(quality.maxPixelRatio, window.devicePixelRatio || 1);
+  renderer.setPixelRatio(pixelRatio());
+  canvas.dataset.quality = quality.name;
   renderer.setClearColor(new Color(COLORS.surface), 1);
   const scene = new Scene();
   scene.add(new AmbientLight(0xffffff, 1.6));
@@ -195,12 +271,21 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   let controls: OrbitControls<PerspectiveCamera | OrthographicCamera> = new OrbitControls(camera, canvas);
   let frameCount = 0;
   let pending = 0;
+  /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
+  let askedAt = 0;
+  const latencies: number[] = [];
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
   let fit = { centre: new Vector3(), radius: 1.3 };
   let viewDir = new Vector3(0.4, -0.8, 0.5).normalize();
 
   const render = () => {
+    if (pending) {
+      latencies.push(performance.now() - askedAt);
+      if (latencies.length > ADAPT_WINDOW) latencies.shift();
+      const next = adaptQuality(quality, latencies);
+      if (next !== quality) lower(next);
+    }
     pending = 0;
     renderer.render(scene, camera);
     frameCount++;
@@ -208,7 +293,9 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     canvas.dataset.frames = String(frameCount);
   };
   const invalidate = () => {
-    if (!pending) pending = requestAnimationFrame(render);
+    if (pending) return;
+    askedAt = performance.now();
+    pending = requestAnimationFrame(render);
   };
   const wire = (c: OrbitControls<PerspectiveCamera | OrthographicCamera>) => {
     c.enableDamping = false;
@@ -283,15 +370,22 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     pinB.scale.setScalar(r / 0.045);
     pinP.scale.setScalar((0.9 * r) / 0.045);
     const add = (o: Object3D) => fixed.add(o);
+    const addLine = (o: Line2 | LineSegments2 | Line | null) => {
+      if (!o) return;
+      if (o instanceof LineSegments2) track(o);
+      add(o);
+    };
+    const q = quality;
     if (l.kind === 'spherical') {
       const sphere = new Mesh(
-        new SphereGeometry(1, 64, 40),
+        new SphereGeometry(1, ...q.sphereSegments),
         new MeshPhongMaterial({
           color: '#b8c9e0',
           transparent: true,
-          opacity: 0.2,
+          // One side shows about as much of the sphere as two: a little more opaque.
+          opacity: q.sphereTwoSided ? 0.2 : 0.28,
           depthWrite: false,
-          side: DoubleSide,
+          side: q.sphereTwoSided ? DoubleSide : FrontSide,
           shininess: 10,
         }),
       );
@@ -308,18 +402,14 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
           const t = (TWO_PI * i) / 96;
           pts.push(...u.clone().multiplyScalar(Math.cos(t)).addScaledVector(w, Math.sin(t)).toArray());
         }
-        const c = track(fatLine(COLORS.gridAxis, 1, 0.7));
-        setLine(c, pts);
-        add(c);
+        addLine(fixedLine(q, COLORS.gridAxis, 1, pts, 0.7));
       }
     }
     // Ground: the axes (thin), the ground link (thick), a bearing on each axis.
     for (const ax of l.axes) {
-      const c = track(fatLine(COLORS.ground, 1.5));
       const from = v3(ax.from);
       const to = v3(ax.to);
-      setLine(c, [...from.toArray(), ...to.toArray()]);
-      add(c);
+      addLine(fixedLine(q, COLORS.ground, 1.5, [...from.toArray(), ...to.toArray()]));
       const b = bearing(r * 0.9, r * 3.2);
       orient(b, v3(ax.bearing), to.clone().sub(from));
       add(b);
@@ -332,32 +422,16 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       g.position.copy(v3(p));
       add(g);
     }
-    if (l.curve.length) {
-      const seg = new LineSegments2(
-        new LineSegmentsGeometry(),
-        new LineMaterial({ color: new Color(COLORS.trace).getHex(), linewidth: 2.5 }),
-      );
-      track(seg);
-      seg.geometry.setPositions(l.curve);
-      add(seg);
-    }
+    if (l.curve.length) addLine(fixedSegments(q, l.curve, { color: COLORS.trace, widthPx: 2.5 }));
     for (const path of l.paths) {
-      const seg = new LineSegments2(
-        new LineSegmentsGeometry(),
-        new LineMaterial({
-          color: new Color(path.color).getHex(),
-          linewidth: 1.5,
-          dashed: true,
-          dashSize: 0.04 * l.radius,
-          gapSize: 0.03 * l.radius,
-          transparent: true,
+      addLine(
+        fixedSegments(q, path.segments, {
+          color: path.color,
+          widthPx: 1.5,
           opacity: 0.75,
+          dash: [0.04 * l.radius, 0.03 * l.radius],
         }),
       );
-      track(seg);
-      seg.geometry.setPositions(path.segments);
-      seg.computeLineDistances();
-      add(seg);
     }
     // A floor below an RSSR, for depth.
     if (l.floorZ !== null) {
@@ -372,6 +446,15 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     }
     scene.add(fixed);
   };
+
+  /** Takes a leaner look after slow frames: the buffer at the new pixel ratio, the fixed parts rebuilt. */
+  function lower(next: RenderQuality): void {
+    quality = next;
+    canvas.dataset.quality = next.name;
+    renderer.setPixelRatio(pixelRatio());
+    renderer.setSize(size.x, size.y, false);
+    if (linkage) buildFixed(linkage);
+  }
 
   const api: SpatialScene = {
     setLinkage(l) {
@@ -495,6 +578,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       return new Uint8Array(await blob.arrayBuffer());
     },
     frames: () => frameCount,
+    quality: () => quality,
     dispose() {
       if (pending) cancelAnimationFrame(pending);
       controls.dispose();

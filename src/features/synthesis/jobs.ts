@@ -11,16 +11,18 @@ export interface PathPartParams {
   seed: number;
   part: number;
   parts: number;
-  /** Most rounds of the whole run (all parts together). */
-  rounds: number;
+  /** Most rounds of the whole run (all parts together); none (the page's runs): the budget governs. */
+  rounds?: number;
   /** Wall-clock budget of the part (ms). */
   budgetMs: number;
 }
 
-/** The merge of the parts' candidates into checked answers (mergePathCandidates, no deadline: deterministic). */
+/** The merge of the parts' candidates into checked answers (mergePathCandidates). */
 export interface PathMergeParams {
   task: PathTask;
   parts: PathCandidate[][];
+  /** Most time the polish may take, from the merge's start (ms); none: no deadline, so the merge is deterministic. */
+  budgetMs?: number;
 }
 
 /** A slice [start, end) of the nine-point start paths, tracked to the nine points (ninePointSynthesis). */

@@ -18,9 +18,10 @@ export const synthesisHandlers: JobHandlers<SynthesisJobs> = {
       onProgress: (p) => progress(p.fraction, pathStageText(p)),
     });
   },
-  async pathMerge(params) {
+  async pathMerge(params, { signal }) {
     const { mergePathCandidates } = await import('../../synthesis');
-    return mergePathCandidates(params.task, params.parts);
+    const deadline = params.budgetMs === undefined ? Infinity : Date.now() + params.budgetMs;
+    return mergePathCandidates(params.task, params.parts, deadline, signal);
   },
   async ninePointPart(params, { signal, progress }) {
     const { ninePointSynthesis } = await import('../../synthesis');

@@ -60,7 +60,14 @@ export interface Messages {
     branch: string;
     coupler: string;
     play: string;
+    template: string;
+    edit: string;
+    params: string;
   };
+  /** The embed generator's page choice (the pages that embed, named as their tabs). */
+  embedPage: string;
+  /** The mechanism embed's table of joint positions (its accessible name). */
+  embedPositions: string;
   embedPreview: string;
   embedCodeLabel: string;
   embedPreviewNote: string;

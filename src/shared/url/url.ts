@@ -1,14 +1,23 @@
 import type { AppState, Page } from '../state/appState';
 import { DEFAULT_STATE } from '../state/appState';
-import type { EmbedOptions } from './embedOptions';
-import { DEFAULT_EMBED } from './embedOptions';
+import type { EmbedOptions, PageEmbedOptions } from './embedOptions';
+import { DEFAULT_EMBED, PAGE_EMBEDS, isEmbedPage, pageEmbedOptions } from './embedOptions';
 import { truncateText } from '../format';
 import { PAGE_URL_VALUES } from '../state/slices/shellSlice';
 import type { UrlTarget } from './urlKeys';
 import { URL_CONSTRAINTS, URL_KEYS, linkKeysOf, urlKeysOn } from './urlKeys';
 
 export type { EmbedOptions, EmbedPanel, LockableParam } from './embedOptions';
-export { DEFAULT_EMBED, EMBED_PANELS, LOCKABLE_PARAMS } from './embedOptions';
+export type { EmbedPage, PageEmbedOptions } from './embedOptions';
+export {
+  DEFAULT_EMBED,
+  EMBED_PAGES,
+  EMBED_PANELS,
+  LOCKABLE_PARAMS,
+  PAGE_EMBEDS,
+  isEmbedPage,
+  pageEmbedOptions,
+} from './embedOptions';
 
 /** Longest key or value, in characters, that a message about an ignored parameter echoes. */
 export const IGNORED_ECHO_CHARS = 24;
@@ -93,7 +102,39 @@ export function parseUrl(
       bad(name, value, c.why);
     }
   }
+  target = pageEmbedChecked(target, given, bad);
   return { state: target.state, embed: target.embed, warnings, ignored };
+}
+
+/**
+ * The panels and locks a page's embed offers (PAGE_EMBEDS): a given one the page does not offer (lock=r1 on
+ * page=mech) is dropped and the key reported, naming what the page offers. A page without an embed keeps them.
+ */
+function pageEmbedChecked(
+  target: UrlTarget,
+  given: ReadonlyMap<string, string>,
+  bad: (key: string, value: string, why: string) => void,
+): UrlTarget {
+  const page = target.state.shell.page;
+  if (!isEmbedPage(page)) return target;
+  const offered: PageEmbedOptions = PAGE_EMBEDS[page];
+  const where = `page=${PAGE_URL_VALUES[page]}`;
+  const panels = target.embed.panels.filter((p) => offered.panels.includes(p));
+  const locked = target.embed.locked.filter((l) => offered.locks.includes(l));
+  const off = (list: readonly string[], kept: readonly string[]) => list.filter((x) => !kept.includes(x)).join(', ');
+  if (panels.length < target.embed.panels.length)
+    bad(
+      'panels',
+      given.get('panels') ?? '',
+      `${off(target.embed.panels, panels)} not on ${where} (it shows ${offered.panels.join(', ')})`,
+    );
+  if (locked.length < target.embed.locked.length)
+    bad(
+      'lock',
+      given.get('lock') ?? '',
+      `${off(target.embed.locked, locked)} not on ${where} (it locks ${offered.locks.join(', ')})`,
+    );
+  return { ...target, embed: { panels, locked } };
 }
 
 /**
@@ -112,13 +153,22 @@ export function serializeState(state: AppState, embed?: EmbedOptions, keysOf: Pa
   return p.toString();
 }
 
-/** The URL of the embed page beside the app page: same directory, embed.html, with the state and embed options. */
+/**
+ * The URL of the embed page beside the app page: same directory, embed.html, with the state and embed options, and
+ * the page's pinned keys (PAGE_EMBEDS: page=mech's tpl) written even at their default.
+ */
 export function embedUrl(appHref: string, state: AppState, embed: EmbedOptions): string {
   const u = new URL(appHref);
   u.search = '';
   u.hash = '';
   u.pathname = u.pathname.replace(/[^/]*$/, 'embed.html');
-  return `${u.toString()}?${serializeState(state, embed)}`;
+  const page = state.shell.page;
+  const query = new URLSearchParams(serializeState(state, embed));
+  for (const name of pageEmbedOptions(page).pinnedKeys) {
+    const k = urlKeysOn(page).find((x) => x.name === name);
+    if (k && !query.has(name)) query.set(name, k.format(k.get({ state, embed })));
+  }
+  return `${u.toString()}?${query.toString()}`;
 }
 
 /** The URL of the full app beside the embed page, carrying the state. */

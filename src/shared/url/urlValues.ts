@@ -1,5 +1,5 @@
 import { plainDecimal } from '../decimal';
-import type { AppState } from '../state/appState';
+import type { AppState, Page } from '../state/appState';
 import { DEFAULT_EMBED } from './embedOptions';
 import { serializeState } from './url';
 import { urlKeysOn } from './urlKeys';
@@ -11,12 +11,14 @@ export type UrlValue = number | string | boolean;
  * The state as URL keys and JSON values, the keys serializeState writes for a share link of the pages without keys
  * of their own (a design file is the simulator's; the spatial page's keys are not in it): numbers where the
  * URL text is a number and the value is not text (t2 rounded to 1e-9 degree), booleans for on/off keys, the URL text otherwise
- * (br 'open', dir 'ccw'). valueText gives each value's URL text back.
+ * (br 'open', dir 'ccw'). valueText gives each value's URL text back. With page, the keys a link of that page writes
+ * (the embed of page=3d reports its spatial keys).
  */
-export function stateValues(state: AppState): Record<string, UrlValue> {
+export function stateValues(state: AppState, page: Page = 'simulator'): Record<string, UrlValue> {
   const out: Record<string, UrlValue> = {};
-  for (const [name, text] of new URLSearchParams(serializeState(state, undefined, 'simulator'))) {
-    const k = urlKeysOn('simulator').find((x) => x.name === name);
+  const keys = urlKeysOn(page);
+  for (const [name, text] of new URLSearchParams(serializeState(state, undefined, page))) {
+    const k = keys.find((x) => x.name === name);
     const raw = k?.get({ state, embed: DEFAULT_EMBED });
     // A text value stays text even when it reads as a number (the expression "1.50" or "-0" is not 1.5 or 0).
     out[name] =

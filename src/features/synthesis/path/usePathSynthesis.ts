@@ -4,17 +4,13 @@ import type { PathCandidate } from '../../../synthesis/globalSearch';
 import type { PathSolution, PathTask } from '../../../synthesis/types';
 import type { SynthesisJobs } from '../jobs';
 import { readPathStage } from '../jobs';
+import { pathMergeParams, pathPartParams } from './pathRunParams';
 
 /** A pool of solver workers running the synthesis jobs (createSolverPool in the app). */
 export interface SynthesisPool extends JobRunner<SynthesisJobs> {
   readonly size: number;
   dispose(): void;
 }
-
-/** Rounds of the global stage a run deals to its parts (the search's default: a run that ends by them is reproducible). */
-export const PATH_ROUNDS = 400;
-/** Wall-clock budget of each part (ms): a run on a slow phone still ends; the best so far is kept. */
-export const PATH_PART_BUDGET_MS = 20_000;
 
 /**
  * Where a run is: not started, running, finished (with answers), stopping (merging what was found before Stop),
@@ -54,7 +50,9 @@ export function lastPathRun(): PathRunState {
 
 /**
  * Runs a path synthesis on a pool of workers: the global stage's rounds dealt to pool.size parts (pathPart, seed and
- * parts fixed, so a run is deterministic for a seed and pool size), then merged (pathMerge). cancel() (Stop) aborts
+ * parts fixed) for the run's budget (PATH_BUDGET_MS: no round count caps it), then merged (pathMerge). A run that
+ * ends by an exact fit is deterministic for a seed and pool size; one that ends by the budget is a prefix of that
+ * work. cancel() (Stop) aborts
  * every part and terminates the pool's workers, so no worker computes on; the candidates the parts reported so far
  * are then merged on a new pool into the answers (status stopped), or the run is cancelled when none was found yet.
  * The pool is made on the first run (again after a stop) and disposed with the page.
@@ -95,7 +93,7 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
     abort.current = controller;
     const p = createPool();
     pool.current = p;
-    p.run('pathMerge', { task: run.task, parts: run.found }, { signal: controller.signal })
+    p.run('pathMerge', pathMergeParams(run.task, run.found, false), { signal: controller.signal })
       .result.then((merged) => {
         if (controller.signal.aborted || merged === null) return;
         const stopped: PathRunState = {
@@ -153,17 +151,21 @@ export function usePathSynthesis(createPool: () => SynthesisPool) {
           Array.from(
             { length: parts },
             (_, part) =>
-              p.run(
-                'pathPart',
-                { task, seed, part, parts, rounds: PATH_ROUNDS, budgetMs: PATH_PART_BUDGET_MS },
-                { signal: controller.signal, onProgress: onProgress(part) },
-              ).result,
+              p.run('pathPart', pathPartParams(task, seed, part, parts), {
+                signal: controller.signal,
+                onProgress: onProgress(part),
+              }).result,
           ),
         );
         if (controller.signal.aborted || results.some((r) => r === null)) return;
+        const complete = results.every((r) => r!.complete);
         const merged = await p.run(
           'pathMerge',
-          { task, parts: results.map((r) => r!.candidates) },
+          pathMergeParams(
+            task,
+            results.map((r) => r!.candidates),
+            complete,
+          ),
           { signal: controller.signal },
         ).result;
         if (controller.signal.aborted || merged === null) return;

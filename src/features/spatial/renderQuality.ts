@@ -1,0 +1,73 @@
+/**
+ * How richly the 3D view draws. A real GPU draws the full look; a software WebGL (SwiftShader, llvmpipe: a laptop or
+ * school VM without a usable GPU, or headless Chromium with --disable-gpu) runs every fragment on the CPU, where the
+ * full look cost about 280 ms of the GPU process's CPU per frame on the spherical view (docs/benchmarks.md, Spatial):
+ * there the view draws the lean look. Pure: no three.js, no DOM.
+ */
+export interface RenderQuality {
+  /** 'full' or 'lean' (for tests, bench and the canvas' data-quality attribute). */
+  name: 'full' | 'lean';
+  /** MSAA on the drawing buffer (a context attribute: fixed once the context is made). */
+  antialias: boolean;
+  /** The largest device pixel ratio the drawing buffer follows. */
+  maxPixelRatio: number;
+  /** The translucent sphere's width and height segments. */
+  sphereSegments: readonly [width: number, height: number];
+  /** The sphere's inside drawn too (a second transparent pass over most of the view). */
+  sphereTwoSided: boolean;
+  /** The fixed lines (great circles, axes, the coupler curve, the pins' paths) as pixel-wide lines; else 1 px lines. */
+  fatFixedLines: boolean;
+}
+
+/** The full look, for a hardware GPU. */
+export const FULL_QUALITY: RenderQuality = {
+  name: 'full',
+  antialias: true,
+  maxPixelRatio: 2,
+  sphereSegments: [64, 40],
+  sphereTwoSided: true,
+  fatFixedLines: true,
+};
+
+/** The lean look, for a software WebGL or a view whose frames take too long. */
+export const LEAN_QUALITY: RenderQuality = {
+  name: 'lean',
+  antialias: false,
+  maxPixelRatio: 1,
+  sphereSegments: [32, 20],
+  sphereTwoSided: false,
+  fatFixedLines: false,
+};
+
+const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|softpipe|lavapipe|software|basic render driver|mesa offscreen/i;
+
+/** True when a WebGL renderer string (WEBGL_debug_renderer_info's UNMASKED_RENDERER_WEBGL) names a software rasteriser. */
+export function isSoftwareRenderer(renderer: string): boolean {
+  return SOFTWARE_RENDERERS.test(renderer);
+}
+
+/** The look for a renderer string; null (the string is not exposed) gives the full look, which adaptQuality can lower. */
+export function qualityForRenderer(renderer: string | null): RenderQuality {
+  return renderer !== null && isSoftwareRenderer(renderer) ? LEAN_QUALITY : FULL_QUALITY;
+}
+
+/** Drawn frames adaptQuality waits for before judging (the first ones compile shaders). */
+export const ADAPT_WINDOW = 12;
+/** A median latency (ms) above this over ADAPT_WINDOW frames lowers the look: two 60 Hz frames. */
+export const SLOW_FRAME_MS = 33;
+
+/**
+ * The look after some drawn frames: the lean look once the median of the last ADAPT_WINDOW latencies (ms, from a
+ * change asking for a frame to that frame drawn; one display frame, 16.7 ms at 60 Hz, when the GPU keeps up, since the
+ * browser holds the next animation frame back while the GPU is busy) is over SLOW_FRAME_MS; otherwise the current
+ * look. Never raises it back (each change of look rebuilds the scene). MSAA is a context attribute, fixed once the
+ * context is made, so the result keeps the current antialias. Throws on a latency that is not a finite number ≥ 0.
+ */
+export function adaptQuality(current: RenderQuality, latenciesMs: readonly number[]): RenderQuality {
+  for (const ms of latenciesMs)
+    if (!(Number.isFinite(ms) && ms >= 0)) throw new Error(`latenciesMs must be finite and >= 0, got ${ms}`);
+  if (current.name === 'lean' || latenciesMs.length < ADAPT_WINDOW) return current;
+  const last = latenciesMs.slice(-ADAPT_WINDOW).sort((a, b) => a - b);
+  const median = (last[(ADAPT_WINDOW - 1) >> 1] + last[ADAPT_WINDOW >> 1]) / 2;
+  return median > SLOW_FRAME_MS ? { ...LEAN_QUALITY, antialias: current.antialias } : current;
+}
