@@ -115,12 +115,14 @@ export function motionPrintContent({
     );
     if (c.rms !== undefined) design.push({ key: 'rms', label: 'rms', value: formatNumber(c.rms, 3) });
     const errors = c.errors ?? exactPoseErrors(s, c);
+    // As the panel's table for six or more poses; an exact method's rounding noise beside the longest link reads 0.
+    const scale = c.errors ? 0 : Math.max(links.r1, links.r2, links.r3, links.r4);
     table = {
       caption: mt.errorsTitle,
       columns: [...columns, mt.columnPositionError, mt.columnAngleError],
       rows: poseRows.map((r, i) => ({
         ...r,
-        cells: [...r.cells, formatNumber(errors[i].position, 3, 1), formatDeg(radToDeg(errors[i].angle), 2)],
+        cells: [...r.cells, formatNumber(errors[i].position, 3, scale), formatDeg(radToDeg(errors[i].angle), 2)],
       })),
     };
   } else table = { caption: mt.posesTitle, columns, rows: poseRows };
