@@ -32,6 +32,22 @@ test.describe('the solver lab', () => {
     await page.screenshot({ path: artifact('lab.png') });
   });
 
+  test('paints both panels of the cycle chart over its background', async ({ page }) => {
+    await page.goto('./?page=lab');
+    await waitLab(page);
+    const chart = page.locator('.lab-cycle svg.chart-svg');
+    await chart.scrollIntoViewIfNeeded();
+    // What a person sees at the middle of each plot belongs to that panel, not to a background laid over it.
+    const hits = await chart.evaluate((svg) =>
+      ['panel-top', 'panel-bottom'].map((cls) => {
+        const r = svg.querySelector(`svg.${cls} g.plot`)?.getBoundingClientRect();
+        const el = r ? document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2) : null;
+        return el?.closest(`svg.${cls}`) ? cls : `covered by ${el?.getAttribute('class')}`;
+      }),
+    );
+    expect(hits).toEqual(['panel-top', 'panel-bottom']);
+  });
+
   test('re-runs on a near-toggle hard case and still shows every method', async ({ page }) => {
     await page.goto('./?page=lab');
     await waitLab(page);

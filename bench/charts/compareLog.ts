@@ -4,7 +4,7 @@
  * is a folder under ROOT holding src/, bench/ and node_modules (say, `git archive <commit> src bench` unpacked, with
  * a node_modules link); one Vite dev server serves ROOT. Prints, per chart and size, the median wall time of a
  * redraw and Chromium's task (CPU) time per redraw (TaskDuration over a round's redraws, median over the rounds).
- * Run: npx vite-node bench/charts/compareLog.ts <ROOT> <port> <tree> [<tree> ...]
+ * Run: [ROUNDS=7] npx vite-node bench/charts/compareLog.ts <ROOT> <port> <tree> [<tree> ...]
  */
 import { chromium } from 'playwright';
 import { createServer } from 'vite';
@@ -12,7 +12,7 @@ import { findChromium } from '../../scripts/ensure-chromium.mjs';
 
 const [ROOT, portArg, ...TREES] = process.argv.slice(2);
 const PORT = Number(portArg);
-const ROUNDS = 7;
+const ROUNDS = Number(process.env.ROUNDS ?? 7);
 const WARMUP = 20;
 const STEPS = 60;
 const SIZES: Array<[number, number]> = [
