@@ -11,6 +11,12 @@ const TARGETS: Pt[] = Array.from({ length: 9 }, (_, k) => couplerPoint(KNOWN, ra
 }));
 const SIZE = Math.max(...TARGETS.map((p) => Math.hypot(p.x - TARGETS[0].x, p.y - TARGETS[0].y)));
 
+/** Twelve points on a figure eight, as pasted: no four-bar passes them exactly, so a run lasts its whole budget. */
+const EIGHT = Array.from({ length: 12 }, (_, k) => {
+  const t = (2 * Math.PI * k) / 12;
+  return `${(3 * Math.sin(t)).toFixed(3)}, ${(1.5 * Math.sin(2 * t)).toFixed(3)}`;
+}).join('\n');
+
 async function paste(page: Page, text: string): Promise<void> {
   await page.getByRole('textbox', { name: 'Target points' }).fill(text);
 }
@@ -107,13 +113,8 @@ test.describe('the synthesis page, Path mode', () => {
   });
 
   test('Stop ends a run at once and keeps the best candidates found so far (issue 34, 4)', async ({ page }) => {
-    // Twelve points on a figure eight: no four-bar passes them exactly, so the search runs its whole budget.
-    const eight = Array.from({ length: 12 }, (_, k) => {
-      const t = (2 * Math.PI * k) / 12;
-      return `${(3 * Math.sin(t)).toFixed(3)}, ${(1.5 * Math.sin(2 * t)).toFixed(3)}`;
-    }).join('\n');
     await page.goto('./?page=syn');
-    await paste(page, eight);
+    await paste(page, EIGHT);
     // The app's own solver worker starts just after the load: wait for it, so the run's pool is the workers after it.
     await expect.poll(() => page.workers().length).toBeGreaterThan(0);
     const before = new Set(page.workers());
@@ -150,14 +151,12 @@ test.describe('the synthesis page, Path mode', () => {
   test('a run on targets no four-bar fits lasts its budget, not a round count, and the page keeps drawing (issue 34, 6)', async ({
     page,
   }) => {
+    // A 10 s run and its start on a busy machine.
+    test.setTimeout(120_000);
     // Twelve points on a figure eight: no exact fit, so only the budget (PATH_BUDGET_MS, 10 s) ends the run. Under the
     // old cap (400 rounds, 20 s a part) a run here lasted past 20 s, or ended early on a machine with many workers.
-    const eight = Array.from({ length: 12 }, (_, k) => {
-      const t = (2 * Math.PI * k) / 12;
-      return `${(3 * Math.sin(t)).toFixed(3)}, ${(1.5 * Math.sin(2 * t)).toFixed(3)}`;
-    }).join('\n');
     await page.goto('./?page=syn');
-    await paste(page, eight);
+    await paste(page, EIGHT);
     // The page thread's longest gap between two animation frames during the run: the work is the workers'.
     await page.evaluate(() => {
       const w = window as unknown as { frameGap: number };
@@ -174,18 +173,20 @@ test.describe('the synthesis page, Path mode', () => {
     await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
     const bar = page.getByRole('progressbar', { name: 'Synthesis progress' });
     await expect(bar).toBeVisible();
-    // The bar moves with the time spent, so it shows how far the run is.
+    // The bar moves with the time the parts spent of their 9 s (the budget less the polish's tenth): from 20 % to
+    // 60 % is 3.6 s, whatever the machine's load (the old parts, 20 s each, took 8 s).
     const percent = async () => Number(await bar.getAttribute('aria-valuenow'));
-    await expect.poll(percent, { timeout: 15_000 }).toBeGreaterThan(20);
-    await expect.poll(percent, { timeout: 15_000 }).toBeGreaterThan(60);
+    await expect.poll(percent, { timeout: 15_000, intervals: [100] }).toBeGreaterThan(20);
+    const t20 = Date.now();
+    await expect.poll(percent, { timeout: 15_000, intervals: [100] }).toBeGreaterThan(60);
+    // Reports come once a round (up to ~1 s apart at a load of 30 on two cores): the margins.
+    expect(Date.now() - t20).toBeGreaterThan(2000);
+    expect(Date.now() - t20).toBeLessThan(6000);
     // Frames kept coming while the workers searched (read mid-run: the results' first drawing is not the run's).
     const gap = await page.evaluate(() => (window as unknown as { frameGap: number }).frameGap);
     await expect(page.getByTestId('synthesis-status')).toHaveText(/candidates? in [\d.]+ s/, { timeout: 60_000 });
-    const elapsed = Date.now() - t0;
-    // The parts search for 9 s of the 10 s; the merge polishes for at most 1.2 s more; the slack is the workers'
-    // start and a busy machine's.
-    expect(elapsed).toBeGreaterThanOrEqual(9000);
-    expect(elapsed).toBeLessThan(17_000);
+    // At least the parts' 9 s (the workers' start and the merge come on top; 17 s was seen at a load of 30).
+    expect(Date.now() - t0).toBeGreaterThanOrEqual(9000);
     // At least a frame a second (idle, a frame every ~17 ms; 767 ms was seen once at a load of 30 on two cores).
     expect(gap).toBeLessThan(1000);
   });
