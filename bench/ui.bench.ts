@@ -35,6 +35,7 @@ import { findChromium } from '../scripts/ensure-chromium.mjs';
 import { WMS_PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { PHONE_PROFILE, gzipStaticServer, phoneColdLoad } from './phoneLoad';
 import { startBoost } from './boost';
+import { MECH_BENCH_QUERY, MECH_TARGETS, measureMechDrag, measureMechPlay } from './mechanismUi';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
 const DIST = process.env.BENCH_DIST ? resolve(process.env.BENCH_DIST) : join(ROOT, 'dist');
@@ -52,7 +53,7 @@ const MOTION_OFF_URL = `${BASE}?vel=0&acc=0&plot=angles`;
  * BENCH_OVERLAYS_QUERY replaces the query (say, without frc=1&fv=1) for a comparison on the same machine.
  */
 const ALL_OVERLAYS_URL = `${BASE}?${process.env.BENCH_OVERLAYS_QUERY ?? 'vel=1&acc=1&dc=1&ic=1&frc=1&fv=1&plot=vel'}`;
-/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel, ninePoint, spatial (default all), for quick checks. */
+/** BENCH_ONLY: a comma-separated subset of phone, play1, play4, theta2x1, theta2x4, r3, motion, forces6, synCancel, ninePoint, spatial, mech (default all), for quick checks. */
 const ONLY = process.env.BENCH_ONLY ? new Set(process.env.BENCH_ONLY.split(',')) : null;
 const wanted = (name: string) => !ONLY || ONLY.has(name);
 const DRAG_STEPS = 120;
@@ -564,6 +565,9 @@ async function main(): Promise<void> {
     // Issue 32: the Spatial page's three.js view, Play and orbit at 1x and 4x.
     const spatial1: Awaited<ReturnType<typeof measureSpatial>>[] = [];
     const spatial4: typeof spatial1 = [];
+    // Issue 33: the Mechanisms page, Jansen's leg: a joint's drag and Play at 4x.
+    const mechDrag4: Awaited<ReturnType<typeof measureMechDrag>>[] = [];
+    const mechPlay4: Awaited<ReturnType<typeof measureMechPlay>>[] = [];
     // Interleaved runs, so a slow spell of the machine spreads over every figure rather than hitting one.
     for (let run = 0; run < RUNS; run++) {
       if (wanted('play1')) play1.push(await measurePlay(browser, 1));
@@ -587,6 +591,10 @@ async function main(): Promise<void> {
       if (wanted('spatial')) {
         spatial1.push(await measureSpatial(browser, 1));
         spatial4.push(await measureSpatial(browser, 4));
+      }
+      if (wanted('mech')) {
+        mechDrag4.push(await measureMechDrag(browser, BASE, 4));
+        mechPlay4.push(await measureMechPlay(browser, BASE, 4, PLAY_SECONDS));
       }
       console.log(`run ${run + 1}/${RUNS} done`);
     }
@@ -654,6 +662,23 @@ async function main(): Promise<void> {
       },
       // Issue 30: Problem 3 in the Nine points mode, once, 4x CPU (page thread), NINE_POINT_WORKERS workers.
       ninePoint: ninePoint && { rate: 4, workers: NINE_POINT_WORKERS, ...ninePoint },
+      // Issue 33: the Mechanisms page (MECH_BENCH_QUERY), a joint's drag and Play at 4x CPU.
+      mech: {
+        query: MECH_BENCH_QUERY,
+        drag4x: {
+          p50Ms: pick(mechDrag4, (d) => d.p50Ms),
+          p95Ms: pick(mechDrag4, (d) => d.p95Ms),
+          withoutRedraw: pick(mechDrag4, (d) => d.withoutRedraw),
+          cpuMsPerInput: pick(mechDrag4, (d) => d.cpuMsPerInput),
+          ratesP50Ms: pick(mechDrag4, (d) => d.ratesP50Ms),
+        },
+        play4x: {
+          redrawFps: pick(mechPlay4, (p) => p.redrawFps),
+          longestGapMs: pick(mechPlay4, (p) => p.longestGapMs),
+          cpuMsPerRedraw: pick(mechPlay4, (p) => p.cpuMsPerRedraw),
+        },
+        targets: MECH_TARGETS,
+      },
       firstLoad,
       phone: {
         profile: PHONE_PROFILE,
@@ -792,6 +817,24 @@ async function main(): Promise<void> {
           );
         }),
       ),
+      // Issue 33: the Mechanisms page, Jansen's leg with three traces and its two plots.
+      row(
+        'Mechanisms: Jansen joint drag, response p50 / p95 (ms), 4x CPU',
+        `${s(result.mech.drag4x.p50Ms)} / ${s(result.mech.drag4x.p95Ms)}`,
+        `p95 < ${MECH_TARGETS.dragP95Ms4x}`,
+        ok(result.mech.drag4x.p95Ms.median < MECH_TARGETS.dragP95Ms4x),
+      ),
+      row(
+        'Mechanisms: Jansen drag, page-thread CPU ms per input / speed plot p50 (ms), 4x',
+        `${s(result.mech.drag4x.cpuMsPerInput)} / ${s(result.mech.drag4x.ratesP50Ms)}`,
+      ),
+      row(
+        'Mechanisms: Jansen Play, redraws/s (longest gap ms), 4x CPU',
+        `${s(result.mech.play4x.redrawFps)} (${s(result.mech.play4x.longestGapMs)})`,
+        `>= ${MECH_TARGETS.playFps4x}`,
+        ok(result.mech.play4x.redrawFps.median >= MECH_TARGETS.playFps4x),
+      ),
+      row('Mechanisms: Jansen Play, page-thread CPU ms per redraw, 4x', s(result.mech.play4x.cpuMsPerRedraw, 2)),
       row(
         'frame time with those views on / off, 4x',
         s(result.motion.ratio, 2),

@@ -296,6 +296,8 @@ test.describe('mechanism page', () => {
     page,
     browser,
   }) => {
+    // Two pages, a download, an upload and a CSV export: more than the default minute on a busy machine.
+    test.slow();
     await page.goto('./?page=mech&tpl=slider-crank');
     await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
     // A typed coordinate (the crank pin moved off the line), the input at 30° by keyboard, plot 2 and the arrows.

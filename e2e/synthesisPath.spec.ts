@@ -147,6 +147,49 @@ test.describe('the synthesis page, Path mode', () => {
     await synthesize(page);
   });
 
+  test('a run on targets no four-bar fits lasts its budget, not a round count, and the page keeps drawing (issue 34, 6)', async ({
+    page,
+  }) => {
+    // Twelve points on a figure eight: no exact fit, so only the budget (PATH_BUDGET_MS, 10 s) ends the run. Under the
+    // old cap (400 rounds, 20 s a part) a run here lasted past 20 s, or ended early on a machine with many workers.
+    const eight = Array.from({ length: 12 }, (_, k) => {
+      const t = (2 * Math.PI * k) / 12;
+      return `${(3 * Math.sin(t)).toFixed(3)}, ${(1.5 * Math.sin(2 * t)).toFixed(3)}`;
+    }).join('\n');
+    await page.goto('./?page=syn');
+    await paste(page, eight);
+    // The page thread's longest gap between two animation frames during the run: the work is the workers'.
+    await page.evaluate(() => {
+      const w = window as unknown as { frameGap: number };
+      w.frameGap = 0;
+      let last = performance.now();
+      const tick = (now: number) => {
+        w.frameGap = Math.max(w.frameGap, now - last);
+        last = now;
+        requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+    });
+    const t0 = Date.now();
+    await page.getByRole('button', { name: 'Synthesize', exact: true }).click();
+    const bar = page.getByRole('progressbar', { name: 'Synthesis progress' });
+    await expect(bar).toBeVisible();
+    // The bar moves with the time spent, so it shows how far the run is.
+    const percent = async () => Number(await bar.getAttribute('aria-valuenow'));
+    await expect.poll(percent, { timeout: 15_000 }).toBeGreaterThan(20);
+    await expect.poll(percent, { timeout: 15_000 }).toBeGreaterThan(60);
+    // Frames kept coming while the workers searched (read mid-run: the results' first drawing is not the run's).
+    const gap = await page.evaluate(() => (window as unknown as { frameGap: number }).frameGap);
+    await expect(page.getByTestId('synthesis-status')).toHaveText(/candidates? in [\d.]+ s/, { timeout: 60_000 });
+    const elapsed = Date.now() - t0;
+    // The parts search for 9 s of the 10 s; the merge polishes for at most 1.2 s more; the slack is the workers'
+    // start and a busy machine's.
+    expect(elapsed).toBeGreaterThanOrEqual(9000);
+    expect(elapsed).toBeLessThan(17_000);
+    // At least a frame a second (idle, a frame every ~17 ms; 767 ms was seen once at a load of 30 on two cores).
+    expect(gap).toBeLessThan(1000);
+  });
+
   test('results of an earlier task are marked out of date and not opened with new targets (issue 34, 1)', async ({
     page,
   }) => {

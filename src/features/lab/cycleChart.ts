@@ -303,6 +303,8 @@ export function createCycleChart(svg: SVGSVGElement, options: CycleChartOptions)
     { ...m, bottom: PANEL_FOOT },
     { ...m, top: gap - PANEL_FOOT },
   ];
+  // The background first: prepareSvg paints it later, and a rect made after the panels would cover them.
+  child(s, 'rect', 'bg');
   const els = ['panel-top', 'panel-bottom'].map((cls) => child(s, 'svg', cls).attr('x', 0));
   const panels = els.map((el, i) =>
     createChart(

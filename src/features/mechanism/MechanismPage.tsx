@@ -223,7 +223,10 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const traced = useMemo(() => new Set(settings.traced ?? defaultTraced(spec)), [settings.traced, spec]);
   const setTraced = (change: (s: ReadonlySet<string>) => ReadonlySet<string>) =>
     setSettings({ traced: [...change(traced)] });
-  const plots: readonly [MechPlotChoice, MechPlotChoice] = settings.plots ?? defaultPlots(spec);
+  const plots: readonly [MechPlotChoice, MechPlotChoice] = useMemo(
+    () => settings.plots ?? defaultPlots(spec),
+    [settings.plots, spec],
+  );
   const setPlots = (change: (old: readonly [MechPlotChoice, MechPlotChoice]) => [MechPlotChoice, MechPlotChoice]) =>
     setSettings({ plots: change(plots) });
   const showVelocities = settings.velocities;
@@ -358,22 +361,34 @@ function MechWorkspace(props: MechWorkspaceProps) {
     () => (analysis.run ? xDeg.subarray(analysis.run[0], analysis.run[1] + 1) : xDeg),
     [analysis, xDeg],
   );
-  const plotViews = plots.map((choice, n) => {
-    const c = parseChoice(spec, choice);
-    const source = c && (needsRates(c.kind) ? rateSweep : analysis.sweep);
-    const title = c ? choiceLabel(c, m) : m.plotNone;
-    let data: XYChartData = { series: [] };
-    let marker: MarkerAt | null = null;
-    if (c && source && analysis.run && !analysis.problem) {
-      const y = plotValues(c, source);
-      const [a, b] = analysis.run;
-      const color = c.kind === 'angle' ? linkColor(spec, c.id) : c.kind === 'accel' ? '#be185d' : '#0e7490';
-      data = { series: [{ label: title, color, x: xDeg.subarray(a, b + 1), y: y.subarray(a, b + 1) }] };
-      const xNow = kind === 'R' ? radToDeg(input) : input;
-      marker = { x: xNow, dots: [{ y: valueAt(analysis, y, input), color }] };
-    }
-    const texts = { title, xLabel, yLabel: c ? axisLabel(c.kind, kind, m) : '' };
-    return { n: n + 1, choice, c, data, marker, texts, pending: c !== null && source === null && !analysis.problem };
+  // The plots' series change with the linkage and its rates, not with the input: kept while Play moves only the
+  // markers, so a frame redraws two markers rather than two charts.
+  const plotSeries = useMemo(
+    () =>
+      plots.map((choice, n) => {
+        const c = parseChoice(spec, choice);
+        const source = c && (needsRates(c.kind) ? rateSweep : analysis.sweep);
+        const title = c ? choiceLabel(c, m) : m.plotNone;
+        let data: XYChartData = { series: [] };
+        let line: { y: Float64Array; color: string } | null = null;
+        if (c && source && analysis.run && !analysis.problem) {
+          const y = plotValues(c, source);
+          const [a, b] = analysis.run;
+          const color = c.kind === 'angle' ? linkColor(spec, c.id) : c.kind === 'accel' ? '#be185d' : '#0e7490';
+          data = { series: [{ label: title, color, x: xDeg.subarray(a, b + 1), y: y.subarray(a, b + 1) }] };
+          line = { y, color };
+        }
+        const texts = { title, xLabel, yLabel: c ? axisLabel(c.kind, kind, m) : '' };
+        return { n: n + 1, choice, c, data, line, texts, pending: c !== null && source === null && !analysis.problem };
+      }),
+    [plots, spec, rateSweep, analysis, xDeg, xLabel, kind, m],
+  );
+  const plotViews = plotSeries.map(({ line, ...p }) => {
+    const xNow = kind === 'R' ? radToDeg(input) : input;
+    const marker: MarkerAt | null = line
+      ? { x: xNow, dots: [{ y: valueAt(analysis, line.y, input), color: line.color }] }
+      : null;
+    return { ...p, marker };
   });
   const exportPlot = async (n: number, format: 'png' | 'svg') => {
     const p = plotViews[n - 1];
@@ -388,6 +403,49 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const sliderStep = kind === 'R' ? 1 : span / 360 || 0.01;
   const sliderValue = kind === 'R' ? radToDeg(input) : input;
   const canRun = range !== null;
+
+  // The editor (a table of every joint's fields) re-renders when what it shows changes, not at each frame of Play:
+  // its callbacks read only the values listed (the setters and stop are the page's own and stable in effect).
+  const editor = useMemo(
+    () => (
+      <SpecEditor
+        spec={spec}
+        edit={edit}
+        selected={selected}
+        onSelect={setSelected}
+        traced={traced}
+        onTrace={(id, on) =>
+          setTraced((s) => {
+            const next = new Set(s);
+            if (on) next.add(id);
+            else next.delete(id);
+            return next;
+          })
+        }
+        newLinks={[
+          spec.links.includes(newLinks[0]) ? newLinks[0] : GROUND,
+          spec.links.includes(newLinks[1]) ? newLinks[1] : GROUND,
+        ]}
+        onNewLinks={setNewLinks}
+        onPlace={(k, byKeyboard) => (byKeyboard ? place(k, centre()) : setPlacing(k))}
+        onNew={() => {
+          stop(0);
+          setSelected(null);
+          dispatch({ type: 'setMechSpec', spec: emptySpec() });
+          setNewLinks([GROUND, GROUND]);
+        }}
+        onResetTemplate={edited ? () => dispatch({ type: 'setMechSpec', spec: null }) : null}
+        onAddLink={() => {
+          const r = addLink(spec);
+          dispatch({ type: 'setMechSpec', spec: r.spec });
+          setNewLinks(([, b]) => [spec.links.includes(b) ? b : GROUND, r.name]);
+        }}
+        m={m}
+      />
+    ),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [spec, selected, traced, newLinks[0], newLinks[1], bounds, edited, m, dispatch],
+  );
 
   return (
     <div
@@ -501,40 +559,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
       <div className="mech-side" hidden={embedded}>
         <section className="mech-card" aria-label={m.editTitle}>
           <h3 className="mech-card-title">{m.editTitle}</h3>
-          <SpecEditor
-            spec={spec}
-            edit={edit}
-            selected={selected}
-            onSelect={setSelected}
-            traced={traced}
-            onTrace={(id, on) =>
-              setTraced((s) => {
-                const next = new Set(s);
-                if (on) next.add(id);
-                else next.delete(id);
-                return next;
-              })
-            }
-            newLinks={[
-              spec.links.includes(newLinks[0]) ? newLinks[0] : GROUND,
-              spec.links.includes(newLinks[1]) ? newLinks[1] : GROUND,
-            ]}
-            onNewLinks={setNewLinks}
-            onPlace={(k, byKeyboard) => (byKeyboard ? place(k, centre()) : setPlacing(k))}
-            onNew={() => {
-              stop(0);
-              setSelected(null);
-              dispatch({ type: 'setMechSpec', spec: emptySpec() });
-              setNewLinks([GROUND, GROUND]);
-            }}
-            onResetTemplate={edited ? () => dispatch({ type: 'setMechSpec', spec: null }) : null}
-            onAddLink={() => {
-              const r = addLink(spec);
-              dispatch({ type: 'setMechSpec', spec: r.spec });
-              setNewLinks(([, b]) => [spec.links.includes(b) ? b : GROUND, r.name]);
-            }}
-            m={m}
-          />
+          {editor}
         </section>
       </div>
       <section className="mech-plots" aria-label={m.plotsTitle} hidden={embedded && !embedOptions.plotsShown}>

@@ -1,9 +1,9 @@
 import type { ReactNode } from 'react';
-import { useMemo, useSyncExternalStore } from 'react';
+import { useLayoutEffect, useMemo, useState, useSyncExternalStore } from 'react';
 import type { AppState } from '../../shared/state/appState';
 import type { Playhead } from '../../shared/state/playhead';
 import { withFrame } from '../../shared/state/playhead';
-import { FramePoseContext } from '../../shared/linkage/FramePoseContext';
+import { FramePoseContext, createFramePoseSource } from '../../shared/linkage/FramePoseContext';
 import { useFrameMotion } from './useFrameMotion';
 import { useLinkagePose } from './useLinkagePose';
 import { Theta2ScrubContext } from './theta2Scrub';
@@ -21,9 +21,9 @@ export interface FramePoseProviderProps {
 }
 
 /**
- * Solves the frame on screen once (the state, or Play's playhead ahead of it) and provides it. It alone
- * subscribes to the playhead: per frame of Play only it and the views that read useFramePose re-render,
- * the children it was given stay as they are. It also provides the θ2 drag (Theta2ScrubContext).
+ * Solves the frame on screen once (the state, or Play's playhead ahead of it) and provides it through a
+ * FramePoseSource. It alone subscribes to the playhead: per frame of Play only it and the views that read
+ * useFramePose re-render, the children it was given stay as they are. It also provides the θ2 drag (Theta2ScrubContext).
  */
 export function FramePoseProvider({ state, playhead, scrub, ghostShown, children }: FramePoseProviderProps) {
   const frame = useSyncExternalStore(playhead.subscribe, playhead.get);
@@ -34,9 +34,13 @@ export function FramePoseProvider({ state, playhead, scrub, ghostShown, children
     () => ({ state: shown, local, marker, motion, committed: state, ghostShown }),
     [shown, local, marker, motion, state, ghostShown],
   );
+  const [source] = useState(() => createFramePoseSource(value));
+  // Held during the render, so that a reader mounting in this render reads this frame; told after the commit.
+  source.set(value);
+  useLayoutEffect(() => source.notify(), [source, value]);
   return (
     <Theta2ScrubContext.Provider value={scrub}>
-      <FramePoseContext.Provider value={value}>{children}</FramePoseContext.Provider>
+      <FramePoseContext.Provider value={source}>{children}</FramePoseContext.Provider>
     </Theta2ScrubContext.Provider>
   );
 }

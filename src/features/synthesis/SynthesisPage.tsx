@@ -55,6 +55,15 @@ export function SynthesisPage({ state, dispatch, createPool }: SynthesisPageProp
           options={modes}
           onChange={(m) => dispatch({ type: 'setSynthesisMode', mode: m })}
         />
+        {/* The print view (print/SynthesisPrint) is made by the mode shown when printing starts. */}
+        <button
+          type="button"
+          className="btn btn-small syn-print-button"
+          title={st.print.note}
+          onClick={() => window.print()}
+        >
+          {st.print.button}
+        </button>
       </div>
       {mode === 'path' ? (
         <PathMode state={state} dispatch={dispatch} onOpen={onOpen} createPool={createPool} />

@@ -132,6 +132,42 @@ export interface SynthesisMessages {
   structuralError: string;
   centerPointCurve: string;
   circlePointCurve: string;
+  /** The page's print view (Ctrl+P or Print): one page with the task and the chosen result. */
+  print: SynthesisPrintMessages;
+}
+
+/** Strings of the synthesis page's print view, shared by its four modes. */
+export interface SynthesisPrintMessages {
+  /** The button beside the mode control, and its note. */
+  button: string;
+  note: string;
+  /** The sheet's heading (the mode's name in it) and its sections. */
+  title: (mode: string) => string;
+  task: string;
+  result: string;
+  figure: string;
+  defects: string;
+  /** No design to print yet (the task alone is printed). */
+  noResult: string;
+  /** Facts' labels. */
+  lengthUnit: string;
+  links: string;
+  linkType: string;
+  coupler: string;
+  couplerValue: (distance: string, unit: string, angle: string) => string;
+  placement: string;
+  placementValue: (x: string, y: string, angle: string) => string;
+  seed: string;
+  bounds: string;
+  boundsValue: (length: string, coupler: string) => string;
+  pivotBoxValue: (xMin: string, xMax: string, yMin: string, yMax: string) => string;
+  timingStepValue: (step: string) => string;
+  candidate: string;
+  /** Table columns: a target's given θ2, the design's θ2 there and its distance from the coupler point. */
+  columnTarget: string;
+  columnGiven: string;
+  columnDesignTheta2: string;
+  columnDistance: string;
 }
 
 /** The synthesis page's strings in every language (both bundled with the page's chunk). */

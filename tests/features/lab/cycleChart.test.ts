@@ -1,3 +1,4 @@
+import Decimal from 'decimal.js';
 import { describe, expect, it } from 'vitest';
 import {
   createCycleChart,
@@ -187,5 +188,51 @@ describe('createCycleChart', () => {
     expect(panel(svg, 'panel-top')?.querySelector('text.title')?.textContent).toBe('Zyklus');
     const yLabels = [...(svg.querySelectorAll('text') as unknown as Element[])].map((t) => t.textContent);
     expect(yLabels).toContain('|det J| (m²)');
+  });
+  it('paints its background first, under both panels', () => {
+    const { svg } = made();
+    const kids = [...(svg.children as unknown as Element[])];
+    expect(kids[0].getAttribute('class')).toBe('bg');
+    expect(kids.map((k) => k.getAttribute('class'))).toEqual(['bg', 'panel-top', 'panel-bottom']);
+  });
+
+  it('puts the iteration ticks on a symlog axis (linear within one iteration of 0) once a method needs dozens', () => {
+    const svg = fakeSvg();
+    const chart = createCycleChart(svg, { ...TEXT, width: W, height: H });
+    chart.update(data(2, 40)); // 42 iterations at the quarter turns
+    const top = panel(svg, 'panel-top');
+    const topH = Number(top?.getAttribute('height'));
+    const ih = topH - 46 - 7;
+    const rows = [...(top?.querySelectorAll('g.grid-y line.gy') as unknown as Element[])].map((l) =>
+      Number(l.getAttribute('y1')),
+    );
+    const ticks = [...(top?.querySelectorAll('g.axis-y .tick text') as unknown as Element[])].map((t) =>
+      Number(t.textContent),
+    );
+    expect(ticks[ticks.length - 1]).toBe(42);
+    expect(ticks).toContain(1);
+    // The oracle: d3's symlog with constant 1 maps v to ln(1 + v) / ln(43) of the way from the foot (ih) to 4 px.
+    const symlogPx = (v: number) =>
+      new Decimal(ih).plus(new Decimal(4 - ih).times(new Decimal(1 + v).ln().div(new Decimal(43).ln()))).toNumber();
+    expect(rows).toHaveLength(ticks.length);
+    ticks.forEach((t, i) => expect(rows[i]).toBeCloseTo(symlogPx(t), 9));
+  });
+
+  it('draws zeros of |det J| on the floor of its log axis (a dashed line, ≤ at the foot), NaN as the only gaps', () => {
+    const svg = fakeSvg();
+    const chart = createCycleChart(svg, { ...TEXT, width: W, height: H });
+    const d = data(2);
+    const detJ = d.detJ.map((v, i) => (i === 30 || i === 200 ? 0 : v));
+    chart.update({ ...d, detJ });
+    const bottom = panel(svg, 'panel-bottom');
+    expect(bottom?.querySelectorAll('g.grid-y line.floor')).toHaveLength(1);
+    const labels = [...(bottom?.querySelectorAll('g.axis-y .tick text') as unknown as Element[])].map(
+      (t) => t.textContent,
+    );
+    expect(labels[0]?.startsWith('≤')).toBe(true);
+    const path = bottom?.querySelector('g.lines path')?.getAttribute('d') ?? '';
+    // One gap, the unassembled stretch: the zeros sit on the floor instead of breaking the line.
+    expect(path.match(/M/g)).toHaveLength(2);
+    expect(path).not.toMatch(/NaN|Infinity/);
   });
 });

@@ -13,10 +13,13 @@ import {
   plottedError,
   workPrecisionDomains,
   workPrecisionDrawing,
+  workPrecisionFrame,
+  WORK_PRECISION_SIZE,
   FAILURE_COLOR,
 } from '../../../src/features/lab/workPrecisionChart';
 import { fakeSvg } from '../../shared/charts/fakeSvgDom';
 import { legendLayout } from '../../../src/shared/charts/chartFrame';
+import { chartSize, plotArea } from '../../../src/shared/charts/chart';
 
 function pt(tol: number | null, nsPerPoint: number, maxError: number, failures = 0): LabPoint {
   return {
@@ -300,5 +303,24 @@ describe('workPrecisionDrawing', () => {
     workPrecisionDrawing([], { ...options, emptyText: 'Run…' })(empty, 640, 400);
     expect(empty.querySelector('text.empty')?.textContent).toBe('Run…');
     expect(empty.querySelector('g.plot')?.getAttribute('display')).toBe('none');
+  });
+});
+
+describe('workPrecisionFrame', () => {
+  const series: LabSeries[] = [
+    { method: 'newton', label: 'NR', points: [pt(1e-3, 200, 1e-4), pt(1e-9, 400, 1e-10)] },
+    { method: 'closed-form', label: 'closed form', points: [pt(null, 50, 0)] },
+  ];
+  it('ticks the error floor at every height, so its ≤ label is always shown', () => {
+    for (const height of [160, 200, 240, 300, 400, 600]) {
+      const plot = plotArea(chartSize({ ...WORK_PRECISION_SIZE, width: 640, height }));
+      const f = workPrecisionFrame({ series }, plot);
+      expect(f.yFloor).toBe(ERROR_FLOOR);
+      expect(f.yTicks).toContain(ERROR_FLOOR);
+    }
+    const svg = fakeSvg();
+    workPrecisionDrawing(series, { title: 't', xLabel: 'x', yLabel: 'y' })(svg, 640, 240);
+    const labels = [...svg.querySelectorAll('g.axis-y .tick text')].map((t) => t.textContent);
+    expect(labels).toContain('≤1e\u221217');
   });
 });

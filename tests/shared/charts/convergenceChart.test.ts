@@ -52,7 +52,17 @@ describe('convergenceFrame', () => {
     const f = convergenceFrame({ runs, tolerance: 1e-12 }, size(560, 300));
     expect(f.y.domain()).toEqual([1e-16, 1]);
     expect(f.yTicks.every((t) => formatPowerOfTen(t) !== '')).toBe(true);
+    // The floor decade is a tick, so its ≤ label shows where exact zeros are drawn.
+    expect(f.yFloor).toBe(1e-16);
+    expect(f.yTicks[0]).toBe(1e-16);
     const py = f.yTicks.map((t) => f.y(t));
     for (let i = 1; i < py.length; i++) expect(py[i - 1] - py[i]).toBeGreaterThanOrEqual(14);
+  });
+  it("keeps the floor at the domain's foot whether or not a run reaches exactly zero (no flip between layouts)", () => {
+    const last = (r: number) => [{ ...runs[0], residuals: [...runs[0].residuals.slice(0, -1), r] }];
+    const zero = convergenceFrame({ runs: last(0) }, size(560, 300));
+    const tiny = convergenceFrame({ runs: last(1e-17) }, size(560, 300));
+    expect(zero.yFloor).toBe(zero.y.domain()[0]);
+    expect(tiny.yFloor).toBe(tiny.y.domain()[0]);
   });
 });

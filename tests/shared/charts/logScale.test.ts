@@ -150,4 +150,13 @@ describe('a log y in the chart kit', () => {
     expect(svg.querySelectorAll('g.dots circle')).toHaveLength(4);
     expect(svg.querySelector('g.lines path')?.getAttribute('d')).not.toMatch(/NaN|Infinity/);
   });
+  it('writes ≤ on the floor tick itself when the floor stands above the axis foot, and on no other tick', () => {
+    const svg = fakeSvg();
+    createChart(svg, { width: W, height: H }, { title: 't', xLabel: 'x', yLabel: 'y' }, spec(1e-4, 1e-6), {
+      x: [0, 1],
+      y: [1, 0],
+    });
+    const labels = [...svg.querySelectorAll('g.axis-y .tick text')].map((t) => t.textContent);
+    expect(labels).toEqual(['1e\u22126', '≤1e\u22124', '1e\u22122', '1e0', '1e2']);
+  });
 });

@@ -12,7 +12,7 @@ export interface FunctionFactsProps {
 }
 
 /** A check of the page's in words. */
-function checkText(c: FunctionCheck, fm: FunctionMessages): string {
+export function checkText(c: FunctionCheck, fm: FunctionMessages): string {
   if (c.code === 'notMonotone') return fm.notMonotone(formatNumber(c.x, 4));
   return fm.largeError(formatNumber(100 * c.share, 3), formatNumber(100 * LARGE_ERROR_SHARE, 3));
 }

@@ -17,6 +17,9 @@ import { ExpressionField } from './ExpressionField';
 import { FunctionFields } from './FunctionFields';
 import { FunctionCanvas } from './FunctionCanvas';
 import { StructuralErrorChart } from './StructuralErrorChart';
+import { SynthesisPrint } from '../print/SynthesisPrint';
+import { synthesisMessagesFor } from '../synthesisMessages';
+import { functionPrintContent } from './functionPrint';
 
 /** Props of FunctionMode (as the synthesis page renders every mode). */
 export interface FunctionModeProps {
@@ -90,6 +93,20 @@ function FunctionBody({ state, dispatch, onOpen }: FunctionModeProps) {
           />
         ) : null}
       </section>
+      <SynthesisPrint
+        m={synthesisMessagesFor(state.shell.locale).print}
+        build={() =>
+          functionPrintContent({
+            s,
+            fd,
+            problem,
+            unit: state.design.lengthUnit,
+            st: synthesisMessagesFor(state.shell.locale),
+            fm,
+            t,
+          })
+        }
+      />
     </div>
   );
 }

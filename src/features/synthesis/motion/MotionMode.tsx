@@ -17,6 +17,9 @@ import { MotionCanvas } from './MotionCanvas';
 import { PoseTable } from './PoseTable';
 import { MethodPanel } from './MethodPanel';
 import { MotionDesignCard } from './MotionDesignCard';
+import { SynthesisPrint } from '../print/SynthesisPrint';
+import { synthesisMessagesFor } from '../synthesisMessages';
+import { motionPrintContent } from './motionPrint';
 
 /** Props of MotionMode (as the synthesis page renders every mode). */
 export interface MotionModeProps {
@@ -35,6 +38,7 @@ export interface MotionModeProps {
 export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
   const t = useMessages();
   const mt = motionMessagesFor(state.shell.locale);
+  const st = synthesisMessagesFor(state.shell.locale);
   const s = state.synMotion;
   const outcome = useMemo(() => solveMotion(s), [s]);
   const view = useMotionView(s, outcome, mt);
@@ -124,6 +128,10 @@ export function MotionMode({ state, dispatch, onOpen }: MotionModeProps) {
           />
         ) : null}
       </section>
+      <SynthesisPrint
+        m={st.print}
+        build={() => motionPrintContent({ s, outcome, picture, unit: state.design.lengthUnit, st, mt, t })}
+      />
     </div>
   );
 }

@@ -33,6 +33,8 @@ import { nineRefusalText } from './nineInput';
 import { WMS_PROBLEM_3 } from './wmsProblem3';
 import { NineRunControls } from './NineRunControls';
 import { useNinePointSynthesis } from './useNinePointSynthesis';
+import { SynthesisPrint } from '../print/SynthesisPrint';
+import { ninePrintContent } from '../path/pathPrint';
 
 /** Props of NinePointMode: a mode's props and how to make the pool of solver workers. */
 export interface NinePointModeProps extends SynthesisModeProps {
@@ -216,6 +218,27 @@ export function NinePointMode({ state, dispatch, onOpen, createPool }: NinePoint
           />
         ) : null}
       </div>
+      <SynthesisPrint
+        m={st.print}
+        build={() =>
+          ninePrintContent({
+            targets: s.targets,
+            unit: state.design.lengthUnit,
+            rank: chosen,
+            choices,
+            passes: (cls?.cognates ?? []).map((d) =>
+              d.theta2.map((theta2, i) => ({ design: { ...d, branch: d.branches[i] ?? d.branch }, theta2 })),
+            ),
+            shown: shownIdx,
+            stale: run.points !== null && run.points !== undefined && !samePoints(run.points, s.targets),
+            curve: curves.find((c) => !c.faint) ?? null,
+            st,
+            t,
+            mode: st.modeNine,
+            className: nt.className(chosen + 1),
+          })
+        }
+      />
     </div>
   );
 }

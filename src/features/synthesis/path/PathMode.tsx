@@ -4,7 +4,9 @@ import type { SynthesisModeProps } from '../openDesign';
 import { synthesisMessagesFor } from '../synthesisMessages';
 import { CandidateList } from './CandidateList';
 import { ChosenDesign } from './ChosenDesign';
+import { SynthesisPrint } from '../print/SynthesisPrint';
 import { exportResultsCsv } from './pathExports';
+import { pathPrintContent } from './pathPrint';
 import { pathTaskOf, samePathTask } from './pathTaskOf';
 import { RunControls } from './RunControls';
 import { holdText, noFitSummary } from './runNotes';
@@ -120,6 +122,22 @@ export function PathMode({ state, dispatch, onOpen, createPool }: PathModeProps)
           />
         ) : null}
       </div>
+      <SynthesisPrint
+        m={st.print}
+        build={() =>
+          pathPrintContent({
+            s,
+            unit: state.design.lengthUnit,
+            solution: solutions?.[chosen] ?? null,
+            rank: chosen,
+            choices,
+            shown: shownAt,
+            stale,
+            st,
+            t,
+          })
+        }
+      />
     </div>
   );
 }
