@@ -6,6 +6,7 @@ import {
   CylinderGeometry,
   DirectionalLight,
   DoubleSide,
+  MeshLambertMaterial,
   FrontSide,
   Group,
   Line,
@@ -377,17 +378,19 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     };
     const q = quality;
     if (l.kind === 'spherical') {
+      const sphereLook = {
+        color: '#b8c9e0',
+        transparent: true,
+        // One side shows about as much of the sphere as two: a little more opaque.
+        opacity: q.sphereTwoSided ? 0.2 : 0.28,
+        depthWrite: false,
+        side: q.sphereTwoSided ? DoubleSide : FrontSide,
+      };
       const sphere = new Mesh(
         new SphereGeometry(1, ...q.sphereSegments),
-        new MeshPhongMaterial({
-          color: '#b8c9e0',
-          transparent: true,
-          // One side shows about as much of the sphere as two: a little more opaque.
-          opacity: q.sphereTwoSided ? 0.2 : 0.28,
-          depthWrite: false,
-          side: q.sphereTwoSided ? DoubleSide : FrontSide,
-          shininess: 10,
-        }),
+        q.sphereShading === 'phong'
+          ? new MeshPhongMaterial({ ...sphereLook, shininess: 10 })
+          : new MeshLambertMaterial(sphereLook),
       );
       sphere.renderOrder = -1;
       add(sphere);

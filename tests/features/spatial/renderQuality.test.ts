@@ -43,12 +43,20 @@ describe('qualityForRenderer', () => {
       maxPixelRatio: 1,
       sphereSegments: [32, 20],
       sphereTwoSided: false,
+      sphereShading: 'lambert',
       fatFixedLines: false,
     });
   });
   it('keeps the full look on a hardware GPU and when the name is hidden', () => {
     for (const r of [...HARDWARE, null]) expect(qualityForRenderer(r)).toBe(FULL_QUALITY);
-    expect(FULL_QUALITY).toMatchObject({ antialias: true, maxPixelRatio: 2, sphereSegments: [64, 40] });
+    expect(FULL_QUALITY).toMatchObject({
+      antialias: true,
+      maxPixelRatio: 2,
+      sphereSegments: [64, 40],
+      sphereTwoSided: true,
+      sphereShading: 'phong',
+      fatFixedLines: true,
+    });
   });
 });
 
