@@ -6,6 +6,7 @@ import type { ReportContent } from '../features/report/reportContent';
 import { reportMessages } from '../features/report/reportMessages';
 import { useLatest } from '../shared/hooks/useLatest';
 import { PanelSection } from '../shared/ui/PanelSection';
+import { onPrinting } from '../shared/print/usePrinting';
 import type { ReportSources } from './reportContentOf';
 import type { SimulatorSession } from './useSimulatorSession';
 
@@ -45,20 +46,7 @@ export function PrintReportSection({ session }: { session: SimulatorSession }) {
     const id = window.setTimeout(() => void loadBuilder(), BUILDER_DELAY_MS);
     return () => window.clearTimeout(id);
   }, []);
-  useEffect(() => {
-    const before = build;
-    const after = () => setContent(null);
-    const print = window.matchMedia?.('print');
-    const onMedia = () => (print?.matches ? before() : after());
-    window.addEventListener('beforeprint', before);
-    window.addEventListener('afterprint', after);
-    print?.addEventListener('change', onMedia);
-    return () => {
-      window.removeEventListener('beforeprint', before);
-      window.removeEventListener('afterprint', after);
-      print?.removeEventListener('change', onMedia);
-    };
-  }, [build]);
+  useEffect(() => onPrinting(build, () => setContent(null)), [build]);
   return (
     <PanelSection className="card" id="sec-report" title={m.section}>
       <PrintReportButton
