@@ -332,6 +332,7 @@ test.describe('the embed generator for the Mechanisms and Spatial pages', () => 
   test('its snippet carries page= and the page’s linkage and locks, and its preview shows that page', async ({
     page,
   }) => {
+    test.slow(); // three pages and a preview frame on a shared machine
     // The linkages to embed: Jansen's leg on the Mechanisms page, an edited arc on the Spatial page.
     await page.goto('./?page=mech&tpl=jansen');
     await expect(page.locator('.mech-workspace')).toHaveAttribute('data-mech-state', 'ok');
