@@ -149,6 +149,23 @@ async function mechPos(frame: FrameLocator, id: string): Promise<[number, number
   return [x, y];
 }
 
+/**
+ * Drags the mech embed's canvas from where it draws the point at (world units; its view from data-view) px pixels up;
+ * returns the view's scale (pixels per length).
+ */
+async function dragUp(page: Page, frame: FrameLocator, at: [number, number], px: number): Promise<number> {
+  const canvas = frame.getByTestId('mech-canvas');
+  const box = (await canvas.boundingBox())!;
+  const [scale, cx, cy, panX, panY] = (await canvas.getAttribute('data-view'))!.split(' ').map(Number);
+  const x = box.x + box.width / 2 + (at[0] - cx) * scale + panX;
+  const y = box.y + box.height / 2 - (at[1] - cy) * scale + panY;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x, y - px, { steps: 4 });
+  await page.mouse.up();
+  return scale;
+}
+
 /** A spatial pin's x, y, z from the numbers panel (seven significant digits). */
 async function spatialPin(frame: FrameLocator, pin: 'A' | 'B'): Promise<number[]> {
   const out: number[] = [];
@@ -204,17 +221,7 @@ test.describe('the embed of the Mechanisms page (page=mech)', () => {
     // lock=edit: a drag of A on the canvas leaves the linkage as it was.
     await frame.getByRole('slider', { name: /^Input angle/ }).fill('0');
     await expect(frame.getByTestId('mech-input-value')).toHaveText('0°');
-    const canvas = frame.getByTestId('mech-canvas');
-    const box = (await canvas.boundingBox())!;
-    const [scale, cx, cy, panX, panY] = (await canvas.getAttribute('data-view'))!.split(' ').map(Number);
-    const at = {
-      x: box.x + box.width / 2 + (A0[0] - cx) * scale + panX,
-      y: box.y + box.height / 2 - (A0[1] - cy) * scale + panY,
-    };
-    await page.mouse.move(at.x, at.y);
-    await page.mouse.down();
-    await page.mouse.move(at.x, at.y - 40, { steps: 4 });
-    await page.mouse.up();
+    await dragUp(page, frame, A0, 40);
     expect(await mechPos(frame, 'A')).toEqual(A0);
 
     // The host cannot change the locked keys: tpl (template) and mech (edit) are refused by name, mrho is applied.
@@ -231,17 +238,7 @@ test.describe('the embed of the Mechanisms page (page=mech)', () => {
     await expect(frame.locator('.mech-workspace')).toHaveAttribute('data-mech-state', 'ok');
     await expect(frame.getByRole('combobox', { name: 'Templates' })).toBeEnabled();
     const A0 = await mechPos(frame, 'A');
-    const canvas = frame.getByTestId('mech-canvas');
-    const box = (await canvas.boundingBox())!;
-    const [scale, cx, cy, panX, panY] = (await canvas.getAttribute('data-view'))!.split(' ').map(Number);
-    const at = {
-      x: box.x + box.width / 2 + (A0[0] - cx) * scale + panX,
-      y: box.y + box.height / 2 - (A0[1] - cy) * scale + panY,
-    };
-    await page.mouse.move(at.x, at.y);
-    await page.mouse.down();
-    await page.mouse.move(at.x, at.y - 40, { steps: 4 });
-    await page.mouse.up();
+    const scale = await dragUp(page, frame, A0, 40);
     // 40 px up is 40 / scale lengths up (the canvas's y points down).
     await expect.poll(async () => (await mechPos(frame, 'A'))[1]).toBeCloseTo(A0[1] + 40 / scale, 1);
     await send(page, { tpl: 'jansen' });
