@@ -2,6 +2,7 @@ import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, test } from '@playwright/test';
+import Decimal from 'decimal.js';
 import type { Page } from '@playwright/test';
 import { ORIGIN } from './helpers';
 
@@ -141,5 +142,59 @@ test.describe('the <fourbar-lab> custom element with a bad attribute', () => {
       /^This element has an attribute value the simulator cannot use, so the default is shown instead: r3 = “abc”\./,
     );
     await expect(el.getByTestId('url-notice')).not.toContainText('link');
+  });
+});
+
+test.describe('the <fourbar-lab> custom element on the Mechanisms and Spatial pages', () => {
+  test('page="mech" and page="3d" show their pages; r2 is the RSSR crank; a bad attribute is named', async ({
+    page,
+  }) => {
+    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
+      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
+    );
+    await page.route(PAGE, (route) =>
+      route.fulfill({
+        contentType: 'text/html',
+        body: `<!doctype html><html lang="en"><head><title>Week 9</title>
+<script src="./fourbar-lab.js"></script></head><body>
+<fourbar-lab id="m" page="mech" tpl="jansen" panels="controls,info" lock="template,edit"></fourbar-lab>
+<fourbar-lab id="s" page="3d" sk="rssr" r2="1.5" h2="0.5" t2="30" a1="200" panels="info" style="height:600px"></fourbar-lab>
+<script>
+  window.fired = [];
+  for (const el of document.querySelectorAll('fourbar-lab'))
+    el.addEventListener('change', (e) => { if (e.target === el) window.fired.push({ id: el.id, detail: e.detail }); });
+</script></body></html>`,
+      }),
+    );
+    const errors: string[] = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(PAGE);
+    const m = page.locator('#m');
+    const s = page.locator('#s');
+    await expect(m.locator('.mech-workspace')).toHaveAttribute('data-mech-state', 'ok', { timeout: 20_000 });
+    await expect(m.locator('.mech-name-title')).toHaveText('Jansen’s leg');
+    await expect(m.getByRole('table', { name: 'Joint positions at the input' })).toBeVisible();
+    await expect(m.getByRole('combobox', { name: 'Templates' })).toBeDisabled();
+    await expect(s.getByTestId('spatial-page')).toBeVisible({ timeout: 20_000 });
+    // a1 (a spherical arc, read whatever the kind) = 200 is outside (0, 180): refused and named.
+    await expect(s.getByTestId('url-notice')).toContainText('a1');
+    // A = (r2 cos θ2, r2 sin θ2, h2) (docs/spatial.md): r2 = 1.5 is the RSSR crank, not the simulator's r2.
+    const pinA = async () =>
+      Promise.all(
+        ['x', 'y', 'z'].map(async (a) => Number((await s.getByTestId(`pin-A-${a}`).innerText()).replace('−', '-'))),
+      );
+    const oracle = (t2Deg: number) => {
+      const t = new Decimal(t2Deg).times(Decimal.acos(-1)).div(180);
+      return [t.cos().times(1.5), t.sin().times(1.5), new Decimal(0.5)].map((v) => v.toNumber());
+    };
+    await expect.poll(async () => (await pinA())[0]).toBeCloseTo(oracle(30)[0], 6);
+    (await pinA()).forEach((v, i) => expect(Math.abs(v - oracle(30)[i]), `A[${i}]`).toBeLessThan(6e-7));
+    // The page author moves θ2: the pin follows and the change event carries the page's keys.
+    await s.evaluate((el) => el.setAttribute('t2', '60'));
+    await expect.poll(async () => (await pinA())[1]).toBeCloseTo(oracle(60)[1], 6);
+    await expect
+      .poll(async () => (await fired(page)).find((f) => f.id === 's' && f.detail.t2 === 60)?.detail)
+      .toMatchObject({ sk: 'rssr', r2: 1.5, h2: 0.5 });
+    expect(errors).toEqual([]);
   });
 });

@@ -80,7 +80,12 @@ export function applyPatch(
   let target = start;
   const applied: string[] = [];
   const refused: RefusedKey[] = [];
-  for (const name of Object.keys(patch)) {
+  // In the URL table's order, as a link is read: tpl before mech (a new template clears the edit mech then sets).
+  const rank = (name: string) => {
+    const i = keys.findIndex((x) => x.name === name);
+    return i < 0 ? keys.length : i;
+  };
+  for (const name of Object.keys(patch).sort((a, b) => rank(a) - rank(b))) {
     const k = keys.find((x) => x.name === name);
     if (!k || k.scope !== 'state') {
       refused.push({ key: name, why: 'unknown key' });
@@ -115,5 +120,9 @@ export function applyPatch(
       refused.push({ key: name, why: c.why });
     }
   }
+  // Reported in the patch's order.
+  const given = Object.keys(patch);
+  applied.sort((a, b) => given.indexOf(a) - given.indexOf(b));
+  refused.sort((a, b) => given.indexOf(a.key) - given.indexOf(b.key));
   return { state: applied.length ? target.state : state, applied, refused };
 }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { applyPatch } from '../../../src/features/share/embedMessages';
+import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import { DEFAULT_STATE } from '../../../src/shared/state/appState';
 import {
   EMBED_PAGES,
@@ -84,6 +85,13 @@ describe('applyPatch on a page’s keys', () => {
     const mech = parseUrl('page=mech', DEFAULT_STATE, quiet).state;
     expect(applyPatch(mech, { tpl: 'jansen' }, ['template']).refused[0].why).toBe('locked (template)');
     expect(applyPatch(mech, { tpl: 'jansen' }).state.mech.template).toBe('jansen');
+  });
+
+  it('opens another template afresh: a host’s tpl clears the edited linkage, as the gallery does', () => {
+    const edited = parseUrl('page=mech&tpl=jansen', DEFAULT_STATE, quiet).state;
+    const withSpec = { ...edited, mech: { ...edited.mech, spec: MECHANISM_TEMPLATES.fourBar.spec } };
+    expect(applyPatch(withSpec, { tpl: 'four-bar' }).state.mech).toMatchObject({ template: 'fourBar', spec: null });
+    expect(applyPatch(withSpec, { tpl: 'jansen' }).state.mech.spec).not.toBeNull();
   });
 
   it('refuses a change of page (its locks would not hold there)', () => {

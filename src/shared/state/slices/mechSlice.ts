@@ -3,7 +3,7 @@ import type { MechanismSpec } from '../../../mechanism/types';
 import { describe } from '../../../solver/validate';
 import type { Codec, Decoded } from '../../url/urlCodec';
 import { boolCodec, enumCodec, exactText, numberCodec } from '../../url/urlCodec';
-import type { UrlKey } from '../../url/urlKey';
+import type { Lens, UrlKey } from '../../url/urlKey';
 import { nestedLens, optionalKey, sliceLens } from '../../url/urlKey';
 import type { Action } from '../appState';
 import type { Slice } from '../slice';
@@ -344,6 +344,18 @@ export const mechSpecCodec: Codec<MechanismSpec | null> = {
 const field = sliceLens('mech');
 const forcesField = nestedLens('mech', 'forces');
 
+/**
+ * tpl's lens: another template starts from its own linkage (the edit cleared, as the gallery's setMechTemplate does),
+ * the same one keeps the edit. mech comes after tpl in the table, so a link or a host's patch with both keeps its mech.
+ */
+const templateLens: Lens<MechTemplateKey> = {
+  get: (u) => u.state.mech.template,
+  set: (u, template) =>
+    template === u.state.mech.template
+      ? u
+      : { ...u, state: { ...u.state, mech: { ...u.state.mech, template, spec: null } } },
+};
+
 /** A joint's id as typed (any text up to 200 characters; the page falls back to its default joint when none has it). */
 const jointIdCodec: Codec<string> = {
   parse: (raw) => (raw.length <= 200 ? { ok: true, value: raw } : { ok: false, why: 'at most 200 characters' }),
@@ -411,7 +423,7 @@ export const MECH_URL_KEYS: readonly UrlKey<unknown>[] = [
   optionalKey(
     'tpl',
     enumCodec(MECH_TEMPLATE_KEYS.map((k) => [templateUrlValue(k), k] as const)),
-    field('template'),
+    templateLens,
     DEFAULT_MECH.template,
   ),
   optionalKey('mech', mechSpecCodec, field('spec'), DEFAULT_MECH.spec),
