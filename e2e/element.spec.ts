@@ -19,30 +19,43 @@ function fired(page: Page): Promise<Fired[]> {
   return page.evaluate(() => (window as unknown as { fired: Fired[] }).fired);
 }
 
+/**
+ * Opens a course page titled title whose body is body (fourbar-lab elements), each element's own change events
+ * recorded in window.fired; returns the page's uncaught errors as they come.
+ */
+async function openCoursePage(page: Page, title: string, body: string): Promise<string[]> {
+  await page.route(PAGE, (route) =>
+    route.fulfill({
+      contentType: 'text/html',
+      body: `<!doctype html><html lang="en"><head><title>${title}</title>
+<script src="./fourbar-lab.js"></script></head><body>
+${body}
+<script>
+  window.fired = [];
+  for (const el of document.querySelectorAll('fourbar-lab'))
+    el.addEventListener('change', (e) => { if (e.target === el) window.fired.push({ id: el.id, detail: e.detail }); });
+</script></body></html>`,
+    }),
+  );
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(PAGE);
+  return errors;
+}
+
 test.describe('the <fourbar-lab> custom element', () => {
   test('two elements on one page keep their own state, styles and change events', async ({ page }) => {
     if (!existsSync(SCRIPT)) throw new Error(`${SCRIPT} is missing: run npm run build:element`);
     await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
       route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
     );
-    await page.route(PAGE, (route) =>
-      route.fulfill({
-        contentType: 'text/html',
-        body: `<!doctype html><html lang="en"><head><title>Week 3</title>
-<script src="./fourbar-lab.js"></script></head><body>
-<h1>Week 3</h1><div class="embed-bar" id="probe">A page element that shares a class name with the widget.</div>
+    const errors = await openCoursePage(
+      page,
+      'Week 3',
+      `<h1>Week 3</h1><div class="embed-bar" id="probe">A page element that shares a class name with the widget.</div>
 <fourbar-lab id="a" r1="6" r2="2" r3="5" r4="5" t2="60" panels="controls"></fourbar-lab>
-<fourbar-lab id="b" r1="6" r2="2" r3="4.5" r4="5" t2="30" panels="controls,info" lock="r1" style="height:600px"></fourbar-lab>
-<script>
-  window.fired = [];
-  for (const el of document.querySelectorAll('fourbar-lab'))
-    el.addEventListener('change', (e) => { if (e.target === el) window.fired.push({ id: el.id, detail: e.detail }); });
-</script></body></html>`,
-      }),
+<fourbar-lab id="b" r1="6" r2="2" r3="4.5" r4="5" t2="30" panels="controls,info" lock="r1" style="height:600px"></fourbar-lab>`,
     );
-    const errors: string[] = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(PAGE);
     const a = page.locator('#a');
     const b = page.locator('#b');
     await expect(a.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
@@ -152,23 +165,12 @@ test.describe('the <fourbar-lab> custom element on the Mechanisms and Spatial pa
     await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
       route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
     );
-    await page.route(PAGE, (route) =>
-      route.fulfill({
-        contentType: 'text/html',
-        body: `<!doctype html><html lang="en"><head><title>Week 9</title>
-<script src="./fourbar-lab.js"></script></head><body>
-<fourbar-lab id="m" page="mech" tpl="jansen" panels="controls,info" lock="template,edit"></fourbar-lab>
-<fourbar-lab id="s" page="3d" sk="rssr" r2="1.5" h2="0.5" t2="30" a1="200" panels="info" style="height:600px"></fourbar-lab>
-<script>
-  window.fired = [];
-  for (const el of document.querySelectorAll('fourbar-lab'))
-    el.addEventListener('change', (e) => { if (e.target === el) window.fired.push({ id: el.id, detail: e.detail }); });
-</script></body></html>`,
-      }),
+    const errors = await openCoursePage(
+      page,
+      'Week 9',
+      `<fourbar-lab id="m" page="mech" tpl="jansen" panels="controls,info" lock="template,edit"></fourbar-lab>
+<fourbar-lab id="s" page="3d" sk="rssr" r2="1.5" h2="0.5" t2="30" a1="200" panels="info" style="height:600px"></fourbar-lab>`,
     );
-    const errors: string[] = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(PAGE);
     const m = page.locator('#m');
     const s = page.locator('#s');
     await expect(m.locator('.mech-workspace')).toHaveAttribute('data-mech-state', 'ok', { timeout: 20_000 });
