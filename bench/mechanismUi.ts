@@ -2,7 +2,7 @@
  * The Mechanisms page's bench:ui figures (issue 33's speed targets), on Jansen's leg with three traces and its two
  * plots (the foot link's angle and the foot's speed, whose rates the worker solves):
  *   - dragging a joint (the knee G) by pointer at a CPU slowdown: each input's response time, from the pointer event's
- *     time stamp to the end of the frame that first shows it (the commit that draws the moved linkage: the workspace's
+ *     time stamp to the end of the frame that first shows it (the commit that draws the moved linkage: the stage's
  *     data-pose), p50 and p95; the cycle (traces and the plots of positions, data-trace) follows when the pointer rests
  *     and the speed plot from the worker after it: both are timed apart from the last move, not targets;
  *   - Play at a CPU slowdown: redraws per second (frames that drew a new input) and the longest gap between them.
@@ -30,8 +30,8 @@ interface MechLog {
 }
 
 /**
- * Installed before any page script: watches the workspace's data-pose (a drawn pose), data-trace (a drawn cycle) and
- * data-input (a drawn input), and notes each frame's end and whether the plots wait for their rates then.
+ * Installed before any page script: watches the workspace's data-trace (a drawn cycle) and its stage's data-pose (a
+ * drawn pose) and data-input (a drawn input), and notes each frame's end and whether the plots wait for their rates.
  */
 function instrumentMech(): void {
   const log: MechLog = { commits: [], frameEnds: [], moves: [], ratesReady: [] };
@@ -45,7 +45,12 @@ function instrumentMech(): void {
   });
   const watch = () => {
     const ws = document.querySelector('.mech-workspace');
-    if (ws) observer.observe(ws, { attributes: true, attributeFilter: ['data-trace', 'data-input', 'data-pose'] });
+    if (ws)
+      observer.observe(ws, {
+        attributes: true,
+        subtree: true,
+        attributeFilter: ['data-trace', 'data-input', 'data-pose'],
+      });
     else requestAnimationFrame(watch);
   };
   requestAnimationFrame(watch);
@@ -221,7 +226,7 @@ export async function measureMechPlay(
     let last = '';
     const times: number[] = [];
     for (const c of r.commits) {
-      if (c.input === last) continue;
+      if (c.attr !== 'data-input' || c.input === last) continue;
       last = c.input;
       const end = r.ends.find((f) => f > c.t);
       if (end !== undefined && !frames.has(end)) {

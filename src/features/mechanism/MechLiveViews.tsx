@@ -1,5 +1,4 @@
-import { useLayoutEffect } from 'react';
-import type { ReactNode, RefObject } from 'react';
+import type { ReactNode } from 'react';
 import type { MarkerAt } from '../../shared/charts/chart';
 import type { XYChartData } from '../../shared/charts/xyChart';
 import { XYChartView } from '../../shared/charts/XYChartView';
@@ -44,20 +43,20 @@ export function poseDigest(picture: MechPicture): string {
 export interface MechStageProps extends Omit<MechCanvasProps, 'picture'> {
   at: PlayheadInput;
   pictureAt: (input: number) => MechPicture;
-  /** The workspace: its data-input (the input drawn) and data-pose (poseDigest) are set once the canvas has drawn. */
-  workspaceRef: RefObject<HTMLDivElement | null>;
 }
 
-/** The linkage's canvas at the input shown, redrawn every frame of Play. */
-export function MechStage({ at, pictureAt, workspaceRef, ...canvas }: MechStageProps) {
+/**
+ * The linkage's canvas at the input shown, redrawn every frame of Play, in a box (no box of its own: display
+ * contents) whose data-input is the input drawn and data-pose its poseDigest, for tests and the bench.
+ */
+export function MechStage({ at, pictureAt, ...canvas }: MechStageProps) {
   const input = useShownInput(at);
   const picture = pictureAt(input);
-  const pose = poseDigest(picture);
-  useLayoutEffect(() => {
-    workspaceRef.current?.setAttribute('data-input', String(input));
-    workspaceRef.current?.setAttribute('data-pose', pose);
-  }, [workspaceRef, input, pose]);
-  return <MechCanvas picture={picture} {...canvas} />;
+  return (
+    <div className="mech-stage" data-input={input} data-pose={poseDigest(picture)}>
+      <MechCanvas picture={picture} {...canvas} />
+    </div>
+  );
 }
 
 /** Props of MechPlotCell: one plot's data and texts, its marker at an input, and a note under it. */

@@ -252,7 +252,6 @@ function MechWorkspace(props: MechWorkspaceProps) {
     return [GROUND, moving[0] ?? GROUND];
   });
   const viewRef = useRef<{ width: number; height: number; offset: ViewOffset } | null>(null);
-  const workspaceRef = useRef<HTMLDivElement>(null);
   const liveBounds = useMemo(() => runBounds(analysis), [analysis]);
   const bounds = frozenBounds ?? liveBounds;
 
@@ -473,7 +472,6 @@ function MechWorkspace(props: MechWorkspaceProps) {
 
   return (
     <div
-      ref={workspaceRef}
       className="mech-workspace"
       data-mech-state={analysis.problem ? analysis.problem.code : 'ok'}
       data-trace={traceDigest(traces)}
@@ -493,7 +491,6 @@ function MechWorkspace(props: MechWorkspaceProps) {
         <MechStage
           at={at}
           pictureAt={pictureAt}
-          workspaceRef={workspaceRef}
           bounds={bounds}
           label={locked ? m.canvasLabelLocked(shownName) : m.canvasLabel(shownName)}
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
