@@ -1,4 +1,6 @@
+import { useSyncExternalStore } from 'react';
 import type { ReactNode } from 'react';
+import type { MechanismSpec } from '../../mechanism';
 import type { MarkerAt } from '../../shared/charts/chart';
 import type { XYChartData } from '../../shared/charts/xyChart';
 import { XYChartView } from '../../shared/charts/XYChartView';
@@ -7,6 +9,7 @@ import { MechCanvas } from './MechCanvas';
 import type { MechPicture } from './drawMechanism';
 import type { PlayheadSource } from './livePlayhead';
 import { usePlayheadInput } from './livePlayhead';
+import type { DraggedSource } from './useJointDrag';
 
 /**
  * The page's views that follow Play (the canvas, the plots' markers, the readouts): each reads the playhead from the
@@ -42,16 +45,18 @@ export function poseDigest(picture: MechPicture): string {
 /** Props of MechStage: the canvas's props but its picture, which pictureAt makes for the input shown. */
 export interface MechStageProps extends Omit<MechCanvasProps, 'picture'> {
   at: PlayheadInput;
-  pictureAt: (input: number) => MechPicture;
+  pictureAt: (input: number, dragged: MechanismSpec | null) => MechPicture;
+  /** The spec a joint's drag draws now (null: no drag). */
+  dragged: DraggedSource;
 }
 
 /**
- * The linkage's canvas at the input shown, redrawn every frame of Play, in a box (no box of its own: display
+ * The linkage's canvas at the input shown, redrawn every frame of Play and every move of a joint's drag, in a box (no box of its own: display
  * contents) whose data-input is the input drawn and data-pose its poseDigest, for tests and the bench.
  */
-export function MechStage({ at, pictureAt, ...canvas }: MechStageProps) {
+export function MechStage({ at, pictureAt, dragged, ...canvas }: MechStageProps) {
   const input = useShownInput(at);
-  const picture = pictureAt(input);
+  const picture = pictureAt(input, useSyncExternalStore(dragged.subscribe, dragged.get));
   return (
     <div className="mech-stage" data-input={input} data-pose={poseDigest(picture)}>
       <MechCanvas picture={picture} {...canvas} />

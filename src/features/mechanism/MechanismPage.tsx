@@ -280,10 +280,10 @@ function MechWorkspace(props: MechWorkspaceProps) {
     values ? valueAt(analysis, values, input) : NaN;
   const reactionSeries = solved.forces?.joints[forceJoint];
 
-  /** The pose at an input: as drawn while a joint is dragged (the drag sets the input to 0), else from the sweep. */
-  const poseAtInput = (input: number) =>
-    drag.dragging
-      ? drawnPose(drag.shown)
+  /** The pose at an input: as drawn for a dragged spec (the drag sets the input to 0), else from the sweep. */
+  const poseAtInput = (input: number, dragged: MechanismSpec | null = null) =>
+    dragged
+      ? drawnPose(dragged)
       : (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
         drawnPose(spec);
   const traces =
@@ -293,9 +293,12 @@ function MechWorkspace(props: MechWorkspaceProps) {
           .map((id) => ({ id, ...pathOf(analysis.sweep!, id, analysis.run!) }))
       : [];
   const slideRange = useMemo(() => slideRanges(analysis), [analysis]);
-  /** The picture at an input: the pose, its velocity and force arrows (none while a joint is dragged), the traces. */
-  const pictureAt = (input: number): MechPicture => {
-    const pose = poseAtInput(input);
+  /**
+   * The picture at an input, or of the spec a drag draws now: the pose, its velocity and force arrows (none while a
+   * joint is dragged), the traces.
+   */
+  const pictureAt = (input: number, dragged: MechanismSpec | null = null): MechPicture => {
+    const pose = poseAtInput(input, dragged);
     const arrows: MechArrow[] = [];
     if (showVelocities && rateSweep && analysis.grid && !drag.dragging) {
       for (const [id, q] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
@@ -311,7 +314,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
       }
     }
     return {
-      spec: drag.shown,
+      spec: dragged ?? spec,
       pose,
       traces,
       slideRange,
@@ -348,7 +351,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const exportPicture = (format: 'png' | 'svg') => {
     const view = viewRef.current;
     if (!view || view.width <= 0) return;
-    const picture = pictureAt(inputNow());
+    const picture = pictureAt(inputNow(), drag.shown.get());
     const draw = (ctx: Parameters<typeof drawMechanism>[0], v: ViewTransform) => drawMechanism(ctx, picture, v);
     const v = fitView(bounds, view.width, view.height, view.offset);
     const fileBase = `mechanism_${templateUrlValue(template)}${edited ? '_edited' : ''}`;
@@ -491,6 +494,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
         <MechStage
           at={at}
           pictureAt={pictureAt}
+          dragged={drag.shown}
           bounds={bounds}
           label={locked ? m.canvasLabelLocked(shownName) : m.canvasLabel(shownName)}
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
@@ -598,9 +602,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
         </div>
         {embedded && embedOptions.positionsShown && (
           <AtPlayhead at={at}>
-            {(input) => (
-              <MechPositions spec={drag.shown} pose={poseAtInput(input)} label={embedOptions.positionsLabel} />
-            )}
+            {(input) => <MechPositions spec={spec} pose={poseAtInput(input)} label={embedOptions.positionsLabel} />}
           </AtPlayhead>
         )}
       </div>

@@ -9,19 +9,27 @@ export interface Playhead {
 }
 
 /**
- * Where Play's playhead is read: its latest value (null while Play is off) and a subscription to its moves. The
- * workspace holds this source, which stays the same object, so a frame of Play re-renders only the views that read
- * it (the canvas, the plots' markers, the readouts), not the page.
+ * A value that changes often (every frame of Play, every move of a drag) and where it is read: its latest value and a
+ * subscription to its changes. The page holds the source, which stays the same object, so a change re-renders only the
+ * views that read it (useSyncExternalStore), not the page.
  */
-export interface PlayheadSource {
-  get(): Playhead | null;
-  set(next: Playhead | null): void;
+export interface LiveSource<T> {
+  get(): T;
+  set(next: T): void;
   subscribe(listener: () => void): () => void;
 }
 
+/** Play's playhead: null while Play is off; the canvas, the plots' markers and the readouts read it. */
+export type PlayheadSource = LiveSource<Playhead | null>;
+
 /** A playhead source, off (null) at first. */
 export function createPlayheadSource(): PlayheadSource {
-  let at: Playhead | null = null;
+  return createLiveSource<Playhead | null>(null);
+}
+
+/** A live source holding first at first; setting the same value again tells no one. */
+export function createLiveSource<T>(first: T): LiveSource<T> {
+  let at = first;
   const listeners = new Set<() => void>();
   return {
     get: () => at,

@@ -1,5 +1,7 @@
-import { useEffect, useState } from 'react';
+import { useEffect, useRef, useState } from 'react';
 import type { MechanismSpec } from '../../mechanism';
+import type { LiveSource } from './livePlayhead';
+import { createLiveSource } from './livePlayhead';
 
 /** How long the pointer rests (ms) before a drag's linkage is analysed (its cycle, traces and plots) while held. */
 export const DRAG_REST_MS = 150;
@@ -38,33 +40,52 @@ export function nextJointDrag(
   }
 }
 
+/** The spec a drag draws now (null: no drag), read by the canvas alone. */
+export type DraggedSource = LiveSource<MechanismSpec | null>;
+
 /**
- * A pointer drag of a joint, kept in the page until it ends: each move redraws the linkage as drawn (no sweep, no app
- * state, no address bar, no history), the cycle (traces, plots, limits) follows when the pointer rests restMs ms or
- * lets go, and the end commits the moved linkage once (one undo step). `shown` is the spec to draw, `analysed` the spec
- * to sweep; both are `stored` when no drag is on.
+ * A pointer drag of a joint, kept in the page until it ends: each move redraws the linkage as drawn and re-renders the
+ * canvas alone (the spec drawn is in `shown`, a source the canvas reads: no sweep, no page render, no app state, no
+ * address bar, no history); the cycle (traces, plots, limits) follows when the pointer rests restMs ms or lets go (the
+ * page re-renders with the new `analysed`); the end commits the moved linkage once (one undo step). `analysed` is
+ * `stored` when no drag is on.
  */
 export function useJointDrag(stored: MechanismSpec, commit: (spec: MechanismSpec) => void, restMs = DRAG_REST_MS) {
-  const [drag, setDrag] = useState<JointDrag | null>(null);
-  useEffect(() => {
-    if (!drag || drag.analysed === drag.now) return;
-    const timer = setTimeout(() => setDrag((d) => nextJointDrag(d, { type: 'rest' }).drag), restMs);
-    return () => clearTimeout(timer);
-  }, [drag, restMs]);
+  const [drag] = useState(() => createLiveSource<JointDrag | null>(null));
+  const [shown] = useState(() => createLiveSource<MechanismSpec | null>(null));
+  // What the page renders from: the spec last analysed (null: no drag). It changes at a grab, a rest and a release.
+  const [analysed, setAnalysed] = useState<MechanismSpec | null>(null);
+  const rest = useRef<ReturnType<typeof setTimeout> | null>(null);
   const on = (event: JointDragEvent) => {
-    const next = nextJointDrag(drag, event);
+    const next = nextJointDrag(drag.get(), event);
+    drag.set(next.drag);
+    shown.set(next.drag?.now ?? null);
+    setAnalysed(next.drag?.analysed ?? null);
     if (next.commit) commit(next.commit);
-    setDrag(next.drag);
   };
+  const clearRest = () => {
+    if (rest.current !== null) clearTimeout(rest.current);
+    rest.current = null;
+  };
+  useEffect(() => clearRest, []);
   return {
-    shown: drag?.now ?? stored,
-    analysed: drag?.analysed ?? stored,
-    dragging: drag !== null,
+    analysed: analysed ?? stored,
+    dragging: analysed !== null,
+    shown: shown as DraggedSource,
     /** Takes the stored linkage into a drag. */
     start: () => on({ type: 'grab', stored }),
     /** Draws the linkage `change` makes of the one drawn now (change may throw: the caller says why). */
-    move: (change: (s: MechanismSpec) => MechanismSpec) => drag && on({ type: 'move', spec: change(drag.now) }),
+    move: (change: (s: MechanismSpec) => MechanismSpec) => {
+      const d = drag.get();
+      if (!d) return;
+      on({ type: 'move', spec: change(d.now) });
+      clearRest();
+      rest.current = setTimeout(() => on({ type: 'rest' }), restMs);
+    },
     /** Lets go: commits the moved linkage (when it moved) and ends the drag. */
-    end: () => on({ type: 'release' }),
+    end: () => {
+      clearRest();
+      on({ type: 'release' });
+    },
   };
 }
