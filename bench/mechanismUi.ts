@@ -2,8 +2,9 @@
  * The Mechanisms page's bench:ui figures (issue 33's speed targets), on Jansen's leg with three traces and its two
  * plots (the foot link's angle and the foot's speed, whose rates the worker solves):
  *   - dragging a joint (the knee G) by pointer at a CPU slowdown: each input's response time, from the pointer event's
- *     time stamp to the end of the frame that first shows it (the commit that draws the moved linkage, its traces and
- *     the plots of positions; the speed plot follows from the worker and is timed apart, not a target), p50 and p95;
+ *     time stamp to the end of the frame that first shows it (the commit that draws the moved linkage: the stage's
+ *     data-pose), p50 and p95; the cycle (traces and the plots of positions, data-trace) follows when the pointer rests
+ *     and the speed plot from the worker after it: both are timed apart from the last move, not targets;
  *   - Play at a CPU slowdown: redraws per second (frames that drew a new input) and the longest gap between them.
  * Each also reports the page thread's CPU time per input or redraw (CDP Performance.getMetrics TaskDuration), which a
  * busy machine disturbs less than the wall figures. Used by bench/ui.bench.ts (BENCH_ONLY=mech).
@@ -20,29 +21,36 @@ const DRAG_MOVES = 90;
 /** The dragged joint: Jansen's knee. */
 const DRAG_JOINT = 'G';
 
-/** The in-page log: commits that drew the linkage, frame ends, pointer moves, and the worker's rates arriving. */
+/** The in-page log: commits that drew the linkage, frame ends, pointer moves, and frames with the plots' rates shown. */
 interface MechLog {
-  commits: { t: number; input: string }[];
+  commits: { t: number; input: string; attr: string }[];
   frameEnds: number[];
   moves: { stamp: number; handled: number }[];
   ratesReady: number[];
 }
 
-/** Installed before any page script: watches the workspace's data-trace (a drawn spec) and data-input (a drawn input). */
+/**
+ * Installed before any page script: watches the workspace's data-trace (a drawn cycle) and its stage's data-pose (a
+ * drawn pose) and data-input (a drawn input), and notes each frame's end and whether the plots wait for their rates.
+ */
 function instrumentMech(): void {
   const log: MechLog = { commits: [], frameEnds: [], moves: [], ratesReady: [] };
   (window as unknown as { __mech: MechLog }).__mech = log;
   const observer = new MutationObserver((records) => {
     for (const r of records) {
       const el = r.target as HTMLElement;
-      if (r.attributeName === 'data-trace' || r.attributeName === 'data-input')
-        log.commits.push({ t: performance.now(), input: el.getAttribute('data-input') ?? '' });
+      if (r.attributeName === 'data-trace' || r.attributeName === 'data-input' || r.attributeName === 'data-pose')
+        log.commits.push({ t: performance.now(), input: el.getAttribute('data-input') ?? '', attr: r.attributeName });
     }
-    if (!document.querySelector('.mech-chart-cell .note')) log.ratesReady.push(performance.now());
   });
   const watch = () => {
     const ws = document.querySelector('.mech-workspace');
-    if (ws) observer.observe(ws, { attributes: true, attributeFilter: ['data-trace', 'data-input'] });
+    if (ws)
+      observer.observe(ws, {
+        attributes: true,
+        subtree: true,
+        attributeFilter: ['data-trace', 'data-input', 'data-pose'],
+      });
     else requestAnimationFrame(watch);
   };
   requestAnimationFrame(watch);
@@ -55,7 +63,11 @@ function instrumentMech(): void {
   );
   // A message posted from a rAF callback is handled after that frame has been painted.
   const channel = new MessageChannel();
-  channel.port1.onmessage = () => log.frameEnds.push(performance.now());
+  channel.port1.onmessage = () => {
+    const t = performance.now();
+    log.frameEnds.push(t);
+    if (!document.querySelector('.mech-chart-cell .note')) log.ratesReady.push(t);
+  };
   const loop = () => {
     channel.port2.postMessage(0);
     requestAnimationFrame(loop);
@@ -92,13 +104,17 @@ function quantile(sorted: readonly number[], q: number): number {
   return sorted[Math.min(sorted.length - 1, Math.ceil(q * sorted.length) - 1)];
 }
 
-/** One drag of the knee: response p50 and p95 (ms), inputs never shown, page-thread CPU ms per input, rates' p50. */
+/**
+ * One drag of the knee: response p50 and p95 (ms), inputs never shown, page-thread CPU ms per input, and from the last
+ * move's time stamp to the end of the frame showing the new cycle (traces, plots of positions) and the speed plot (ms).
+ */
 export interface MechDragFigures {
   p50Ms: number;
   p95Ms: number;
   withoutRedraw: number;
   cpuMsPerInput: number;
-  ratesP50Ms: number;
+  cycleMs: number;
+  ratesMs: number;
 }
 
 /**
@@ -148,14 +164,14 @@ export async function measureMechDrag(browser: Browser, base: string, rate: numb
     const log = await page.evaluate(() => (window as unknown as { __mech: MechLog }).__mech);
     const moves = log.moves.slice(1);
     const latencies = moves.map((m) => {
-      const c = log.commits.find((k) => k.t >= m.handled);
+      const c = log.commits.find((k) => k.t >= m.handled && k.attr === 'data-pose');
       const end = c && log.frameEnds.find((f) => f > c.t);
       return end === undefined ? null : end - m.stamp;
     });
-    const rates = moves.map((m) => {
-      const r = log.ratesReady.find((t) => t >= m.handled);
-      return r === undefined ? null : r - m.stamp;
-    });
+    const last = moves[moves.length - 1];
+    const cycle = last && log.commits.find((k) => k.t >= last.handled && k.attr === 'data-trace');
+    const cycleEnd = cycle && log.frameEnds.find((f) => f > cycle.t);
+    const ratesEnd = cycle && log.ratesReady.find((f) => f > cycle.t);
     const sorted = (xs: (number | null)[]) => xs.filter((v): v is number => v !== null).sort((a, b) => a - b);
     const lat = sorted(latencies);
     return {
@@ -163,7 +179,8 @@ export async function measureMechDrag(browser: Browser, base: string, rate: numb
       p95Ms: quantile(lat, 0.95),
       withoutRedraw: latencies.filter((v) => v === null).length,
       cpuMsPerInput: ((cpu1 - cpu0) * 1000) / Math.max(1, moves.length),
-      ratesP50Ms: quantile(sorted(rates), 0.5),
+      cycleMs: cycleEnd === undefined ? Number.NaN : cycleEnd - last.stamp,
+      ratesMs: ratesEnd === undefined ? Number.NaN : ratesEnd - last.stamp,
     };
   } finally {
     await context.close();
@@ -209,7 +226,7 @@ export async function measureMechPlay(
     let last = '';
     const times: number[] = [];
     for (const c of r.commits) {
-      if (c.input === last) continue;
+      if (c.attr !== 'data-input' || c.input === last) continue;
       last = c.input;
       const end = r.ends.find((f) => f > c.t);
       if (end !== undefined && !frames.has(end)) {

@@ -33,6 +33,8 @@ const TEMPLATES: [key: string, tpl: string, name: string][] = [
 ];
 
 const workspace = (page: Page) => page.locator('.mech-workspace');
+/** The canvas's box: data-input is the input drawn, data-pose a digest of the pose drawn. */
+const stage = (page: Page) => page.locator('.mech-stage');
 const status = (page: Page) => page.getByTestId('mech-status');
 
 /** Types a number into a labelled field of the joints table and commits it with Enter. */
@@ -178,6 +180,31 @@ test.describe('mechanism page', () => {
     await expect(workspace(page)).toHaveAttribute('data-trace', afterKeys!);
   });
 
+  test('a held drag redraws the linkage at each move and its traced curve once the pointer rests, one undo step', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=jansen');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const trace0 = (await workspace(page).getAttribute('data-trace'))!;
+    const pose0 = (await stage(page).getAttribute('data-pose'))!;
+    const at = await screenOf(page, 'G');
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    await page.mouse.move(at.x + 12, at.y, { steps: 3 });
+    // Held: the linkage is drawn moved, and once the pointer rests its curve follows, before it is let go.
+    await expect(stage(page)).not.toHaveAttribute('data-pose', pose0);
+    await expect(workspace(page)).not.toHaveAttribute('data-trace', trace0);
+    await expect(page).not.toHaveURL(/mech=/);
+    await page.mouse.up();
+    await expect(page).toHaveURL(/mech=m1/);
+    const trace1 = (await workspace(page).getAttribute('data-trace'))!;
+    await page.getByRole('button', { name: 'Undo' }).click();
+    await expect(workspace(page)).toHaveAttribute('data-trace', trace0);
+    await expect(stage(page)).toHaveAttribute('data-pose', pose0);
+    await page.getByRole('button', { name: 'Redo' }).click();
+    await expect(workspace(page)).toHaveAttribute('data-trace', trace1);
+  });
+
   test('builds a slider-crank from nothing by keyboard, plays it, and exports a CSV that matches the closed form', async ({
     page,
   }) => {
@@ -216,7 +243,7 @@ test.describe('mechanism page', () => {
     await expect(status(page)).toHaveText('The input turns fully.');
     // Play, wait for the input to move, pause.
     await page.getByRole('button', { name: 'Play' }).press('Enter');
-    await expect(workspace(page)).not.toHaveAttribute('data-input', '0');
+    await expect(stage(page)).not.toHaveAttribute('data-input', '0');
     await page.getByRole('button', { name: 'Pause' }).press('Enter');
     const csv = await exportedCsv(page);
     expect(csv.header).toEqual(['input', 'J1_x', 'J1_y', 'J2_x', 'J2_y', 'J3_x', 'J3_y', 'S1_x', 'S1_y']);
@@ -264,7 +291,7 @@ test.describe('mechanism page', () => {
     await expect(page.getByTestId('mech-mobility')).toHaveText('Mobility 1');
     await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
     await page.getByRole('button', { name: 'Play' }).click();
-    await expect(workspace(page)).not.toHaveAttribute('data-input', '0');
+    await expect(stage(page)).not.toHaveAttribute('data-input', '0');
     await page.getByRole('button', { name: 'Pause' }).click();
   });
 
@@ -413,6 +440,33 @@ test.describe('mechanism page', () => {
     await expect(page.getByRole('button', { name: 'Play' })).toBeInViewport();
     await expect(page.getByRole('button', { name: 'Add pin' })).toBeHidden();
     await page.screenshot({ path: artifact('mechanism-embed-600.png') });
+  });
+
+  test('the embed with lock=edit says editing is locked (en and zh-TW), and a drag moves nothing', async ({ page }) => {
+    await page.setViewportSize({ width: 600, height: 450 });
+    await page.goto('./embed.html?page=mech&tpl=four-bar&lock=edit');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    const hint = page.getByTestId('mech-edit-locked');
+    await expect(hint).toHaveText('Editing locked');
+    await expect(hint).toBeInViewport();
+    await expect(page.getByTestId('mech-canvas')).toHaveAccessibleName(/editing locked/);
+    const pose = (await stage(page).getAttribute('data-pose'))!;
+    const box = (await page.getByTestId('mech-canvas').boundingBox())!;
+    const [scale, cx, cy, panX, panY] = (await page.getByTestId('mech-canvas').getAttribute('data-view'))!
+      .split(' ')
+      .map(Number);
+    // The crank's pivot O2 at (0, 0), where the canvas draws it (the embed has no joints table); unlocked, this drag
+    // would move it.
+    const o2 = { x: box.x + box.width / 2 - cx * scale + panX, y: box.y + box.height / 2 + cy * scale + panY };
+    await page.mouse.move(o2.x, o2.y);
+    await page.mouse.down();
+    await page.mouse.move(o2.x + 40, o2.y + 20, { steps: 3 });
+    await page.mouse.up();
+    await expect(stage(page)).toHaveAttribute('data-pose', pose);
+    await expect(page).not.toHaveURL(/mech=/);
+    await page.screenshot({ path: artifact('mechanism-embed-locked-600.png') });
+    await page.goto('./embed.html?page=mech&tpl=four-bar&lock=edit&lang=zh-TW');
+    await expect(page.getByTestId('mech-edit-locked')).toHaveText('編輯已鎖定');
   });
 
   test('speaks zh-TW and has no axe violations', async ({ page }) => {

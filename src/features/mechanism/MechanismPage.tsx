@@ -32,9 +32,11 @@ import { drawnPose, pathOf, poseAt } from './mechPose';
 import type { Pt } from './mechPose';
 import type { MechPlotChoice } from './mechPlots';
 import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
-import { MechCanvas } from './MechCanvas';
 import { MechPositions } from './MechPositions';
-import { XYChartView } from '../../shared/charts/XYChartView';
+import { AtPlayhead, MechPlotCell, MechStage } from './MechLiveViews';
+import type { PlayheadInput } from './MechLiveViews';
+import { createPlayheadSource } from './livePlayhead';
+import { useJointDrag } from './useJointDrag';
 import { TemplateGallery } from './TemplateGallery';
 import type { PlaceKind } from './SpecEditor';
 import { SpecEditor } from './SpecEditor';
@@ -199,7 +201,11 @@ const defaultTraced = (spec: MechanismSpec) => (spec.points ?? []).map((p) => p.
 function MechWorkspace(props: MechWorkspaceProps) {
   const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
   const locked = embedded && embedOptions.editLocked;
-  const spec = edited ?? MECHANISM_TEMPLATES[template].spec;
+  const stored = edited ?? MECHANISM_TEMPLATES[template].spec;
+  // A pointer drag draws its linkage (drag.shown) at every move and sweeps it (drag.analysed) when the pointer rests:
+  // everything below but the canvas works on the analysed spec.
+  const drag = useJointDrag(stored, (next) => dispatch({ type: 'setMechSpec', spec: next }));
+  const spec = drag.analysed;
   const name = m.templateNames[template] ?? template;
   const shownName = edited ? m.edited(name) : name;
   // The rocking limits are refined once the edits settle (a deferred render), not at every move of a drag.
@@ -211,14 +217,19 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const span = range ? range[1] - range[0] : 0;
   const rate = (speed: number) => (kind === 'R' ? degToRad(speed) : (speed * span) / 360);
   const setSettings = (patch: Partial<MechPageSettings>) => dispatch({ type: 'setMechPage', patch });
+  const [playhead] = useState(createPlayheadSource);
   const { drive, setPlaying, step, setInput, reverse, setSpeed, stop } = useMechDrive(
     range,
     analysis.fullTurn,
     rate,
     settings,
     setSettings,
+    playhead,
   );
-  const input = range ? Math.min(range[1], Math.max(range[0], drive.input)) : 0;
+  const clamp = (t: number) => (range ? Math.min(range[1], Math.max(range[0], t)) : 0);
+  const at: PlayheadInput = { playhead, rest: drive.input, clamp };
+  /** The input on screen now (Play's playhead or the committed input), for what is made at a click (exports). */
+  const inputNow = () => clamp(playhead.get()?.input ?? drive.input);
   const [selected, setSelected] = useState<string | null>(null);
   const traced = useMemo(() => new Set(settings.traced ?? defaultTraced(spec)), [settings.traced, spec]);
   const setTraced = (change: (s: ReadonlySet<string>) => ReadonlySet<string>) =>
@@ -265,41 +276,50 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const solved = useMechSweepJob(client, analysis, wantRates, forceJob);
   const rateSweep = solved.rates;
   const forceJoint = reactionJoint(spec, forces.joint);
-  const forceNow = (values: ArrayLike<number> | undefined) => (values ? valueAt(analysis, values, input) : NaN);
+  const valueNow = (values: ArrayLike<number> | undefined, input: number) =>
+    values ? valueAt(analysis, values, input) : NaN;
   const reactionSeries = solved.forces?.joints[forceJoint];
 
-  const pose =
-    (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
-    drawnPose(spec);
-  const arrows: MechArrow[] = [];
-  if (showVelocities && rateSweep && analysis.grid) {
-    for (const [id, at] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
-      const s = rateSweep.joints[id] ?? rateSweep.points[id];
-      if (s?.vx && s.vy) arrows.push({ at, vx: valueAt(analysis, s.vx, input), vy: valueAt(analysis, s.vy, input) });
-    }
-  }
-  const forceArrows: MechArrow[] = [];
-  if (forcesOn && forces.arrows && solved.forces) {
-    for (const [id, at] of Object.entries(pose.joints)) {
-      const r = solved.forces.joints[id];
-      if (r) forceArrows.push({ at, vx: forceNow(r.fx), vy: forceNow(r.fy) });
-    }
-  }
+  /** The pose at an input: as drawn while a joint is dragged (the drag sets the input to 0), else from the sweep. */
+  const poseAtInput = (input: number) =>
+    drag.dragging
+      ? drawnPose(drag.shown)
+      : (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
+        drawnPose(spec);
   const traces =
     analysis.sweep && analysis.run
       ? [...traced]
           .filter((id) => analysis.sweep!.joints[id] || analysis.sweep!.points[id])
           .map((id) => ({ id, ...pathOf(analysis.sweep!, id, analysis.run!) }))
       : [];
-  const picture: MechPicture = {
-    spec,
-    pose,
-    traces,
-    slideRange: useMemo(() => slideRanges(analysis), [analysis]),
-    selected,
-    arrows,
-    forceArrows,
-    faint: analysis.problem !== null,
+  const slideRange = useMemo(() => slideRanges(analysis), [analysis]);
+  /** The picture at an input: the pose, its velocity and force arrows (none while a joint is dragged), the traces. */
+  const pictureAt = (input: number): MechPicture => {
+    const pose = poseAtInput(input);
+    const arrows: MechArrow[] = [];
+    if (showVelocities && rateSweep && analysis.grid && !drag.dragging) {
+      for (const [id, q] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
+        const s = rateSweep.joints[id] ?? rateSweep.points[id];
+        if (s?.vx && s.vy) arrows.push({ at: q, vx: valueNow(s.vx, input), vy: valueNow(s.vy, input) });
+      }
+    }
+    const forceArrows: MechArrow[] = [];
+    if (forcesOn && forces.arrows && solved.forces && !drag.dragging) {
+      for (const [id, q] of Object.entries(pose.joints)) {
+        const r = solved.forces.joints[id];
+        if (r) forceArrows.push({ at: q, vx: valueNow(r.fx, input), vy: valueNow(r.fy, input) });
+      }
+    }
+    return {
+      spec: drag.shown,
+      pose,
+      traces,
+      slideRange,
+      selected,
+      arrows,
+      forceArrows,
+      faint: analysis.problem !== null,
+    };
   };
 
   const inputJoint = spec.input.joint;
@@ -325,10 +345,11 @@ function MechWorkspace(props: MechWorkspaceProps) {
   };
   const centre = (): Pt => ({ x: (bounds.minX + bounds.maxX) / 2 || 0, y: (bounds.minY + bounds.maxY) / 2 || 0 });
 
-  const draw = (ctx: Parameters<typeof drawMechanism>[0], v: ViewTransform) => drawMechanism(ctx, picture, v);
   const exportPicture = (format: 'png' | 'svg') => {
     const view = viewRef.current;
     if (!view || view.width <= 0) return;
+    const picture = pictureAt(inputNow());
+    const draw = (ctx: Parameters<typeof drawMechanism>[0], v: ViewTransform) => drawMechanism(ctx, picture, v);
     const v = fitView(bounds, view.width, view.height, view.offset);
     const fileBase = `mechanism_${templateUrlValue(template)}${edited ? '_edited' : ''}`;
     if (format === 'svg') exportDrawingSvg((ctx) => draw(ctx, v), view.width, view.height, fileBase);
@@ -383,16 +404,19 @@ function MechWorkspace(props: MechWorkspaceProps) {
       }),
     [plots, spec, rateSweep, analysis, xDeg, xLabel, kind, m],
   );
+  const xOf = (input: number) => (kind === 'R' ? radToDeg(input) : input);
   const plotViews = plotSeries.map(({ line, ...p }) => {
-    const xNow = kind === 'R' ? radToDeg(input) : input;
-    const marker: MarkerAt | null = line
-      ? { x: xNow, dots: [{ y: valueAt(analysis, line.y, input), color: line.color }] }
-      : null;
-    return { ...p, marker };
+    const markerAt = (input: number): MarkerAt | null =>
+      line ? { x: xOf(input), dots: [{ y: valueAt(analysis, line.y, input), color: line.color }] } : null;
+    return { ...p, markerAt };
   });
+  const choiceOptions = useMemo(
+    () => plotChoices(spec).map((c) => ({ value: c, label: choiceLabel(parseChoice(spec, c)!, m) })),
+    [spec, m],
+  );
   const exportPlot = async (n: number, format: 'png' | 'svg') => {
     const p = plotViews[n - 1];
-    const chart = { draw: specDrawing(xySpec(), p.texts, p.data, p.marker), width: 640, height: 360 };
+    const chart = { draw: specDrawing(xySpec(), p.texts, p.data, p.markerAt(inputNow())), width: 640, height: 360 };
     const fileBase = `mechanism_${templateUrlValue(template)}_plot${n}`;
     if (format === 'svg') downloadText(exportChart(chart, 'svg'), `${fileBase}.svg`, 'image/svg+xml');
     else downloadPng(await exportChart(chart, '2x'), `${fileBase}.png`);
@@ -401,7 +425,6 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const sliderMin = range ? (kind === 'R' ? radToDeg(range[0]) : range[0]) : 0;
   const sliderMax = range ? (kind === 'R' ? radToDeg(range[1]) : range[1]) : 0;
   const sliderStep = kind === 'R' ? 1 : span / 360 || 0.01;
-  const sliderValue = kind === 'R' ? radToDeg(input) : input;
   const canRun = range !== null;
 
   // The editor (a table of every joint's fields) re-renders when what it shows changes, not at each frame of Play:
@@ -452,19 +475,24 @@ function MechWorkspace(props: MechWorkspaceProps) {
       className="mech-workspace"
       data-mech-state={analysis.problem ? analysis.problem.code : 'ok'}
       data-trace={traceDigest(traces)}
-      data-input={input}
     >
       <div className="mech-stage-col">
         <div className="mech-stage-head">
           <h3 className="mech-name-title">{shownName}</h3>
+          {locked && (
+            <span className="mech-locked" title={m.editLockedHint} data-testid="mech-edit-locked">
+              {m.editLocked}
+            </span>
+          )}
           <span className={`mech-mobility ${analysis.mobility === 1 ? 'is-ok' : 'is-bad'}`} data-testid="mech-mobility">
             {m.mobility(Number.isFinite(analysis.mobility) ? String(analysis.mobility) : '—')}
           </span>
         </div>
-        <MechCanvas
-          picture={picture}
+        <MechStage
+          at={at}
+          pictureAt={pictureAt}
           bounds={bounds}
-          label={m.canvasLabel(shownName)}
+          label={locked ? m.canvasLabelLocked(shownName) : m.canvasLabel(shownName)}
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}
           viewRef={viewRef}
           onGrab={(id) => {
@@ -473,9 +501,21 @@ function MechWorkspace(props: MechWorkspaceProps) {
               stop(0);
               setSelected(id);
               setFrozenBounds(liveBounds);
-            } else setFrozenBounds(null);
+              drag.start();
+            } else {
+              drag.end();
+              setFrozenBounds(null);
+            }
           }}
-          onDrag={(id, p) => !locked && edit((s) => moveJoint(s, id, p.x, p.y))}
+          onDrag={(id, p) => {
+            if (locked) return;
+            try {
+              drag.move((s) => moveJoint(s, id, p.x, p.y));
+              setEditError(null);
+            } catch (e) {
+              setEditError(m.editRefused((e as Error).message));
+            }
+          }}
           placing={placing !== null}
           onTap={(p) => placing && place(placing, p)}
           onNudge={(dx, dy) => {
@@ -521,22 +561,26 @@ function MechWorkspace(props: MechWorkspaceProps) {
           <button type="button" className="btn" disabled={!canRun} aria-pressed={drive.direction < 0} onClick={reverse}>
             {m.reverse}
           </button>
-          <label className="mech-input">
-            <span>{kind === 'R' ? m.inputAngle(inputJoint || '—') : m.inputSlide(inputJoint || '—')}</span>
-            <input
-              type="range"
-              min={sliderMin}
-              max={sliderMax}
-              step={sliderStep}
-              value={sliderValue}
-              disabled={!canRun}
-              onChange={(e) => {
-                const v = Number(e.target.value);
-                setInput(kind === 'R' ? degToRad(v) : v);
-              }}
-            />
-            <output data-testid="mech-input-value">{inputText(input)}</output>
-          </label>
+          <AtPlayhead at={at}>
+            {(input) => (
+              <label className="mech-input">
+                <span>{kind === 'R' ? m.inputAngle(inputJoint || '—') : m.inputSlide(inputJoint || '—')}</span>
+                <input
+                  type="range"
+                  min={sliderMin}
+                  max={sliderMax}
+                  step={sliderStep}
+                  value={xOf(input)}
+                  disabled={!canRun}
+                  onChange={(e) => {
+                    const v = Number(e.target.value);
+                    setInput(kind === 'R' ? degToRad(v) : v);
+                  }}
+                />
+                <output data-testid="mech-input-value">{inputText(input)}</output>
+              </label>
+            )}
+          </AtPlayhead>
           <label className="mech-speed">
             <span>{m.speed}</span>
             <input
@@ -553,7 +597,11 @@ function MechWorkspace(props: MechWorkspaceProps) {
           </label>
         </div>
         {embedded && embedOptions.positionsShown && (
-          <MechPositions spec={spec} pose={pose} label={embedOptions.positionsLabel} />
+          <AtPlayhead at={at}>
+            {(input) => (
+              <MechPositions spec={drag.shown} pose={poseAtInput(input)} label={embedOptions.positionsLabel} />
+            )}
+          </AtPlayhead>
         )}
       </div>
       <div className="mech-side" hidden={embedded}>
@@ -572,9 +620,9 @@ function MechWorkspace(props: MechWorkspaceProps) {
                 onChange={(e) => setPlots((old) => (p.n === 1 ? [e.target.value, old[1]] : [old[0], e.target.value]))}
               >
                 <option value="">{m.plotNone}</option>
-                {plotChoices(spec).map((c) => (
-                  <option key={c} value={c}>
-                    {choiceLabel(parseChoice(spec, c)!, m)}
+                {choiceOptions.map((o) => (
+                  <option key={o.value} value={o.value}>
+                    {o.label}
                   </option>
                 ))}
               </select>
@@ -587,37 +635,40 @@ function MechWorkspace(props: MechWorkspaceProps) {
         </div>
         <div className="mech-charts">
           {plotViews.map((p) => (
-            <div key={p.n} className="mech-chart-cell">
-              <XYChartView
-                className="mech-chart"
-                data={p.data}
-                marker={p.marker}
-                texts={p.texts}
-                testId={`mech-chart-${p.n}`}
-              />
-              {p.pending && <p className="note">{m.ratesPending}</p>}
-            </div>
+            <MechPlotCell
+              key={p.n}
+              at={at}
+              data={p.data}
+              texts={p.texts}
+              markerAt={p.markerAt}
+              testId={`mech-chart-${p.n}`}
+              note={p.pending && <p className="note">{m.ratesPending}</p>}
+            />
           ))}
         </div>
       </section>
       {(!embedded || forces.enabled) && (
-        <MechForcesPanel
-          spec={spec}
-          settings={forces}
-          joint={forceJoint}
-          kind={kind}
-          lengthUnit={lengthUnit}
-          forces={solved.forces}
-          pending={solved.pending}
-          error={solved.error}
-          x={forceX}
-          run={analysis.problem ? null : analysis.run}
-          xNow={kind === 'R' ? radToDeg(input) : input}
-          effortNow={forceNow(solved.forces?.input)}
-          reactionNow={{ fx: forceNow(reactionSeries?.fx), fy: forceNow(reactionSeries?.fy) }}
-          dispatch={dispatch}
-          m={m}
-        />
+        <AtPlayhead at={at} everyFrame={forcesOn}>
+          {(input) => (
+            <MechForcesPanel
+              spec={spec}
+              settings={forces}
+              joint={forceJoint}
+              kind={kind}
+              lengthUnit={lengthUnit}
+              forces={solved.forces}
+              pending={solved.pending}
+              error={solved.error}
+              x={forceX}
+              run={analysis.problem ? null : analysis.run}
+              xNow={xOf(input)}
+              effortNow={valueNow(solved.forces?.input, input)}
+              reactionNow={{ fx: valueNow(reactionSeries?.fx, input), fy: valueNow(reactionSeries?.fy, input) }}
+              dispatch={dispatch}
+              m={m}
+            />
+          )}
+        </AtPlayhead>
       )}
       <section className="mech-exports" aria-label={m.exportsTitle} hidden={embedded}>
         <h3 className="mech-card-title">{m.exportsTitle}</h3>

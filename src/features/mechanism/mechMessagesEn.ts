@@ -146,6 +146,9 @@ export const mechMessagesEn = {
   forcesFailed: (why: string) => `The forces could not be solved: ${why}`,
   notANumber: (label: string, text: string) => `${label}: “${text}” is not a number.`,
   outOfRange: (label: string, min: string, max: string) => `${label} must be from ${min} to ${max}.`,
+  editLocked: 'Editing locked',
+  editLockedHint: 'This embed locks editing: the joints cannot be dragged or moved. Play and the input still work.',
+  canvasLabelLocked: (name: string) => `${name}: the linkage (editing locked). + − 0 zoom.`,
 };
 
 /** The mechanism page's strings. */

@@ -144,4 +144,7 @@ export const mechMessagesZhTw: MechMessages = {
   forcesFailed: (why) => `無法求解力：${why}`,
   notANumber: (label, text) => `${label}：「${text}」不是數字。`,
   outOfRange: (label, min, max) => `${label} 必須介於 ${min} 與 ${max} 之間。`,
+  editLocked: '編輯已鎖定',
+  editLockedHint: '此嵌入鎖定了編輯：無法拖曳或移動接頭。播放與輸入仍可使用。',
+  canvasLabelLocked: (name) => `${name}：連桿圖（編輯已鎖定）。+ − 0 縮放。`,
 };

@@ -1,10 +1,11 @@
 import { useState } from 'react';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
 import { PI, TWO_PI } from '../../solver/angles';
+import type { Playhead, PlayheadSource } from './livePlayhead';
 
-/** Where the input is and how Play moves it. */
+/** Where the input rests and how Play moves it (Play's playhead itself is in the page's PlayheadSource). */
 export interface MechDrive {
-  /** The input: radians for a pin, length for a slider; 0 = as drawn. */
+  /** The committed input: radians for a pin, length for a slider; 0 = as drawn. */
   input: number;
   playing: boolean;
   direction: 1 | -1;
@@ -51,6 +52,21 @@ function turnBack(at: number, direction: 1 | -1, delta: number, [lo, hi]: [numbe
   return { input: Math.min(hi, Math.max(lo, at + direction * delta)), direction, limitAt: at };
 }
 
+/**
+ * One frame of Play: the playhead moved by delta (advanceInput), keeping the last limit met, and whether it turned
+ * (a new direction or a new limit: what the page shows changes; else only the views that follow the playhead redraw).
+ */
+export function playFrame(
+  p: Playhead,
+  delta: number,
+  range: [number, number],
+  fullTurn: boolean,
+): { next: Playhead; turned: boolean } {
+  const s = advanceInput(p.input, p.direction, delta, range, fullTurn);
+  const next = { ...s, limitAt: s.limitAt ?? p.limitAt };
+  return { next, turned: next.direction !== p.direction || next.limitAt !== p.limitAt };
+}
+
 /** The committed drive (the mech slice's input, direction and speed) and how to change it. */
 export interface CommittedDrive {
   input: number;
@@ -58,18 +74,12 @@ export interface CommittedDrive {
   speed: number;
 }
 
-/** Where Play is while it runs (the frames stay in the page; the slice gets the input when Play stops). */
-interface Playing {
-  input: number;
-  direction: 1 | -1;
-  limitAt: number | null;
-}
-
 /**
  * The input and Play of the mechanism page. At rest the input, direction and speed are the slice's (committed):
  * Step, the slider and Reverse commit to it, so a link or a design file holds them. While playing, one
- * animation-frame loop (useAnimationFrame) moves a local input, so Play does not re-render the app every frame;
- * Pause commits where it stopped. rate converts speed to input units per second.
+ * animation-frame loop (useAnimationFrame) moves the playhead in `playhead` (a source the views that follow Play read),
+ * so a frame of Play re-renders neither the app nor the page: the page re-renders only when Play starts or stops, turns
+ * at a limit or is reversed. Pause commits where it stopped. rate converts speed to input units per second.
  */
 export function useMechDrive(
   range: [number, number] | null,
@@ -77,49 +87,60 @@ export function useMechDrive(
   rate: (speed: number) => number,
   committed: CommittedDrive,
   commit: (patch: Partial<CommittedDrive>) => void,
+  playhead: PlayheadSource,
 ) {
-  const [play, setPlay] = useState<Playing | null>(null);
+  // The playhead's direction and limit as the page shows them (Reverse's state, the status line): they change at a
+  // turn, not every frame.
+  const [shown, setShown] = useState<{ direction: 1 | -1; limitAt: number | null } | null>(null);
   const canRun = range !== null;
-  useAnimationFrame(play !== null && canRun, (dt) => {
-    if (!range) return;
-    setPlay((p) => {
-      if (!p) return p;
-      const s = advanceInput(p.input, p.direction, rate(committed.speed) * dt, range, fullTurn);
-      return { ...s, limitAt: s.limitAt ?? p.limitAt };
-    });
+  const playing = shown !== null;
+  const move = (next: Playhead | null) => {
+    playhead.set(next);
+    setShown(next && { direction: next.direction, limitAt: next.limitAt });
+  };
+  useAnimationFrame(playing && canRun, (dt) => {
+    const p = playhead.get();
+    if (!range || !p) return;
+    const { next, turned } = playFrame(p, rate(committed.speed) * dt, range, fullTurn);
+    if (turned) move(next);
+    else playhead.set(next);
   });
-  const drive: MechDrive = play
-    ? { ...play, playing: true, speed: committed.speed }
+  const drive: MechDrive = shown
+    ? { input: committed.input, ...shown, playing: true, speed: committed.speed }
     : { input: committed.input, direction: committed.direction, speed: committed.speed, playing: false, limitAt: null };
-  const from = play ?? committed;
+  const from = () => playhead.get() ?? committed;
   return {
     drive,
-    setPlaying: (playing: boolean) => {
-      if (playing === (play !== null)) return;
-      if (playing) setPlay({ input: committed.input, direction: committed.direction, limitAt: null });
+    setPlaying: (on: boolean) => {
+      if (on === (playhead.get() !== null)) return;
+      if (on) move({ input: committed.input, direction: committed.direction, limitAt: null });
       else {
-        commit({ input: from.input, direction: from.direction });
-        setPlay(null);
+        const p = from();
+        commit({ input: p.input, direction: p.direction });
+        move(null);
       }
     },
     step: (delta: number) => {
       if (!range) return;
-      const s = advanceInput(from.input, from.direction, delta, range, fullTurn);
+      const p = from();
+      const s = advanceInput(p.input, p.direction, delta, range, fullTurn);
       commit({ input: s.input, direction: s.direction });
-      setPlay(null);
+      move(null);
     },
     setInput: (input: number) => {
-      if (play) setPlay({ ...play, input, limitAt: null });
+      const p = playhead.get();
+      if (p) move({ ...p, input, limitAt: null });
       else commit({ input });
     },
     reverse: () => {
-      const direction = from.direction === 1 ? -1 : 1;
-      if (play) setPlay({ ...play, direction });
+      const p = playhead.get();
+      const direction = (p ?? committed).direction === 1 ? -1 : 1;
+      if (p) move({ ...p, direction });
       else commit({ direction });
     },
     setSpeed: (speed: number) => commit({ speed }),
     stop: (input = 0) => {
-      setPlay(null);
+      move(null);
       commit({ input });
     },
   };
