@@ -14,12 +14,13 @@
  * Published values (issue 34 item 6): `published.claim` is the best Σd² a paper states, `published.design` the design
  * itself in the papers' variables (literatureDesign.ts), from which the bench and literatureDesign.test.ts recompute
  * Σd² instead of trusting the claim. A number is recorded only with its source. None of the papers' designs could be
- * found: the stores searched for issue 34 (GitHub code and file search, documentation, issue threads and web pages:
- * the papers of Kunjur & Krishnamurty, Cabrera et al. 2002 and 2011, Acharyya & Mandal, Lin 2010, Bulatović &
- * Đorđević, Sleesongsom & Bureerat 2018, Yao et al. 2022, the MDPI comparisons of 2022 and 2023, Winyangkul et al.
- * 2026, and repositories of four-bar benchmarks such as jmejia8/eca-four-bar-mechanisms, fpenunuri's PSO synthesis
- * and ShengChiaYu/Fourbar-synthesis) hold these papers' first pages (title, abstract, introduction) but none of their
- * tables of designs, so `design` is absent and `claim` null except where issue 34 quotes one. Where an exact solution
+ * found: the stores searched for issue 34 (GitHub code and exact-string search, documentation, issue threads and web
+ * pages, keyed on the cases' coordinates and the papers' names and variables) hold only the first pages of the later
+ * papers that reuse these cases (Sedano et al. 2012, Sleesongsom & Bureerat 2018, Yao et al. 2022, Applied Sciences
+ * 2022 and 2023, Winyangkul et al. 2026), not Kunjur & Krishnamurty, Cabrera et al., Acharyya & Mandal or Lin at all,
+ * and the four-bar repositories found (jmejia8/eca-four-bar-mechanisms, fpenunuri/InfoInterchangeAdaptivePSO,
+ * ShengChiaYu/Fourbar-synthesis, NikolaBanic/Fourbar-mechanism-optimization) carry no published design vectors. So
+ * `design` is absent and `claim` null except where issue 34 quotes one. Where an exact solution
  * exists in the bounds (f at rounding), no published value can be lower. The target lists were checked against the
  * one public copy found, jmejia8/eca-four-bar-mechanisms (testTrajectories.jl, the ECA study of Mejía-de-Dios and
  * Mezura-Montes): its case 4 is our vertical line and its case 12 our eighteen points.
