@@ -18,7 +18,7 @@ import { dirname, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { POLISH_SHARE, mergePathCandidates, pathSynthesisPart } from '../src/synthesis';
 import { BENCHMARK_CASES, targetSize } from '../tests/synthesis/benchmarkCases';
-import { recomputePublished } from '../tests/synthesis/literatureDesign';
+import { recomputePublished, reproducesClaim } from '../tests/synthesis/literatureDesign';
 import type { RecomputedDesign } from '../tests/synthesis/literatureDesign';
 import { poolRows } from './synthesisPool';
 import { ninePointRow, ninePointTable } from './synthesisNinePoint';
@@ -110,8 +110,9 @@ async function runCase(c: (typeof BENCHMARK_CASES)[number]): Promise<Row> {
   return row;
 }
 
-/** The value ours is held to: the published design's recomputed Σd² where there is one, else the claim. */
-const publishedValue = (r: Row): number | null => r.recomputed?.f ?? r.claim;
+/** The value ours is held to: the published design's recomputed Σd² where it assembles, else the claim. */
+const publishedValue = (r: Row): number | null =>
+  r.recomputed && Number.isFinite(r.recomputed.f) ? r.recomputed.f : r.claim;
 /** At or below the value (with the exact criterion's slack, 1e-20 size², for a published 0). */
 const reaches = (r: Row, f: number, value: number) => f <= value + 1e-20 * r.size2;
 
@@ -121,7 +122,8 @@ function verdict(r: Row): string {
   if (value !== null) {
     const all = r.f.every((f) => reaches(r, f, value));
     const by = value - Math.max(...r.f);
-    return all ? (by > 1e-20 * r.size2 ? `yes (by ${sci(by)})` : 'yes') : `no (worst seed ${sci(-by)} above)`;
+    const v = all ? (by > 1e-20 * r.size2 ? `yes (by ${sci(by)})` : 'yes') : `no (worst seed ${sci(-by)} above)`;
+    return r.recomputed?.violations.length ? `${v}; the published design breaks the case` : v;
   }
   if (r.exact) return r.f.every((f) => f <= 1e-20 * r.size2) ? 'exact fit: none can be lower' : 'no';
   return '—';
@@ -134,7 +136,14 @@ function recomputedCell(r: Row): string {
     return r.publishedSource === 'by construction' || r.publishedSource === 'not a literature case'
       ? '—'
       : 'no design found';
-  return `${fine(d.f)} (${d.branch}${d.violations.length ? `; breaks: ${d.violations.join(', ')}` : ''})`;
+  const value = Number.isFinite(d.f) ? fine(d.f) : 'does not assemble';
+  const claim =
+    r.claim === null || !Number.isFinite(d.f)
+      ? ''
+      : reproducesClaim(r.claim, d.f)
+        ? '; reproduces the claim'
+        : '; does not reproduce the claim';
+  return `${value} (${d.branch}${claim}${d.violations.length ? `; breaks: ${d.violations.join(', ')}` : ''})`;
 }
 
 /** The published claim and its source, or what was searched when nothing was found. */

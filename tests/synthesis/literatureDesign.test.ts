@@ -11,7 +11,13 @@ import { describe, expect, it } from 'vitest';
 import { exact } from '../oracle/reference';
 import { BENCHMARK_CASES } from './benchmarkCases';
 import { oraclePoint } from './couplerOracle';
-import { literatureTheta2, placedFromLiterature, recomputePublished, taskViolations } from './literatureDesign';
+import {
+  literatureTheta2,
+  placedFromLiterature,
+  recomputePublished,
+  reproducesClaim,
+  taskViolations,
+} from './literatureDesign';
 import type { LiteratureDesign } from './literatureDesign';
 
 const D = Decimal.clone({ precision: 50, rounding: Decimal.ROUND_HALF_EVEN });
@@ -155,5 +161,18 @@ describe('taskViolations', () => {
     expect(taskViolations(d, [0.1, 0.5, 0.3, 1.3, 1.7, 2.1], line.task)).toContain(
       'targets not reached in order within one turn',
     );
+  });
+});
+
+describe('reproducesClaim', () => {
+  it('holds a recomputed Σd² to the claim at the claim’s printed digits', () => {
+    // 1.21622 has six significant digits: 1.216215 … 1.216225 reproduce it, our 1.2162123 does not.
+    expect(reproducesClaim(1.21622, 1.2162204)).toBe(true);
+    expect(reproducesClaim(1.21622, 1.2162122804615)).toBe(false);
+    expect(reproducesClaim(1.21622, 1.224569)).toBe(false);
+    expect(reproducesClaim(2.4e-7, 2.43e-7)).toBe(true);
+    expect(reproducesClaim(2.4e-7, 2.46e-7)).toBe(false);
+    expect(reproducesClaim(0, 0)).toBe(true);
+    expect(reproducesClaim(0, 1e-30)).toBe(false);
   });
 });

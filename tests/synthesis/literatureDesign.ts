@@ -125,3 +125,13 @@ function inOrder(theta2: number[]): boolean {
   const down = steps.reduce((a, s) => a + (s === 0 ? 0 : turn - s), 0);
   return Math.min(up, down) < turn;
 }
+
+/**
+ * True when a recomputed Σd² rounds to the claim at the claim's own significant digits (as printed: 1.21622 has six),
+ * i.e. the design reproduces what its paper says of it.
+ */
+export function reproducesClaim(claim: number, f: number): boolean {
+  if (claim === 0) return f === 0;
+  const mantissa = claim.toExponential().split('e')[0].replace('-', '').replace('.', '');
+  return Number(f.toPrecision(mantissa.length)) === claim;
+}
