@@ -239,6 +239,8 @@ interface DragRun {
   exactlyShown: number;
   /** r3 drags: each input's latency to the worker's cycle (coupler trace, cycle numbers); empty for θ2. */
   cycleLatencies: (number | null)[];
+  /** How many frames of the measured drag the live stage drew (0: the page drew them all). */
+  stageFrames: number;
 }
 
 /**
@@ -321,6 +323,7 @@ async function measureDrag(
           latencies: latenciesTo(events),
           exactlyShown: exactlyShown.length,
           cycleLatencies: kind === 'r3' ? latenciesTo(cycleShown()) : [],
+          stageFrames: b.stage.length - stageFrom,
         };
       },
       { kind, steps: DRAG_STEPS },
@@ -582,7 +585,11 @@ async function main(): Promise<void> {
       if (wanted('forces6')) {
         overlaysPlay6.push(await measurePlay(browser, 6, ALL_OVERLAYS_URL));
         const query = `${new URL(ALL_OVERLAYS_URL).search.slice(1)}&t2=40`;
-        overlaysT6.push(dragSummary(await measureDrag(browser, 6, 'theta2', query)));
+        const drag6 = await measureDrag(browser, 6, 'theta2', query);
+        overlaysT6.push(dragSummary(drag6));
+        const { p50Ms, p95Ms } = dragSummary(drag6);
+        const route = drag6.stageFrames > 0 ? `the stage (${drag6.stageFrames} frames)` : 'the page';
+        console.log(`  6x θ2 drag: p50 ${p50Ms.toFixed(1)} ms, p95 ${p95Ms.toFixed(1)} ms, drawn by ${route}`);
       }
       if (wanted('synCancel')) {
         cancel4.push(await measureSynCancel(browser, 4));

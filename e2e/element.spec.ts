@@ -6,9 +6,34 @@ import Decimal from 'decimal.js';
 import type { Page } from '@playwright/test';
 import { ORIGIN } from './helpers';
 
-// The custom element from `npm run build:element` (npm run test:e2e builds it first), on a plain course page.
-const SCRIPT = join(dirname(fileURLToPath(import.meta.url)), '..', 'dist-element', 'fourbar-lab.js');
+// The custom element from `npm run build:element` (npm run test:e2e builds it first), on a plain course page:
+// fourbar-lab.js and its folder fourbar-lab/ (the element's module, its lazy chunks, its workers) beside the page.
+const DIST = join(dirname(fileURLToPath(import.meta.url)), '..', 'dist-element');
 const PAGE = `${ORIGIN}/e2e-course/element.html`;
+/** A string only three.js's WebGLRenderer carries (its messages' prefix): marks a script that holds three.js. */
+const THREE_MARK = 'THREE.WebGLRenderer';
+
+/** The element's files the page fetched, in order: their path under dist-element and whether they hold three.js. */
+interface Served {
+  path: string;
+  three: boolean;
+}
+
+/** Serves dist-element's files beside the course page; returns the list of those the page fetched, as it grows. */
+async function serveElement(page: Page): Promise<Served[]> {
+  if (!existsSync(join(DIST, 'fourbar-lab.js')))
+    throw new Error(`${DIST} has no fourbar-lab.js: run npm run build:element`);
+  const served: Served[] = [];
+  await page.route(/\/e2e-course\/fourbar-lab(\.js|\/[^?#]+)$/, (route) => {
+    const path = new URL(route.request().url()).pathname.replace('/e2e-course/', '');
+    const file = join(DIST, ...path.split('/'));
+    if (!existsSync(file)) return route.fulfill({ status: 404, body: 'not found' });
+    const body = readFileSync(file, 'utf8');
+    served.push({ path, three: body.includes(THREE_MARK) });
+    return route.fulfill({ contentType: 'text/javascript', body });
+  });
+  return served;
+}
 
 interface Fired {
   id: string;
@@ -45,10 +70,7 @@ ${body}
 
 test.describe('the <fourbar-lab> custom element', () => {
   test('two elements on one page keep their own state, styles and change events', async ({ page }) => {
-    if (!existsSync(SCRIPT)) throw new Error(`${SCRIPT} is missing: run npm run build:element`);
-    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
-      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
-    );
+    await serveElement(page);
     const errors = await openCoursePage(
       page,
       'Week 3',
@@ -115,9 +137,7 @@ test.describe('the <fourbar-lab> custom element in Traditional Chinese', () => {
   test('lang="zh-TW" draws in Traditional Chinese from the first frame, as its language menu says', async ({
     page,
   }) => {
-    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
-      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
-    );
+    await serveElement(page);
     await page.route(PAGE, (route) =>
       route.fulfill({
         contentType: 'text/html',
@@ -137,9 +157,7 @@ test.describe('the <fourbar-lab> custom element in Traditional Chinese', () => {
 
 test.describe('the <fourbar-lab> custom element with a bad attribute', () => {
   test('names the attribute in a notice that speaks of the element, not of a link', async ({ page }) => {
-    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
-      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
-    );
+    await serveElement(page);
     await page.route(PAGE, (route) =>
       route.fulfill({
         contentType: 'text/html',
@@ -162,9 +180,7 @@ test.describe('the <fourbar-lab> custom element on the Mechanisms and Spatial pa
   test('page="mech" and page="3d" show their pages; r2 is the RSSR crank; a bad attribute is named', async ({
     page,
   }) => {
-    await page.route(`${ORIGIN}/e2e-course/fourbar-lab.js`, (route) =>
-      route.fulfill({ contentType: 'text/javascript', body: readFileSync(SCRIPT, 'utf8') }),
-    );
+    await serveElement(page);
     const errors = await openCoursePage(
       page,
       'Week 9',
@@ -197,6 +213,38 @@ test.describe('the <fourbar-lab> custom element on the Mechanisms and Spatial pa
     await expect
       .poll(async () => (await fired(page)).find((f) => f.id === 's' && f.detail.t2 === 60)?.detail)
       .toMatchObject({ sk: 'rssr', r2: 1.5, h2: 0.5 });
+    expect(errors).toEqual([]);
+  });
+});
+
+test.describe('the <fourbar-lab> custom element loads three.js only for page="3d"', () => {
+  test('a simulator element fetches no three.js; a page="3d" element added later fetches it and draws', async ({
+    page,
+  }) => {
+    const served = await serveElement(page);
+    const errors = await openCoursePage(page, 'Week 4', `<fourbar-lab id="sim" panels="controls,plots"></fourbar-lab>`);
+    const sim = page.locator('#sim');
+    await expect(sim.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
+    await expect(sim.getByRole('heading', { level: 1 })).toHaveText('Four-bar linkage simulator');
+    // The simulator drew from the loader and the element's module and its first-load chunk: none holds three.js.
+    expect(served.map((f) => f.path)).toContain('fourbar-lab.js');
+    expect(served.some((f) => f.path.startsWith('fourbar-lab/widget-'))).toBe(true);
+    expect(served.filter((f) => f.three)).toEqual([]);
+
+    // The page adds a Spatial element: its chunks (three.js among them) load from beside the script, and it draws.
+    await page.evaluate(() =>
+      document.body.insertAdjacentHTML(
+        'beforeend',
+        '<fourbar-lab id="sp" page="3d" sk="sph" panels="info" style="height:600px"></fourbar-lab>',
+      ),
+    );
+    const sp = page.locator('#sp');
+    await expect(sp.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
+    await expect.poll(() => sp.getByTestId('spatial-canvas').getAttribute('data-frames')).not.toBeNull();
+    expect(Number(await sp.getByTestId('spatial-canvas').getAttribute('data-frames'))).toBeGreaterThan(0);
+    expect(served.filter((f) => f.three).length).toBe(1);
+    // Its title names the page it shows.
+    await expect(sp.getByRole('heading', { level: 1 })).toHaveText('Spatial four-bar linkages');
     expect(errors).toEqual([]);
   });
 });

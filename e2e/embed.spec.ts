@@ -266,6 +266,8 @@ test.describe('the embed of the Spatial page (page=3d)', () => {
     const { frame, warnings } = await hostPage(page, src);
     await expect(frame.getByTestId('spatial-page')).toBeVisible();
     await expect(frame.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    // The widget's title names the page it shows, not the simulator.
+    await expect(frame.getByRole('heading', { level: 1 })).toHaveText('Spatial four-bar linkages');
     // The page's view without its title, exports or plots (panel off); no simulator canvas.
     await expect(frame.getByRole('heading', { name: 'Spatial four-bars' })).toHaveCount(0);
     await expect(frame.getByRole('button', { name: 'Export CSV' })).toHaveCount(0);
@@ -317,6 +319,7 @@ test.describe('the embed of the Spatial page (page=3d)', () => {
   test('a bad parameter is refused with a notice naming it', async ({ page }) => {
     await page.goto('./embed.html?page=3d&sk=sph&a1=200&panels=controls,export');
     await waitReady(page);
+    await expect(page).toHaveTitle('Spatial four-bar linkages');
     const notice = page.getByTestId('url-notice');
     await expect(notice).toContainText('a1');
     await expect(notice).toContainText('200');
@@ -348,6 +351,7 @@ test.describe('the embed generator for the Mechanisms and Spatial pages', () => 
     await expect.poll(async () => (await query()).get('lock')).toBe('template');
     expect((await query()).get('page')).toBe('mech');
     expect((await query()).get('tpl')).toBe('jansen');
+    await expect(code).toHaveValue(/ title="Planar linkage mechanisms" /);
     // The simulator's locks are not offered for this page.
     await expect(page.getByRole('checkbox', { name: 'r1', exact: true })).toHaveCount(0);
     const preview = page.frameLocator('.embed-preview iframe');
@@ -356,6 +360,7 @@ test.describe('the embed generator for the Mechanisms and Spatial pages', () => 
 
     await page.getByRole('radio', { name: 'Spatial' }).check();
     await expect.poll(async () => (await query()).get('page')).toBe('3d');
+    await expect(code).toHaveValue(/ title="Spatial four-bar linkages" /);
     expect((await query()).get('lock')).toBeNull(); // template is not a lock of this page
     await page.getByRole('checkbox', { name: 'Parameters' }).check();
     await expect.poll(async () => (await query()).get('lock')).toBe('params');

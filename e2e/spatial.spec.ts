@@ -280,6 +280,22 @@ test.describe('Spatial page', () => {
     expect(png.bytes).toBeGreaterThan(10_000);
   });
 
+  test('the lean look draws Play with half the pixels and the view at rest at full resolution', async ({ page }) => {
+    await openSpatial(page);
+    const canvas = page.getByTestId('spatial-canvas');
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    await expect(canvas).toHaveAttribute('data-quality', 'lean');
+    const buffer = () => canvas.evaluate((c: HTMLCanvasElement) => ({ width: c.width, css: c.clientWidth }));
+    const rest = await buffer();
+    expect(rest.width).toBe(rest.css); // deviceScaleFactor 1
+    await page.getByRole('button', { name: 'Play' }).click();
+    // renderQuality's movingPixelRatio (0.5) while frames follow each other.
+    await expect.poll(async () => (await buffer()).width).toBe(Math.floor(rest.css * 0.5));
+    await page.getByRole('button', { name: 'Pause' }).click();
+    // At rest (no frame for REST_MS) one more frame at full resolution: what a screenshot or the eye sees.
+    await expect.poll(async () => (await buffer()).width).toBe(rest.css);
+  });
+
   test('reads in Traditional Chinese', async ({ page }) => {
     await openSpatial(page, 'page=3d&lang=zh-TW');
     await expect(page.getByRole('tab', { name: '空間機構' })).toHaveAttribute('aria-selected', 'true');

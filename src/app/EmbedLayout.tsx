@@ -2,7 +2,7 @@ import './EmbedLayout.css';
 import { useCallback, useMemo, useState } from 'react';
 import type { Dispatch } from 'react';
 import type { Action, AppState } from '../shared/state/appState';
-import type { EmbedOptions, ParsedUrl } from '../shared/url/url';
+import type { EmbedOptions, EmbedPage, ParsedUrl } from '../shared/url/url';
 import { appUrl, isEmbedPage } from '../shared/url/url';
 import { PAGE_URL_VALUES } from '../shared/state/slices/shellSlice';
 import type { EmbedBridge } from '../features/share/embedBridge';
@@ -41,12 +41,20 @@ function fullAppHref(state: AppState): string {
   }
 }
 
-/** The widget's title bar: its title, the language, and a link to the full simulator where there is one. */
-function EmbedBar({ state, dispatch, fullHref }: { state: AppState; dispatch: Dispatch<Action>; fullHref: string }) {
+/** Props of EmbedBar: the state, its dispatch, the full app's link ('' for none) and the page shown (its title). */
+interface EmbedBarProps {
+  state: AppState;
+  dispatch: Dispatch<Action>;
+  fullHref: string;
+  page: EmbedPage;
+}
+
+/** The widget's title bar: the page's title, the language, and a link to the full simulator where there is one. */
+function EmbedBar({ state, dispatch, fullHref, page }: EmbedBarProps) {
   const t = useMessages();
   return (
     <header className="embed-bar">
-      <h1 className="embed-title">{t.embedTitle}</h1>
+      <h1 className="embed-title">{t.embedTitles[page]}</h1>
       <div className="embed-bar-right">
         <LanguageSelect locale={state.shell.locale} dispatch={dispatch} />
         {fullHref ? (
@@ -96,7 +104,7 @@ export function EmbedLayout(props: EmbedLayoutProps) {
   const { state, dispatch, cycle, point, t, playhead } = session;
   // The page's view from the registry; the options it does not offer were refused when the URL was read.
   const page = isEmbedPage(state.shell.page) ? state.shell.page : 'simulator';
-  useDocumentMeta(t.htmlLang, t.embedTitle, ownsPage);
+  useDocumentMeta(t.htmlLang, t.embedTitles[page], ownsPage);
   useUrlSync(state, embed, ownsPage);
   useEmbedMessages(bridge, state, dispatch, embed.locked);
 
@@ -106,7 +114,7 @@ export function EmbedLayout(props: EmbedLayoutProps) {
     <MessagesContext.Provider value={t}>
       <FramePoseProvider state={state} playhead={playhead} scrub={session.scrub} ghostShown>
         <div className="embed" lang={t.htmlLang} data-ready={cycle && point ? 'true' : 'false'}>
-          <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} />
+          <EmbedBar state={state} dispatch={dispatch} fullHref={fullHref} page={page} />
           <UrlNotice ignored={initial.ignored} source={ownsPage ? 'link' : 'attributes'} />
           <main className="embed-main">{EMBED_VIEWS[page]({ session, embed })}</main>
         </div>

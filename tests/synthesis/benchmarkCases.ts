@@ -11,17 +11,22 @@
  * theirs and a lower f here is a fair comparison. Their constraints "Grashof, crank the shortest, sequence" are our
  * input 'crank' with targets reached in order within one turn.
  *
- * Published values: a published value is recorded only where it can be recomputed from a published design (its
- * link lengths, pivot, coupler point and crank angles), so `published.f` is null where no design could be read. The
- * reference stores searched for issue 34 item 6 (GitHub code, documentation and web pages: the papers of Cabrera et
- * al., Acharyya & Mandal, Sleesongsom & Bureerat, Yao et al. 2022, and repositories of four-bar benchmarks such as
- * jmejia8/eca-four-bar-mechanisms and ShengChiaYu/Fourbar-synthesis) held the papers' abstracts but none of their tables of
- * designs, so no value is verified yet; `published.note` says what is known. Where an exact solution exists in the
- * bounds (f at rounding), no published value can be lower. The target lists were checked against the one public
- * copy found, jmejia8/eca-four-bar-mechanisms (testTrajectories.jl, the ECA study of Mejía-de-Dios and
+ * Published values (issue 34 item 6): `published.claim` is the best Σd² a paper states, `published.design` the design
+ * itself in the papers' variables (literatureDesign.ts), from which the bench and literatureDesign.test.ts recompute
+ * Σd² instead of trusting the claim. A number is recorded only with its source. None of the papers' designs could be
+ * found: the stores searched for issue 34 (GitHub code and exact-string search, documentation, issue threads and web
+ * pages, keyed on the cases' coordinates and the papers' names and variables) hold only the first pages of the later
+ * papers that reuse these cases (Sedano et al. 2012, Sleesongsom & Bureerat 2018, Yao et al. 2022, Applied Sciences
+ * 2022 and 2023, Winyangkul et al. 2026), not Kunjur & Krishnamurty, Cabrera et al., Acharyya & Mandal or Lin at all,
+ * and the four-bar repositories found (jmejia8/eca-four-bar-mechanisms, fpenunuri/InfoInterchangeAdaptivePSO,
+ * ShengChiaYu/Fourbar-synthesis, NikolaBanic/Fourbar-mechanism-optimization) carry no published design vectors. So
+ * `design` is absent and `claim` null except where issue 34 quotes one. Where an exact solution
+ * exists in the bounds (f at rounding), no published value can be lower. The target lists were checked against the
+ * one public copy found, jmejia8/eca-four-bar-mechanisms (testTrajectories.jl, the ECA study of Mejía-de-Dios and
  * Mezura-Montes): its case 4 is our vertical line and its case 12 our eighteen points.
  */
 import type { PathTask } from '../../src/synthesis';
+import type { LiteratureDesign } from './literatureDesign';
 import { oraclePoint } from './couplerOracle';
 import type { OracleDesign } from './couplerOracle';
 
@@ -34,7 +39,15 @@ export interface BenchmarkCase {
   task: PathTask;
   /** True when an exact solution is known to exist in the bounds (then f must reach 1e-20 of size²). */
   exact: boolean;
-  published: { f: number | null; source: string; note: string };
+  published: {
+    /** The best Σd² a source states, or null when none was found. */
+    claim: number | null;
+    /** The published design, when one was found: its Σd² is recomputed rather than quoted. */
+    design?: LiteratureDesign;
+    /** Where the claim and the design come from, or the papers searched for them. */
+    source: string;
+    note: string;
+  };
   /** Rounds the unit test (pathBenchmarks.test.ts) runs, when fewer than its default keep it quick. */
   testRounds?: number;
 }
@@ -101,9 +114,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: true,
     published: {
-      f: null,
+      claim: null,
       source: 'Kunjur & Krishnamurty 1997; Cabrera et al. 2002; Acharyya & Mandal 2009',
-      note: 'bounds r ∈ [5, 60], x0, y0, rcx, rcy ∈ [-60, 60] as in those papers; published f not verified here',
+      note: "bounds r ∈ [5, 60], x0, y0, rcx, rcy ∈ [-60, 60] as in those papers; no published design or value found (searched as in this file's header)",
     },
   },
   {
@@ -116,9 +129,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: false,
     published: {
-      f: null,
+      claim: null,
       source: 'Cabrera et al. 2002 (case 1); Acharyya & Mandal 2009',
-      note: 'crank angles measured from the ground link (our given timing); bounds r ∈ [0, 50], others [-50, 50]; published f not verified here; our best, 2.4658641e-7 on every seed, is a design on the Grashof face with |AP| at its bound (tests/synthesis/pathQuality.test.ts recomputes it)',
+      note: "crank angles measured from the ground link (our given timing); bounds r ∈ [0, 50], others [-50, 50]; no published design or value found (searched as in this file's header); our best, 2.4658641e-7 on every seed, is a design on the Grashof face with |AP| at its bound (tests/synthesis/pathQuality.test.ts recomputes it)",
     },
   },
   {
@@ -152,9 +165,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: false,
     published: {
-      f: null,
+      claim: null,
       source: 'Kunjur & Krishnamurty 1997; Cabrera et al. 2002 (case 2); Acharyya & Mandal 2009',
-      note: 'targets as in the public copy named above; bounds r ∈ [0, 50], others [-50, 50] as recalled; published f not verified here',
+      note: "targets as in the public copy named above; bounds r ∈ [0, 50], others [-50, 50] as recalled; no published design or value found (searched as in this file's header)",
     },
   },
   {
@@ -167,9 +180,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: true,
     published: {
-      f: null,
+      claim: null,
       source: 'Acharyya & Mandal 2009; Bulatović & Đorđević 2012',
-      note: 'points at 36° steps on the circle about (10, 0); bounds as recalled; published f not verified here',
+      note: "points at 36° steps on the circle about (10, 0); bounds as recalled; no published design or value found (searched as in this file's header)",
     },
   },
   {
@@ -183,9 +196,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: false,
     published: {
-      f: 1.21622,
-      source: 'best published, as quoted in issue 34',
-      note: 'lengths ≤ 50, pivot box ±50, crank input; the published design itself was not available here, so the value is quoted, not recomputed',
+      claim: 1.21622,
+      source: 'issue 34 (item 6) quotes it as the best published; the paper and its design were not found',
+      note: "lengths ≤ 50, pivot box ±50, crank input; the design behind the quote was not found (searched as in this file's header), so the value is quoted, not recomputed",
     },
   },
   {
@@ -209,9 +222,9 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     },
     exact: false,
     published: {
-      f: null,
+      claim: null,
       source: 'Cabrera et al. 2011; Ortiz et al.; Bulatović & Đorđević 2012',
-      note: 'x = 10 + 10 cos t, y = 10 + 8 sin t at 40° steps; bounds as recalled; published f not verified here',
+      note: "x = 10 + 10 cos t, y = 10 + 8 sin t at 40° steps; bounds as recalled; no published design or value found (searched as in this file's header)",
     },
   },
   {
@@ -227,7 +240,7 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
       bounds: WIDE_50,
     },
     exact: false,
-    published: { f: null, source: 'not a literature case', note: 'the figure-eight of issue 34 item 2' },
+    published: { claim: null, source: 'not a literature case', note: 'the figure-eight of issue 34 item 2' },
     testRounds: 4,
   },
   {
@@ -235,14 +248,14 @@ export const BENCHMARK_CASES: BenchmarkCase[] = [
     title: 'Nine points of a known crank-rocker coupler curve, free timing',
     task: { targets: exactTargets(EXACT_DESIGN, freeThetas), timing: { kind: 'free' } },
     exact: true,
-    published: { f: 0, source: 'by construction', note: 'points sampled from a known coupler curve' },
+    published: { claim: 0, source: 'by construction', note: 'points sampled from a known coupler curve' },
   },
   {
     id: 'exact-step-12',
     title: 'Twelve points of a known crank-rocker coupler curve at 25° steps',
     task: { targets: exactTargets(EXACT_DESIGN, stepThetas), timing: { kind: 'step', step: deg(25) } },
     exact: true,
-    published: { f: 0, source: 'by construction', note: 'points sampled from a known coupler curve' },
+    published: { claim: 0, source: 'by construction', note: 'points sampled from a known coupler curve' },
   },
 ];
 

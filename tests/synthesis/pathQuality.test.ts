@@ -54,7 +54,7 @@ describe('pathSynthesis on the prescribed-timing semicircle (issue 34, 6)', () =
       const f = oracleError(best.design, best.theta2, timed.task.targets);
       // The reported error is the design's own (relative 1e-12: sums of six squares of doubles).
       expect(Math.abs(f - best.error)).toBeLessThan(1e-12 * f);
-      expect(f).toBeLessThanOrEqual(timed.published.f!);
+      expect(f).toBeLessThanOrEqual(timed.published.claim!);
     }
   });
 });

@@ -6,7 +6,14 @@ import { reducer } from '../../shared/state/appState';
 import type { EmbedPresetId } from './embedSnippet';
 import { DEFAULT_EMBED_PRESET, EMBED_PRESETS, embedSnippet } from './embedSnippet';
 import type { EmbedOptions, EmbedPanel, LockableParam } from '../../shared/url/url';
-import { DEFAULT_EMBED, EMBED_PAGES, embedUrl, pageEmbedOptions, serializeState } from '../../shared/url/url';
+import {
+  DEFAULT_EMBED,
+  EMBED_PAGES,
+  embedUrl,
+  isEmbedPage,
+  pageEmbedOptions,
+  serializeState,
+} from '../../shared/url/url';
 import { copyText } from '../../shared/ui/clipboard';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import { ShareText } from './ShareText';
@@ -79,7 +86,9 @@ function SharePanelImpl({ stateRef, pageHref = window.location.href, pageLabel =
     u.hash = '';
     return u.toString();
   };
-  const codeFor = (s: string, id: EmbedPresetId) => embedSnippet({ src: s, title: t.embedTitle, preset: presetOf(id) });
+  // The iframe's title names the page it shows.
+  const embedTitle = t.embedTitles[isEmbedPage(embedPage) ? embedPage : 'simulator'];
+  const codeFor = (s: string, id: EmbedPresetId) => embedSnippet({ src: s, title: embedTitle, preset: presetOf(id) });
   const change = (next: EmbedOptions, page = embedPage) => {
     setEmbed(next);
     setEmbedPage(page);

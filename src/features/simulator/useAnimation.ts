@@ -13,8 +13,9 @@ import type { LiveStage } from '../../shared/linkage/liveStage';
 import { CommitPacer, playCommitGapMs } from './commitPacer';
 
 /**
- * A drag of θ2 with nothing moving it for this long (ms) has ended: its value is committed. A pointer's release
- * ends a drag at once; this covers input that never releases (a script setting the slider's value).
+ * A drag of θ2 with nothing moving it for this long (ms) rests: its value is committed. A drag by no pointer (a script
+ * setting the slider's value) then ends; one whose pointer is still down goes on (on a slow page a student's moves can
+ * be this far apart), and ends at the pointer's release.
  */
 export const SCRUB_REST_MS = 300;
 
@@ -154,6 +155,41 @@ export function useAnimation(
   return useMemo(() => ({ step, scrub }), [step, scrub]);
 }
 
+/** Whether a pointer (mouse button, finger, pen) is down anywhere on the page, and a listener to its release. */
+interface HeldPointer {
+  held(): boolean;
+  /** Adds a listener to a pointer's release; returns its removal. */
+  onRelease(listener: () => void): () => void;
+  dispose(): void;
+}
+
+/** Follows the page's pointers from window (capture phase, so a handler that stops propagation does not hide them). */
+function heldPointer(): HeldPointer {
+  const down = new Set<number>();
+  const listeners = new Set<() => void>();
+  const press = (e: PointerEvent) => down.add(e.pointerId);
+  const release = (e: PointerEvent) => {
+    down.delete(e.pointerId);
+    for (const listener of [...listeners]) listener();
+  };
+  const options = { capture: true, passive: true };
+  window.addEventListener('pointerdown', press, options);
+  window.addEventListener('pointerup', release, options);
+  window.addEventListener('pointercancel', release, options);
+  return {
+    held: () => down.size > 0,
+    onRelease(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    dispose() {
+      window.removeEventListener('pointerdown', press, options);
+      window.removeEventListener('pointerup', release, options);
+      window.removeEventListener('pointercancel', release, options);
+    },
+  };
+}
+
 /**
  * The θ2 drag of useAnimation: moves the playhead, commits through commit (throttled, returns whether it
  * dispatched) and, once the drag rests for SCRUB_REST_MS or end() is called, commits the last value at once.
@@ -177,6 +213,7 @@ function useTheta2Scrub(
   const viaStage = useRef(false);
   useEffect(() => () => clearTimeout(restTimer.current), []);
   const [dragged] = useState(() => new ExternalValue<number | null>(null));
+  const pointer = useRef<HeldPointer | null>(null);
   const handlers = useMemo<Theta2Scrub>(() => {
     const end = () => {
       clearTimeout(restTimer.current);
@@ -198,6 +235,12 @@ function useTheta2Scrub(
       const shown = { ...frame, theta2Deg: normalizeTheta2Deg(frame.theta2Deg) };
       if (playhead.get() === frame && sameFrame(shown, playFrameOf(latest.current.state))) playhead.set(null);
     };
+    /** The drag rested: a held pointer's drag commits its value and goes on; any other ends. */
+    const rest = () => {
+      const frame = playhead.get();
+      if (!pointer.current?.held() || !draggingRef.current || !frame) return end();
+      dispatch({ type: 'setTheta2', deg: frame.theta2Deg });
+    };
     const move = (deg: number, stopPlay = false) => {
       const { state: s, commit: commitNow } = latest.current;
       const next = { ...(playhead.get() ?? playFrameOf(s)), theta2Deg: normalizeTheta2Deg(deg) };
@@ -205,7 +248,7 @@ function useTheta2Scrub(
       playhead.set(next);
       dragged.set(next.theta2Deg);
       clearTimeout(restTimer.current);
-      restTimer.current = setTimeout(end, SCRUB_REST_MS);
+      restTimer.current = setTimeout(rest, SCRUB_REST_MS);
       // While Play runs it goes on from here and commits itself.
       if (s.motion.playing && !stopPlay) return;
       // The drag's frames go to the stage where the page draws slowly, from its first move to its end.
@@ -219,5 +262,18 @@ function useTheta2Scrub(
     };
     return { move, end, dragged: dragged.get, subscribe: dragged.subscribe };
   }, [playhead, dispatch, draggingRef, dragged, stage]);
+  // A release ends a drag that rested while the pointer was down (the slider's change event may not come after it).
+  useEffect(() => {
+    const followed = heldPointer();
+    pointer.current = followed;
+    const off = followed.onRelease(() => {
+      if (draggingRef.current) handlers.end();
+    });
+    return () => {
+      off();
+      followed.dispose();
+      pointer.current = null;
+    };
+  }, [handlers, draggingRef]);
   return handlers;
 }

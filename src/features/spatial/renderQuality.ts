@@ -11,6 +11,8 @@ export interface RenderQuality {
   antialias: boolean;
   /** The largest device pixel ratio the drawing buffer follows. */
   maxPixelRatio: number;
+  /** The largest pixel ratio while the view moves (Play, orbit): fewer pixels to fill; full again at rest. */
+  movingPixelRatio: number;
   /** The translucent sphere's width and height segments. */
   sphereSegments: readonly [width: number, height: number];
   /** The sphere's inside drawn too (a second transparent pass over most of the view). */
@@ -26,6 +28,7 @@ export const FULL_QUALITY: RenderQuality = {
   name: 'full',
   antialias: true,
   maxPixelRatio: 2,
+  movingPixelRatio: 2,
   sphereSegments: [64, 40],
   sphereTwoSided: true,
   sphereShading: 'phong',
@@ -37,6 +40,7 @@ export const LEAN_QUALITY: RenderQuality = {
   name: 'lean',
   antialias: false,
   maxPixelRatio: 1,
+  movingPixelRatio: 0.5,
   sphereSegments: [32, 20],
   sphereTwoSided: false,
   sphereShading: 'lambert',
@@ -74,4 +78,18 @@ export function adaptQuality(current: RenderQuality, latenciesMs: readonly numbe
   const last = latenciesMs.slice(-ADAPT_WINDOW).sort((a, b) => a - b);
   const median = (last[(ADAPT_WINDOW - 1) >> 1] + last[ADAPT_WINDOW >> 1]) / 2;
   return median > SLOW_FRAME_MS ? { ...LEAN_QUALITY, antialias: current.antialias } : current;
+}
+
+/** How long (ms) the view waits after its last frame before it draws once more at full resolution (at rest). */
+export const REST_MS = 180;
+
+/**
+ * The drawing buffer's pixel ratio: the device's (devicePixelRatio), capped by the look's maxPixelRatio, and while the
+ * view moves by its movingPixelRatio too. Throws on a devicePixelRatio that is not a positive finite number.
+ */
+export function pixelRatioFor(q: RenderQuality, devicePixelRatio: number, moving: boolean): number {
+  if (!(Number.isFinite(devicePixelRatio) && devicePixelRatio > 0))
+    throw new Error(`devicePixelRatio must be a positive finite number, got ${devicePixelRatio}`);
+  const ratio = Math.min(q.maxPixelRatio, devicePixelRatio);
+  return moving ? Math.min(ratio, q.movingPixelRatio) : ratio;
 }

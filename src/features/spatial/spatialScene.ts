@@ -39,7 +39,7 @@ import type { Vec3 } from '../../spatial';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import { arcPointsInto, chordPointsInto, sceneBounds } from './sceneData';
 import type { RenderQuality } from './renderQuality';
-import { ADAPT_WINDOW, adaptQuality, qualityForRenderer } from './renderQuality';
+import { ADAPT_WINDOW, REST_MS, adaptQuality, pixelRatioFor, qualityForRenderer } from './renderQuality';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
 export type Projection = 'perspective' | 'orthographic';
@@ -254,8 +254,8 @@ function fixedSegments(
 export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   let quality = qualityForRenderer(probeRenderer());
   const renderer = new WebGLRenderer({ canvas, antialias: quality.antialias, alpha: false });
-  const pixelRatio = () => Math.min(quality.maxPixelRatio, window.devicePixelRatio || 1);
-  renderer.setPixelRatio(pixelRatio());
+  const pixelRatio = (moving: boolean) => pixelRatioFor(quality, window.devicePixelRatio || 1, moving);
+  renderer.setPixelRatio(pixelRatio(false));
   canvas.dataset.quality = quality.name;
   renderer.setClearColor(new Color(COLORS.surface), 1);
   const scene = new Scene();
@@ -275,6 +275,9 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
   let askedAt = 0;
   const latencies: number[] = [];
+  /** When the last frame was drawn (ms; -Infinity: at rest), and the timer that draws the view at rest after it. */
+  let lastFrameAt = Number.NEGATIVE_INFINITY;
+  let restTimer = 0;
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
   let fit = { centre: new Vector3(), radius: 1.3 };
@@ -288,10 +291,28 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       if (next !== quality) lower(next);
     }
     pending = 0;
+    // A frame soon after another is part of a motion (Play, orbit): the lean look draws it with fewer pixels, and
+    // draws once more at full resolution when the motion stops (REST_MS without a frame), for the eye and the PNG.
+    const now = performance.now();
+    const moving = now - lastFrameAt < REST_MS;
+    lastFrameAt = now;
+    const ratio = pixelRatio(moving);
+    if (ratio !== renderer.getPixelRatio()) {
+      renderer.setPixelRatio(ratio);
+      renderer.setSize(size.x, size.y, false);
+    }
     renderer.render(scene, camera);
     frameCount++;
     // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
     canvas.dataset.frames = String(frameCount);
+    clearTimeout(restTimer);
+    restTimer = ratio < pixelRatio(false) ? window.setTimeout(rest, REST_MS) : 0;
+  };
+  /** The view at rest: one frame at full resolution. */
+  const rest = () => {
+    restTimer = 0;
+    lastFrameAt = Number.NEGATIVE_INFINITY;
+    invalidate();
   };
   const invalidate = () => {
     if (pending) return;
@@ -454,7 +475,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   function lower(next: RenderQuality): void {
     quality = next;
     canvas.dataset.quality = next.name;
-    renderer.setPixelRatio(pixelRatio());
+    renderer.setPixelRatio(pixelRatio(false));
     renderer.setSize(size.x, size.y, false);
     if (linkage) buildFixed(linkage);
   }
@@ -584,6 +605,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     quality: () => quality,
     dispose() {
       if (pending) cancelAnimationFrame(pending);
+      clearTimeout(restTimer);
       controls.dispose();
       disposeTree(scene);
       renderer.dispose();

@@ -3,6 +3,7 @@ import type { MotionPlotKind } from '../state/appState';
 import type { OmegaUnit } from '../state/inputMotion';
 import type { FieldError, FieldName } from '../ui/validateNumber';
 import type { PresetId } from '../state/presets';
+import type { EmbedPage } from '../url/embedOptions';
 
 /** Every UI string of one language; functions take already formatted numbers (strings). */
 export interface Messages {
@@ -250,7 +251,8 @@ export interface Messages {
   embedLock: string;
   panelNames: { controls: string; info: string; plots: string; export: string; forces: string };
   openFull: string;
-  embedTitle: string;
+  /** The widget's title (its title bar, the document's title, the snippet's iframe title), naming the page shown. */
+  embedTitles: Record<EmbedPage, string>;
 
   errorTitle: string;
   errorBody: string;

@@ -294,7 +294,11 @@ export const messagesEn: Messages = {
   embedLock: 'Lock in the embed',
   panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export', forces: 'Forces' },
   openFull: 'Open the full simulator',
-  embedTitle: 'Four-bar linkage simulator',
+  embedTitles: {
+    simulator: 'Four-bar linkage simulator',
+    mechanism: 'Planar linkage mechanisms',
+    spatial: 'Spatial four-bar linkages',
+  },
 
   errorTitle: 'Something went wrong',
   errorBody: 'The simulator hit an unexpected error. Your last settings are in the address bar.',

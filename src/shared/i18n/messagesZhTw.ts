@@ -293,7 +293,11 @@ export const messagesZhTw: Messages = {
   embedLock: '嵌入時鎖定',
   panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出', forces: '力分析' },
   openFull: '開啟完整模擬器',
-  embedTitle: '四連桿機構模擬器',
+  embedTitles: {
+    simulator: '四連桿機構模擬器',
+    mechanism: '平面連桿機構',
+    spatial: '空間四連桿機構',
+  },
 
   errorTitle: '發生錯誤',
   errorBody: '模擬器遇到非預期的錯誤。最後的設定保留在網址列中。',

@@ -6,6 +6,7 @@ import {
   SLOW_FRAME_MS,
   adaptQuality,
   isSoftwareRenderer,
+  pixelRatioFor,
   qualityForRenderer,
 } from '../../../src/features/spatial/renderQuality';
 
@@ -41,6 +42,7 @@ describe('qualityForRenderer', () => {
       name: 'lean',
       antialias: false,
       maxPixelRatio: 1,
+      movingPixelRatio: 0.5,
       sphereSegments: [32, 20],
       sphereTwoSided: false,
       sphereShading: 'lambert',
@@ -52,6 +54,7 @@ describe('qualityForRenderer', () => {
     expect(FULL_QUALITY).toMatchObject({
       antialias: true,
       maxPixelRatio: 2,
+      movingPixelRatio: 2,
       sphereSegments: [64, 40],
       sphereTwoSided: true,
       sphereShading: 'phong',
@@ -93,5 +96,27 @@ describe('adaptQuality', () => {
   it('throws on a latency that is not a finite number >= 0, naming the value', () => {
     expect(() => adaptQuality(FULL_QUALITY, [...frames(16), Number.NaN])).toThrow(/latenciesMs.*NaN/);
     expect(() => adaptQuality(FULL_QUALITY, [-1])).toThrow(/latenciesMs.*-1/);
+  });
+});
+
+describe('pixelRatioFor', () => {
+  it('draws the lean look at half its resolution while the view moves, and at full resolution at rest', () => {
+    expect(pixelRatioFor(LEAN_QUALITY, 1, true)).toBe(0.5);
+    expect(pixelRatioFor(LEAN_QUALITY, 1, false)).toBe(1);
+    // A phone's dpr 3 under a software WebGL: the lean look's cap of 1 first.
+    expect(pixelRatioFor(LEAN_QUALITY, 3, true)).toBe(0.5);
+    expect(pixelRatioFor(LEAN_QUALITY, 3, false)).toBe(1);
+  });
+
+  it('never changes the full look’s resolution (a real GPU draws as before, moving or not)', () => {
+    for (const dpr of [1, 1.5, 2, 3])
+      for (const moving of [true, false]) expect(pixelRatioFor(FULL_QUALITY, dpr, moving)).toBe(Math.min(2, dpr));
+  });
+
+  it('throws on a device pixel ratio that is not a positive finite number, naming it', () => {
+    expect(() => pixelRatioFor(LEAN_QUALITY, 0, true)).toThrow(
+      'devicePixelRatio must be a positive finite number, got 0',
+    );
+    expect(() => pixelRatioFor(LEAN_QUALITY, Number.NaN, false)).toThrow('devicePixelRatio');
   });
 });
