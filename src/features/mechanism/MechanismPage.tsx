@@ -515,7 +515,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
             if (locked) return;
             try {
               drag.move((s) => moveJoint(s, id, p.x, p.y));
-              setEditError(null);
+              if (editError !== null) setEditError(null);
             } catch (e) {
               setEditError(m.editRefused((e as Error).message));
             }

@@ -4,7 +4,28 @@ import type { LiveSource } from './livePlayhead';
 import { createLiveSource } from './livePlayhead';
 
 /** How long the pointer rests (ms) before a drag's linkage is analysed (its cycle, traces and plots) while held. */
-export const DRAG_REST_MS = 150;
+export const DRAG_REST_MS = 250;
+
+/** How many of the latest gaps between moves restDelayMs looks at. */
+const GAPS_KEPT = 5;
+
+/**
+ * How long (ms) the pointer must rest before the drag's linkage is swept: restMs, or twice the median of the latest
+ * gaps between moves (ms) when that is longer, so a drag on a slow or busy machine (moves far apart) is not swept
+ * between every two moves. Throws for a restMs that is not a positive finite number.
+ */
+export function restDelayMs(gapsMs: readonly number[], restMs: number): number {
+  if (!(restMs > 0 && Number.isFinite(restMs)))
+    throw new Error(`restMs must be a positive finite number, got ${restMs}`);
+  const latest = gapsMs
+    .slice(-GAPS_KEPT)
+    .filter((g) => Number.isFinite(g) && g >= 0)
+    .sort((a, b) => a - b);
+  if (latest.length === 0) return restMs;
+  const mid = latest.length >> 1;
+  const median = latest.length % 2 ? latest[mid] : (latest[mid - 1] + latest[mid]) / 2;
+  return Math.max(restMs, 2 * median);
+}
 
 /** A drag in progress: the spec at the grab, the spec drawn now, and the spec last analysed (swept). */
 export interface JointDrag {
@@ -56,11 +77,16 @@ export function useJointDrag(stored: MechanismSpec, commit: (spec: MechanismSpec
   // What the page renders from: the spec last analysed (null: no drag). It changes at a grab, a rest and a release.
   const [analysed, setAnalysed] = useState<MechanismSpec | null>(null);
   const rest = useRef<ReturnType<typeof setTimeout> | null>(null);
+  // The latest gaps between moves (ms) and the last move's time: the rest's delay follows the moves' pace.
+  const pace = useRef<{ last: number | null; gaps: number[] }>({ last: null, gaps: [] });
   const on = (event: JointDragEvent) => {
-    const next = nextJointDrag(drag.get(), event);
+    const before = drag.get();
+    const next = nextJointDrag(before, event);
     drag.set(next.drag);
     shown.set(next.drag?.now ?? null);
-    setAnalysed(next.drag?.analysed ?? null);
+    // Only a new analysed spec re-renders the page: even a set of the same state can render it once more.
+    if (next.drag?.analysed !== before?.analysed || (next.drag === null) !== (before === null))
+      setAnalysed(next.drag?.analysed ?? null);
     if (next.commit) commit(next.commit);
   };
   const clearRest = () => {
@@ -73,14 +99,21 @@ export function useJointDrag(stored: MechanismSpec, commit: (spec: MechanismSpec
     dragging: analysed !== null,
     shown: shown as DraggedSource,
     /** Takes the stored linkage into a drag. */
-    start: () => on({ type: 'grab', stored }),
+    start: () => {
+      pace.current = { last: null, gaps: [] };
+      on({ type: 'grab', stored });
+    },
     /** Draws the linkage `change` makes of the one drawn now (change may throw: the caller says why). */
     move: (change: (s: MechanismSpec) => MechanismSpec) => {
       const d = drag.get();
       if (!d) return;
       on({ type: 'move', spec: change(d.now) });
+      const now = performance.now();
+      const p = pace.current;
+      if (p.last !== null) p.gaps = [...p.gaps.slice(1 - GAPS_KEPT), now - p.last];
+      p.last = now;
       clearRest();
-      rest.current = setTimeout(() => on({ type: 'rest' }), restMs);
+      rest.current = setTimeout(() => on({ type: 'rest' }), restDelayMs(p.gaps, restMs));
     },
     /** Lets go: commits the moved linkage (when it moved) and ends the drag. */
     end: () => {

@@ -1,7 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import { createPlayheadSource, throttledSubscribe } from '../../../src/features/mechanism/livePlayhead';
-import { nextJointDrag } from '../../../src/features/mechanism/useJointDrag';
+import { DRAG_REST_MS, nextJointDrag, restDelayMs } from '../../../src/features/mechanism/useJointDrag';
 import type { JointDrag } from '../../../src/features/mechanism/useJointDrag';
 import { playFrame } from '../../../src/features/mechanism/useMechDrive';
 import { moveJoint } from '../../../src/features/mechanism/specEdits';
@@ -137,5 +137,23 @@ describe('nextJointDrag', () => {
     const drag = nextJointDrag(null, { type: 'grab', stored }).drag;
     expect(nextJointDrag(drag, { type: 'rest' }).drag).toBe(drag);
     expect(nextJointDrag(drag, { type: 'move', spec: stored }).drag).toBe(drag);
+  });
+});
+
+describe('restDelayMs', () => {
+  it('is the rest time while moves come often, and twice the median gap when they come slower', () => {
+    expect(restDelayMs([], DRAG_REST_MS)).toBe(DRAG_REST_MS);
+    expect(restDelayMs([16, 17, 16, 18, 16], 250)).toBe(250);
+    // A busy machine: a move every 300 ms or so (one 20 ms and one 2 s gap among them do not move the median).
+    expect(restDelayMs([300, 20, 310, 2000, 290], 250)).toBe(600);
+    // Only the latest five gaps count: the slow start is forgotten.
+    expect(restDelayMs([900, 900, 900, 900, 900, 900, 16, 16, 16, 16, 16], 250)).toBe(250);
+    // An even count: the mean of the two middle gaps.
+    expect(restDelayMs([200, 400], 100)).toBe(600);
+  });
+
+  it('refuses a rest time that is not a positive finite number, naming it', () => {
+    expect(() => restDelayMs([], 0)).toThrow(/restMs.*got 0/);
+    expect(() => restDelayMs([], Infinity)).toThrow(/restMs.*got Infinity/);
   });
 });
