@@ -163,8 +163,10 @@ export async function measureMechDrag(browser: Browser, base: string, rate: numb
     await page.mouse.up();
     const log = await page.evaluate(() => (window as unknown as { __mech: MechLog }).__mech);
     const moves = log.moves.slice(1);
+    // A build before data-pose (the drag swept the linkage at every move) shows a move by its traces.
+    const drawn = log.commits.some((k) => k.attr === 'data-pose') ? 'data-pose' : 'data-trace';
     const latencies = moves.map((m) => {
-      const c = log.commits.find((k) => k.t >= m.handled && k.attr === 'data-pose');
+      const c = log.commits.find((k) => k.t >= m.handled && k.attr === drawn);
       const end = c && log.frameEnds.find((f) => f > c.t);
       return end === undefined ? null : end - m.stamp;
     });

@@ -78,7 +78,8 @@ const TARGETS = {
 };
 /** Cold loads on the phone profile (bench/phoneLoad.ts); the target is their median. */
 const PHONE_RUNS = 3;
-const GZIP_PORT = PORT + 1;
+/** The gzip server's port (the phone's cold loads): BENCH_GZIP_PORT, default BENCH_PORT + 1 (0: any free port). */
+const GZIP_PORT = Number(process.env.BENCH_GZIP_PORT ?? PORT + 1);
 
 function quantile(sorted: readonly number[], q: number): number {
   if (sorted.length === 0) return Number.NaN;
