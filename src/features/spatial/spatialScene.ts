@@ -302,15 +302,21 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
   let askedAt = 0;
   const latencies: number[] = [];
-  /** When the last frame was drawn (ms; -Infinity: at rest), and the timer that draws the view at rest after it. */
+  /** When the last frame was drawn (ms), the timer that draws the view at rest after it, and that rest frame asked. */
   let lastFrameAt = Number.NEGATIVE_INFINITY;
   let restTimer = 0;
+  let restFrame = false;
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
   let fit = { centre: new Vector3(), radius: 1.3 };
   let viewDir = new Vector3(0.4, -0.8, 0.5).normalize();
 
   const render = () => {
+    // A frame asked for soon after the last one was drawn is part of a motion (Play, orbit), however long frames take:
+    // the lean look draws it with fewer pixels, and once more at full resolution when no change follows within REST_MS
+    // of a frame (rest), for the eye and the PNG. A frame drawn directly (resize, PNG) is at rest.
+    const moving = pending !== 0 && !restFrame && askedAt - lastFrameAt < REST_MS;
+    restFrame = false;
     if (pending) {
       latencies.push(performance.now() - askedAt);
       if (latencies.length > ADAPT_WINDOW) latencies.shift();
@@ -318,11 +324,6 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       if (next !== quality) lower(next);
     }
     pending = 0;
-    // A frame soon after another is part of a motion (Play, orbit): the lean look draws it with fewer pixels, and
-    // draws once more at full resolution when the motion stops (REST_MS without a frame), for the eye and the PNG.
-    const now = performance.now();
-    const moving = now - lastFrameAt < REST_MS;
-    lastFrameAt = now;
     const ratio = pixelRatio(moving);
     if (ratio !== renderer.getPixelRatio()) {
       renderer.setPixelRatio(ratio);
@@ -336,13 +337,15 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     frameCount++;
     // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
     canvas.dataset.frames = String(frameCount);
+    lastFrameAt = performance.now();
     clearTimeout(restTimer);
     restTimer = ratio < pixelRatio(false) ? window.setTimeout(rest, REST_MS) : 0;
   };
-  /** The view at rest: one frame at full resolution. */
+  /** The view at rest (no change asked for since the last frame): one frame at full resolution. */
   const rest = () => {
     restTimer = 0;
-    lastFrameAt = Number.NEGATIVE_INFINITY;
+    if (pending) return;
+    restFrame = true;
     invalidate();
   };
   /** The view as the ribbons need it (scene units per CSS pixel, as Line2's resolution is the CSS size). */
