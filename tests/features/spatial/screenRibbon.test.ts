@@ -2,6 +2,7 @@ import Decimal from 'decimal.js';
 import { describe, expect, it } from 'vitest';
 import { ribbonIndex, ribbonInto } from '../../../src/features/spatial/screenRibbon';
 import type { RibbonView } from '../../../src/features/spatial/screenRibbon';
+import { seeded } from '../../spatial/random';
 
 Decimal.set({ precision: 40 });
 const FOV_DEG = 32;
@@ -16,18 +17,6 @@ const projectPx = (x: number, y: number, z: number): [number, number] => {
 };
 
 const VIEW: RibbonView = { eye: [0, 0, 0], forward: [0, 0, -1], perspective: true, unitsPerPx: UNITS_PER_PX };
-
-/** A seeded generator (mulberry32) for the random polylines. */
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 describe('ribbonInto', () => {
   it('spans widthPx on screen across a line face-on at the centre of a perspective view, at any depth', () => {
@@ -56,7 +45,7 @@ describe('ribbonInto', () => {
   });
 
   it('offsets each point across the line and across the view (seeded random arcs)', () => {
-    const random = rng(32);
+    const random = seeded(32);
     for (let trial = 0; trial < 50; trial++) {
       const n = 12;
       const points = new Float32Array(3 * n);
