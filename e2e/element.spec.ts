@@ -170,7 +170,7 @@ test.describe('the <fourbar-lab> custom element with a bad attribute', () => {
     const el = page.locator('#bad');
     await expect(el.locator('[data-ready="true"]')).toHaveCount(1, { timeout: 20_000 });
     await expect(el.getByTestId('url-notice')).toHaveText(
-      /^This element has an attribute value the simulator cannot use, so the default is shown instead: r3 = “abc”\./,
+      /^This element has an attribute value the lab cannot use, so the default is shown instead: r3 = “abc”\./,
     );
     await expect(el.getByTestId('url-notice')).not.toContainText('link');
   });

@@ -69,6 +69,40 @@ test.describe('share links', () => {
     await expect(page.getByTestId('url-notice')).toHaveCount(0);
   });
 
+  for (const [width, height] of [
+    [1280, 800],
+    [390, 844],
+  ] as const) {
+    test(`at ${width}x${height} the notice is a card over the page that leaves Play and the canvas's joints free`, async ({
+      page,
+    }) => {
+      await page.setViewportSize({ width, height });
+      await page.goto('./?r3=abc');
+      await waitReady(page);
+      const notice = await page.getByTestId('url-notice').boundingBox();
+      const play = await page.getByRole('button', { name: 'Play' }).boundingBox();
+      expect(notice).not.toBeNull();
+      expect(play).not.toBeNull();
+      if (!notice || !play) return;
+      // Inside the screen, not a line of bare text in the page's flow.
+      expect(notice.x).toBeGreaterThanOrEqual(0);
+      expect(notice.x + notice.width).toBeLessThanOrEqual(width);
+      expect(notice.y + notice.height).toBeLessThanOrEqual(height);
+      expect(await page.getByTestId('url-notice').evaluate((e) => getComputedStyle(e).position)).toBe('fixed');
+      const apart = (a: typeof notice, b: typeof notice) =>
+        a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y || b.y + b.height <= a.y;
+      expect(apart(notice, play)).toBe(true);
+      // The crank pin A, where a student grabs the linkage.
+      const [ax, ay] = ((await page.locator('canvas.linkage-canvas').getAttribute('data-a')) ?? '')
+        .split(',')
+        .map(Number);
+      const canvasBox = await page.locator('canvas.linkage-canvas').boundingBox();
+      expect(canvasBox).not.toBeNull();
+      if (!canvasBox) return;
+      expect(apart(notice, { x: canvasBox.x + ax - 8, y: canvasBox.y + ay - 8, width: 16, height: 16 })).toBe(true);
+    });
+  }
+
   test('shows no notice for a clean link', async ({ page }) => {
     await page.goto('./?r3=4.5');
     await waitReady(page);

@@ -1,3 +1,4 @@
+import './UrlNotice.css';
 import { useState } from 'react';
 import type { IgnoredParam } from '../shared/url/url';
 import type { IgnoredSource } from '../shared/url/ignoredNotice';

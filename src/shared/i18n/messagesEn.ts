@@ -293,7 +293,7 @@ export const messagesEn: Messages = {
   embedPanels: 'Show in the embed',
   embedLock: 'Lock in the embed',
   panelNames: { controls: 'Controls', info: 'Analysis', plots: 'Plots', export: 'Export', forces: 'Forces' },
-  openFull: 'Open the full simulator',
+  openFull: 'Open in the full app',
   embedTitles: {
     simulator: 'Four-bar linkage simulator',
     mechanism: 'Planar linkage mechanisms',
@@ -301,12 +301,12 @@ export const messagesEn: Messages = {
   },
 
   errorTitle: 'Something went wrong',
-  errorBody: 'The simulator hit an unexpected error. Your last settings are in the address bar.',
+  errorBody: 'The lab hit an unexpected error. Your last settings are in the address bar.',
   errorReset: 'Reset to the default linkage',
   urlIgnored: (list, count) =>
     count === 1
-      ? `This link has a value the simulator cannot use, so the default is shown instead: ${list}.`
-      : `This link has ${count} values the simulator cannot use, so the defaults are shown instead: ${list}.`,
+      ? `This link has a value the lab cannot use, so the default is shown instead: ${list}.`
+      : `This link has ${count} values the lab cannot use, so the defaults are shown instead: ${list}.`,
   exportPictureSvg: 'Export picture SVG',
   exportPicturePng: 'Export picture PNG',
   offlineShare:
@@ -314,8 +314,8 @@ export const messagesEn: Messages = {
   copyLocalLink: 'Copy link (this computer only)',
   attributesIgnored: (list, count) =>
     count === 1
-      ? `This element has an attribute value the simulator cannot use, so the default is shown instead: ${list}.`
-      : `This element has ${count} attribute values the simulator cannot use, so the defaults are shown instead: ${list}.`,
+      ? `This element has an attribute value the lab cannot use, so the default is shown instead: ${list}.`
+      : `This element has ${count} attribute values the lab cannot use, so the defaults are shown instead: ${list}.`,
   urlIgnoredParam: (key, value) => `${key} = “${value}”`,
   urlIgnoredSeparator: ', ',
   urlIgnoredMore: (count) => `and ${count} more`,

@@ -292,7 +292,7 @@ export const messagesZhTw: Messages = {
   embedPanels: '嵌入時顯示',
   embedLock: '嵌入時鎖定',
   panelNames: { controls: '控制項', info: '分析', plots: '圖表', export: '匯出', forces: '力分析' },
-  openFull: '開啟完整模擬器',
+  openFull: '在完整版中開啟',
   embedTitles: {
     simulator: '四連桿機構模擬器',
     mechanism: '平面連桿機構',
@@ -300,12 +300,12 @@ export const messagesZhTw: Messages = {
   },
 
   errorTitle: '發生錯誤',
-  errorBody: '模擬器遇到非預期的錯誤。最後的設定保留在網址列中。',
+  errorBody: '本工具遇到非預期的錯誤。最後的設定保留在網址列中。',
   errorReset: '重設為預設機構',
   urlIgnored: (list, count) =>
     count === 1
-      ? `此連結有一個模擬器無法使用的值，已改用預設值：${list}。`
-      : `此連結有 ${count} 個模擬器無法使用的值，已改用預設值：${list}。`,
+      ? `此連結有一個本工具無法使用的值，已改用預設值：${list}。`
+      : `此連結有 ${count} 個本工具無法使用的值，已改用預設值：${list}。`,
   exportPictureSvg: '匯出圖 SVG',
   exportPicturePng: '匯出圖 PNG',
   offlineShare:
@@ -313,8 +313,8 @@ export const messagesZhTw: Messages = {
   copyLocalLink: '複製連結（僅限這台電腦）',
   attributesIgnored: (list, count) =>
     count === 1
-      ? `此元素有一個模擬器無法使用的屬性值，已改用預設值：${list}。`
-      : `此元素有 ${count} 個模擬器無法使用的屬性值，已改用預設值：${list}。`,
+      ? `此元素有一個本工具無法使用的屬性值，已改用預設值：${list}。`
+      : `此元素有 ${count} 個本工具無法使用的屬性值，已改用預設值：${list}。`,
   urlIgnoredParam: (key, value) => `${key} =「${value}」`,
   urlIgnoredSeparator: '、',
   urlIgnoredMore: (count) => `另有 ${count} 個`,

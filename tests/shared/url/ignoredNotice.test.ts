@@ -11,20 +11,20 @@ describe('ignoredNoticeText', () => {
   it('names the ignored key and its value in English and zh-TW', () => {
     const { ignored } = parseUrl('r3=abc&r1=5', DEFAULT_STATE, quiet);
     expect(ignoredNoticeText(ignored, messagesEn)).toBe(
-      'This link has a value the simulator cannot use, so the default is shown instead: r3 = “abc”.',
+      'This link has a value the lab cannot use, so the default is shown instead: r3 = “abc”.',
     );
     expect(ignoredNoticeText(ignored, messagesZhTw)).toBe(
-      '此連結有一個模擬器無法使用的值，已改用預設值：r3 =「abc」。',
+      '此連結有一個本工具無法使用的值，已改用預設值：r3 =「abc」。',
     );
   });
 
   it("says 'element' and 'attribute' for a <fourbar-lab>'s attributes, not 'link'", () => {
     const { ignored } = parseUrl('r3=abc&r1=5', DEFAULT_STATE, quiet);
     expect(ignoredNoticeText(ignored, messagesEn, 'attributes')).toBe(
-      'This element has an attribute value the simulator cannot use, so the default is shown instead: r3 = “abc”.',
+      'This element has an attribute value the lab cannot use, so the default is shown instead: r3 = “abc”.',
     );
     expect(ignoredNoticeText(ignored, messagesZhTw, 'attributes')).toBe(
-      '此元素有一個模擬器無法使用的屬性值，已改用預設值：r3 =「abc」。',
+      '此元素有一個本工具無法使用的屬性值，已改用預設值：r3 =「abc」。',
     );
   });
 
