@@ -173,6 +173,14 @@ test.describe('the <fourbar-lab> custom element with a bad attribute', () => {
       /^This element has an attribute value the lab cannot use, so the default is shown instead: r3 = “abc”\./,
     );
     await expect(el.getByTestId('url-notice')).not.toContainText('link');
+    // The notice sits in the element's own box, not over a corner of the course page.
+    const [box, notice] = await Promise.all([el.boundingBox(), el.getByTestId('url-notice').boundingBox()]);
+    expect(box && notice).toBeTruthy();
+    if (!box || !notice) return;
+    expect(notice.x).toBeGreaterThanOrEqual(box.x);
+    expect(notice.y).toBeGreaterThanOrEqual(box.y);
+    expect(notice.x + notice.width).toBeLessThanOrEqual(box.x + box.width + 0.5);
+    expect(notice.y + notice.height).toBeLessThanOrEqual(box.y + box.height + 0.5);
   });
 });
 

@@ -30,8 +30,9 @@ function hostCss(): string {
   const tokens = Object.entries(cssVariables())
     .map(([name, value]) => `${name}:${value};`)
     .join('');
-  // A definite height makes the host the container the rewritten embed layout measures (cqh, @container).
-  return `:host{${tokens}display:block;position:relative;height:520px;max-width:100%;container-type:size;overflow:auto;background:var(--card)}:host([hidden]){display:none}`;
+  // A definite height makes the host the container the rewritten embed layout measures (cqh, @container). The link's
+  // notice, fixed over a page's corner elsewhere, sits in the element's own corner (not the course page's).
+  return `:host{${tokens}display:block;position:relative;height:520px;max-width:100%;container-type:size;overflow:auto;background:var(--card)}:host([hidden]){display:none}.url-notice{position:absolute}`;
 }
 
 /**
