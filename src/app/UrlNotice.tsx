@@ -4,6 +4,7 @@ import type { IgnoredParam } from '../shared/url/url';
 import type { IgnoredSource } from '../shared/url/ignoredNotice';
 import { ignoredNoticeText } from '../shared/url/ignoredNotice';
 import { useMessages } from '../shared/i18n/MessagesContext';
+import { NoticeCard } from '../shared/ui/NoticeCard';
 
 /** Props of UrlNotice: the parameters the URL parser ignored (ParsedUrl.ignored). */
 export interface UrlNoticeProps {
@@ -21,17 +22,12 @@ export function UrlNotice({ ignored, source = 'link' }: UrlNoticeProps) {
   const [dismissed, setDismissed] = useState(false);
   if (dismissed || ignored.length === 0) return null;
   return (
-    <div className="url-notice" role="status" data-testid="url-notice">
-      <p className="url-notice-text">{ignoredNoticeText(ignored, t, source)}</p>
-      <button
-        type="button"
-        className="icon-btn url-notice-dismiss"
-        aria-label={t.urlNoticeDismiss}
-        title={t.urlNoticeDismiss}
-        onClick={() => setDismissed(true)}
-      >
-        <span aria-hidden="true">×</span>
-      </button>
+    <div role="status" data-testid="url-notice" className="url-notice">
+      <NoticeCard
+        text={ignoredNoticeText(ignored, t, source)}
+        close={t.urlNoticeDismiss}
+        onClose={() => setDismissed(true)}
+      />
     </div>
   );
 }

@@ -4,6 +4,7 @@ import type { RestoreOffer } from './autosave';
 import type { DesignsMessages } from './designsMessages';
 import { shownTime } from './designsMessages';
 import type { DesignNotice } from './useDesignFiles';
+import { NoticeCard } from '../../shared/ui/NoticeCard';
 
 /** Props of DesignNotices: the bar's notice, the restore offer, their handlers and strings. */
 export interface DesignNoticesProps {
@@ -25,7 +26,7 @@ export function DesignNotices({ notice, onClose, offer, onRestore, onDismissOffe
   return (
     <div className="design-notices">
       {offer ? (
-        <section className="design-notice design-offer" aria-label={t.restore} data-testid="restore-offer">
+        <section className="notice-card design-offer" aria-label={t.restore} data-testid="restore-offer">
           <p>
             {t.restoreText(
               offer.name || fileStem(offer.state.design.linkage, offer.state.design.branch),
@@ -43,22 +44,11 @@ export function DesignNotices({ notice, onClose, offer, onRestore, onDismissOffe
         </section>
       ) : null}
       <div role="status" className="design-live">
-        {notice?.kind === 'status' ? <NoticeBox text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
+        {notice?.kind === 'status' ? <NoticeCard text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
       </div>
       <div role="alert" className="design-live" data-testid="design-alert">
-        {notice?.kind === 'alert' ? <NoticeBox text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
+        {notice?.kind === 'alert' ? <NoticeCard text={notice.text} onClose={onClose} close={t.closeNotice} /> : null}
       </div>
-    </div>
-  );
-}
-
-function NoticeBox({ text, onClose, close }: { text: string; onClose: () => void; close: string }) {
-  return (
-    <div className="design-notice">
-      <p>{text}</p>
-      <button type="button" className="design-notice-close" aria-label={close} title={close} onClick={onClose}>
-        <span aria-hidden="true">×</span>
-      </button>
     </div>
   );
 }
