@@ -4,7 +4,7 @@
  * loaded machine in a way frames per second are not. Builds given as SPATIAL_PROBE="name=distDir,name=distDir" are
  * served side by side and measured alternately, ROUNDS times (default 2), each during SECONDS of Play and of orbit
  * (an ArrowRight on the view every animation frame) at RATE x CPU (default 4; CDP throttling slows the page's main
- * thread only). SPATIAL_PROBE_QUERY adds to page=3d (say sk=rssr). Linux only. Prints a table; reports, never fails.
+ * thread only). SPATIAL_PROBE_QUERY adds to page=3d (say sk=rssr); SPATIAL_PROBE_PAGE=embed.html opens the widget. Linux only. Prints a table; reports, never fails.
  * Run: SPATIAL_PROBE="before=/tmp/a,after=dist" npx vite-node bench/spatialProbe.ts
  */
 import { readFileSync, readdirSync } from 'node:fs';
@@ -18,6 +18,8 @@ const ROUNDS = Number(process.env.ROUNDS ?? 2);
 const SECONDS = Number(process.env.SECONDS ?? 4);
 const RATE = Number(process.env.RATE ?? 4);
 const QUERY = process.env.SPATIAL_PROBE_QUERY ?? '';
+/** The page to open: '' (the app) or 'embed.html' (the widget, whose panels= can hide the numbers and plots). */
+const PAGE = process.env.SPATIAL_PROBE_PAGE ?? '';
 const PORT0 = Number(process.env.BENCH_PORT ?? 4366);
 const CLK_TCK = 100;
 
@@ -75,7 +77,7 @@ async function measure(browser: Browser, base: string): Promise<{ play: Figures;
     const page = await context.newPage();
     const cdp = await context.newCDPSession(page);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: RATE });
-    await page.goto(`${base}?page=3d${QUERY ? `&${QUERY}` : ''}`);
+    await page.goto(`${base}${PAGE}?page=3d${QUERY ? `&${QUERY}` : ''}`);
     await page.locator('.spatial-view[data-state="ready"]').waitFor({ timeout: 60_000 });
     await page.waitForTimeout(500);
     const canvas = page.getByTestId('spatial-canvas');

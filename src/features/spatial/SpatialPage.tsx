@@ -78,7 +78,7 @@ export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
   // frame); the state gets θ2 and the branch when Play stops or turns back at a limit.
   useAnimationFrame(playing && model !== null && input !== null, (dt) => {
     if (!model || !input) return;
-    const from = playhead.get() ?? base;
+    const from = playhead.current() ?? base;
     const next = normalizeTheta2Deg(from.theta2Deg + direction.current * PLAY_DEG_PER_S * dt);
     const nextPose = poseAt(model, next, from.branch, input);
     if (nextPose === null) {
@@ -88,13 +88,14 @@ export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
       dispatch({ type: 'setSpatial', patch: { theta2Deg: from.theta2Deg, branch } });
       return;
     }
-    playhead.set({ theta2Deg: next, branch: from.branch, pose: nextPose, muRad: muAt(model, next, from.branch) });
+    const frame = { theta2Deg: next, branch: from.branch, pose: nextPose, muRad: muAt(model, next, from.branch) };
+    playhead.advance(frame, performance.now());
     if (linkage) sceneRef.current?.setPose(scenePose(linkage, nextPose));
   });
 
   /** Play on or off; off commits the frame on screen to the state (the link, the fields). */
   const onPlay = (on: boolean) => {
-    const f = playhead.get();
+    const f = playhead.current();
     if (!on && f) {
       dispatch({ type: 'setSpatial', patch: { theta2Deg: f.theta2Deg, branch: f.branch } });
       playhead.set(null);
@@ -103,7 +104,7 @@ export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
   };
   const shows = (part: 'controlsShown' | 'numbersShown' | 'plotsShown') => !embed || embed[part];
   const onStep = (d: number) => {
-    const f = playhead.get() ?? base;
+    const f = playhead.current() ?? base;
     setPlaying(false);
     dispatch({ type: 'setSpatial', patch: { theta2Deg: normalizeTheta2Deg(f.theta2Deg + d), branch: f.branch } });
   };

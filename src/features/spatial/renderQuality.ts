@@ -21,6 +21,11 @@ export interface RenderQuality {
   sphereShading: 'phong' | 'lambert';
   /** The fixed lines (great circles, axes, the coupler curve, the pins' paths) as pixel-wide lines; else 1 px lines. */
   fatFixedLines: boolean;
+  /**
+   * The links and the ground link as three's Line2 (widened in its vertex shader, per segment); else as ribbons built
+   * on the page (screenRibbon.ts), plain triangles that a software WebGL draws for far less. Read when the view is made.
+   */
+  fatMovingLines: boolean;
 }
 
 /** The full look, for a hardware GPU. */
@@ -33,6 +38,7 @@ export const FULL_QUALITY: RenderQuality = {
   sphereTwoSided: true,
   sphereShading: 'phong',
   fatFixedLines: true,
+  fatMovingLines: true,
 };
 
 /** The lean look, for a software WebGL or a view whose frames take too long. */
@@ -45,6 +51,7 @@ export const LEAN_QUALITY: RenderQuality = {
   sphereTwoSided: false,
   sphereShading: 'lambert',
   fatFixedLines: false,
+  fatMovingLines: false,
 };
 
 const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|softpipe|lavapipe|software|basic render driver|mesa offscreen/i;

@@ -39,6 +39,8 @@ import type { Vec3 } from '../../spatial';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import { arcPointsInto, chordPointsInto, sceneBounds } from './sceneData';
 import type { RenderQuality } from './renderQuality';
+import type { RibbonView } from './screenRibbon';
+import { ribbonIndex, ribbonInto, ribbonVertexCount } from './screenRibbon';
 import { ADAPT_WINDOW, REST_MS, adaptQuality, pixelRatioFor, qualityForRenderer } from './renderQuality';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
@@ -87,32 +89,57 @@ function fatLine(color: string, widthPx: number, opacity = 1): Line2 {
 }
 
 /**
- * A moving link: a fat line of `points` points whose segment buffer is made once and rewritten in place each pose
- * (LineGeometry.setPositions would allocate new buffers every frame), and its points' scratch buffer.
+ * A link drawn as a line some pixels wide through `points` (x y z flat, rewritten in place each pose): a fat Line2 whose
+ * segment buffer is made once (LineGeometry.setPositions would allocate new buffers every frame), or in the lean look a
+ * screen-facing ribbon (screenRibbon.ts) rebuilt before each frame from the points and the view.
  */
 interface MovingLine {
-  line: Line2;
+  object: Line2 | Mesh;
   points: Float32Array;
-  /** Copies points into the line's segments and marks them for upload. */
+  /** Copies points into the line's buffer and marks it for upload (the ribbon: at its next update). */
   commit(): void;
+  /** Rebuilds a ribbon for the view; nothing for a Line2, whose shader does it. */
+  update(view: RibbonView): void;
 }
 
-function movingLine(color: string, widthPx: number, count: number): MovingLine {
-  const line = fatLine(color, widthPx);
+function movingLine(q: RenderQuality, color: string, widthPx: number, count: number, opacity = 1): MovingLine {
   const points = new Float32Array(3 * count);
+  if (!q.fatMovingLines) return ribbon(color, widthPx, points, count, opacity);
+  const line = fatLine(color, widthPx, opacity);
   line.geometry.setPositions(points);
   // The pose moves the line anywhere on the unit sphere (or the RSSR's box): no culling on a stale bound.
   line.frustumCulled = false;
   const start = line.geometry.getAttribute('instanceStart') as InterleavedBufferAttribute;
   const segments = start.data.array as Float32Array;
   return {
-    line,
+    object: line,
     points,
     commit() {
       for (let i = 0; i + 1 < count; i++) {
         for (let k = 0; k < 6; k++) segments[6 * i + k] = points[3 * i + k];
       }
       start.data.needsUpdate = true;
+    },
+    update() {},
+  };
+}
+
+/** The lean look's line: an unlit triangle strip widthPx wide on screen over count points. */
+function ribbon(color: string, widthPx: number, points: Float32Array, count: number, opacity: number): MovingLine {
+  const g = new BufferGeometry();
+  const position = new Float32BufferAttribute(new Float32Array(3 * ribbonVertexCount(count)), 3);
+  g.setAttribute('position', position);
+  g.setIndex(ribbonIndex(count));
+  const mesh = new Mesh(g, new MeshBasicMaterial({ color, side: DoubleSide, transparent: opacity < 1, opacity }));
+  mesh.frustumCulled = false;
+  return {
+    object: mesh,
+    points,
+    commit() {},
+    update(view) {
+      if (!mesh.visible) return;
+      ribbonInto(position.array as Float32Array, points, count, view, widthPx);
+      position.needsUpdate = true;
     },
   };
 }
@@ -275,15 +302,21 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
   let askedAt = 0;
   const latencies: number[] = [];
-  /** When the last frame was drawn (ms; -Infinity: at rest), and the timer that draws the view at rest after it. */
+  /** When the last frame was drawn (ms), the timer that draws the view at rest after it, and that rest frame asked. */
   let lastFrameAt = Number.NEGATIVE_INFINITY;
   let restTimer = 0;
+  let restFrame = false;
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
   let fit = { centre: new Vector3(), radius: 1.3 };
   let viewDir = new Vector3(0.4, -0.8, 0.5).normalize();
 
   const render = () => {
+    // A frame asked for soon after the last one was drawn is part of a motion (Play, orbit), however long frames take:
+    // the lean look draws it with fewer pixels, and once more at full resolution when no change follows within REST_MS
+    // of a frame (rest), for the eye and the PNG. A frame drawn directly (resize, PNG) is at rest.
+    const moving = pending !== 0 && !restFrame && askedAt - lastFrameAt < REST_MS;
+    restFrame = false;
     if (pending) {
       latencies.push(performance.now() - askedAt);
       if (latencies.length > ADAPT_WINDOW) latencies.shift();
@@ -291,28 +324,39 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       if (next !== quality) lower(next);
     }
     pending = 0;
-    // A frame soon after another is part of a motion (Play, orbit): the lean look draws it with fewer pixels, and
-    // draws once more at full resolution when the motion stops (REST_MS without a frame), for the eye and the PNG.
-    const now = performance.now();
-    const moving = now - lastFrameAt < REST_MS;
-    lastFrameAt = now;
     const ratio = pixelRatio(moving);
     if (ratio !== renderer.getPixelRatio()) {
       renderer.setPixelRatio(ratio);
       renderer.setSize(size.x, size.y, false);
     }
+    if (!quality.fatMovingLines) {
+      const view = ribbonView();
+      for (const m of lines) m.update(view);
+    }
     renderer.render(scene, camera);
     frameCount++;
     // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
     canvas.dataset.frames = String(frameCount);
+    lastFrameAt = performance.now();
     clearTimeout(restTimer);
     restTimer = ratio < pixelRatio(false) ? window.setTimeout(rest, REST_MS) : 0;
   };
-  /** The view at rest: one frame at full resolution. */
+  /** The view at rest (no change asked for since the last frame): one frame at full resolution. */
   const rest = () => {
     restTimer = 0;
-    lastFrameAt = Number.NEGATIVE_INFINITY;
+    if (pending) return;
+    restFrame = true;
     invalidate();
+  };
+  /** The view as the ribbons need it (scene units per CSS pixel, as Line2's resolution is the CSS size). */
+  const ribbonView = (): RibbonView => {
+    camera.updateMatrixWorld();
+    const forward = camera.getWorldDirection(new Vector3());
+    const isPerspective = camera === perspective;
+    const unitsPerPx = isPerspective
+      ? (2 * Math.tan(degToRad(FOV_DEG / 2))) / (size.y * camera.zoom)
+      : (ortho.top - ortho.bottom) / (size.y * ortho.zoom);
+    return { eye: camera.position.toArray(), forward: forward.toArray(), perspective: isPerspective, unitsPerPx };
   };
   const invalidate = () => {
     if (pending) return;
@@ -335,10 +379,12 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     l.material.resolution.copy(size);
     return l;
   };
-  const links = [COLORS.crank, COLORS.coupler, COLORS.rocker].map((c) => movingLine(c, 7, FAN_STEPS + 1));
+  const links = [COLORS.crank, COLORS.coupler, COLORS.rocker].map((c) => movingLine(quality, c, 7, FAN_STEPS + 1));
   const [crank, coupler, rocker] = links;
-  const pArm = movingLine(COLORS.coupler, 3, FAN_STEPS + 1);
-  for (const m of [...links, pArm]) track(m.line);
+  const pArm = movingLine(quality, COLORS.coupler, 3, FAN_STEPS + 1);
+  for (const m of [...links, pArm]) if (m.object instanceof Line2) track(m.object);
+  /** The lines rebuilt for the view before each frame (ribbons): the moving ones and the ground link's. */
+  let lines: MovingLine[] = [...links, pArm];
   const pinA = ball(COLORS.crank, 0.045);
   const pinB = ball(COLORS.rocker, 0.045);
   const pinP = ball(COLORS.couplerPoint, 0.04);
@@ -351,7 +397,18 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     [rockerFan, rocker],
   ];
   const moving = new Group();
-  moving.add(crankFan, couplerFan, rockerFan, crank.line, coupler.line, rocker.line, pArm.line, pinA, pinB, pinP);
+  moving.add(
+    crankFan,
+    couplerFan,
+    rockerFan,
+    crank.object,
+    coupler.object,
+    rocker.object,
+    pArm.object,
+    pinA,
+    pinB,
+    pinP,
+  );
   scene.add(moving);
   let linkage: SceneLinkage | null = null;
   let lastFitKey = '';
@@ -438,9 +495,18 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       orient(b, v3(ax.bearing), to.clone().sub(from));
       add(b);
     }
-    const ground = track(fatLine(COLORS.ground, 4, 0.85));
-    setLine(ground, l.ground);
-    add(ground);
+    // The ground link: a fat line, or in the lean look a ribbon like the moving links.
+    lines = [...links, pArm];
+    if (q.fatMovingLines) {
+      const ground = track(fatLine(COLORS.ground, 4, 0.85));
+      setLine(ground, l.ground);
+      add(ground);
+    } else if (l.ground.length >= 6) {
+      const ground = movingLine(q, COLORS.ground, 4, l.ground.length / 3, 0.85);
+      ground.points.set(l.ground);
+      lines.push(ground);
+      add(ground.object);
+    }
     for (const p of l.groundPins) {
       const g = ball(COLORS.ground, r * 0.8);
       g.position.copy(v3(p));
@@ -508,7 +574,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       put(coupler.points, p.A, p.B, FAN_STEPS);
       put(rocker.points, l.rockerPivot, p.B, FAN_STEPS);
       for (const m of links) m.commit();
-      pArm.line.visible = spherical && p.P !== undefined;
+      pArm.object.visible = spherical && p.P !== undefined;
       if (spherical && p.P) {
         arcPointsInto(pArm.points, p.A, p.P, FAN_STEPS);
         pArm.commit();

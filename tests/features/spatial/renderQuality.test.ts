@@ -47,6 +47,7 @@ describe('qualityForRenderer', () => {
       sphereTwoSided: false,
       sphereShading: 'lambert',
       fatFixedLines: false,
+      fatMovingLines: false,
     });
   });
   it('keeps the full look on a hardware GPU and when the name is hidden', () => {
@@ -59,6 +60,7 @@ describe('qualityForRenderer', () => {
       sphereTwoSided: true,
       sphereShading: 'phong',
       fatFixedLines: true,
+      fatMovingLines: true,
     });
   });
 });
