@@ -153,12 +153,20 @@ export async function measureMechDrag(browser: Browser, base: string, rate: numb
       log.ratesReady.length = 0;
     });
     await page.mouse.move(at.x, at.y);
+    const trace0 = await page.locator('.mech-workspace').getAttribute('data-trace');
     await page.mouse.down();
     for (let i = 1; i <= DRAG_MOVES; i++) {
       await page.mouse.move(at.x + i, at.y);
       await frame();
     }
-    await page.waitForTimeout(1500);
+    // Held still until the cycle and then the speed plot show the moved linkage (a busy machine can take seconds).
+    await page.waitForFunction(
+      (t0) => document.querySelector('.mech-workspace')?.getAttribute('data-trace') !== t0,
+      trace0,
+      { timeout: 30_000 },
+    );
+    await page.locator('.mech-chart-cell .note').waitFor({ state: 'detached', timeout: 30_000 });
+    await page.waitForTimeout(300);
     const cpu1 = await taskSeconds();
     await page.mouse.up();
     const log = await page.evaluate(() => (window as unknown as { __mech: MechLog }).__mech);

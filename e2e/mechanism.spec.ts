@@ -460,7 +460,7 @@ test.describe('mechanism page', () => {
     const o2 = { x: box.x + box.width / 2 - cx * scale + panX, y: box.y + box.height / 2 + cy * scale + panY };
     await page.mouse.move(o2.x, o2.y);
     await page.mouse.down();
-    await page.mouse.move(o2.x + 40, o2.y + 20, { steps: 3 });
+    await page.mouse.move(o2.x + 40, o2.y + 25, { steps: 3 });
     await page.mouse.up();
     await expect(stage(page)).toHaveAttribute('data-pose', pose);
     await expect(page).not.toHaveURL(/mech=/);

@@ -34,11 +34,15 @@ function useShownInput({ playhead, rest, clamp }: PlayheadInput, everyMs?: numbe
   return clamp(usePlayheadInput(playhead, rest, everyMs));
 }
 
-/** A short fingerprint of a picture's pose (its points' sum, 6 digits): tools and the bench see a new pose drawn. */
+/**
+ * A short fingerprint of a picture's pose (the sum of x + √2·y over its points, 6 digits): tools and the bench see a
+ * new pose drawn. The irrational weight keeps a move along a rational slope (a drag 2 px across, 1 px down) from
+ * cancelling out.
+ */
 export function poseDigest(picture: MechPicture): string {
   let sum = 0;
-  for (const q of Object.values(picture.pose.joints)) sum += q.x + 2 * q.y;
-  for (const q of Object.values(picture.pose.points)) sum += q.x + 2 * q.y;
+  for (const q of Object.values(picture.pose.joints)) sum += q.x + Math.SQRT2 * q.y;
+  for (const q of Object.values(picture.pose.points)) sum += q.x + Math.SQRT2 * q.y;
   return sum.toPrecision(6);
 }
 
