@@ -13,6 +13,7 @@ import { chromium } from 'playwright';
 import type { Browser } from 'playwright';
 import { preview } from 'vite';
 import { findChromium } from '../scripts/ensure-chromium.mjs';
+import { orbitSpatialView } from './spatialOrbit';
 
 const ROUNDS = Number(process.env.ROUNDS ?? 2);
 const SECONDS = Number(process.env.SECONDS ?? 4);
@@ -104,17 +105,7 @@ async function measure(browser: Browser, base: string): Promise<{ play: Figures;
     await page.getByRole('button', { name: 'Pause' }).click();
     await page.waitForTimeout(500);
     a = await sample();
-    await page.locator('.spatial-canvas-host').evaluate(async (host: HTMLElement, seconds) => {
-      const start = performance.now();
-      await new Promise<void>((done) => {
-        const tick = (t: number) => {
-          host.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
-          if (t - start < seconds * 1000) requestAnimationFrame(tick);
-          else done();
-        };
-        requestAnimationFrame(tick);
-      });
-    }, SECONDS);
+    await orbitSpatialView(page, SECONDS);
     const orbit = await since(a);
     return { play, orbit };
   } finally {

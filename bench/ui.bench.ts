@@ -36,6 +36,7 @@ import { WMS_PROBLEM_3 } from '../src/features/synthesis/ninePoint/wmsProblem3';
 import { PHONE_PROFILE, gzipStaticServer, phoneColdLoad } from './phoneLoad';
 import { startBoost } from './boost';
 import { MECH_BENCH_QUERY, MECH_TARGETS, measureMechDrag, measureMechPlay } from './mechanismUi';
+import { orbitSpatialView } from './spatialOrbit';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
 const DIST = process.env.BENCH_DIST ? resolve(process.env.BENCH_DIST) : join(ROOT, 'dist');
@@ -504,17 +505,7 @@ async function measureSpatial(
     await page.getByRole('button', { name: 'Pause' }).click();
     await page.waitForTimeout(300);
     [f0, m0, t0] = [await frames(), await metrics(), performance.now()];
-    await page.locator('.spatial-canvas-host').evaluate(async (host: HTMLElement, seconds) => {
-      const start = performance.now();
-      await new Promise<void>((done) => {
-        const tick = (t: number) => {
-          host.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
-          if (t - start < seconds * 1000) requestAnimationFrame(tick);
-          else done();
-        };
-        requestAnimationFrame(tick);
-      });
-    }, PLAY_SECONDS / 2);
+    await orbitSpatialView(page, PLAY_SECONDS / 2);
     const orbit = await since(f0, m0, t0);
     return { play, orbit };
   } finally {
