@@ -4,6 +4,7 @@ import type { Action, AppState } from '../shared/state/appState';
 import { appHistoryReducer } from '../shared/state/appHistory';
 import { canRedo, canUndo, initHistory } from '../shared/state/history';
 import { isTextField } from '../shared/ui/textField';
+import { followPointers } from '../shared/hooks/heldPointers';
 
 /** The app state with undo and redo. */
 export interface AppHistory {
@@ -25,16 +26,15 @@ function useGesture(): () => number | null {
   const next = useRef(0);
   const pointer = useRef<number | null>(null);
   const field = useRef<number | null>(null);
-  const pointers = useRef(new Set<number>());
   useEffect(() => {
-    const down = (e: PointerEvent) => {
-      if (pointers.current.size === 0) pointer.current = ++next.current;
-      pointers.current.add(e.pointerId);
-    };
-    const up = (e: PointerEvent) => {
-      pointers.current.delete(e.pointerId);
-      if (pointers.current.size === 0) pointer.current = null;
-    };
+    const pointers = followPointers({
+      press: () => {
+        pointer.current = ++next.current;
+      },
+      release: () => {
+        pointer.current = null;
+      },
+    });
     const focusIn = (e: FocusEvent) => {
       field.current = isTextField(e.target) ? ++next.current : null;
     };
@@ -42,15 +42,10 @@ function useGesture(): () => number | null {
       field.current = null;
     };
     const opts = { capture: true, passive: true };
-    window.addEventListener('pointerdown', down, opts);
-    window.addEventListener('pointerup', up, opts);
-    window.addEventListener('pointercancel', up, opts);
     window.addEventListener('focusin', focusIn, opts);
     window.addEventListener('focusout', focusOut, opts);
     return () => {
-      window.removeEventListener('pointerdown', down, opts);
-      window.removeEventListener('pointerup', up, opts);
-      window.removeEventListener('pointercancel', up, opts);
+      pointers.dispose();
       window.removeEventListener('focusin', focusIn, opts);
       window.removeEventListener('focusout', focusOut, opts);
     };

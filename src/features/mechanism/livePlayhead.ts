@@ -1,4 +1,5 @@
 import { useCallback, useSyncExternalStore } from 'react';
+import { ExternalValue } from '../../shared/state/externalValue';
 
 /** Where Play is while it runs: the input (rad for a pin, length for a slider), its direction, the last limit met. */
 export interface Playhead {
@@ -27,22 +28,9 @@ export function createPlayheadSource(): PlayheadSource {
   return createLiveSource<Playhead | null>(null);
 }
 
-/** A live source holding first at first; setting the same value again tells no one. */
+/** A live source holding first at first; setting the same value again tells no one (the app's ExternalValue). */
 export function createLiveSource<T>(first: T): LiveSource<T> {
-  let at = first;
-  const listeners = new Set<() => void>();
-  return {
-    get: () => at,
-    set(next) {
-      if (next === at) return;
-      at = next;
-      for (const listener of listeners) listener();
-    },
-    subscribe(listener) {
-      listeners.add(listener);
-      return () => listeners.delete(listener);
-    },
-  };
+  return new ExternalValue(first);
 }
 
 /**

@@ -8,6 +8,8 @@ import { normalizeTheta2Deg } from '../../shared/state/appState';
 import type { PlayFrame, Playhead } from '../../shared/state/playhead';
 import { playFrameOf, playBase, sameFrame } from '../../shared/state/playhead';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
+import type { HeldPointers } from '../../shared/hooks/heldPointers';
+import { followPointers } from '../../shared/hooks/heldPointers';
 import { ExternalValue } from '../../shared/state/externalValue';
 import type { LiveStage } from '../../shared/linkage/liveStage';
 import { CommitPacer, playCommitGapMs } from './commitPacer';
@@ -155,41 +157,6 @@ export function useAnimation(
   return useMemo(() => ({ step, scrub }), [step, scrub]);
 }
 
-/** Whether a pointer (mouse button, finger, pen) is down anywhere on the page, and a listener to its release. */
-interface HeldPointer {
-  held(): boolean;
-  /** Adds a listener to a pointer's release; returns its removal. */
-  onRelease(listener: () => void): () => void;
-  dispose(): void;
-}
-
-/** Follows the page's pointers from window (capture phase, so a handler that stops propagation does not hide them). */
-function heldPointer(): HeldPointer {
-  const down = new Set<number>();
-  const listeners = new Set<() => void>();
-  const press = (e: PointerEvent) => down.add(e.pointerId);
-  const release = (e: PointerEvent) => {
-    down.delete(e.pointerId);
-    for (const listener of [...listeners]) listener();
-  };
-  const options = { capture: true, passive: true };
-  window.addEventListener('pointerdown', press, options);
-  window.addEventListener('pointerup', release, options);
-  window.addEventListener('pointercancel', release, options);
-  return {
-    held: () => down.size > 0,
-    onRelease(listener) {
-      listeners.add(listener);
-      return () => listeners.delete(listener);
-    },
-    dispose() {
-      window.removeEventListener('pointerdown', press, options);
-      window.removeEventListener('pointerup', release, options);
-      window.removeEventListener('pointercancel', release, options);
-    },
-  };
-}
-
 /**
  * The θ2 drag of useAnimation: moves the playhead, commits through commit (throttled, returns whether it
  * dispatched) and, once the drag rests for SCRUB_REST_MS or end() is called, commits the last value at once.
@@ -213,7 +180,7 @@ function useTheta2Scrub(
   const viaStage = useRef(false);
   useEffect(() => () => clearTimeout(restTimer.current), []);
   const [dragged] = useState(() => new ExternalValue<number | null>(null));
-  const pointer = useRef<HeldPointer | null>(null);
+  const pointer = useRef<HeldPointers | null>(null);
   const handlers = useMemo<Theta2Scrub>(() => {
     const end = () => {
       clearTimeout(restTimer.current);
@@ -264,13 +231,13 @@ function useTheta2Scrub(
   }, [playhead, dispatch, draggingRef, dragged, stage]);
   // A release ends a drag that rested while the pointer was down (the slider's change event may not come after it).
   useEffect(() => {
-    const followed = heldPointer();
-    pointer.current = followed;
-    const off = followed.onRelease(() => {
-      if (draggingRef.current) handlers.end();
+    const followed = followPointers({
+      release: () => {
+        if (draggingRef.current) handlers.end();
+      },
     });
+    pointer.current = followed;
     return () => {
-      off();
       followed.dispose();
       pointer.current = null;
     };
