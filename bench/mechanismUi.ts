@@ -380,15 +380,10 @@ async function tracedStage(
   return { ms: stageWorkerMs(events), frames };
 }
 
-/** The stage worker's CPU ms per frame at 1x: `seconds` of Play, then a drag of the knee (40 moves). */
+/** The stage worker's CPU ms per frame at 1x: a drag of the knee (40 moves, at input 0 where the table has it), then `seconds` of Play. */
 export async function measureMechWorkerCost(browser: Browser, base: string, seconds: number): Promise<MechWorkerCost> {
   const { context, page } = await openMech(browser, base, 1);
   try {
-    await page.getByRole('button', { name: 'Play' }).click();
-    await page.waitForTimeout(500);
-    const play = await tracedStage(browser, page, 'play', () => page.waitForTimeout(seconds * 1000));
-    await page.getByRole('button', { name: 'Pause' }).click();
-    await page.waitForTimeout(500);
     const at = await jointOnScreen(page, DRAG_JOINT);
     const frame = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r(0))));
     await page.mouse.move(at.x, at.y);
@@ -400,6 +395,11 @@ export async function measureMechWorkerCost(browser: Browser, base: string, seco
       }
     });
     await page.mouse.up();
+    await page.waitForTimeout(500);
+    await page.getByRole('button', { name: 'Play' }).click();
+    await page.waitForTimeout(500);
+    const play = await tracedStage(browser, page, 'play', () => page.waitForTimeout(seconds * 1000));
+    await page.getByRole('button', { name: 'Pause' }).click();
     return {
       playMsPerFrame: play.ms / Math.max(1, play.frames),
       playFrames: play.frames,

@@ -482,3 +482,141 @@ test.describe('mechanism page', () => {
     expect(results.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes[0]?.target}`)).toEqual([]);
   });
 });
+
+/** The live stage's canvas (a worker draws Play and a joint's drag on it): data-mode, data-frames, data-input, … */
+const live = (page: Page) => page.getByTestId('mech-live');
+
+/** The live canvas's newest frame as one reading: its run, frames, input, pose digest and chosen joint's place. */
+async function liveFrame(page: Page) {
+  return live(page).evaluate((el: HTMLElement) => ({
+    mode: el.dataset.mode ?? '',
+    frames: Number(el.dataset.frames ?? 0),
+    input: Number(el.dataset.input),
+    pose: Number(el.dataset.pose),
+    at: (el.dataset.selectedAt ?? '').split(' ').map(Number),
+  }));
+}
+
+/** The world point (length unit) under page pixel p, from the canvas's box and its view (data-view). */
+async function worldAt(page: Page, p: { x: number; y: number }): Promise<{ x: Decimal; y: Decimal }> {
+  const canvas = page.getByTestId('mech-canvas');
+  const box = (await canvas.boundingBox())!;
+  const [scale, cx, cy, panX, panY] = (await canvas.getAttribute('data-view'))!.split(' ').map((s) => new Decimal(s));
+  return {
+    x: cx.plus(
+      new Decimal(p.x)
+        .minus(box.x + box.width / 2)
+        .minus(panX)
+        .div(scale),
+    ),
+    y: cy.minus(
+      new Decimal(p.y)
+        .minus(box.y + box.height / 2)
+        .minus(panY)
+        .div(scale),
+    ),
+  };
+}
+
+/**
+ * The 6-2-5-5 four-bar's poses come from a 1° grid by linear interpolation: its crank pin A (radius 2 about O2) is off
+ * its circle by at most 2 (1 − cos 0.5°) ≈ 7.6e-5; 2e-4 is above that and far below a wrong angle (1° ≈ 0.035).
+ */
+const GRID_TOL = 2e-4;
+
+test.describe('mechanism page: the live stage', () => {
+  test('Play is drawn by the worker, the crank pin where the input puts it, and Pause hands the canvas back there', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    await page.getByRole('radio', { name: 'Choose A' }).check();
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(live(page)).toBeVisible();
+    await expect(live(page)).toHaveAttribute('data-mode', 'play');
+    await expect.poll(async () => (await liveFrame(page)).frames).toBeGreaterThan(5);
+    // A frame the worker drew: the chosen pin A on the crank's circle at the frame's input, 2 (cos t, sin t).
+    const f = await liveFrame(page);
+    const t = new Decimal(f.input);
+    const ax = Decimal.cos(t).times(2);
+    const ay = Decimal.sin(t).times(2);
+    expect(Math.hypot(f.at[0] - ax.toNumber(), f.at[1] - ay.toNumber()), `A at input ${f.input}`).toBeLessThan(
+      GRID_TOL,
+    );
+    // The worker goes on drawing: more frames, other inputs.
+    await expect.poll(async () => (await liveFrame(page)).input).not.toBe(f.input);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(live(page)).toBeHidden();
+    // The page's own canvas shows the worker's last frame: its input and pose (no jump), and the readout says it.
+    const last = await liveFrame(page);
+    await expect(stage(page)).toHaveAttribute('data-input', String(last.input));
+    expect(Number(await stage(page).getAttribute('data-pose'))).toBe(last.pose);
+    // The readout writes 4 significant digits and a degree sign.
+    const deg = (last.input * 180) / Math.PI;
+    const shown = parseFloat((await page.getByTestId('mech-input-value').textContent())!.replace(/\u2212/g, '-'));
+    expect(Math.abs(shown - deg)).toBeLessThanOrEqual(Math.abs(deg) * 5e-4 + 1e-9);
+  });
+
+  test('a joint’s drag is drawn by the worker with the pin under the pointer, and the release hands it back there', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    const at = await screenOf(page, 'O4');
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    const to = { x: at.x + 30, y: at.y - 20 };
+    await page.mouse.move(to.x, to.y, { steps: 4 });
+    await expect(live(page)).toBeVisible();
+    await expect(live(page)).toHaveAttribute('data-mode', 'show');
+    // The dragged pivot O4 (chosen by the grab) drawn by the worker where the pointer is, in the canvas's world.
+    const want = await worldAt(page, to);
+    const scale = Number((await page.getByTestId('mech-canvas').getAttribute('data-view'))!.split(' ')[0]);
+    // Half a CSS pixel: the pointer's position is whole pixels in the events.
+    await expect
+      .poll(async () => {
+        const [x, y] = (await liveFrame(page)).at;
+        return Math.hypot(x - want.x.toNumber(), y - want.y.toNumber()) * scale;
+      })
+      .toBeLessThan(0.75);
+    const held = await liveFrame(page);
+    await page.mouse.up();
+    await expect(live(page)).toBeHidden();
+    await expect(page).toHaveURL(/mech=m1/);
+    // The page's canvas draws the released linkage as the worker last drew it, and the table holds the pin's place.
+    expect(Number(await stage(page).getAttribute('data-pose'))).toBeCloseTo(held.pose, 4);
+    const x = Number(await page.getByRole('textbox', { name: 'x of O4', exact: true }).inputValue());
+    const y = Number(await page.getByRole('textbox', { name: 'y of O4', exact: true }).inputValue());
+    expect(Math.hypot(x - held.at[0], y - held.at[1])).toBeLessThan(1e-9);
+  });
+
+  test('without OffscreenCanvas the page draws Play and a drag itself', async ({ page }) => {
+    await page.addInitScript(() => {
+      delete (window as unknown as { OffscreenCanvas?: unknown }).OffscreenCanvas;
+      delete (HTMLCanvasElement.prototype as unknown as { transferControlToOffscreen?: unknown })
+        .transferControlToOffscreen;
+    });
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(live(page)).toHaveCount(0);
+    await page.getByRole('button', { name: 'Play' }).click();
+    const inputs = new Set<string>();
+    await expect
+      .poll(async () => {
+        inputs.add((await stage(page).getAttribute('data-input'))!);
+        return inputs.size;
+      })
+      .toBeGreaterThan(3);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    const pose0 = (await stage(page).getAttribute('data-pose'))!;
+    const at = await screenOf(page, 'O4');
+    await page.mouse.move(at.x, at.y);
+    await page.mouse.down();
+    await page.mouse.move(at.x + 30, at.y - 20, { steps: 4 });
+    await expect(stage(page)).not.toHaveAttribute('data-pose', pose0);
+    await page.mouse.up();
+    await expect(page).toHaveURL(/mech=m1/);
+  });
+});
