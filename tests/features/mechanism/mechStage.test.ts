@@ -124,7 +124,7 @@ describe('createMechStageLoop', () => {
       type: 'play',
       id: 7,
       from: { input: 0.1, direction: 1, limitAt: null },
-      atEpochMs: start - 20,
+      atEpochMs: start - 150,
       drive: { ratePerS: rate, range: [-Math.PI, Math.PI], fullTurn: true },
     });
     r.frame(16);
@@ -133,8 +133,9 @@ describe('createMechStageLoop', () => {
     r.frame(500);
     const got = r.drawnFrames();
     expect(got.map((f) => f.id)).toEqual([7, 7, 7]);
-    // The first step catches up with the page's clock (20 ms before the play arrived), the others follow each frame.
-    const want = [0.1 + rate * 0.036, 0.1 + rate * 0.053, 0.1 + rate * (0.053 + MAX_DT_SECONDS)];
+    // The first step catches up with the page's clock (the play was posted 150 ms before it came: more than a capped
+    // step), the others follow each frame.
+    const want = [0.1 + rate * 0.166, 0.1 + rate * 0.183, 0.1 + rate * (0.183 + MAX_DT_SECONDS)];
     got.forEach((f, k) => {
       expect(f.playhead.input).toBeCloseTo(want[k], 12);
       expect(f.atEpochMs).toBe(f.shownEpochMs);
