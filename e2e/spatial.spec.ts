@@ -83,6 +83,11 @@ function expectNear(shown: number[], oracle: V, what: string): void {
   oracle.forEach((v, i) => expect(Math.abs(shown[i] - v.toNumber()), `${what}[${i}]`).toBeLessThan(6e-7));
 }
 
+/** The largest difference between shown values and the oracle's. */
+function farthest(shown: number[], oracle: V): number {
+  return Math.max(...oracle.map((v, i) => Math.abs(shown[i] - v.toNumber())));
+}
+
 /**
  * The x domain a plot's axis draws (data units at its two ends), read from the SVG as a person's ruler would: the
  * axis line's pixel ends and two labelled ticks' positions, interpolated linearly.
@@ -102,6 +107,43 @@ async function xAxisDomain(page: Page, testId: string): Promise<[number, number]
   });
 }
 
+/**
+ * Share of a PNG's pixels (bytes as downloaded) that differ from its corner's colour by more than 24 in a channel:
+ * 0 for a blank image. Decoded by the browser's image decoder, not by the app.
+ */
+async function pngInk(page: Page, bytes: Buffer): Promise<number> {
+  return page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.naturalWidth;
+    c.height = img.naturalHeight;
+    const ctx = c.getContext('2d')!;
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.max(Math.abs(d[i] - d[0]), Math.abs(d[i + 1] - d[1]), Math.abs(d[i + 2] - d[2])) > 24) n++;
+    }
+    return n / (c.width * c.height);
+  }, bytes.toString('base64'));
+}
+
+/** The PNG the Export 3D view PNG button downloads: its facts and bytes. */
+async function exportPng(page: Page) {
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.getByRole('button', { name: 'Export 3D view PNG' }).click(),
+  ]);
+  return { facts: await pngFacts(download), bytes: readFileSync(await download.path()) };
+}
+
+/** The θ2 field's value (degrees). */
+async function theta2Field(page: Page): Promise<number> {
+  return Number(await page.getByRole('textbox', { name: 'Input angle θ2' }).inputValue());
+}
+
 async function openSpatial(page: Page, query = 'page=3d'): Promise<void> {
   await page.goto(`./?${query}`);
   await expect(page.getByTestId('spatial-page')).toBeVisible({ timeout: 20_000 });
@@ -115,27 +157,20 @@ test.describe('Spatial page', () => {
     await expect.poll(() => new URL(page.url()).searchParams.get('page')).toBe('3d');
     // Headless Chromium here has --disable-gpu: WebGL comes from SwiftShader; the view must reach "ready".
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
-    // SwiftShader is a software WebGL: the view draws its lean look (renderQuality), without MSAA.
-    await expect(page.getByTestId('spatial-canvas')).toHaveAttribute('data-quality', 'lean');
-    expect(
-      await page
-        .getByTestId('spatial-canvas')
-        .evaluate(
-          (c: HTMLCanvasElement) =>
-            (c.getContext('webgl2') ?? c.getContext('webgl'))?.getContextAttributes()?.antialias,
-        ),
-    ).toBe(false);
+    // SwiftShader is a software WebGL: the view draws its lean look (renderQuality), without MSAA (the context's own
+    // attribute, read where the context lives: in the view's worker, which this browser can hand a canvas to).
+    const canvas = page.getByTestId('spatial-canvas');
+    await expect(canvas).toHaveAttribute('data-route', 'worker');
+    await expect(canvas).toHaveAttribute('data-quality', 'lean');
+    await expect(canvas).toHaveAttribute('data-antialias', 'false');
     const o = sphericalOracle(60, 20, 55, 45, 30);
     expectNear(await shownPin(page, 'A'), o.A, 'A');
     expectNear(await shownPin(page, 'B'), o.B, 'B');
     expectNear(await shownPin(page, 'P'), couplerOracle(o.A, o.B, 25, 40), 'P');
     await expect(page.getByTestId('spatial-type')).toHaveText('crank-rocker');
-    // The canvas is drawn: not one colour.
-    const colours = await page.getByTestId('spatial-canvas').evaluate((c: HTMLCanvasElement) => {
-      const url = c.toDataURL('image/png');
-      return url.length;
-    });
-    expect(colours).toBeGreaterThan(5000);
+    // The canvas gets drawn: not one colour (as the screen shows it; the worker owns the canvas's pixels, and its
+    // frame with the linkage reaches the screen after the view is ready).
+    await expect.poll(async () => pngInk(page, await canvas.screenshot())).toBeGreaterThan(0.05);
     await page.screenshot({ path: artifact('spatial-desktop.png') });
   });
 
@@ -266,18 +301,82 @@ test.describe('Spatial page', () => {
     }
   });
 
-  test('exports a PNG of the 3D view', async ({ page }) => {
+  test('exports a PNG of the 3D view, drawn by its worker: twice the size and not blank', async ({ page }) => {
     await openSpatial(page);
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
-    const [download] = await Promise.all([
-      page.waitForEvent('download'),
-      page.getByRole('button', { name: 'Export 3D view PNG' }).click(),
-    ]);
-    const png = await pngFacts(download);
-    expect(png.signatureOk).toBe(true);
+    await expect(page.getByTestId('spatial-canvas')).toHaveAttribute('data-route', 'worker');
+    const png = await exportPng(page);
+    expect(png.facts.signatureOk).toBe(true);
     const box = (await page.getByTestId('spatial-canvas').boundingBox())!;
-    expect(png.width).toBe(Math.round(box.width) * 2);
-    expect(png.bytes).toBeGreaterThan(10_000);
+    expect(png.facts.width).toBe(Math.round(box.width) * 2);
+    expect(png.facts.bytes).toBeGreaterThan(10_000);
+    // The sphere, links and pins cover a good part of the view (a blank or one-colour image gives 0).
+    expect(await pngInk(page, png.bytes)).toBeGreaterThan(0.1);
+  });
+
+  test('Play and orbit are drawn by the worker; the panels follow and Pause keeps the pose of the oracle', async ({
+    page,
+  }) => {
+    await openSpatial(page, 'page=3d&t2=30');
+    const canvas = page.getByTestId('spatial-canvas');
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    await expect(canvas).toHaveAttribute('data-route', 'worker');
+    const frames = async () => Number(await canvas.getAttribute('data-frames'));
+    let f0 = await frames();
+    await page.getByRole('button', { name: 'Play' }).click();
+    // The worker's frames count on, and the θ2 field follows the worker's Play.
+    await expect.poll(frames, { timeout: 20_000 }).toBeGreaterThan(f0 + 10);
+    await expect.poll(() => theta2Field(page), { timeout: 20_000 }).not.toBe(30);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    const t2 = await theta2Field(page);
+    // Pause commits the frame on screen: the numbers are the oracle's at the field's θ2, which rounds the committed θ2
+    // to 0.01°: a pin moves at most |dB/dθ2| ≤ 3 (this linkage, unit sphere) × 0.005° = 2.6e-4 for that rounding.
+    const o = sphericalOracle(60, 20, 55, 45, t2);
+    await expect.poll(async () => farthest(await shownPin(page, 'A'), o.A)).toBeLessThan(3e-4);
+    expect(farthest(await shownPin(page, 'B'), o.B)).toBeLessThan(3e-4);
+    await expect.poll(() => new URL(page.url()).searchParams.get('t2')).not.toBe('30');
+    // Orbit by keys and by a drag: the worker draws each.
+    f0 = await frames();
+    await page.locator('.spatial-canvas-host').press('ArrowRight');
+    await expect.poll(frames).toBeGreaterThan(f0);
+    f0 = await frames();
+    const box = (await canvas.boundingBox())!;
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 20, { steps: 4 });
+    await page.mouse.up();
+    await expect.poll(frames).toBeGreaterThan(f0);
+  });
+
+  test('without OffscreenCanvas the page draws the view itself: Play, the look and the PNG', async ({ page }) => {
+    await page.addInitScript(() => {
+      delete (globalThis as { OffscreenCanvas?: unknown }).OffscreenCanvas;
+    });
+    await openSpatial(page);
+    const canvas = page.getByTestId('spatial-canvas');
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    await expect(canvas).toHaveAttribute('data-route', 'main');
+    await expect(canvas).toHaveAttribute('data-quality', 'lean');
+    // The page's own context: its attribute read directly.
+    expect(
+      await canvas.evaluate(
+        (c: HTMLCanvasElement) => (c.getContext('webgl2') ?? c.getContext('webgl'))?.getContextAttributes()?.antialias,
+      ),
+    ).toBe(false);
+    const frames = async () => Number(await canvas.getAttribute('data-frames'));
+    const f0 = await frames();
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect.poll(frames, { timeout: 20_000 }).toBeGreaterThan(f0 + 10);
+    await expect.poll(() => theta2Field(page), { timeout: 20_000 }).not.toBe(30);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    const t2 = await theta2Field(page);
+    const o = sphericalOracle(60, 20, 55, 45, t2);
+    // As above: within 3e-4 for the field's rounding of θ2.
+    await expect.poll(async () => farthest(await shownPin(page, 'A'), o.A)).toBeLessThan(3e-4);
+    const png = await exportPng(page);
+    expect(png.facts.width).toBe(Math.round((await canvas.boundingBox())!.width) * 2);
+    expect(await pngInk(page, png.bytes)).toBeGreaterThan(0.1);
   });
 
   test('the lean look draws Play with half the pixels and the view at rest at full resolution', async ({ page }) => {
@@ -286,8 +385,9 @@ test.describe('Spatial page', () => {
     await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
     await expect(canvas).toHaveAttribute('data-quality', 'lean');
     const buffer = () => canvas.evaluate((c: HTMLCanvasElement) => ({ width: c.width, css: c.clientWidth }));
+    // deviceScaleFactor 1; the worker's buffer size reaches the page's canvas with its first frame.
+    await expect.poll(async () => (await buffer()).width).toBe((await buffer()).css);
     const rest = await buffer();
-    expect(rest.width).toBe(rest.css); // deviceScaleFactor 1
     await page.getByRole('button', { name: 'Play' }).click();
     // renderQuality's movingPixelRatio (0.5) while frames follow each other.
     await expect.poll(async () => (await buffer()).width).toBe(Math.floor(rest.css * 0.5));

@@ -1,5 +1,5 @@
 import './SpatialPage.css';
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 import { downloadPng, downloadText } from '../../shared/canvas/download';
 import { formatDeg } from '../../shared/format';
@@ -16,12 +16,14 @@ import { spatialCsvText, spatialFileStem } from './spatialExports';
 import { spatialMessagesFor } from './spatialMessages';
 import { SpatialNumbers } from './SpatialNumbers';
 import { SpatialPlots } from './SpatialPlots';
+import { playStep } from './spatialPlay';
 import type { SpatialFrame } from './spatialPlayhead';
 import { SpatialPlayhead } from './spatialPlayhead';
 import type { SpatialScene } from './spatialScene';
 import type { ViewStatus } from './SpatialView';
 import { SpatialView } from './SpatialView';
 import { muAt, poseAt, useSpatialAnalysis } from './useSpatialAnalysis';
+import type { PlayAt } from './viewProtocol';
 
 /** Props of SpatialPage: the app state and dispatch. */
 export interface SpatialPageProps {
@@ -38,9 +40,6 @@ export interface SpatialEmbedOptions {
   plotsShown: boolean;
   locks: SpatialLocks;
 }
-
-/** Play's speed, degrees of θ2 per second. */
-export const PLAY_DEG_PER_S = 90;
 
 /**
  * The Spatial page (page=3d, issue 32): a spherical four-bar or an RSSR linkage in a three.js view, its controls and
@@ -69,29 +68,59 @@ export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
   );
   const [notice, setNotice] = useState<string | null>(null);
   const [viewStatus, setViewStatus] = useState<ViewStatus>('loading');
+  /** The view runs Play itself (drawn in its worker): the page follows its frames instead of running Play. */
+  const [viewPlays, setViewPlays] = useState(false);
+  const onViewStatus = useCallback((status: ViewStatus, playsItself: boolean) => {
+    setViewStatus(status);
+    setViewPlays(status === 'ready' && playsItself);
+  }, []);
   const pngOff = viewStatus === 'ready' ? null : viewStatus === 'no-webgl' ? sm.pngNeedsWebgl : sm.pngLoading;
 
   // A change of the state (an edit, a commit) or of the linkage hands the view back to the state.
   useEffect(() => playhead.set(null), [playhead, base]);
 
   // Play moves the playhead and the 3D view every frame without touching the app state (no page or app render per
-  // frame); the state gets θ2 and the branch when Play stops or turns back at a limit.
-  useAnimationFrame(playing && model !== null && input !== null, (dt) => {
+  // frame); the state gets θ2 and the branch when Play stops or turns back at a limit (spatialPlay.ts). Where the view
+  // draws in its worker, the worker runs Play on its own clock and the page's panels follow its frames.
+  useAnimationFrame(playing && !viewPlays && model !== null && input !== null, (dt) => {
     if (!model || !input) return;
     const from = playhead.current() ?? base;
-    const next = normalizeTheta2Deg(from.theta2Deg + direction.current * PLAY_DEG_PER_S * dt);
-    const nextPose = poseAt(model, next, from.branch, input);
-    if (nextPose === null) {
-      // The input's limit: a real linkage goes back on the other branch (the two meet there).
-      direction.current = direction.current === 1 ? -1 : 1;
-      const branch = from.branch === 'open' ? 'crossed' : 'open';
-      dispatch({ type: 'setSpatial', patch: { theta2Deg: from.theta2Deg, branch } });
+    const step = playStep(model, input, { ...from, direction: direction.current }, dt);
+    direction.current = step.direction;
+    if (step.turned) {
+      dispatch({ type: 'setSpatial', patch: { theta2Deg: step.theta2Deg, branch: step.branch } });
       return;
     }
-    const frame = { theta2Deg: next, branch: from.branch, pose: nextPose, muRad: muAt(model, next, from.branch) };
+    const frame = {
+      theta2Deg: step.theta2Deg,
+      branch: step.branch,
+      pose: step.pose,
+      muRad: muAt(model, step.theta2Deg, step.branch),
+    };
     playhead.advance(frame, performance.now());
-    if (linkage) sceneRef.current?.setPose(scenePose(linkage, nextPose));
+    if (linkage && step.pose) sceneRef.current?.setPose(scenePose(linkage, step.pose));
   });
+  // The worker's Play starts from the state, and again from it after each change of the state or linkage (as the
+  // page's Play does: the playhead goes back to the state), or stops.
+  useEffect(() => {
+    if (!viewPlays) return;
+    const run = playing && model && input ? { model, input, theta2Deg: base.theta2Deg, branch: base.branch } : null;
+    sceneRef.current?.play?.(run);
+  }, [viewPlays, playing, model, input, base]);
+  /** A frame of the worker's Play: the panels follow it (at most every PANEL_INTERVAL_MS), a turn goes to the state. */
+  const onPlayFrame = (at: PlayAt) => {
+    if (!playing || !model || !input) return;
+    if (at.turned) {
+      dispatch({ type: 'setSpatial', patch: { theta2Deg: at.theta2Deg, branch: at.branch } });
+      return;
+    }
+    const framePose = poseAt(model, at.theta2Deg, at.branch, input);
+    const muRadAt = muAt(model, at.theta2Deg, at.branch);
+    playhead.advance(
+      { theta2Deg: at.theta2Deg, branch: at.branch, pose: framePose, muRad: muRadAt },
+      performance.now(),
+    );
+  };
 
   /** Play on or off; off commits the frame on screen to the state (the link, the fields). */
   const onPlay = (on: boolean) => {
@@ -147,7 +176,8 @@ export function SpatialPage({ state, dispatch, embed }: SpatialPageProps) {
             sm={sm}
             sceneRef={sceneRef}
             warning={sm.cannotClose(`${formatDeg(s.theta2Deg)}°`)}
-            onStatus={setViewStatus}
+            onStatus={onViewStatus}
+            onPlayFrame={onPlayFrame}
           />
         </section>
         <div className="spatial-side" hidden={!shows('controlsShown')}>

@@ -1,10 +1,15 @@
-import { useEffect, useRef, useState } from 'react';
-import type { KeyboardEvent, RefObject } from 'react';
+import { useEffect, useEffectEvent, useRef, useState } from 'react';
+import type { KeyboardEvent, PointerEvent, RefObject } from 'react';
 import { Segmented } from '../../shared/ui/Segmented';
 import { degToRad } from '../../solver';
+import { createWorkerScene } from './sceneClient';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import type { SpatialMessages } from './spatialMessages';
 import type { Projection, SpatialScene } from './spatialScene';
+import { ViewGestures, wheelZoom } from './viewGestures';
+import type { PlayAt, ViewMove } from './viewProtocol';
+import { chooseViewRoute } from './viewRoute';
+import { canTransferCanvas, probeWebgl } from './webglProbe';
 
 /** Props of SpatialView: the fixed parts, the pose, the strings, and a ref the page's PNG export reads the scene from. */
 export interface SpatialViewProps {
@@ -14,8 +19,13 @@ export interface SpatialViewProps {
   sceneRef: RefObject<SpatialScene | null>;
   /** Shown over the view when the loop cannot close at θ2. */
   warning: string;
-  /** Told each time the view's status changes (the page turns its PNG export on only when ready). */
-  onStatus?: (status: ViewStatus) => void;
+  /**
+   * Told each time the view's status changes (the page turns its PNG export on only when ready), and whether the view
+   * runs Play itself (drawn in its worker: the page then sets scene.play and follows onPlayFrame).
+   */
+  onStatus?: (status: ViewStatus, playsItself: boolean) => void;
+  /** Each frame the view's worker drew during Play: where Play is. */
+  onPlayFrame?: (at: PlayAt) => void;
 }
 
 /** Where the view is: its code loading, drawing, or without WebGL (the fallback message). */
@@ -26,49 +36,131 @@ const ORBIT_STEP = degToRad(5);
 const PAN_STEP = 0.1;
 const ZOOM_STEP = 1.2;
 
+/** The scene on the page's thread: three.js's chunk loads here, on this page only. */
+async function mainThreadScene(canvas: HTMLCanvasElement, rendererName: string | null): Promise<SpatialScene> {
+  const { createSpatialScene } = await import('./spatialScene');
+  return createSpatialScene(canvas, {
+    rendererName,
+    devicePixelRatio: window.devicePixelRatio || 1,
+    // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
+    onFrame: (frames) => (canvas.dataset.frames = String(frames)),
+    onQuality: (q, antialias) => {
+      canvas.dataset.quality = q.name;
+      canvas.dataset.antialias = String(antialias);
+    },
+  });
+}
+
 /**
- * The 3D view: three.js (its chunk loads here, on this page only) on a canvas sized to its box; orbit, zoom and pan by
- * mouse, touch and keys; reset and projection tools. Without WebGL a message says so and the rest of the page works.
+ * The 3D view: three.js on a canvas sized to its box, drawn by a worker on an OffscreenCanvas where the browser can
+ * (the page keeps its thread for the panels), else on the page's thread (its chunk loads here, on this page only);
+ * orbit, zoom and pan by mouse, touch and keys; reset and projection tools. The canvas's data-route names where it
+ * draws, data-frames counts its frames. Without WebGL a message says so and the rest of the page works.
  */
-export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus }: SpatialViewProps) {
+export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, onPlayFrame }: SpatialViewProps) {
   const hostRef = useRef<HTMLDivElement>(null);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const [status, setStatus] = useState<ViewStatus>('loading');
+  const [playsItself, setPlaysItself] = useState(false);
   const [projection, setProjection] = useState<Projection>('perspective');
+  /** The worker failed on this page: the view draws on a fresh canvas on the page's thread. */
+  const [workerFailed, setWorkerFailed] = useState(false);
+  const playFrame = useEffectEvent((at: PlayAt) => onPlayFrame?.(at));
 
   useEffect(() => {
     let live = true;
     let made: SpatialScene | null = null;
     let observer: ResizeObserver | null = null;
-    import('./spatialScene')
-      .then(({ createSpatialScene }) => {
-        if (!live || !canvasRef.current || !hostRef.current) return;
-        try {
-          made = createSpatialScene(canvasRef.current);
-        } catch {
-          setStatus('no-webgl');
+    const canvas = canvasRef.current;
+    const host = hostRef.current;
+    if (!canvas || !host) return;
+    const webgl = probeWebgl();
+    const route = chooseViewRoute({ webgl: webgl !== null, canTransfer: canTransferCanvas(), workerFailed });
+    canvas.dataset.route = route;
+    const making =
+      route === 'none' || !webgl
+        ? Promise.reject(new Error('no WebGL'))
+        : route === 'worker'
+          ? createWorkerScene(canvas, webgl.rendererName, {
+              onFrame: (frames, play) => {
+                canvas.dataset.frames = String(frames);
+                if (play) playFrame(play);
+              },
+              onQuality: (name, antialias) => {
+                canvas.dataset.quality = name;
+                canvas.dataset.antialias = String(antialias);
+              },
+            })
+          : mainThreadScene(canvas, webgl.rendererName);
+    making
+      .then((scene) => {
+        if (!live) {
+          scene.dispose();
           return;
         }
-        sceneRef.current = made;
-        const host = hostRef.current;
-        const fit = () => made?.resize(host.clientWidth, host.clientHeight);
+        made = scene;
+        sceneRef.current = scene;
+        const fit = () => scene.resize(host.clientWidth, host.clientHeight, window.devicePixelRatio || 1);
         observer = new ResizeObserver(fit);
         observer.observe(host);
         fit();
+        setPlaysItself(scene.play !== undefined);
         setStatus('ready');
       })
-      .catch(() => live && setStatus('no-webgl'));
+      .catch(() => {
+        if (!live) return;
+        if (route === 'worker') setWorkerFailed(true);
+        else setStatus('no-webgl');
+      });
     return () => {
       live = false;
       observer?.disconnect();
       made?.dispose();
       sceneRef.current = null;
     };
-  }, [sceneRef]);
+  }, [sceneRef, workerFailed]);
 
   useEffect(() => {
-    onStatus?.(status);
-  }, [status, onStatus]);
+    onStatus?.(status, playsItself);
+  }, [status, playsItself, onStatus]);
+
+  // Mouse and touch: pointer gestures (viewGestures.ts) posted as moves; the wheel zooms (a listener that is not
+  // passive, so the page does not scroll under the view).
+  const [gestures] = useState(() => new ViewGestures());
+  const apply = (moves: readonly ViewMove[]) => {
+    const scene = sceneRef.current;
+    if (!scene) return;
+    for (const m of moves) {
+      if (m.op === 'orbit') scene.orbitBy(m.dAzimuth, m.dElevation);
+      else if (m.op === 'zoom') scene.zoomBy(m.factor);
+      else if (m.op === 'pan') scene.panBy(m.dx, m.dy);
+      else scene.resetView();
+    }
+  };
+  const applyMoves = useEffectEvent(apply);
+  useEffect(() => {
+    const host = hostRef.current;
+    if (!host || status !== 'ready') return;
+    const onWheel = (e: WheelEvent) => {
+      e.preventDefault();
+      applyMoves([wheelZoom(e.deltaMode === 1 ? e.deltaY * 33 : e.deltaY)]);
+    };
+    host.addEventListener('wheel', onWheel, { passive: false });
+    return () => host.removeEventListener('wheel', onWheel);
+  }, [status]);
+  const onPointerDown = (e: PointerEvent<HTMLDivElement>) => {
+    if ((e.target as HTMLElement).closest('button')) return;
+    e.currentTarget.setPointerCapture(e.pointerId);
+    const r = e.currentTarget.getBoundingClientRect();
+    const pans = e.button === 2 || e.shiftKey || e.ctrlKey || e.metaKey;
+    gestures.down({ id: e.pointerId, x: e.clientX - r.left, y: e.clientY - r.top, pans });
+  };
+  const onPointerMove = (e: PointerEvent<HTMLDivElement>) => {
+    if (gestures.count === 0) return;
+    const r = e.currentTarget.getBoundingClientRect();
+    apply(gestures.move(e.pointerId, e.clientX - r.left, e.clientY - r.top, r.height));
+  };
+  const onPointerUp = (e: PointerEvent<HTMLDivElement>) => gestures.up(e.pointerId);
   useEffect(() => {
     if (status === 'ready' && linkage) sceneRef.current?.setLinkage(linkage);
   }, [status, linkage, sceneRef]);
@@ -115,8 +207,18 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus }: 
           aria-label={sm.viewLabel}
           aria-describedby="spatial-view-hint"
           onKeyDown={onKeyDown}
+          onPointerDown={onPointerDown}
+          onPointerMove={onPointerMove}
+          onPointerUp={onPointerUp}
+          onPointerCancel={onPointerUp}
+          onContextMenu={(e) => e.preventDefault()}
         >
-          <canvas ref={canvasRef} className="spatial-canvas" data-testid="spatial-canvas" />
+          <canvas
+            key={workerFailed ? 'main' : 'first'}
+            ref={canvasRef}
+            className="spatial-canvas"
+            data-testid="spatial-canvas"
+          />
           {status === 'loading' ? <p className="spatial-view-loading">{sm.viewLoading}</p> : null}
           {status === 'ready' && pose === null && linkage ? (
             <p className="spatial-view-warning" role="status">

@@ -27,7 +27,6 @@ import {
   WebGLRenderer,
 } from 'three';
 import type { InterleavedBufferAttribute, Material, Object3D } from 'three';
-import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
@@ -42,6 +41,8 @@ import type { RenderQuality } from './renderQuality';
 import type { RibbonView } from './screenRibbon';
 import { ribbonIndex, ribbonInto, ribbonVertexCount } from './screenRibbon';
 import { ADAPT_WINDOW, REST_MS, adaptQuality, pixelRatioFor, qualityForRenderer } from './renderQuality';
+import type { SceneEnv } from './sceneEnv';
+import type { PlayRun } from './viewProtocol';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
 export type Projection = 'perspective' | 'orthographic';
@@ -61,14 +62,17 @@ export interface SpatialScene {
   zoomBy(factor: number): void;
   /** Pans by a fraction of the view's height (x right, y up). */
   panBy(dx: number, dy: number): void;
-  /** Resizes the drawing buffer to the canvas' CSS size (times devicePixelRatio). */
-  resize(widthPx: number, heightPx: number): void;
+  /** Resizes the drawing buffer to the canvas' CSS size (times the device pixel ratio, given when it changed). */
+  resize(widthPx: number, heightPx: number, devicePixelRatio?: number): void;
   /** PNG bytes of the view at scale × its CSS size. */
   pngBytes(scale: number): Promise<Uint8Array>;
   /** Frames rendered so far (for tests and bench). */
   frames(): number;
-  /** The look drawn now (lean on a software WebGL or after slow frames; see renderQuality). */
-  quality(): RenderQuality;
+  /**
+   * Only where the view runs Play itself (in its worker, on its own clock): starts Play from the run's θ2 and branch
+   * (again with each new run), or stops it (null; the view then shows the last pose set). Absent: the page plays.
+   */
+  play?(run: PlayRun | null): void;
   dispose(): void;
 }
 
@@ -210,22 +214,6 @@ function disposeTree(root: Object3D): void {
   });
 }
 
-/**
- * The WebGL renderer's name (UNMASKED_RENDERER_WEBGL where exposed, else RENDERER), read on a throwaway context so
- * the view's own context can be made with the right antialias; null when WebGL or the name is not available.
- */
-function probeRenderer(): string | null {
-  const gl = document.createElement('canvas').getContext('webgl');
-  if (!gl) return null;
-  try {
-    const info = gl.getExtension('WEBGL_debug_renderer_info');
-    const name: unknown = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
-    return typeof name === 'string' ? name : null;
-  } finally {
-    gl.getExtension('WEBGL_lose_context')?.loseContext();
-  }
-}
-
 /** A fixed line through points (x y z flat): fat (pixels wide) in the full look, a 1 px line in the lean one. */
 function fixedLine(q: RenderQuality, color: string, widthPx: number, pts: number[], opacity = 1): Line2 | Line | null {
   if (pts.length < 6) return null;
@@ -275,15 +263,18 @@ function fixedSegments(
 }
 
 /**
- * Makes the view on canvas: throws when WebGL cannot start (the caller shows its fallback). Orbit, zoom and pan by
- * mouse and touch come from three's OrbitControls; the keys from the caller (orbitBy, zoomBy, panBy).
+ * Makes the view on canvas (the page's, or an OffscreenCanvas in a worker): throws when WebGL cannot start (the caller
+ * shows its fallback). Orbit, zoom and pan come from the caller (orbitBy, zoomBy, panBy: keys, and the pointer
+ * gestures of viewGestures.ts), so nothing here touches the DOM.
  */
-export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
-  let quality = qualityForRenderer(probeRenderer());
+export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, env: SceneEnv): SpatialScene {
+  let quality = qualityForRenderer(env.rendererName);
   const renderer = new WebGLRenderer({ canvas, antialias: quality.antialias, alpha: false });
-  const pixelRatio = (moving: boolean) => pixelRatioFor(quality, window.devicePixelRatio || 1, moving);
+  let devicePixelRatio = env.devicePixelRatio;
+  const pixelRatio = (moving: boolean) => pixelRatioFor(quality, devicePixelRatio, moving);
   renderer.setPixelRatio(pixelRatio(false));
-  canvas.dataset.quality = quality.name;
+  const antialias = renderer.getContext().getContextAttributes()?.antialias === true;
+  env.onQuality(quality, antialias);
   renderer.setClearColor(new Color(COLORS.surface), 1);
   const scene = new Scene();
   scene.add(new AmbientLight(0xffffff, 1.6));
@@ -296,7 +287,12 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   perspective.up.copy(Z_UP);
   ortho.up.copy(Z_UP);
   let camera: PerspectiveCamera | OrthographicCamera = perspective;
-  let controls: OrbitControls<PerspectiveCamera | OrthographicCamera> = new OrbitControls(camera, canvas);
+  /** The point the camera looks at and turns about. */
+  const target = new Vector3();
+  const look = () => {
+    camera.lookAt(target);
+    camera.updateMatrixWorld();
+  };
   let frameCount = 0;
   let pending = 0;
   /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
@@ -304,7 +300,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   const latencies: number[] = [];
   /** When the last frame was drawn (ms), the timer that draws the view at rest after it, and that rest frame asked. */
   let lastFrameAt = Number.NEGATIVE_INFINITY;
-  let restTimer = 0;
+  let restTimer: ReturnType<typeof setTimeout> | 0 = 0;
   let restFrame = false;
   let size = new Vector2(1, 1);
   /** The view's fit: centre and radius of the linkage's bounding sphere (scene units). */
@@ -335,11 +331,10 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     }
     renderer.render(scene, camera);
     frameCount++;
-    // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
-    canvas.dataset.frames = String(frameCount);
+    env.onFrame(frameCount);
     lastFrameAt = performance.now();
     clearTimeout(restTimer);
-    restTimer = ratio < pixelRatio(false) ? window.setTimeout(rest, REST_MS) : 0;
+    restTimer = ratio < pixelRatio(false) ? setTimeout(rest, REST_MS) : 0;
   };
   /** The view at rest (no change asked for since the last frame): one frame at full resolution. */
   const rest = () => {
@@ -363,12 +358,6 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     askedAt = performance.now();
     pending = requestAnimationFrame(render);
   };
-  const wire = (c: OrbitControls<PerspectiveCamera | OrthographicCamera>) => {
-    c.enableDamping = false;
-    c.zoomToCursor = false;
-    c.addEventListener('change', invalidate);
-  };
-  wire(controls);
 
   // Fixed parts are rebuilt per linkage; moving parts are made once and moved.
   let fixed = new Group();
@@ -415,7 +404,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
 
   const place = (dir: Vector3, dist: number) => {
     camera.position.copy(fit.centre).addScaledVector(dir, dist);
-    controls.target.copy(fit.centre);
+    target.copy(fit.centre);
   };
   const viewDistance = () => fit.radius / Math.sin(degToRad(FOV_DEG / 2));
   const updateOrtho = () => {
@@ -433,7 +422,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     perspective.updateProjectionMatrix();
     updateOrtho();
     place(viewDir, viewDistance());
-    controls.update();
+    look();
     invalidate();
   };
 
@@ -540,7 +529,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
   /** Takes a leaner look after slow frames: the buffer at the new pixel ratio, the fixed parts rebuilt. */
   function lower(next: RenderQuality): void {
     quality = next;
-    canvas.dataset.quality = next.name;
+    env.onQuality(next, antialias);
     renderer.setPixelRatio(pixelRatio(false));
     renderer.setSize(size.x, size.y, false);
     if (linkage) buildFixed(linkage);
@@ -592,9 +581,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
     setProjection(p) {
       const next = p === 'orthographic' ? ortho : perspective;
       if (next === camera) return;
-      const target = controls.target.clone();
       const dir = camera.position.clone().sub(target);
-      controls.dispose();
       next.position.copy(target).add(dir);
       next.zoom = camera.zoom;
       // Orthographic zoom has no distance: keep the framing by matching the perspective's distance to the fit.
@@ -604,47 +591,45 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       camera = next;
       updateOrtho();
       camera.updateProjectionMatrix();
-      controls = new OrbitControls(camera, canvas);
-      wire(controls);
-      controls.target.copy(target);
-      controls.update();
+      look();
       invalidate();
     },
     resetView,
     orbitBy(dAz, dEl) {
-      const offset = camera.position.clone().sub(controls.target);
+      const offset = camera.position.clone().sub(target);
       // Spherical coordinates about z (three's Spherical is about y: swap y and z).
       const s = new Spherical().setFromCartesianCoords(offset.x, offset.z, offset.y);
       s.theta += dAz;
       s.phi = Math.min(PI - 1e-3, Math.max(1e-3, s.phi - dEl));
       const v = new Vector3().setFromSpherical(s);
-      camera.position.copy(controls.target).add(new Vector3(v.x, v.z, v.y));
-      controls.update();
+      camera.position.copy(target).add(new Vector3(v.x, v.z, v.y));
+      look();
       invalidate();
     },
     zoomBy(f) {
       if (camera === perspective) {
-        const offset = camera.position.clone().sub(controls.target).divideScalar(f);
-        camera.position.copy(controls.target).add(offset);
+        const offset = camera.position.clone().sub(target).divideScalar(f);
+        camera.position.copy(target).add(offset);
       } else {
         ortho.zoom *= f;
         ortho.updateProjectionMatrix();
       }
-      controls.update();
+      look();
       invalidate();
     },
     panBy(dx, dy) {
-      const dist = camera.position.distanceTo(controls.target);
+      const dist = camera.position.distanceTo(target);
       const h = camera === perspective ? 2 * dist * Math.tan(degToRad(FOV_DEG / 2)) : (2 * fit.radius) / ortho.zoom;
       const right = new Vector3().setFromMatrixColumn(camera.matrix, 0).multiplyScalar(dx * h);
       const up = new Vector3().setFromMatrixColumn(camera.matrix, 1).multiplyScalar(dy * h);
       const shift = right.add(up).negate();
       camera.position.add(shift);
-      controls.target.add(shift);
-      controls.update();
+      target.add(shift);
+      look();
       invalidate();
     },
-    resize(w, h) {
+    resize(w, h, ratio) {
+      if (ratio !== undefined) devicePixelRatio = ratio;
       const wPx = Math.max(1, Math.round(w));
       const hPx = Math.max(1, Math.round(h));
       renderer.setSize(wPx, hPx, false);
@@ -660,7 +645,10 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       renderer.setPixelRatio(scale);
       renderer.setSize(size.x, size.y, false);
       renderer.render(scene, camera);
-      const blob = await new Promise<Blob | null>((resolve) => canvas.toBlob(resolve, 'image/png'));
+      const blob =
+        'convertToBlob' in canvas
+          ? await canvas.convertToBlob({ type: 'image/png' })
+          : await new Promise<Blob | null>((resolve) => canvas.toBlob(resolve, 'image/png'));
       renderer.setPixelRatio(ratio);
       renderer.setSize(size.x, size.y, false);
       render();
@@ -668,11 +656,9 @@ export function createSpatialScene(canvas: HTMLCanvasElement): SpatialScene {
       return new Uint8Array(await blob.arrayBuffer());
     },
     frames: () => frameCount,
-    quality: () => quality,
     dispose() {
       if (pending) cancelAnimationFrame(pending);
       clearTimeout(restTimer);
-      controls.dispose();
       disposeTree(scene);
       renderer.dispose();
     },

@@ -1,0 +1,117 @@
+/// <reference lib="webworker" />
+import { scenePose } from '../features/spatial/sceneData';
+import type { SceneLinkage, ScenePose } from '../features/spatial/sceneData';
+import { playStep } from '../features/spatial/spatialPlay';
+import type { PlayState } from '../features/spatial/spatialPlay';
+import { createSpatialScene } from '../features/spatial/spatialScene';
+import type { SpatialScene } from '../features/spatial/spatialScene';
+import type { PlayAt, PlayRun, ViewReply, ViewRequest } from '../features/spatial/viewProtocol';
+
+declare const self: DedicatedWorkerGlobalScope;
+
+/** Longest Play step, seconds (as the page's useAnimationFrame): a throttled worker does not jump on return. */
+const MAX_DT_S = 0.1;
+
+// The Spatial page's 3D view in a worker (issue 32): three.js on the OffscreenCanvas the page handed over, Play on this
+// worker's own animation frames (spatialPlay.ts), each drawn frame told to the page (its count, and Play's θ2 and
+// branch, which the page's panels follow).
+let scene: SpatialScene | null = null;
+let linkage: SceneLinkage | null = null;
+/** The page's last pose, shown when Play stops. */
+let pagePose: ScenePose | null = null;
+let run: PlayRun | null = null;
+let play: PlayState | null = null;
+let playHandle = 0;
+let lastTick: number | null = null;
+/** Where Play is, for the next drawn frame's reply; a turn is kept until a frame carries it. */
+let playAt: PlayAt | null = null;
+
+const reply = (m: ViewReply, transfer: Transferable[] = []) => self.postMessage(m, transfer);
+
+function tick(now: number): void {
+  playHandle = self.requestAnimationFrame(tick);
+  if (!run || !play || !scene || !linkage) return;
+  const dt = lastTick === null ? 0 : Math.min(MAX_DT_S, (now - lastTick) / 1000);
+  lastTick = now;
+  if (dt <= 0) return;
+  const step = playStep(run.model, run.input, play, dt);
+  play = { theta2Deg: step.theta2Deg, branch: step.branch, direction: step.direction };
+  playAt = { theta2Deg: step.theta2Deg, branch: step.branch, turned: step.turned || playAt?.turned === true };
+  scene.setPose(step.pose ? scenePose(linkage, step.pose) : null);
+}
+
+function setRun(next: PlayRun | null): void {
+  run = next;
+  if (!next) {
+    play = null;
+    playAt = null;
+    self.cancelAnimationFrame(playHandle);
+    playHandle = 0;
+    lastTick = null;
+    scene?.setPose(pagePose);
+    return;
+  }
+  // A new run (Play started, or the linkage or state changed during Play) starts from its θ2 and branch; the
+  // direction carries on.
+  play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
+  if (!playHandle) playHandle = self.requestAnimationFrame(tick);
+}
+
+async function handle(m: ViewRequest): Promise<void> {
+  if (m.type === 'init') {
+    try {
+      if (typeof self.requestAnimationFrame !== 'function') throw new Error('no requestAnimationFrame in a worker');
+      scene = createSpatialScene(m.canvas, {
+        rendererName: m.rendererName,
+        devicePixelRatio: m.devicePixelRatio,
+        onFrame: (frames) => {
+          reply({ type: 'frame', frames, play: playAt });
+          if (playAt) playAt = { ...playAt, turned: false };
+        },
+        onQuality: (q, antialias) => reply({ type: 'quality', name: q.name, antialias }),
+      });
+      reply({ type: 'ready' });
+    } catch (e) {
+      reply({ type: 'failed', message: e instanceof Error ? e.message : String(e) });
+    }
+    return;
+  }
+  if (!scene) return;
+  switch (m.type) {
+    case 'resize':
+      scene.resize(m.widthPx, m.heightPx, m.devicePixelRatio);
+      break;
+    case 'linkage':
+      linkage = m.linkage;
+      scene.setLinkage(m.linkage);
+      break;
+    case 'pose':
+      pagePose = m.pose;
+      if (!run) scene.setPose(m.pose);
+      break;
+    case 'projection':
+      scene.setProjection(m.projection);
+      break;
+    case 'move': {
+      const v = m.move;
+      if (v.op === 'orbit') scene.orbitBy(v.dAzimuth, v.dElevation);
+      else if (v.op === 'zoom') scene.zoomBy(v.factor);
+      else if (v.op === 'pan') scene.panBy(v.dx, v.dy);
+      else scene.resetView();
+      break;
+    }
+    case 'play':
+      setRun(m.run);
+      break;
+    case 'png':
+      try {
+        const bytes = await scene.pngBytes(m.scale);
+        reply({ type: 'png', id: m.id, ok: true, bytes }, [bytes.buffer]);
+      } catch (e) {
+        reply({ type: 'png', id: m.id, ok: false, message: e instanceof Error ? e.message : String(e) });
+      }
+      break;
+  }
+}
+
+self.onmessage = (e: MessageEvent<ViewRequest>) => void handle(e.data);
