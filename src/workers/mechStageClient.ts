@@ -44,6 +44,17 @@ export function createMechStage(): MechLiveStage | null {
   let view: Extract<MechStageRequest, { type: 'view' }> | null = null;
   let scene: MechScene | null = null;
   const shown = createShownFlag();
+  /** The newest frame not yet written on the canvas's attributes (null: none waiting). */
+  let described: Drawn | null = null;
+  const describe = () => {
+    const m = described;
+    described = null;
+    if (!element || !m) return;
+    element.dataset.frames = String(framesDrawn);
+    element.dataset.input = String(m.playhead.input);
+    element.dataset.pose = m.pose;
+    element.dataset.selectedAt = m.selectedAt;
+  };
   const post = (message: MechStageRequest, transfer: Transferable[] = []) => {
     if (worker && !broken) worker.postMessage(message, transfer);
   };
@@ -70,12 +81,10 @@ export function createMechStage(): MechLiveStage | null {
     if (m.id !== run.id || run.mode === null) return;
     run.newest = m.playhead;
     framesDrawn += 1;
-    if (element) {
-      element.dataset.frames = String(framesDrawn);
-      element.dataset.input = String(m.playhead.input);
-      element.dataset.pose = m.pose;
-      element.dataset.selectedAt = m.selectedAt;
-    }
+    // The canvas's attributes follow once per page frame (an attribute written per worker frame costs the page's
+    // thread a style invalidation each).
+    if (!described) requestAnimationFrame(describe);
+    described = m;
     markFrame(m, run.mode);
     shown.set(true);
   };
@@ -140,7 +149,8 @@ export function createMechStage(): MechLiveStage | null {
     },
     stop() {
       if (run.mode === null) return;
-      // A frame of the run that comes later is stale.
+      // The canvas's attributes name its last frame at once; a frame of the run that comes later is stale.
+      describe();
       run = { id: run.id + 1, mode: null, newest: null };
       setMode('');
       post({ type: 'stop' });

@@ -273,11 +273,15 @@ describe('createMechStage', () => {
     vi.stubGlobal('OffscreenCanvas', class {});
     vi.stubGlobal('HTMLCanvasElement', FakeCanvas);
     vi.stubGlobal('window', { devicePixelRatio: 1 });
-    return { workers, canvas: new FakeCanvas() as unknown as HTMLCanvasElement };
+    // The page's next frame comes when the test says (the canvas's attributes follow then).
+    const frames: (() => void)[] = [];
+    vi.stubGlobal('requestAnimationFrame', (cb: () => void) => frames.push(cb));
+    const nextFrame = () => frames.splice(0).forEach((cb) => cb());
+    return { workers, canvas: new FakeCanvas() as unknown as HTMLCanvasElement, nextFrame };
   }
 
   it('follows its run: a frame of the current run shows, a stale one does not, a stop hides it', () => {
-    const { workers, canvas: element } = browserLike();
+    const { workers, canvas: element, nextFrame } = browserLike();
     const stage = createMechStage()!;
     stage.attach(element);
     expect(workers).toHaveLength(1);
@@ -297,8 +301,12 @@ describe('createMechStage', () => {
     workers[0].answer({ type: 'drawn', id: play.id, playhead: drawn, ...frame });
     expect(stage.showing()).toBe(true);
     expect(stage.latest()).toEqual(drawn);
+    nextFrame();
     expect(element.dataset.input).toBe('0.2');
+    // A stop names the last frame drawn on the canvas at once, without waiting for a page frame.
+    workers[0].answer({ type: 'drawn', id: play.id, playhead: { ...drawn, input: 0.25 }, ...frame });
     stage.stop();
+    expect(element.dataset.input).toBe('0.25');
     expect(stage.showing()).toBe(false);
     workers[0].answer({ type: 'drawn', id: play.id, playhead: { ...drawn, input: 0.3 }, ...frame });
     expect(stage.showing()).toBe(false);
