@@ -592,6 +592,26 @@ test.describe('mechanism page: the live stage', () => {
     expect(Math.hypot(x - held.at[0], y - held.at[1])).toBeLessThan(1e-9);
   });
 
+  test('a new template during Play gets the stage’s canvas anew: its Play is drawn by the worker too', async ({
+    page,
+  }) => {
+    await page.goto('./?page=mech&tpl=four-bar');
+    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(live(page)).toBeVisible();
+    await page.locator('.mech-template[data-template="sliderCrank"]').click();
+    await expect(page.locator('.mech-name-title')).toHaveText('Slider-crank');
+    // The new canvas view's stage canvas, handed to the same worker, hidden until its own run draws.
+    await expect(live(page)).toHaveAttribute('data-stage', 'attached');
+    await expect(live(page)).toBeHidden();
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(live(page)).toBeVisible();
+    await expect.poll(async () => (await liveFrame(page)).frames).toBeGreaterThan(3);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(live(page)).toBeHidden();
+    await expect(stage(page)).toHaveAttribute('data-input', String((await liveFrame(page)).input));
+  });
+
   test('without OffscreenCanvas the page draws Play and a drag itself', async ({ page }) => {
     await page.addInitScript(() => {
       delete (window as unknown as { OffscreenCanvas?: unknown }).OffscreenCanvas;

@@ -88,6 +88,12 @@ export function createMechStage(): MechLiveStage | null {
     markFrame(m, run.mode);
     shown.set(true);
   };
+  /** Hands the worker a canvas element (once per element: a remounted canvas view, a new template, is a new one). */
+  const handOver = (canvas: HTMLCanvasElement) => {
+    const offscreen = canvas.transferControlToOffscreen();
+    canvas.dataset.stage = 'attached';
+    post({ type: 'canvas', canvas: offscreen }, [offscreen]);
+  };
   /** Starts the worker and hands it the canvas, the view and the scene; false where it cannot. */
   const start = (): boolean => {
     if (worker) return true;
@@ -96,9 +102,7 @@ export function createMechStage(): MechLiveStage | null {
       worker = startMechStageWorker();
       worker.addEventListener('message', onReply);
       worker.addEventListener('error', breakDown);
-      const offscreen = element.transferControlToOffscreen();
-      element.dataset.stage = 'attached';
-      post({ type: 'canvas', canvas: offscreen }, [offscreen]);
+      handOver(element);
       if (view) post(view);
       if (scene) post({ type: 'scene', scene });
       return true;
@@ -114,7 +118,15 @@ export function createMechStage(): MechLiveStage | null {
     attach(canvas) {
       if (element === canvas) return;
       element = canvas;
-      start();
+      if (!worker) {
+        start();
+        return;
+      }
+      try {
+        handOver(canvas);
+      } catch {
+        breakDown();
+      }
     },
     setView(next) {
       const dpr = Math.max(1, Math.min(4, window.devicePixelRatio || 1));

@@ -63,6 +63,8 @@ export function MechStage({ at, scene, dragged, live = null, ...canvas }: MechSt
   useEffect(() => {
     live?.setScene(scene);
   }, [live, scene]);
+  // A run of the stage ends with this view (a new template remounts it, with a new canvas for the stage).
+  useEffect(() => () => live?.stop(), [live]);
   // Each move of a drag is drawn by the stage; its end stops it (the page draws the committed linkage).
   useEffect(() => {
     if (!live) return;

@@ -312,6 +312,19 @@ describe('createMechStage', () => {
     expect(stage.showing()).toBe(false);
   });
 
+  it('hands a new canvas (a remounted view) to the worker it has', () => {
+    const { workers, canvas: first } = browserLike();
+    const stage = createMechStage()!;
+    stage.attach(first);
+    const second = new (
+      globalThis as unknown as { HTMLCanvasElement: new () => HTMLCanvasElement }
+    ).HTMLCanvasElement();
+    stage.attach(second);
+    expect(workers).toHaveLength(1);
+    expect(workers[0].posted.filter((m) => (m as MechStageRequest).type === 'canvas')).toHaveLength(2);
+    expect(second.dataset.stage).toBe('attached');
+  });
+
   it('turns itself off for good when its worker fails: the page draws again', () => {
     const { workers, canvas: element } = browserLike();
     const stage = createMechStage()!;
