@@ -524,13 +524,18 @@ async function worldAt(page: Page, p: { x: number; y: number }): Promise<{ x: De
  */
 const GRID_TOL = 2e-4;
 
+/** Opens the 6-2-5-5 four-bar and waits for its live stage's worker to have drawn once (a run then starts warm). */
+async function openFourBarWithStage(page: Page): Promise<void> {
+  await page.goto('./?page=mech&tpl=four-bar');
+  await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+  await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+}
+
 test.describe('mechanism page: the live stage', () => {
   test('Play is drawn by the worker, the crank pin where the input puts it, and Pause hands the canvas back there', async ({
     page,
   }) => {
-    await page.goto('./?page=mech&tpl=four-bar');
-    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
-    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    await openFourBarWithStage(page);
     await page.getByRole('radio', { name: 'Choose A' }).check();
     await page.getByRole('button', { name: 'Play' }).click();
     await expect(live(page)).toBeVisible();
@@ -561,9 +566,7 @@ test.describe('mechanism page: the live stage', () => {
   test('a joint’s drag is drawn by the worker with the pin under the pointer, and the release hands it back there', async ({
     page,
   }) => {
-    await page.goto('./?page=mech&tpl=four-bar');
-    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
-    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    await openFourBarWithStage(page);
     const at = await screenOf(page, 'O4');
     await page.mouse.move(at.x, at.y);
     await page.mouse.down();
@@ -595,8 +598,7 @@ test.describe('mechanism page: the live stage', () => {
   test('a new template during Play gets the stage’s canvas anew: its Play is drawn by the worker too', async ({
     page,
   }) => {
-    await page.goto('./?page=mech&tpl=four-bar');
-    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    await openFourBarWithStage(page);
     await page.getByRole('button', { name: 'Play' }).click();
     await expect(live(page)).toBeVisible();
     await page.locator('.mech-template[data-template="sliderCrank"]').click();
