@@ -5,6 +5,7 @@ import { playStep } from '../features/spatial/spatialPlay';
 import type { PlayState } from '../features/spatial/spatialPlay';
 import { createSpatialScene } from '../features/spatial/spatialScene';
 import type { SpatialScene } from '../features/spatial/spatialScene';
+import { PANEL_INTERVAL_MS } from '../features/spatial/spatialPlayhead';
 import type { PlayAt, PlayRun, ViewReply, ViewRequest } from '../features/spatial/viewProtocol';
 
 declare const self: DedicatedWorkerGlobalScope;
@@ -27,6 +28,29 @@ let lastTick: number | null = null;
 let playAt: PlayAt | null = null;
 
 const reply = (m: ViewReply, transfer: Transferable[] = []) => self.postMessage(m, transfer);
+
+/** Frames drawn, when the page was last told (ms), and the timer that tells it of the frames drawn since. */
+let frames = 0;
+let toldAt = Number.NEGATIVE_INFINITY;
+let tellTimer: ReturnType<typeof setTimeout> | 0 = 0;
+
+/**
+ * Tells the page of the frames drawn (their count, where Play is) at most every PANEL_INTERVAL_MS, as often as its
+ * panels follow Play, and of the last one within that: each message is a task on the page's thread, which under a
+ * software compositor also handles every frame of the canvas, so the page gets a dozen a second, not one per frame.
+ */
+function tell(): void {
+  const now = performance.now();
+  if (now - toldAt < PANEL_INTERVAL_MS) {
+    if (!tellTimer) tellTimer = setTimeout(tell, PANEL_INTERVAL_MS - (now - toldAt));
+    return;
+  }
+  clearTimeout(tellTimer);
+  tellTimer = 0;
+  toldAt = now;
+  reply({ type: 'frame', frames, play: playAt });
+  if (playAt) playAt = { ...playAt, turned: false };
+}
 
 function tick(now: number): void {
   playHandle = self.requestAnimationFrame(tick);
@@ -64,9 +88,9 @@ async function handle(m: ViewRequest): Promise<void> {
       scene = createSpatialScene(m.canvas, {
         rendererName: m.rendererName,
         devicePixelRatio: m.devicePixelRatio,
-        onFrame: (frames) => {
-          reply({ type: 'frame', frames, play: playAt });
-          if (playAt) playAt = { ...playAt, turned: false };
+        onFrame: (n) => {
+          frames = n;
+          tell();
         },
         onQuality: (q, antialias) => reply({ type: 'quality', name: q.name, antialias }),
       });
