@@ -1,7 +1,7 @@
 import { resolve } from 'node:path';
 import react from '@vitejs/plugin-react';
 import { defineConfig } from 'vite';
-import { SOLVER_WORKER, STAGE_WORKER, inlineWorkers } from './scripts/viteInlineWorker';
+import { MECH_STAGE_WORKER, SOLVER_WORKER, STAGE_WORKER, inlineWorkers } from './scripts/viteInlineWorker';
 
 /**
  * The offline single file (npm run build:single): the app as one script and one stylesheet in dist-single,
@@ -10,7 +10,7 @@ import { SOLVER_WORKER, STAGE_WORKER, inlineWorkers } from './scripts/viteInline
  */
 export default defineConfig({
   base: './',
-  plugins: [react(), inlineWorkers([SOLVER_WORKER, STAGE_WORKER])],
+  plugins: [react(), inlineWorkers([SOLVER_WORKER, STAGE_WORKER, MECH_STAGE_WORKER])],
   // A classic (iife) worker: Chromium refuses a module worker from a blob: URL on a file:// page (opaque origin,
   // CORS-mode fetch) and the client falls back to the main thread; a classic one starts. The worker's own lazy
   // import (the lab's 60-digit reference) goes inside the blob too.

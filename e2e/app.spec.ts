@@ -194,6 +194,76 @@ test.describe('the simulator', () => {
     await expect(again).toBeHidden();
   });
 
+  for (const [plots, query] of [
+    ['angle', ''],
+    ['velocity', '?plot=vel'],
+    ['input torque', '?frc=1&plot=trq'],
+  ] as const) {
+    test(`while the worker draws Play, each ${plots} plot's marker follows its frames: every move is to a θ2 it drew`, async ({
+      page,
+    }) => {
+      await page.goto(`./${query}`);
+      await waitReady(page);
+      await page.getByRole('button', { name: 'Play' }).click();
+      const live = page.locator('canvas.linkage-live');
+      await expect(live).toBeVisible({ timeout: 30_000 });
+      // Recorded in the page: the θ2 of each frame the worker draws, and each marker's moves as the θ2 on its own
+      // chart's x scale (data-x over the plot's width), 20 moves of each marker.
+      const followed = await page.evaluate(() => {
+        const canvas = document.querySelector<HTMLCanvasElement>('canvas.linkage-live');
+        // The charts against θ2: those with a marker box over their SVG.
+        const boxes = [...document.querySelectorAll<HTMLElement>('.chart-box')].filter(
+          (b) => b.querySelector('.chart-marker') && b.querySelector('svg g.axis-x path.domain'),
+        );
+        if (!canvas || boxes.length === 0) throw new Error('no live canvas or no θ2 chart');
+        const drawn: number[] = [];
+        new MutationObserver(() => drawn.push(Number(canvas.dataset.theta2))).observe(canvas, {
+          attributes: true,
+          attributeFilter: ['data-theta2'],
+        });
+        return Promise.all(
+          boxes.map(
+            (box) =>
+              new Promise<{ label: string; moves: { theta2: number; off: number; frame: number }[] }>((resolve) => {
+                const svg = box.querySelector('svg') as SVGSVGElement;
+                const width = (svg.querySelector('g.axis-x path.domain') as SVGPathElement).getBBox().width;
+                const marker = box.querySelector<HTMLElement>('.chart-marker') as HTMLElement;
+                const moves: { theta2: number; off: number; frame: number }[] = [];
+                new MutationObserver((_r, observer) => {
+                  // From the worker's third frame the page hears of: a move to a frame drawn before the page
+                  // listened could not be told from a wrong one.
+                  if (drawn.length < 3) return;
+                  const theta2 = (Number(marker.dataset.x) / width) * 360;
+                  // How far that θ2 is from the nearest of the worker's last ten frames (degrees, around the turn).
+                  const recent = drawn.slice(-10);
+                  const off = Math.min(...recent.map((d) => Math.abs(((theta2 - d + 540) % 360) - 180)));
+                  moves.push({ theta2, off, frame: drawn.length });
+                  if (moves.length < 20) return;
+                  observer.disconnect();
+                  resolve({ label: svg.getAttribute('aria-label') ?? '', moves });
+                }).observe(marker, { attributes: true, attributeFilter: ['data-x'] });
+              }),
+          ),
+        );
+      });
+      for (const { label, moves } of followed) {
+        // The frame's θ2 on a chart some 300 px wide: half a degree is a pixel's rounding, not another frame.
+        expect(
+          moves.every((m) => m.off < 0.5),
+          `${label}: ${moves.map((m) => `${m.theta2.toFixed(1)} (${m.off.toFixed(2)})`).join(' ')}`,
+        ).toBe(true);
+        // It follows the frames, not the state's commits (a few a second): on average a move every few frames.
+        const framesPerMove = (moves[moves.length - 1].frame - moves[0].frame) / (moves.length - 1);
+        expect(framesPerMove, label).toBeLessThan(6);
+        // The marker moves on (a commit may place it again at the same θ2).
+        expect(new Set(moves.map((m) => m.theta2.toFixed(1))).size, label).toBeGreaterThanOrEqual(15);
+      }
+      expect(followed.length).toBeGreaterThanOrEqual(plots === 'input torque' ? 1 : 2);
+      await page.getByRole('button', { name: 'Pause' }).click();
+      await expect(live).toBeHidden();
+    });
+  }
+
   test('on a slow page a θ2 drag is drawn by the worker over the canvas, and the release hands the canvas back at its value', async ({
     page,
     context,

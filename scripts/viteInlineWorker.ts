@@ -10,6 +10,8 @@ export interface WorkerEntry {
 export const SOLVER_WORKER: WorkerEntry = { client: 'solverClient.ts', worker: 'solver.worker.ts' };
 /** The live stage's worker (Play drawn on an OffscreenCanvas), started by src/workers/stageClient.ts. */
 export const STAGE_WORKER: WorkerEntry = { client: 'stageClient.ts', worker: 'stage.worker.ts' };
+/** The Mechanisms page's live stage worker (Play and a joint's drag drawn), started by src/workers/mechStageClient.ts. */
+export const MECH_STAGE_WORKER: WorkerEntry = { client: 'mechStageClient.ts', worker: 'mechStage.worker.ts' };
 
 /** The expression a client starts its worker from its own file with. */
 function workerFromFile(entry: WorkerEntry): string {

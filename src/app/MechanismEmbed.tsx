@@ -1,5 +1,6 @@
 import { MechanismPage } from '../features/mechanism/MechanismPage';
 import { mechMessagesFor } from '../features/mechanism/mechMessages';
+import { createMechStage } from '../workers/mechStageClient';
 import { useMessages } from '../shared/i18n/MessagesContext';
 import type { MechTemplateKey } from '../shared/state/slices/mechSlice';
 import { MECH_TEMPLATE_KEYS } from '../shared/state/slices/mechSlice';
@@ -37,6 +38,7 @@ export function MechanismEmbed({ session, embed }: EmbedViewProps) {
         state={state}
         dispatch={dispatch}
         client={session.client}
+        createStage={createMechStage}
         embedded
         embedOptions={{
           driveShown: show('controls'),

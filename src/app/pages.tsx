@@ -4,6 +4,7 @@ import type { Locale, Page } from '../shared/state/appState';
 import { SimulatorPage } from './SimulatorPage';
 import type { SimulatorSession } from './useSimulatorSession';
 import { createSolverPool } from '../workers/solverClient';
+import type { MechanismPageProps } from '../features/mechanism/MechanismPage';
 
 // The solver lab (its charts and tables) and the synthesis page load only when they are opened.
 const LabPanel = lazy(() => import('../features/lab/LabPanel').then((m) => ({ default: m.LabPanel })));
@@ -11,8 +12,11 @@ const SynthesisPage = lazy(() =>
   import('../features/synthesis/SynthesisPage').then((m) => ({ default: m.SynthesisPage })),
 );
 
+// The mechanism page loads with its live stage's client (Play and a joint's drag drawn in a worker).
 const MechanismPage = lazy(() =>
-  import('../features/mechanism/MechanismPage').then((m) => ({ default: m.MechanismPage })),
+  Promise.all([import('../features/mechanism/MechanismPage'), import('../workers/mechStageClient')]).then(([m, c]) => ({
+    default: (props: MechanismPageProps) => <m.MechanismPage {...props} createStage={c.createMechStage} />,
+  })),
 );
 const SpatialPage = lazy(() => import('../features/spatial/SpatialPage').then((m) => ({ default: m.SpatialPage })));
 

@@ -14,7 +14,7 @@ import { createStageRun } from '../features/simulator/stage/stageRun';
 const WARM_AFTER_DRAWS = 4;
 
 /** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
-function canTransfer(): boolean {
+export function canTransfer(): boolean {
   return (
     typeof Worker !== 'undefined' &&
     typeof OffscreenCanvas !== 'undefined' &&
@@ -29,7 +29,7 @@ function startStageWorker(): Worker {
 }
 
 /** A flag whose listeners hear each change (the stage's showing()). */
-function createShownFlag() {
+export function createShownFlag() {
   let shown = false;
   const listeners = new Set<() => void>();
   return {

@@ -1,6 +1,7 @@
 import { useLayoutEffect } from 'react';
 import type { MarkerAt } from '../../shared/charts/chart';
 import { useLiveChart } from '../../shared/charts/useLiveChart';
+import type { LiveMarker } from '../../shared/charts/useLiveChart';
 import { createXYChart } from '../../shared/charts/xyChart';
 import { BEARING_FIT } from './forceCharts';
 import type { BearingInputs } from './forceCharts';
@@ -8,7 +9,8 @@ import type { BearingInputs } from './forceCharts';
 /** Props of BearingChartView: the diagram's data and texts, the marker (this pose's F12) and the figure's name. */
 export interface BearingChartViewProps {
   inputs: BearingInputs;
-  marker: MarkerAt;
+  /** The marker, or its source (Play's frame moves it). */
+  marker: LiveMarker<MarkerAt>;
   label: string;
 }
 

@@ -4,7 +4,9 @@ import { downloadPng, downloadText } from '../../shared/canvas/download';
 import { exportChart } from '../../shared/charts/exportChart';
 import { RateChartView } from '../../shared/charts/RateChartView';
 import { fileStem } from '../../shared/fileNames';
-import { useFramePose } from '../../shared/linkage/FramePoseContext';
+import { useFrameDerived, useFrameSelect } from '../../shared/linkage/FramePoseContext';
+import type { FramePose } from '../../shared/linkage/FramePoseContext';
+import type { ValueSource } from '../../shared/state/externalValue';
 import type { ForcePlotKind } from '../../shared/state/appState';
 import { BearingChartView } from './BearingChartView';
 import type { CycleForcesView } from './forceCycleData';
@@ -17,7 +19,7 @@ import {
   torqueInputs,
   torqueMarker,
 } from './forceCharts';
-import type { PoseForces } from './forceModel';
+import type { ForceSetup, PoseForces } from './forceModel';
 import { poseForces } from './forceModel';
 import { forcesMessages } from './forcesMessages';
 import type { ForcesMessages } from './forcesMessages';
@@ -36,26 +38,40 @@ const SUBJECT: Record<ForcePlotKind, string> = {
   bearing: 'bearing-load-F12',
 };
 
-/** The PNG (2x) and SVG buttons under a force plot: the plot as on screen, with this pose's marker. */
+/** The frame's θ2 (degrees) and the forces at its pose. */
+interface ForcesAt {
+  theta2Deg: number;
+  pose: PoseForces;
+}
+
+/** The frame's θ2 and its pose's forces for a setup. */
+function forcesAt(setup: ForceSetup, f: FramePose): ForcesAt {
+  const { theta2Rad, pose } = f.local;
+  return { theta2Deg: radToDeg360(theta2Rad), pose: poseForces(setup, theta2Rad, pose) };
+}
+
+/** The PNG (2x) and SVG buttons under a force plot: the plot as on screen, with the marker of the pose on screen. */
 function ExportRow({
   kind,
   cycle,
-  pose,
-  theta2Deg,
+  at,
   stem,
   t,
   title,
 }: {
   kind: ForcePlotKind;
   cycle: CycleForcesView | null;
-  pose: PoseForces;
-  theta2Deg: number;
+  /** The pose on screen's forces, read when a button is pressed. */
+  at: ValueSource<ForcesAt>;
   stem: string;
   t: ForcesMessages;
   title: string;
 }) {
   const name = `${stem}_${SUBJECT[kind]}`;
-  const chart = () => forceChartExport(kind, cycle, pose, theta2Deg, t);
+  const chart = () => {
+    const { pose, theta2Deg } = at.get();
+    return forceChartExport(kind, cycle, pose, theta2Deg, t);
+  };
   return (
     <div className="export-buttons forces-export">
       <button
@@ -84,30 +100,49 @@ function ExportRow({
  * samples, with the frame on screen as the marker, and PNG and SVG buttons.
  */
 export function ForcePlots({ kind }: ForcePlotsProps) {
-  const { state, local } = useFramePose();
+  // The frame on screen's branch and direction (Play's rocking input switches them) re-render the plots, with the
+  // committed state's lengths, forces and input motion; the markers follow every frame by themselves.
+  const committed = useFrameSelect(committedOf);
+  const branch = useFrameSelect(branchOf);
+  const direction = useFrameSelect(directionOf);
+  const state = useMemo(
+    () => ({
+      ...committed,
+      design: { ...committed.design, branch },
+      motion: { ...committed.motion, direction },
+    }),
+    [committed, branch, direction],
+  );
   const t = forcesMessages.get(state.shell.locale);
   const cycle = useForceCycle(state);
   const setup = useForceSetup(state);
-  const pose = useMemo(() => poseForces(setup, local.theta2Rad, local.pose), [setup, local]);
-  const theta2Deg = radToDeg360(local.theta2Rad);
+  const at = useFrameDerived((f) => forcesAt(setup, f), [setup]);
   const stem = fileStem(state.design.linkage, state.design.branch);
   const torque = useMemo(() => torqueInputs(cycle, t), [cycle, t]);
   const pins = useMemo(() => pinForceInputs(cycle, t), [cycle, t]);
   const bearing = useMemo(() => bearingInputs(cycle, t), [cycle, t]);
   const title = kind === 'torque' ? t.chartTorque : kind === 'pinForces' ? t.chartPinForces : t.chartBearing;
+  // Each marker reads the frame's forces from `at` (solved once per frame).
+  const torqueAt = useFrameDerived(() => torqueMarker(at.get().theta2Deg, at.get().pose, torque.unit), [at, torque]);
+  const pinsAt = useFrameDerived(() => pinForceMarker(at.get().theta2Deg, at.get().pose, pins.unit), [at, pins]);
+  const bearingAt = useFrameDerived(() => bearingMarker(at.get().pose, bearing.unit), [at, bearing]);
   return (
     <>
       <div className={`plots-grid plots-together forces-plot forces-plot-${kind}`} data-testid={`forces-plot-${kind}`}>
         {kind === 'torque' ? (
-          <RateChartView inputs={torque} marker={torqueMarker(theta2Deg, pose, torque.unit)} label={t.chartTorque} />
+          <RateChartView inputs={torque} marker={torqueAt} label={t.chartTorque} />
         ) : kind === 'pinForces' ? (
-          <RateChartView inputs={pins} marker={pinForceMarker(theta2Deg, pose, pins.unit)} label={t.chartPinForces} />
+          <RateChartView inputs={pins} marker={pinsAt} label={t.chartPinForces} />
         ) : (
-          <BearingChartView inputs={bearing} marker={bearingMarker(pose, bearing.unit)} label={t.chartBearing} />
+          <BearingChartView inputs={bearing} marker={bearingAt} label={t.chartBearing} />
         )}
       </div>
-      <ExportRow kind={kind} cycle={cycle} pose={pose} theta2Deg={theta2Deg} stem={stem} t={t} title={title} />
+      <ExportRow kind={kind} cycle={cycle} at={at} stem={stem} t={t} title={title} />
       <p className="footnote">{kind === 'bearing' ? t.bearingFootnote : t.plotFootnote}</p>
     </>
   );
 }
+
+const committedOf = (f: FramePose) => f.committed;
+const branchOf = (f: FramePose) => f.state.design.branch;
+const directionOf = (f: FramePose) => f.state.motion.direction;

@@ -1,4 +1,4 @@
-import { useLayoutEffect } from 'react';
+import { useEffect, useLayoutEffect, useRef } from 'react';
 import type { KeyboardEvent } from 'react';
 import type { ViewOffset } from '../../shared/state/appState';
 import type { Bounds, ViewTransform } from '../../shared/canvas/view';
@@ -10,6 +10,7 @@ import { useFittedCanvas } from '../../shared/canvas/useFittedCanvas';
 import type { MechPicture } from './drawMechanism';
 import { drawMechanism } from './drawMechanism';
 import type { Pt } from './mechPose';
+import type { MechLiveStage } from './stage/mechLiveStage';
 
 /** Grab radius of a joint, CSS pixels: a finger covers more than a mouse pointer. */
 const GRAB_PX = { mouse: 14, touch: 26 };
@@ -32,6 +33,22 @@ export interface MechCanvasProps {
   onNudge: (dx: number, dy: number) => void;
   /** Lets the page draw the same picture into an export: the view as on screen. */
   viewRef?: { current: { width: number; height: number; offset: ViewOffset } | null };
+  /** The live stage, whose canvas lies over this one and is told where this one looks; default none. */
+  live?: MechLiveStage | null;
+  /** The live stage's canvas shows: this one keeps what it drew (no redraw per frame under it); default false. */
+  hold?: boolean;
+}
+
+/**
+ * The live stage's canvas over the mechanism canvas (pointer events go through to the one under it), shown while the
+ * stage draws; handed to the stage (its worker) when it mounts.
+ */
+function LiveCanvas({ live, showing }: { live: MechLiveStage; showing: boolean }) {
+  const ref = useRef<HTMLCanvasElement>(null);
+  useEffect(() => {
+    if (ref.current) live.attach(ref.current);
+  }, [live]);
+  return <canvas ref={ref} className="mech-live" aria-hidden="true" hidden={!showing} data-testid="mech-live" />;
 }
 
 /**
@@ -49,6 +66,8 @@ export function MechCanvas({
   onNudge,
   placing,
   viewRef,
+  live = null,
+  hold = false,
 }: MechCanvasProps) {
   const nearest = (transform: ViewTransform, p: ScreenPoint, pointerType: string): string | null => {
     const r = pointerType === 'touch' || pointerType === 'pen' ? GRAB_PX.touch : GRAB_PX.mouse;
@@ -77,10 +96,12 @@ export function MechCanvas({
   const transform = fitted.transform();
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
+    if (viewRef) viewRef.current = { width, height, offset: view };
+    live?.setView({ bounds, offset: view, width, height });
+    if (hold) return;
     const sized = canvas && sizeCanvas(canvas, width, height);
     if (sized) drawMechanism(sized.ctx, picture, fitView(bounds, width, height, view));
-    if (viewRef) viewRef.current = { width, height, offset: view };
-  }, [canvasRef, picture, bounds, view, width, height, viewRef]);
+  }, [canvasRef, picture, bounds, view, width, height, viewRef, live, hold]);
   const onKeyDown = (e: KeyboardEvent<HTMLCanvasElement>) => {
     const step = e.shiftKey ? 10 : 1;
     const d: Record<string, [number, number]> = {
@@ -109,6 +130,7 @@ export function MechCanvas({
       }}
       onKeyDown={onKeyDown}
       zoomLabels={labels}
+      overlay={live && <LiveCanvas live={live} showing={hold} />}
     />
   );
 }

@@ -1,14 +1,14 @@
-import { useSyncExternalStore } from 'react';
+import { useEffect, useMemo, useSyncExternalStore } from 'react';
 import type { ReactNode } from 'react';
-import type { MechanismSpec } from '../../mechanism';
 import type { MarkerAt } from '../../shared/charts/chart';
 import type { XYChartData } from '../../shared/charts/xyChart';
 import { XYChartView } from '../../shared/charts/XYChartView';
 import type { MechCanvasProps } from './MechCanvas';
 import { MechCanvas } from './MechCanvas';
-import type { MechPicture } from './drawMechanism';
+import type { MechScene } from './mechScene';
+import { mechPictureAt, poseDigest } from './mechScene';
 import type { PlayheadSource } from './livePlayhead';
-import { usePlayheadInput } from './livePlayhead';
+import { throttledSubscribe, usePlayheadInput } from './livePlayhead';
 import type { DraggedSource } from './useJointDrag';
 
 /**
@@ -34,36 +34,48 @@ function useShownInput({ playhead, rest, clamp }: PlayheadInput, everyMs?: numbe
   return clamp(usePlayheadInput(playhead, rest, everyMs));
 }
 
-/**
- * A short fingerprint of a picture's pose (the sum of x + √2·y over its points, 6 digits): tools and the bench see a
- * new pose drawn. The irrational weight keeps a move along a rational slope (a drag 2 px across, 1 px down) from
- * cancelling out.
- */
-export function poseDigest(picture: MechPicture): string {
-  let sum = 0;
-  for (const q of Object.values(picture.pose.joints)) sum += q.x + Math.SQRT2 * q.y;
-  for (const q of Object.values(picture.pose.points)) sum += q.x + Math.SQRT2 * q.y;
-  return sum.toPrecision(6);
-}
-
-/** Props of MechStage: the canvas's props but its picture, which pictureAt makes for the input shown. */
-export interface MechStageProps extends Omit<MechCanvasProps, 'picture'> {
+/** Props of MechStage: the canvas's props but its picture, which is the scene's at the input shown. */
+export interface MechStageProps extends Omit<MechCanvasProps, 'picture' | 'hold'> {
   at: PlayheadInput;
-  pictureAt: (input: number, dragged: MechanismSpec | null) => MechPicture;
+  scene: MechScene;
   /** The spec a joint's drag draws now (null: no drag). */
   dragged: DraggedSource;
 }
 
+const still = () => () => {};
+
 /**
- * The linkage's canvas at the input shown, redrawn every frame of Play and every move of a joint's drag, in a box (no box of its own: display
- * contents) whose data-input is the input drawn and data-pose its poseDigest, for tests and the bench.
+ * The linkage's canvas at the input shown, in a box (no box of its own: display contents) whose data-input is the input
+ * shown and data-pose its poseDigest, for tests and the bench. The page draws every frame of Play and every move of a
+ * joint's drag itself, unless a live stage (its worker) does: each move of a drag goes to the stage, as do the scene
+ * and the view, and while the stage's canvas shows, this one keeps what it drew and follows (its data attributes) at
+ * READOUT_MS; it draws the state on screen again in the commit that hides the stage's canvas.
  */
-export function MechStage({ at, pictureAt, dragged, ...canvas }: MechStageProps) {
-  const input = useShownInput(at);
-  const picture = pictureAt(input, useSyncExternalStore(dragged.subscribe, dragged.get));
+export function MechStage({ at, scene, dragged, live = null, ...canvas }: MechStageProps) {
+  const showing = useSyncExternalStore(live?.subscribe ?? still, () => live?.showing() ?? false);
+  const input = useShownInput(at, showing ? READOUT_MS : undefined);
+  const draggedSubscribe = useMemo(
+    () => (showing ? throttledSubscribe(dragged.subscribe, READOUT_MS) : dragged.subscribe),
+    [showing, dragged],
+  );
+  const spec = useSyncExternalStore(draggedSubscribe, dragged.get);
+  const picture = mechPictureAt(scene, input, spec);
+  useEffect(() => {
+    live?.setScene(scene);
+  }, [live, scene]);
+  // Each move of a drag is drawn by the stage; its end stops it (the page draws the committed linkage).
+  useEffect(() => {
+    if (!live) return;
+    return dragged.subscribe(() => {
+      const next = dragged.get();
+      if (!live.usable()) return;
+      if (next) live.show(0, next);
+      else live.stop();
+    });
+  }, [live, dragged]);
   return (
     <div className="mech-stage" data-input={input} data-pose={poseDigest(picture)}>
-      <MechCanvas picture={picture} {...canvas} />
+      <MechCanvas picture={picture} live={live} hold={showing} {...canvas} />
     </div>
   );
 }

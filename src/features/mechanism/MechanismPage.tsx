@@ -1,5 +1,5 @@
 import './MechanismPage.css';
-import { useDeferredValue, useMemo, useRef, useState } from 'react';
+import { useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { Dispatch } from 'react';
 import { GROUND, MECHANISM_TEMPLATES, sweepMechanism } from '../../mechanism';
 import type { MechanismSpec } from '../../mechanism';
@@ -26,9 +26,11 @@ import { analyseMechanism, runRange, valueAt, withRefinedLimits } from './mechAn
 import { csvInputs, mechCsv } from './mechCsv';
 import type { MechMessages } from './mechMessages';
 import { mechMessagesFor } from './mechMessages';
-import type { MechArrow, MechPicture } from './drawMechanism';
 import { drawMechanism, linkColor } from './drawMechanism';
-import { drawnPose, pathOf, poseAt } from './mechPose';
+import { drawnPose, pathOf } from './mechPose';
+import type { MechScene, MechSeriesAt } from './mechScene';
+import { mechPictureAt } from './mechScene';
+import type { MechLiveStage, MechStageFactory } from './stage/mechLiveStage';
 import type { Pt } from './mechPose';
 import type { MechPlotChoice } from './mechPlots';
 import { axisLabel, choiceLabel, defaultPlots, needsRates, parseChoice, plotChoices, plotValues } from './mechPlots';
@@ -58,6 +60,8 @@ export interface MechanismPageProps {
   embedded?: boolean;
   /** The embed's panels and lock (its URL's panels and lock=edit); default: drive and plots shown, editable. */
   embedOptions?: MechEmbedOptions;
+  /** Makes the live stage (Play and a joint's drag drawn in a worker); default none: the page draws them itself. */
+  createStage?: MechStageFactory;
 }
 
 /** What an embed of the page shows and locks: the drive row, the joints' positions, the plots; dragging joints. */
@@ -86,6 +90,9 @@ const EMBED_DEFAULTS: MechEmbedOptions = {
  */
 export function MechanismPage(props: MechanismPageProps) {
   const { state, dispatch, client, embedded = false, openedSearch = '', embedOptions = EMBED_DEFAULTS } = props;
+  // One stage for the page's life (a new template remounts the workspace, whose canvas the stage takes anew).
+  const [live] = useState(() => props.createStage?.() ?? null);
+  useEffect(() => () => live?.dispose(), [live]);
   const m = mechMessagesFor(state.shell.locale);
   const { template, spec: edited, forces } = state.mech;
   const { input, direction, speed, traced, plots, velocities } = state.mech;
@@ -134,6 +141,7 @@ export function MechanismPage(props: MechanismPageProps) {
         m={m}
         embedded={embedded}
         embedOptions={embedOptions}
+        live={live}
       />
     </div>
   );
@@ -160,6 +168,7 @@ interface MechWorkspaceProps {
   m: MechMessages;
   embedded: boolean;
   embedOptions: MechEmbedOptions;
+  live: MechLiveStage | null;
 }
 
 /** Every joint and tracer over the run (and as drawn): the canvas fits this box, so Play does not move the view. */
@@ -199,7 +208,7 @@ const defaultTraced = (spec: MechanismSpec) => (spec.points ?? []).map((p) => p.
  * plots and traces to the defaults).
  */
 function MechWorkspace(props: MechWorkspaceProps) {
-  const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions } = props;
+  const { template, edited, forces, settings, lengthUnit, dispatch, client, m, embedded, embedOptions, live } = props;
   const locked = embedded && embedOptions.editLocked;
   const stored = edited ?? MECHANISM_TEMPLATES[template].spec;
   // A pointer drag draws its linkage (drag.shown) at every move and sweeps it (drag.analysed) when the pointer rests:
@@ -225,6 +234,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
     settings,
     setSettings,
     playhead,
+    live,
   );
   const clamp = (t: number) => (range ? Math.min(range[1], Math.max(range[0], t)) : 0);
   const at: PlayheadInput = { playhead, rest: drive.input, clamp };
@@ -280,50 +290,47 @@ function MechWorkspace(props: MechWorkspaceProps) {
     values ? valueAt(analysis, values, input) : NaN;
   const reactionSeries = solved.forces?.joints[forceJoint];
 
-  /** The pose at an input: as drawn for a dragged spec (the drag sets the input to 0), else from the sweep. */
-  const poseAtInput = (input: number, dragged: MechanismSpec | null = null) =>
-    dragged
-      ? drawnPose(dragged)
-      : (analysis.sweep && analysis.grid && !analysis.problem && poseAt(spec, analysis.grid, analysis.sweep, input)) ||
-        drawnPose(spec);
-  const traces =
-    analysis.sweep && analysis.run
-      ? [...traced]
-          .filter((id) => analysis.sweep!.joints[id] || analysis.sweep!.points[id])
-          .map((id) => ({ id, ...pathOf(analysis.sweep!, id, analysis.run!) }))
-      : [];
+  const traces = useMemo(
+    () =>
+      analysis.sweep && analysis.run
+        ? [...traced]
+            .filter((id) => analysis.sweep!.joints[id] || analysis.sweep!.points[id])
+            .map((id) => ({ id, ...pathOf(analysis.sweep!, id, analysis.run!) }))
+        : [],
+    [analysis, traced],
+  );
   const slideRange = useMemo(() => slideRanges(analysis), [analysis]);
-  /**
-   * The picture at an input, or of the spec a drag draws now: the pose, its velocity and force arrows (none while a
-   * joint is dragged), the traces.
-   */
-  const pictureAt = (input: number, dragged: MechanismSpec | null = null): MechPicture => {
-    const pose = poseAtInput(input, dragged);
-    const arrows: MechArrow[] = [];
-    if (showVelocities && rateSweep && analysis.grid && !drag.dragging) {
-      for (const [id, q] of [...Object.entries(pose.joints), ...Object.entries(pose.points)]) {
+  // What the canvas draws at any input (the page's and the live stage's): the arrows are off while a joint is dragged.
+  const arrowsOn = !drag.dragging;
+  const forceSeries = arrowsOn && forcesOn && forces.arrows ? solved.forces : null;
+  const scene = useMemo<MechScene>(() => {
+    const velocities: MechSeriesAt[] = [];
+    if (showVelocities && rateSweep && arrowsOn) {
+      for (const id of [...spec.joints.map((j) => j.id), ...(spec.points ?? []).map((p) => p.id)]) {
         const s = rateSweep.joints[id] ?? rateSweep.points[id];
-        if (s?.vx && s.vy) arrows.push({ at: q, vx: valueNow(s.vx, input), vy: valueNow(s.vy, input) });
+        if (s?.vx && s.vy) velocities.push({ id, x: s.vx, y: s.vy });
       }
     }
-    const forceArrows: MechArrow[] = [];
-    if (forcesOn && forces.arrows && solved.forces && !drag.dragging) {
-      for (const [id, q] of Object.entries(pose.joints)) {
-        const r = solved.forces.joints[id];
-        if (r) forceArrows.push({ at: q, vx: valueNow(r.fx, input), vy: valueNow(r.fy, input) });
-      }
+    const reactions: MechSeriesAt[] = [];
+    for (const j of forceSeries ? spec.joints : []) {
+      const r = forceSeries!.joints[j.id];
+      if (r) reactions.push({ id: j.id, x: r.fx, y: r.fy });
     }
+    const runs = !analysis.problem && analysis.grid && analysis.sweep;
     return {
-      spec: dragged ?? spec,
-      pose,
+      spec,
+      grid: runs ? analysis.grid : null,
+      sweep: runs ? analysis.sweep : null,
       traces,
       slideRange,
       selected,
-      arrows,
-      forceArrows,
+      velocities,
+      forces: reactions,
       faint: analysis.problem !== null,
     };
-  };
+  }, [spec, analysis, traces, slideRange, selected, showVelocities, rateSweep, arrowsOn, forceSeries]);
+  /** The pose at an input (the committed linkage's). */
+  const poseAtInput = (input: number) => mechPictureAt(scene, input).pose;
 
   const inputJoint = spec.input.joint;
   const inputText = (t: number) => (kind === 'R' ? `${formatNumber(radToDeg(t), 4)}°` : formatNumber(t, 4));
@@ -351,7 +358,7 @@ function MechWorkspace(props: MechWorkspaceProps) {
   const exportPicture = (format: 'png' | 'svg') => {
     const view = viewRef.current;
     if (!view || view.width <= 0) return;
-    const picture = pictureAt(inputNow(), drag.shown.get());
+    const picture = mechPictureAt(scene, inputNow(), drag.shown.get());
     const draw = (ctx: Parameters<typeof drawMechanism>[0], v: ViewTransform) => drawMechanism(ctx, picture, v);
     const v = fitView(bounds, view.width, view.height, view.offset);
     const fileBase = `mechanism_${templateUrlValue(template)}${edited ? '_edited' : ''}`;
@@ -493,8 +500,9 @@ function MechWorkspace(props: MechWorkspaceProps) {
         </div>
         <MechStage
           at={at}
-          pictureAt={pictureAt}
+          scene={scene}
           dragged={drag.shown}
+          live={live}
           bounds={bounds}
           label={locked ? m.canvasLabelLocked(shownName) : m.canvasLabel(shownName)}
           labels={{ zoomIn: m.zoomIn, zoomOut: m.zoomOut, resetView: m.resetView }}

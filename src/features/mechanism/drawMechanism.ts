@@ -100,15 +100,25 @@ function guideEnds(pic: MechPicture, j: MechanismSpec['joints'][number], size: n
  * chosen one ringed) with their names, the tracers and the velocity arrows. Pure: context, picture and view.
  */
 export function drawMechanism(ctx: DrawContext, pic: MechPicture, v: ViewTransform): void {
-  const { spec, pose } = pic;
-  const px = (p: Pt) => ({ x: toScreenX(v, p.x), y: toScreenY(v, p.y) });
+  drawMechanismBackground(ctx, pic, v);
+  drawMechanismParts(ctx, pic, v);
+}
+
+/**
+ * What drawMechanism draws first and what does not move with the input: the background, the grid and the traced
+ * paths (a live stage keeps it in a bitmap while the traces and the view hold).
+ */
+export function drawMechanismBackground(
+  ctx: DrawContext,
+  pic: Pick<MechPicture, 'traces' | 'faint' | 'compact'>,
+  v: ViewTransform,
+): void {
   ctx.fillStyle = THEME.background;
   ctx.fillRect(0, 0, v.width, v.height);
   if (!pic.compact) drawGrid(ctx, v);
   ctx.globalAlpha = pic.faint ? 0.45 : 1;
   ctx.lineJoin = 'round';
   ctx.lineCap = 'round';
-  // Traced paths under the links.
   ctx.lineWidth = STROKES.trace;
   ctx.strokeStyle = THEME.trace;
   for (const t of pic.traces) {
@@ -127,6 +137,16 @@ export function drawMechanism(ctx: DrawContext, pic: MechPicture, v: ViewTransfo
     }
     ctx.stroke();
   }
+  ctx.globalAlpha = 1;
+}
+
+/** What drawMechanism draws over the background and the traces: the links, blocks, pivots, joints, arrows and names. */
+export function drawMechanismParts(ctx: DrawContext, pic: MechPicture, v: ViewTransform): void {
+  const { spec, pose } = pic;
+  const px = (p: Pt) => ({ x: toScreenX(v, p.x), y: toScreenY(v, p.y) });
+  ctx.globalAlpha = pic.faint ? 0.45 : 1;
+  ctx.lineJoin = 'round';
+  ctx.lineCap = 'round';
   const size = Math.max(1e-12, (v.width + v.height) / 2 / v.scale / 3);
   // Fixed guides (a slider on the ground): a dashed line along the stroke.
   for (const j of spec.joints) {

@@ -124,7 +124,7 @@ export function runRange(a: MechAnalysis): [number, number] | null {
 }
 
 /** Linear interpolation of a series on the grid at input t (NaN off the grid); on a sample (1e-9 of a step), its value. */
-export function valueAt(a: MechAnalysis, values: ArrayLike<number>, t: number): number {
+export function valueAt(a: Pick<MechAnalysis, 'grid'>, values: ArrayLike<number>, t: number): number {
   if (!a.grid) return NaN;
   const u = t / a.grid.step - a.grid.kLo;
   const i = Math.max(0, Math.min(values.length - 2, Math.floor(u)));

@@ -1,7 +1,9 @@
-import { useState } from 'react';
+import { useRef, useState } from 'react';
 import { useAnimationFrame } from '../../shared/hooks/useAnimationFrame';
-import { PI, TWO_PI } from '../../solver/angles';
 import type { Playhead, PlayheadSource } from './livePlayhead';
+import { advanceInput, playFrame } from './mechDriveStep';
+import type { MechLiveStage } from './stage/mechLiveStage';
+import type { MechDriveRun } from './stage/mechStageProtocol';
 
 /** Where the input rests and how Play moves it (Play's playhead itself is in the page's PlayheadSource). */
 export interface MechDrive {
@@ -15,63 +17,18 @@ export interface MechDrive {
   limitAt: number | null;
 }
 
-/** What moves an input within a range, one step or one frame: the next input, direction and the limit met. */
-export interface DriveStep {
-  input: number;
-  direction: 1 | -1;
-  limitAt: number | null;
-}
-
-/**
- * Advances the input by delta in its direction within [lo, hi]: wrapping into [−π, π) when the input turns fully,
- * else reversing at an end (the linkage cannot go on: it rocks) and reporting where: a step that would pass the end
- * lands on it, and a step from the end (or beyond it) goes back by delta.
- */
-export function advanceInput(
-  input: number,
-  direction: 1 | -1,
-  delta: number,
-  range: [number, number],
-  fullTurn: boolean,
-): DriveStep {
-  let next = input + direction * delta;
-  if (fullTurn) {
-    next = ((((next + PI) % TWO_PI) + TWO_PI) % TWO_PI) - PI;
-    return { input: next, direction, limitAt: null };
-  }
-  const [lo, hi] = range;
-  // From inside, a step that would pass an end stops on it (the limit's pose is shown); from the end itself it
-  // turns back at once, so no frame or Step is spent standing at the limit.
-  if (next > hi) return input < hi ? { input: hi, direction: -1, limitAt: hi } : turnBack(hi, -1, delta, range);
-  if (next < lo) return input > lo ? { input: lo, direction: 1, limitAt: lo } : turnBack(lo, 1, delta, range);
-  return { input: next, direction, limitAt: null };
-}
-
-/** From the end `at` of [lo, hi], delta the other way (within the range), reporting the limit met. */
-function turnBack(at: number, direction: 1 | -1, delta: number, [lo, hi]: [number, number]): DriveStep {
-  return { input: Math.min(hi, Math.max(lo, at + direction * delta)), direction, limitAt: at };
-}
-
-/**
- * One frame of Play: the playhead moved by delta (advanceInput), keeping the last limit met, and whether it turned
- * (a new direction or a new limit: what the page shows changes; else only the views that follow the playhead redraw).
- */
-export function playFrame(
-  p: Playhead,
-  delta: number,
-  range: [number, number],
-  fullTurn: boolean,
-): { next: Playhead; turned: boolean } {
-  const s = advanceInput(p.input, p.direction, delta, range, fullTurn);
-  const next = { ...s, limitAt: s.limitAt ?? p.limitAt };
-  return { next, turned: next.direction !== p.direction || next.limitAt !== p.limitAt };
-}
-
 /** The committed drive (the mech slice's input, direction and speed) and how to change it. */
 export interface CommittedDrive {
   input: number;
   direction: 1 | -1;
   speed: number;
+}
+
+/** Whether two drives move the input alike (the same rate, run and wrapping). */
+function sameDrive(a: MechDriveRun, b: MechDriveRun): boolean {
+  return (
+    a.ratePerS === b.ratePerS && a.range[0] === b.range[0] && a.range[1] === b.range[1] && a.fullTurn === b.fullTurn
+  );
 }
 
 /**
@@ -80,6 +37,9 @@ export interface CommittedDrive {
  * animation-frame loop (useAnimationFrame) moves the playhead in `playhead` (a source the views that follow Play read),
  * so a frame of Play re-renders neither the app nor the page: the page re-renders only when Play starts or stops, turns
  * at a limit or is reversed. Pause commits where it stopped. rate converts speed to input units per second.
+ * With a live stage (Play drawn in a worker on its own clock) the playhead follows the stage's newest frame; the page
+ * advances it itself only until the stage has drawn one (or where the stage failed), and re-bases the stage on a
+ * playhead someone else set (the slider, Reverse) or a new speed or run. Pause keeps the stage's newest frame.
  */
 export function useMechDrive(
   range: [number, number] | null,
@@ -88,27 +48,46 @@ export function useMechDrive(
   committed: CommittedDrive,
   commit: (patch: Partial<CommittedDrive>) => void,
   playhead: PlayheadSource,
+  stage: MechLiveStage | null = null,
 ) {
   // The playhead's direction and limit as the page shows them (Reverse's state, the status line): they change at a
   // turn, not every frame.
   const [shown, setShown] = useState<{ direction: 1 | -1; limitAt: number | null } | null>(null);
   const canRun = range !== null;
   const playing = shown !== null;
+  // What the stage plays and the playhead this loop set last (null: the stage is not playing).
+  const staged = useRef<{ drive: MechDriveRun; set: Playhead } | null>(null);
   const move = (next: Playhead | null) => {
+    if (!next && playhead.get()) {
+      staged.current = null;
+      stage?.stop();
+    }
     playhead.set(next);
     setShown(next && { direction: next.direction, limitAt: next.limitAt });
   };
-  useAnimationFrame(playing && canRun, (dt) => {
+  useAnimationFrame(playing && canRun, (dt, now) => {
     const p = playhead.get();
     if (!range || !p) return;
-    const { next, turned } = playFrame(p, rate(committed.speed) * dt, range, fullTurn);
-    if (turned) move(next);
+    const drive: MechDriveRun = { ratePerS: rate(committed.speed), range, fullTurn };
+    let next = playFrame(p, drive.ratePerS * dt, range, fullTurn).next;
+    if (stage?.usable()) {
+      const s = staged.current;
+      if (!s || s.set !== p || !sameDrive(s.drive, drive)) stage.play(next, now, drive);
+      else next = stage.latest() ?? next;
+      staged.current = { drive, set: next };
+    }
+    if (next.direction !== p.direction || next.limitAt !== p.limitAt) move(next);
     else playhead.set(next);
   });
   const drive: MechDrive = shown
     ? { input: committed.input, ...shown, playing: true, speed: committed.speed }
     : { input: committed.input, direction: committed.direction, speed: committed.speed, playing: false, limitAt: null };
-  const from = () => playhead.get() ?? committed;
+  /** Where the input is: the stage's newest frame while it plays what this loop set, else the playhead, else at rest. */
+  const from = () => {
+    const p = playhead.get();
+    const drawn = p && staged.current?.set === p && stage?.usable() ? stage.latest() : null;
+    return drawn ?? p ?? committed;
+  };
   return {
     drive,
     setPlaying: (on: boolean) => {

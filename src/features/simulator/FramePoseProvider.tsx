@@ -1,13 +1,11 @@
 import type { ReactNode } from 'react';
-import { useLayoutEffect, useMemo, useState, useSyncExternalStore } from 'react';
+import { useLayoutEffect, useMemo, useState } from 'react';
 import type { AppState } from '../../shared/state/appState';
 import type { Playhead } from '../../shared/state/playhead';
-import { withFrame } from '../../shared/state/playhead';
 import { FramePoseContext, createFramePoseSource } from '../../shared/linkage/FramePoseContext';
-import { useFrameMotion } from './useFrameMotion';
-import { useLinkagePose } from './useLinkagePose';
 import { Theta2ScrubContext } from './theta2Scrub';
 import type { Theta2Scrub } from './useAnimation';
+import { createFramePoser } from './framePoser';
 
 /** Props of FramePoseProvider: the committed state, Play's playhead, whether the ghost is on screen, the layout. */
 export interface FramePoseProviderProps {
@@ -22,22 +20,28 @@ export interface FramePoseProviderProps {
 
 /**
  * Solves the frame on screen once (the state, or Play's playhead ahead of it) and provides it through a
- * FramePoseSource. It alone subscribes to the playhead: per frame of Play only it and the views that read
- * useFramePose re-render, the children it was given stay as they are. It also provides the θ2 drag (Theta2ScrubContext).
+ * FramePoseSource. It follows the playhead outside React: a frame of Play renders nothing here, only the views that
+ * read the whole frame (useFramePose) or a part of it that changed (useFrameSelect), while the charts' markers follow
+ * it by themselves (useFrameDerived). A new state or ghost renders it as usual. It also provides the θ2 drag
+ * (Theta2ScrubContext).
  */
 export function FramePoseProvider({ state, playhead, scrub, ghostShown, children }: FramePoseProviderProps) {
-  const frame = useSyncExternalStore(playhead.subscribe, playhead.get);
-  const shown = useMemo(() => withFrame(state, frame), [state, frame]);
-  const { local, marker } = useLinkagePose(shown, ghostShown);
-  const motion = useFrameMotion(shown, local);
-  const value = useMemo(
-    () => ({ state: shown, local, marker, motion, committed: state, ghostShown }),
-    [shown, local, marker, motion, state, ghostShown],
-  );
+  const [poser] = useState(createFramePoser);
+  // The frame for this render's state; the playhead is read as it is now (its later moves are followed below).
+  const value = useMemo(() => poser(state, playhead.get(), ghostShown), [poser, state, playhead, ghostShown]);
   const [source] = useState(() => createFramePoseSource(value));
   // Held during the render, so that a reader mounting in this render reads this frame; told after the commit.
   source.set(value);
   useLayoutEffect(() => source.notify(), [source, value]);
+  useLayoutEffect(() => {
+    const follow = () => {
+      source.set(poser(state, playhead.get(), ghostShown));
+      source.notify();
+    };
+    // A move between this render and this effect is shown at once.
+    if (source.get() !== poser(state, playhead.get(), ghostShown)) follow();
+    return playhead.subscribe(follow);
+  }, [source, poser, state, playhead, ghostShown]);
   return (
     <Theta2ScrubContext.Provider value={scrub}>
       <FramePoseContext.Provider value={source}>{children}</FramePoseContext.Provider>

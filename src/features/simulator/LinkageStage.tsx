@@ -1,7 +1,7 @@
 import { useEffect, useLayoutEffect, useMemo } from 'react';
-import type { ViewOffset, CouplerPoint } from '../../shared/state/appState';
+import type { AppState, ViewOffset, CouplerPoint } from '../../shared/state/appState';
 import type { CycleResponse } from '../../shared/solution';
-import { useFramePose } from '../../shared/linkage/FramePoseContext';
+import { useFrameSelect } from '../../shared/linkage/FramePoseContext';
 import { LinkageCanvas } from './LinkageCanvas';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { DesignInfo } from './useDesignMetrics';
@@ -39,22 +39,27 @@ export interface LinkageStageProps {
  * it draws from (the committed state, the cycle, the ghost) as they change.
  */
 function useStageFrame(stage: LiveStage | null | undefined, cycle: CycleResponse | null): FramePose {
-  const framed = useFramePose();
-  const { committed, ghostShown } = framed;
   const showing = useStageShowing(stage);
+  const committed = useFrameSelect(committedOf);
+  const ghostShown = useFrameSelect(ghostShownOf);
+  // Every frame of Play while the page draws it; while the stage shows, nothing (no render per frame).
+  const framed = useFrameSelect(showing ? nothingOf : wholeFrameOf);
   useEffect(() => stage?.setScene(committed, cycle, ghostShown), [stage, committed, cycle, ghostShown]);
   // Posed only while the stage shows, once per commit (otherwise the frame on screen is the committed state's).
-  const underStage = useMemo(() => {
-    if (!showing) return null;
-    const { local, motion } = posedState(committed, ghostShown);
-    const { method, tol } = committed.solver;
-    return { local, motion, marker: poseAsPoint(local, { method, tol }) };
-  }, [showing, committed, ghostShown]);
-  return useMemo(
-    () => (underStage ? { ...framed, state: committed, ...underStage } : framed),
-    [underStage, framed, committed],
-  );
+  return useMemo(() => framed ?? underStageFrame(committed, ghostShown), [framed, committed, ghostShown]);
 }
+
+/** The committed state's frame, drawn on the page's canvas under the stage's. */
+function underStageFrame(committed: AppState, ghostShown: boolean): FramePose {
+  const { local, motion } = posedState(committed, ghostShown);
+  const { method, tol } = committed.solver;
+  return { state: committed, local, motion, marker: poseAsPoint(local, { method, tol }), committed, ghostShown };
+}
+
+const committedOf = (f: FramePose) => f.committed;
+const ghostShownOf = (f: FramePose) => f.ghostShown;
+const wholeFrameOf = (f: FramePose): FramePose | null => f;
+const nothingOf = (): FramePose | null => null;
 
 /**
  * The linkage canvas for the frame on screen (useFramePose): the scene with its design overlay, motion vectors

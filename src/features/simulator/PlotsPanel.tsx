@@ -6,7 +6,7 @@ import type { Action, MotionPlotKind, PlotKind, PlotLayout } from '../../shared/
 import { AngleChartView } from '../../shared/charts/Theta2ChartView';
 import type { CycleDegrees } from '../../shared/charts/chartInputs';
 import { angleChartInputs, angleMarker } from '../../shared/charts/chartInputs';
-import { useFramePose } from '../../shared/linkage/FramePoseContext';
+import { useFrameDerived, useFrameSelect } from '../../shared/linkage/FramePoseContext';
 import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { CycleRates } from '../../shared/charts/rateInputs';
 import { Segmented } from '../../shared/ui/Segmented';
@@ -50,7 +50,7 @@ export interface AnglePlotsPanelProps {
 
 /**
  * The plots' choosers: which plots (angles, velocities, accelerations, extras) and whether θ3 and θ4 share a chart.
- * Memoised: the panel re-renders every frame of Play for its markers, the choosers only when a choice changes.
+ * Memoised: the panel re-renders when the branch on screen or its props change, the choosers only when a choice changes.
  */
 const PlotsHead = memo(function PlotsHead({
   kind,
@@ -102,18 +102,15 @@ function AnglePlotsPanelImpl({
   secondHeld = false,
 }: AnglePlotsPanelProps) {
   const t = useMessages();
-  // The frame on screen: the markers (and the branch, which a rocking input switches) follow every frame of Play.
-  const { state, marker: point, motion } = useFramePose();
-  const {
-    design: { branch },
-  } = state;
-  const currentRates = motion?.rates ?? null;
+  // The branch on screen (a rocking input switches it during Play) re-renders the panel; the markers follow every
+  // frame of Play by themselves (sources the charts follow), so the panel does not re-render per frame.
+  const branch = useFrameSelect((f) => f.state.design.branch);
   const in3 = useMemo(() => angleChartInputs('theta3', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const in4 = useMemo(() => angleChartInputs('theta4', deg, branch, showOther, t), [deg, branch, showOther, t]);
   const inBoth = useMemo(() => angleChartInputs('both', deg, branch, showOther, t), [deg, branch, showOther, t]);
-  const m3 = useMemo(() => angleMarker('theta3', point), [point]);
-  const m4 = useMemo(() => angleMarker('theta4', point), [point]);
-  const mBoth = useMemo(() => angleMarker('both', point), [point]);
+  const m3 = useFrameDerived((f) => angleMarker('theta3', f.marker), []);
+  const m4 = useFrameDerived((f) => angleMarker('theta4', f.marker), []);
+  const mBoth = useFrameDerived((f) => angleMarker('both', f.marker), []);
   // A kind whose feature is off (plot=trq without the forces) shows the angles.
   const extraView = extra?.options.some((o) => o.value === kind) ? extra.render(kind) : null;
   const shown: PlotKind = extraView !== null || (PLOT_KINDS as readonly PlotKind[]).includes(kind) ? kind : 'angles';
@@ -124,16 +121,7 @@ function AnglePlotsPanelImpl({
         extraView
       ) : shown === 'velocities' || shown === 'accelerations' ? (
         <Suspense fallback={<p className="note">…</p>}>
-          <RatePlots
-            kind={shown}
-            rates={rates}
-            current={currentRates}
-            theta2Deg={mBoth.theta2Deg}
-            branch={branch}
-            showOther={showOther}
-            layout={layout}
-            xMarks={xMarks}
-          />
+          <RatePlots kind={shown} rates={rates} branch={branch} showOther={showOther} layout={layout} xMarks={xMarks} />
         </Suspense>
       ) : (
         <>

@@ -1,5 +1,4 @@
 import { useMemo } from 'react';
-import type { LinkRates } from '../../solver/rates';
 import type { Branch } from '../../solver/types';
 import type { XMark } from '../../shared/charts/xMarks';
 import type { PlotLayout } from '../../shared/state/appState';
@@ -7,14 +6,13 @@ import { useMessages } from '../../shared/i18n/MessagesContext';
 import type { CycleRates, RateChartKind } from '../../shared/charts/rateInputs';
 import { rateChartInputs, rateChartKinds, rateMarker } from '../../shared/charts/rateInputs';
 import { RateChartView } from '../../shared/charts/RateChartView';
+import { angleMarker } from '../../shared/charts/chartInputs';
+import { useFrameDerived } from '../../shared/linkage/FramePoseContext';
 
-/** Props of RatePlots: the plot kind, the cycle's rates, this frame's rates and theta2, and the display choices. */
+/** Props of RatePlots: the plot kind, the cycle's rates and the display choices (the markers follow the frame on screen). */
 export interface RatePlotsProps {
   kind: 'velocities' | 'accelerations';
   rates: CycleRates | null;
-  /** This frame's rates (the marker), null when not assembled. */
-  current: LinkRates | null;
-  theta2Deg: number;
   branch: Branch;
   showOther: boolean;
   layout: PlotLayout;
@@ -25,8 +23,6 @@ export interface RatePlotsProps {
 function OneRateChart({
   chart,
   rates,
-  current,
-  theta2Deg,
   branch,
   showOther,
   xMarks,
@@ -36,7 +32,11 @@ function OneRateChart({
     () => rateChartInputs(chart, rates, branch, showOther, t),
     [chart, rates, branch, showOther, t],
   );
-  const marker = useMemo(() => rateMarker(chart, theta2Deg, current), [chart, theta2Deg, current]);
+  // The frame's θ2 and rates (null where they do not assemble), followed by the chart itself every frame of Play.
+  const marker = useFrameDerived(
+    (f) => rateMarker(chart, angleMarker('both', f.marker).theta2Deg, f.motion?.rates ?? null),
+    [chart],
+  );
   return <RateChartView inputs={inputs} marker={marker} label={t.chartRates[chart]} xMarks={xMarks} />;
 }
 

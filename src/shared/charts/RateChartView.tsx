@@ -3,11 +3,13 @@ import type { RateMarker } from './rateChart';
 import type { XMark } from './xMarks';
 import { Theta2ChartView } from './Theta2ChartView';
 import type { RateChartInputs } from './rateInputs';
+import type { LiveMarker } from './useLiveChart';
 
 /** Props of RateChartView: everything the chart shows; it sizes itself to its box. */
 export interface RateChartViewProps {
   inputs: RateChartInputs;
-  marker: RateMarker;
+  /** The marker, or its source (Play's frame moves it). */
+  marker: LiveMarker<RateMarker>;
   /** Accessible name of the chart figure. */
   label: string;
   /** Faint theta2 rules (dead centres); default none. */

@@ -5,13 +5,15 @@ import type { AngleChartText, AngleMarker, Theta2Chart, Theta2ChartData } from '
 import type { XMark } from './xMarks';
 import type { AngleChartInputs } from './chartInputs';
 import { useLiveChart } from './useLiveChart';
+import type { LiveMarker } from './useLiveChart';
 
 /** Props of a chart against θ2: everything it shows (it sizes itself to its box) and how to make it. */
 export interface Theta2ChartViewProps<S, M> {
   /** Makes the chart at size 0 (drawn once the view knows its box); a stable, module-level function. */
   create: (svg: SVGSVGElement, markerHost: HTMLElement | undefined) => Theta2Chart<S, M>;
   inputs: AngleChartText & { data: Theta2ChartData<S> };
-  marker: M;
+  /** The marker, or its source (Play's frame moves it without a render of this view). */
+  marker: LiveMarker<M>;
   /** Accessible name of the chart figure. */
   label: string;
   /** Faint theta2 rules (dead centres); default none. */

@@ -4,11 +4,12 @@ import type { AngleMarker } from './theta2Chart';
 import { createTransmissionChart } from './transmissionChart';
 import type { TransmissionChartInputs } from './transmissionInputs';
 import { useLiveChart } from './useLiveChart';
+import type { LiveMarker } from './useLiveChart';
 
-/** Props of TransmissionChartView, shaped as AngleChartView's: inputs, marker (valuesDeg[0] is mu), label. */
+/** Props of TransmissionChartView, shaped as AngleChartView's: inputs, marker or its source (valuesDeg[0] is mu), label. */
 export interface TransmissionChartViewProps {
   inputs: TransmissionChartInputs;
-  marker: AngleMarker;
+  marker: LiveMarker<AngleMarker>;
   /** Accessible name of the chart figure. */
   label: string;
 }

@@ -111,6 +111,14 @@ function markerElement(parent: HTMLElement, className: string): HTMLDivElement {
   return el;
 }
 
+/**
+ * Hides or shows an element, writing its hidden attribute only when that changes: Play draws a marker every frame,
+ * and each write of an attribute the page's styles select on ([hidden]) makes the page's thread match styles again.
+ */
+function hide(el: HTMLElement, hidden: boolean): void {
+  if (el.hidden !== hidden) el.hidden = hidden;
+}
+
 /** A marker dot: its element (in the column) and the slider that sets its height. */
 interface Dot {
   el: HTMLDivElement;
@@ -151,11 +159,11 @@ export function createMarkerLayer(host: HTMLElement): MarkerLayer {
       host.dataset.x = x === null ? '' : String(x);
       host.dataset.dots = JSON.stringify(x === null ? [] : placed);
       host.dataset.segment = x === null || !segment ? '' : JSON.stringify(segment);
-      column.hidden = x === null;
-      bar.hidden = x === null || segment !== undefined;
-      radius.hidden = x === null || segment === undefined;
+      hide(column, x === null);
+      hide(bar, x === null || segment !== undefined);
+      hide(radius, x === null || segment === undefined);
       const shown = x === null ? 0 : placed.length;
-      for (let i = 0; i < dots.length; i++) dots[i].el.hidden = i >= shown;
+      for (let i = 0; i < dots.length; i++) hide(dots[i].el, i >= shown);
       if (x === null) return;
       slideX(box.left + x);
       if (segment) {

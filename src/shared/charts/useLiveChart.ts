@@ -1,12 +1,24 @@
 import { useLayoutEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import { useElementSize } from '../hooks/useElementSize';
+import type { ValueSource } from '../state/externalValue';
 
 /** What every chart handle (angle, rate, transmission) offers the views: new data, a new marker, a new size. */
 export interface LiveChart<D, M> {
   update(data: D): void;
   setMarker(marker: M): void;
   resize(width: number, height: number): void;
+}
+
+/**
+ * A chart's marker: a value, or a source the chart follows by itself (Play's frame moves the marker with no render
+ * of the view that gave it).
+ */
+export type LiveMarker<M> = M | ValueSource<M>;
+
+/** Whether a marker is a source to follow (markers themselves are plain data, never with a subscribe function). */
+function isMarkerSource<M>(marker: LiveMarker<M>): marker is ValueSource<M> {
+  return typeof (marker as Partial<ValueSource<M>> | null)?.subscribe === 'function';
 }
 
 /** The chart handle of a view, the refs to attach (the box it sizes to, its SVG, the marker box over it), and nothing else. */
@@ -20,7 +32,7 @@ export interface LiveChartRefs<C> {
 
 /**
  * Creates a chart once, on mount (create gets the SVG and the marker box at size 0: nothing drawn until
- * sized), and keeps its data, marker and size in step with the props, each through its own update so a
+ * sized), and keeps its data, marker (or the marker's source) and size in step with the props, each through its own update so a
  * new marker only moves the marker. create must be stable (a module-level function). Texts and
  * chart-specific options stay with the view. While `held`, no chart is made (the view's box keeps its place): a chart
  * below the fold can wait for the first screen.
@@ -28,7 +40,7 @@ export interface LiveChartRefs<C> {
 export function useLiveChart<D, M, C extends LiveChart<D, M>>(
   create: (svg: SVGSVGElement, markerHost: HTMLDivElement | undefined) => C,
   data: D,
-  marker: M,
+  marker: LiveMarker<M>,
   held = false,
 ): LiveChartRefs<C> {
   const boxRef = useRef<HTMLDivElement>(null);
@@ -51,7 +63,14 @@ export function useLiveChart<D, M, C extends LiveChart<D, M>>(
     chart?.update(data);
   }, [chart, data]);
   useLayoutEffect(() => {
-    chart?.setMarker(marker);
+    if (!chart) return;
+    if (!isMarkerSource(marker)) {
+      chart.setMarker(marker);
+      return;
+    }
+    const follow = () => chart.setMarker(marker.get());
+    follow();
+    return marker.subscribe(follow);
   }, [chart, marker]);
   useLayoutEffect(() => {
     if (width > 0 && height > 0) chart?.resize(width, height);

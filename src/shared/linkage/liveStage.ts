@@ -47,3 +47,17 @@ export interface LiveStage {
   /** Adds a listener to changes of showing(); returns its removal. */
   subscribe(listener: () => void): () => void;
 }
+
+/**
+ * A stage worker's clock, its animation frames and the way back to its page (the worker's globals, passed to its loop
+ * so the loop is tested on a hand-run clock): replies of type R.
+ */
+export interface StageFrameHost<R> {
+  /** The worker's clock (ms, performance.now) and its origin (epoch ms), so the page's clock and this one agree. */
+  now(): number;
+  timeOrigin: number;
+  /** The worker's requestAnimationFrame, or null where workers have none. */
+  requestFrame: ((callback: (now: number) => void) => number) | null;
+  cancelFrame(handle: number): void;
+  reply(message: R): void;
+}

@@ -1,8 +1,16 @@
+/** A value outside React that views read with useSyncExternalStore: its current value and a subscription to changes. */
+export interface ValueSource<T> {
+  /** The current value (stable between changes). */
+  get(): T;
+  /** Adds a change listener; returns its removal. */
+  subscribe(listener: () => void): () => void;
+}
+
 /**
  * One value outside React with get, set and subscribe for useSyncExternalStore: only the views that read it
  * re-render when it changes (Object.is), not the tree around them.
  */
-export class ExternalValue<T> {
+export class ExternalValue<T> implements ValueSource<T> {
   private readonly listeners = new Set<() => void>();
 
   constructor(private value: T) {}

@@ -3,7 +3,7 @@ import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import { createPlayheadSource, throttledSubscribe } from '../../../src/features/mechanism/livePlayhead';
 import { DRAG_REST_MS, nextJointDrag, restDelayMs } from '../../../src/features/mechanism/useJointDrag';
 import type { JointDrag } from '../../../src/features/mechanism/useJointDrag';
-import { playFrame } from '../../../src/features/mechanism/useMechDrive';
+import { playFrame } from '../../../src/features/mechanism/mechDriveStep';
 import { moveJoint } from '../../../src/features/mechanism/specEdits';
 
 // What keeps a frame of Play and a move of a drag cheap on the Mechanisms page (issue 33's speed targets): the

@@ -12,7 +12,7 @@ import {
 } from '../../../src/features/mechanism/mechAnalysis';
 import { csvHeader, csvInputs, mechCsv } from '../../../src/features/mechanism/mechCsv';
 import { drawnPose, poseAt } from '../../../src/features/mechanism/mechPose';
-import { advanceInput } from '../../../src/features/mechanism/useMechDrive';
+import { advanceInput } from '../../../src/features/mechanism/mechDriveStep';
 import {
   addJoint,
   addLink,

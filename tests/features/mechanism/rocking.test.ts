@@ -3,7 +3,7 @@ import { MECHANISM_TEMPLATES } from '../../../src/mechanism';
 import { degToRad } from '../../../src/solver/angles';
 import { analyseMechanism, runRange } from '../../../src/features/mechanism/mechAnalysis';
 import { poseAt } from '../../../src/features/mechanism/mechPose';
-import { advanceInput } from '../../../src/features/mechanism/useMechDrive';
+import { advanceInput } from '../../../src/features/mechanism/mechDriveStep';
 
 // Issue 33: "at a limit the input reverses (rocking)". Stephenson II's input rocks: Play and Step must land on the
 // limit (its pose drawn), never pass it, and turn back at once (no frame standing still).

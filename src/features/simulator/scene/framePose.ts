@@ -8,8 +8,8 @@ import { localPose } from '../../../shared/linkage/localPose';
 /**
  * A state's pose (closed form; the ghost when it is shown and on) and its velocities and accelerations for the input
  * motion the state sets, ω2 signed by the direction; pure, in one go: the live stage's worker poses every frame with
- * it, and the page's canvas the committed state under the stage. The hooks (useLinkagePose, useFrameMotion) memoize
- * the same pieces one by one.
+ * it, and the page's canvas the committed state under the stage. A FramePoser (framePoser.ts) and the hooks
+ * (useLinkagePose, useFrameMotion) keep the same pieces one by one.
  */
 export function posedState(state: AppState, ghostShown: boolean): { local: LocalPose; motion: FrameMotion | null } {
   const { linkage, branch, coupler } = state.design;

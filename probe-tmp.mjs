@@ -1,0 +1,32 @@
+import { chromium } from 'playwright';
+import { findChromium } from '/work/wt/mechworker/scripts/ensure-chromium.mjs';
+const browser = await chromium.launch({ executablePath: await findChromium(), args: ['--no-sandbox', '--disable-gpu'] });
+const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+await page.goto(`http://localhost:4232/?page=mech&tpl=jansen&mtr=3*Foot*G*E`);
+await page.locator('.mech-workspace[data-mech-state="ok"]').waitFor();
+await page.waitForFunction(() => document.querySelector('[data-testid=mech-live]')?.getAttribute('data-stage') === 'ready', null, { timeout: 20000 });
+await page.getByRole('button', { name: 'Play' }).click();
+await page.waitForTimeout(500);
+await browser.startTracing(page, { categories: ['toplevel', 'blink', 'cc', 'gpu', 'viz', 'skia', 'devtools.timeline', 'disabled-by-default-devtools.timeline', 'blink.worker', 'v8', '__metadata'] });
+const f0 = Number(await page.getByTestId('mech-live').getAttribute('data-frames'));
+await page.waitForTimeout(3000);
+const f1 = Number(await page.getByTestId('mech-live').getAttribute('data-frames'));
+const buf = await browser.stopTracing();
+const trace = JSON.parse(buf.toString());
+const events = trace.traceEvents ?? trace;
+const names = new Map();
+for (const e of events) if (e.ph === 'M' && e.name === 'thread_name') names.set(`${e.pid}:${e.tid}`, e.args.name);
+const sums = new Map();
+const counts = new Map();
+for (const e of events) {
+  if (e.ph !== 'X' || e.name !== 'RunTask') continue;
+  const k = `${e.pid}:${e.tid}`;
+  sums.set(k, (sums.get(k) ?? 0) + (e.tdur ?? e.dur) / 1000);
+  counts.set(k, (counts.get(k) ?? 0) + 1);
+}
+console.log('frames', f1 - f0);
+for (const [k, v] of sums) if (names.get(k)?.includes("Worker") || names.get(k)?.includes("Main")) console.log(k, names.get(k), v.toFixed(1), 'ms', counts.get(k));
+const topNames = new Map();
+for (const e of events) if (names.get(`${e.pid}:${e.tid}`) === 'DedicatedWorker thread' && e.ph === 'X') topNames.set(e.name, (topNames.get(e.name) ?? 0) + (e.tdur ?? e.dur) / 1000);
+console.log([...topNames].sort((a, b) => b[1] - a[1]).slice(0, 40));
+await browser.close();
