@@ -24,6 +24,8 @@ let run: PlayRun | null = null;
 let play: PlayState | null = null;
 let playHandle = 0;
 let lastTick: number | null = null;
+/** Where Play turned last (its θ2 and new branch), until the page's run for it comes. */
+let lastTurn: { theta2Deg: number; branch: PlayAt['branch'] } | null = null;
 /** Where Play is, for the next drawn frame's reply; a turn is kept until a frame carries it. */
 let playAt: PlayAt | null = null;
 
@@ -61,6 +63,7 @@ function tick(now: number): void {
   const step = playStep(run.model, run.input, play, dt);
   play = { theta2Deg: step.theta2Deg, branch: step.branch, direction: step.direction };
   playAt = { theta2Deg: step.theta2Deg, branch: step.branch, turned: step.turned || playAt?.turned === true };
+  if (step.turned) lastTurn = { theta2Deg: step.theta2Deg, branch: step.branch };
   scene.setPose(step.pose ? scenePose(linkage, step.pose) : null);
 }
 
@@ -77,6 +80,11 @@ function setRun(next: PlayRun | null): void {
   }
   // A new run (Play started, or the linkage or state changed during Play) starts from its θ2 and branch; the
   // direction carries on.
+  // The run the page sends back after a turn (the state took the turn's θ2 and branch) carries on from where Play is,
+  // which is up to PANEL_INTERVAL_MS past the turn: going back there would jump.
+  const afterTurn = lastTurn?.theta2Deg === next.theta2Deg && lastTurn.branch === next.branch;
+  lastTurn = null;
+  if (afterTurn && play) return;
   play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
   if (!playHandle) playHandle = self.requestAnimationFrame(tick);
 }
