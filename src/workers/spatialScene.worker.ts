@@ -5,6 +5,7 @@ import { playStep } from '../features/spatial/spatialPlay';
 import type { PlayState } from '../features/spatial/spatialPlay';
 import { createSpatialScene } from '../features/spatial/spatialScene';
 import type { SpatialScene } from '../features/spatial/spatialScene';
+import { PANEL_INTERVAL_MS } from '../features/spatial/spatialPlayhead';
 import type { PlayAt, PlayRun, ViewReply, ViewRequest } from '../features/spatial/viewProtocol';
 
 declare const self: DedicatedWorkerGlobalScope;
@@ -23,10 +24,35 @@ let run: PlayRun | null = null;
 let play: PlayState | null = null;
 let playHandle = 0;
 let lastTick: number | null = null;
+/** Where Play turned last (its θ2 and new branch), until the page's run for it comes. */
+let lastTurn: { theta2Deg: number; branch: PlayAt['branch'] } | null = null;
 /** Where Play is, for the next drawn frame's reply; a turn is kept until a frame carries it. */
 let playAt: PlayAt | null = null;
 
 const reply = (m: ViewReply, transfer: Transferable[] = []) => self.postMessage(m, transfer);
+
+/** Frames drawn, when the page was last told (ms), and the timer that tells it of the frames drawn since. */
+let frames = 0;
+let toldAt = Number.NEGATIVE_INFINITY;
+let tellTimer: ReturnType<typeof setTimeout> | 0 = 0;
+
+/**
+ * Tells the page of the frames drawn (their count, where Play is) at most every PANEL_INTERVAL_MS, as often as its
+ * panels follow Play, and of the last one within that: each message is a task on the page's thread, which under a
+ * software compositor also handles every frame of the canvas, so the page gets a dozen a second, not one per frame.
+ */
+function tell(): void {
+  const now = performance.now();
+  if (now - toldAt < PANEL_INTERVAL_MS) {
+    if (!tellTimer) tellTimer = setTimeout(tell, PANEL_INTERVAL_MS - (now - toldAt));
+    return;
+  }
+  clearTimeout(tellTimer);
+  tellTimer = 0;
+  toldAt = now;
+  reply({ type: 'frame', frames, play: playAt });
+  if (playAt) playAt = { ...playAt, turned: false };
+}
 
 function tick(now: number): void {
   playHandle = self.requestAnimationFrame(tick);
@@ -37,6 +63,7 @@ function tick(now: number): void {
   const step = playStep(run.model, run.input, play, dt);
   play = { theta2Deg: step.theta2Deg, branch: step.branch, direction: step.direction };
   playAt = { theta2Deg: step.theta2Deg, branch: step.branch, turned: step.turned || playAt?.turned === true };
+  if (step.turned) lastTurn = { theta2Deg: step.theta2Deg, branch: step.branch };
   scene.setPose(step.pose ? scenePose(linkage, step.pose) : null);
 }
 
@@ -53,6 +80,11 @@ function setRun(next: PlayRun | null): void {
   }
   // A new run (Play started, or the linkage or state changed during Play) starts from its θ2 and branch; the
   // direction carries on.
+  // The run the page sends back after a turn (the state took the turn's θ2 and branch) carries on from where Play is,
+  // which is up to PANEL_INTERVAL_MS past the turn: going back there would jump.
+  const afterTurn = lastTurn?.theta2Deg === next.theta2Deg && lastTurn.branch === next.branch;
+  lastTurn = null;
+  if (afterTurn && play) return;
   play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
   if (!playHandle) playHandle = self.requestAnimationFrame(tick);
 }
@@ -64,9 +96,9 @@ async function handle(m: ViewRequest): Promise<void> {
       scene = createSpatialScene(m.canvas, {
         rendererName: m.rendererName,
         devicePixelRatio: m.devicePixelRatio,
-        onFrame: (frames) => {
-          reply({ type: 'frame', frames, play: playAt });
-          if (playAt) playAt = { ...playAt, turned: false };
+        onFrame: (n) => {
+          frames = n;
+          tell();
         },
         onQuality: (q, antialias) => reply({ type: 'quality', name: q.name, antialias }),
       });

@@ -23,7 +23,21 @@ export function createWorkerScene(
   rendererName: string | null,
   events: WorkerSceneEvents,
 ): Promise<SpatialScene> {
-  const worker = startSceneWorker();
+  // A worker that cannot start (a file:// page, a module from another origin) or a canvas that cannot be handed over
+  // throws here: a rejection, so the caller draws on its own thread.
+  try {
+    return workerScene(startSceneWorker(), canvas, rendererName, events);
+  } catch (e) {
+    return Promise.reject(e instanceof Error ? e : new Error(String(e)));
+  }
+}
+
+function workerScene(
+  worker: Worker,
+  canvas: HTMLCanvasElement,
+  rendererName: string | null,
+  events: WorkerSceneEvents,
+): Promise<SpatialScene> {
   let frames = 0;
   let nextPng = 1;
   const pngs = new Map<number, { resolve: (b: Uint8Array) => void; reject: (e: Error) => void }>();
@@ -74,9 +88,13 @@ export function createWorkerScene(
         else p?.reject(new Error(m.message));
       }
     };
-    const offscreen = canvas.transferControlToOffscreen();
-    post({ type: 'init', canvas: offscreen, rendererName, devicePixelRatio: window.devicePixelRatio || 1 }, [
-      offscreen,
-    ]);
+    try {
+      const offscreen = canvas.transferControlToOffscreen();
+      post({ type: 'init', canvas: offscreen, rendererName, devicePixelRatio: window.devicePixelRatio || 1 }, [
+        offscreen,
+      ]);
+    } catch (e) {
+      fail(e instanceof Error ? e.message : String(e));
+    }
   });
 }
