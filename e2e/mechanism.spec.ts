@@ -614,6 +614,23 @@ test.describe('mechanism page: the live stage', () => {
     await expect(stage(page)).toHaveAttribute('data-input', String((await liveFrame(page)).input));
   });
 
+  test('at a limit the worker’s Play reverses and the page says why', async ({ page }) => {
+    await page.goto('./?page=mech&tpl=piston-driven');
+    await expect(workspace(page)).toHaveAttribute('data-mech-state', 'ok');
+    await expect(live(page)).toHaveAttribute('data-stage', 'ready');
+    // The fastest speed, by keyboard on its slider.
+    await page.getByRole('slider', { name: 'Speed' }).press('End');
+    await page.getByRole('button', { name: 'Play', exact: true }).click();
+    await expect(live(page)).toHaveAttribute('data-mode', 'play');
+    await expect(status(page)).toHaveText(/At a limit \(input .+\): the linkage cannot go on this way/);
+    // Still drawn by the worker after the turn: the input moves on, back from the limit.
+    const turned = await liveFrame(page);
+    await expect.poll(async () => (await liveFrame(page)).input).not.toBe(turned.input);
+    await expect(live(page)).toBeVisible();
+    await page.getByRole('button', { name: 'Pause', exact: true }).click();
+    await expect(live(page)).toBeHidden();
+  });
+
   test('without OffscreenCanvas the page draws Play and a drag itself', async ({ page }) => {
     await page.addInitScript(() => {
       delete (window as unknown as { OffscreenCanvas?: unknown }).OffscreenCanvas;
