@@ -42,6 +42,7 @@ export interface MechStageProps extends Omit<MechCanvasProps, 'picture' | 'hold'
   dragged: DraggedSource;
 }
 
+/** The subscription of a page without a live stage: its canvas never hides under one. */
 const still = () => () => {};
 
 /**
