@@ -1,5 +1,5 @@
 import type { ReactNode } from 'react';
-import { useLayoutEffect, useMemo, useState } from 'react';
+import { useLayoutEffect, useState } from 'react';
 import type { AppState } from '../../shared/state/appState';
 import type { Playhead } from '../../shared/state/playhead';
 import { FramePoseContext, createFramePoseSource } from '../../shared/linkage/FramePoseContext';
@@ -27,8 +27,10 @@ export interface FramePoseProviderProps {
  */
 export function FramePoseProvider({ state, playhead, scrub, ghostShown, children }: FramePoseProviderProps) {
   const [poser] = useState(createFramePoser);
-  // The frame for this render's state; the playhead is read as it is now (its later moves are followed below).
-  const value = useMemo(() => poser(state, playhead.get(), ghostShown), [poser, state, playhead, ghostShown]);
+  // The frame for this render's state and the playhead as it is now (its later moves are followed below). Not a memo
+  // of the state: a render for another reason after the playhead moved must not bring back an older frame; the
+  // poser gives the same object for the same inputs.
+  const value = poser(state, playhead.get(), ghostShown);
   const [source] = useState(() => createFramePoseSource(value));
   // Held during the render, so that a reader mounting in this render reads this frame; told after the commit.
   source.set(value);
