@@ -22,6 +22,11 @@ export function cpuMs(pid: number): number {
   return statCpuMs(`/proc/${pid}/stat`);
 }
 
+/** utime + stime (ms) of a process's main thread (a renderer's page thread), 0 when it is gone. */
+export function mainThreadCpuMs(pid: number): number {
+  return statCpuMs(`/proc/${pid}/task/${pid}/stat`);
+}
+
 /**
  * utime + stime (ms) summed over a process's threads whose name (comm) matches: Chromium names a dedicated worker's
  * thread "DedicatedWorker thread" (comm "DedicatedWorker"), so /^DedicatedWorker/ is the page's workers' own CPU.

@@ -1,6 +1,7 @@
 /// <reference lib="webworker" />
 import { scenePose } from '../features/spatial/sceneData';
 import type { SceneLinkage, ScenePose } from '../features/spatial/sceneData';
+import { startPlayLoop } from '../features/spatial/playLoop';
 import { playStep } from '../features/spatial/spatialPlay';
 import type { PlayState } from '../features/spatial/spatialPlay';
 import { createSpatialScene } from '../features/spatial/spatialScene';
@@ -9,9 +10,6 @@ import { PANEL_INTERVAL_MS } from '../features/spatial/spatialPlayhead';
 import type { PlayAt, PlayRun, ViewReply, ViewRequest } from '../features/spatial/viewProtocol';
 
 declare const self: DedicatedWorkerGlobalScope;
-
-/** Longest Play step, seconds (as the page's useAnimationFrame): a throttled worker does not jump on return. */
-const MAX_DT_S = 0.1;
 
 // The Spatial page's 3D view in a worker (issue 32): three.js on the OffscreenCanvas the page handed over, Play on this
 // worker's own animation frames (spatialPlay.ts), each drawn frame told to the page (its count, and Play's θ2 and
@@ -22,8 +20,8 @@ let linkage: SceneLinkage | null = null;
 let pagePose: ScenePose | null = null;
 let run: PlayRun | null = null;
 let play: PlayState | null = null;
-let playHandle = 0;
-let lastTick: number | null = null;
+/** Stops Play's animation-frame loop (playLoop.ts) while it runs. */
+let stopLoop: (() => void) | null = null;
 /** Where Play turned last (its θ2 and new branch), until the page's run for it comes. */
 let lastTurn: { theta2Deg: number; branch: PlayAt['branch'] } | null = null;
 /** Where Play is, for the next drawn frame's reply; a turn is kept until a frame carries it. */
@@ -54,12 +52,9 @@ function tell(): void {
   if (playAt) playAt = { ...playAt, turned: false };
 }
 
-function tick(now: number): void {
-  playHandle = self.requestAnimationFrame(tick);
+/** One frame of Play (dt seconds since the last): the next pose, drawn in the next animation frame (playLoop.ts). */
+function tick(dt: number): void {
   if (!run || !play || !scene || !linkage) return;
-  const dt = lastTick === null ? 0 : Math.min(MAX_DT_S, (now - lastTick) / 1000);
-  lastTick = now;
-  if (dt <= 0) return;
   const step = playStep(run.model, run.input, play, dt);
   play = { theta2Deg: step.theta2Deg, branch: step.branch, direction: step.direction };
   playAt = { theta2Deg: step.theta2Deg, branch: step.branch, turned: step.turned || playAt?.turned === true };
@@ -72,9 +67,8 @@ function setRun(next: PlayRun | null): void {
   if (!next) {
     play = null;
     playAt = null;
-    self.cancelAnimationFrame(playHandle);
-    playHandle = 0;
-    lastTick = null;
+    stopLoop?.();
+    stopLoop = null;
     scene?.setPose(pagePose);
     return;
   }
@@ -86,7 +80,10 @@ function setRun(next: PlayRun | null): void {
   lastTurn = null;
   if (afterTurn && play) return;
   play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
-  if (!playHandle) playHandle = self.requestAnimationFrame(tick);
+  stopLoop ??= startPlayLoop(
+    { request: (f) => self.requestAnimationFrame(f), cancel: (h) => self.cancelAnimationFrame(h) },
+    tick,
+  );
 }
 
 async function handle(m: ViewRequest): Promise<void> {
