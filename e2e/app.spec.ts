@@ -367,6 +367,81 @@ test.describe('the simulator', () => {
     expect(Math.abs((Number(markerX) / plotWidth) * 360 - shown)).toBeLessThan(0.5);
   });
 
+  test("the page's canvas under the worker's is not drawn during Play; Pause draws it at the paused pose", async ({
+    page,
+  }) => {
+    // The app's draw marks (benchMarks.ts): each draw of the page's canvas marks its θ2.
+    await page.addInitScript(() => {
+      (globalThis as Record<string, unknown>).__FOURBAR_BENCH__ = true;
+    });
+    await page.goto('./');
+    await waitReady(page);
+    const draws = () =>
+      page.evaluate(() =>
+        performance
+          .getEntriesByName('fourbar:canvas')
+          .map((m) => ((m as PerformanceMark).detail as { theta2Rad: number }).theta2Rad),
+      );
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(page.locator('canvas.linkage-live')).toBeVisible({ timeout: 30_000 });
+    // Two of Play's commits to the state: the θ2 field takes a new value twice.
+    const field = page.getByRole('textbox', { name: /^θ2/ });
+    const before = (await draws()).length;
+    for (let i = 0; i < 2; i++) {
+      const value = await field.inputValue();
+      await expect.poll(() => field.inputValue()).not.toBe(value);
+    }
+    expect((await draws()).length).toBe(before);
+    const shown = await page.getByRole('button', { name: 'Pause' }).evaluate(shownTheta2InPage);
+    await expect(page.locator('canvas.linkage-live')).toBeHidden();
+    await expect
+      .poll(async () => {
+        const last = (await draws()).at(-1) ?? Number.NaN;
+        return Math.abs((((last * 180) / Math.PI) % 360) - shown);
+      })
+      .toBeLessThanOrEqual(0.006);
+  });
+
+  test('while Play runs, a results card off screen keeps its numbers until it is scrolled to; Pause brings all to the pose', async ({
+    page,
+  }) => {
+    await page.goto('./');
+    await waitReady(page);
+    // At 1280x800 the analysis card is on screen and the motion card below it, off screen in the results column.
+    const analysisAt = page
+      .locator('#sec-analysis')
+      .locator('xpath=..')
+      .getByText(/^At θ2 = /);
+    const motion = page.locator('section[aria-labelledby="sec-motion-results"]');
+    const motionAt = motion.getByRole('heading', { name: /^Rates, θ2 = / });
+    await expect(motion).not.toBeInViewport();
+    await page.getByRole('button', { name: 'Play' }).click();
+    // Three of Play's commits as the analysis card shows them; the motion card keeps the θ2 it showed after the first.
+    let shownAt = await analysisAt.textContent();
+    await expect.poll(() => analysisAt.textContent()).not.toBe(shownAt);
+    const held = await motionAt.textContent();
+    for (let i = 0; i < 2; i++) {
+      shownAt = await analysisAt.textContent();
+      await expect.poll(() => analysisAt.textContent()).not.toBe(shownAt);
+    }
+    expect(await motionAt.textContent()).toBe(held);
+    // Scrolled to, it takes Play's frames again.
+    await motion.scrollIntoViewIfNeeded();
+    await expect.poll(() => motionAt.textContent()).not.toBe(held);
+    await motion.evaluate((el) => el.closest('aside')?.scrollTo(0, 0));
+    await expect(motion).not.toBeInViewport();
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    // Paused, every card shows the paused pose, the ones off screen included.
+    const theta2Of = (text: string | null) => /θ2 = ([\d.]+)°/.exec(text ?? '')?.[1];
+    await expect
+      .poll(async () => theta2Of(await motionAt.textContent()))
+      .toBe(theta2Of(await analysisAt.textContent()));
+    expect(theta2Of(await analysisAt.textContent())).toBe(
+      Number(await page.getByRole('textbox', { name: /^θ2/ }).inputValue()).toFixed(2),
+    );
+  });
+
   test('switches to Traditional Chinese and back', async ({ page }) => {
     await page.goto('./');
     await waitReady(page);

@@ -13,6 +13,7 @@ import { ForcesSection } from '../features/forces/ForcesSection';
 import { useLatest } from '../shared/hooks/useLatest';
 import { SolverStatus } from '../shared/jobs/SolverStatus';
 import { PanelSection } from '../shared/ui/PanelSection';
+import { HoldingSection } from '../shared/ui/Held';
 import type { SimulatorSession } from './useSimulatorSession';
 import { exportBlocked } from './exportBlocked';
 import { PAGES } from './pages';
@@ -32,11 +33,13 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
   const motion = useFrameMotion(state, local);
   const stateRef = useLatest(state);
   const locale = state.shell.locale;
+  // While Play runs, a card off screen keeps its last render (the state commits a few times a second).
+  const hold = state.motion.playing;
   // Stable per language, so the memoised Share panel does not re-render with every state change.
   const pageLabel = useCallback((p: Page) => PAGES[p].label[locale], [locale]);
   return (
     <aside className="rightbar" aria-label={label}>
-      <PanelSection className="card" id="sec-analysis" title={t.sectionAnalysis}>
+      <PanelSection holdOffScreen={hold} className="card" id="sec-analysis" title={t.sectionAnalysis}>
         <AnalysisPanel
           cycle={cycle}
           table={table}
@@ -50,7 +53,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
           </p>
         ) : null}
       </PanelSection>
-      <PanelSection className="card" id="sec-design" title={t.sectionDesign}>
+      <PanelSection holdOffScreen={hold} className="card" id="sec-design" title={t.sectionDesign}>
         <DesignPanel
           design={design}
           muBandLoDeg={state.display.muBandLoDeg}
@@ -58,14 +61,14 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
           dispatch={dispatch}
         />
       </PanelSection>
-      <PanelSection className="card" id="sec-motion-results" title={t.motionPanelTitle}>
+      <PanelSection holdOffScreen={hold} className="card" id="sec-motion-results" title={t.motionPanelTitle}>
         <MotionPanel motion={motion} theta2Rad={local.theta2Rad} lengthUnit={state.design.lengthUnit} />
       </PanelSection>
-      <ForcesSection state={state} dispatch={dispatch} />
-      <section className="card convergence-card">
+      <ForcesSection state={state} dispatch={dispatch} holdOffScreen={hold} />
+      <HoldingSection className="card convergence-card" holdOffScreen={hold}>
         <ConvergencePanel point={point} nrStart={state.solver.nrStart} dispatch={dispatch} />
-      </section>
-      <PanelSection className="card" id="sec-export" title={t.sectionExport}>
+      </HoldingSection>
+      <PanelSection holdOffScreen={hold} className="card" id="sec-export" title={t.sectionExport}>
         <ExportPanel
           onPng={session.onPng}
           onSvg={session.onSvg}
@@ -75,7 +78,7 @@ export function ResultsSidebar({ session, label }: ResultsSidebarProps) {
         />
       </PanelSection>
       <PrintReportSection session={session} />
-      <PanelSection className="card" id="sec-share" title={t.sectionShare}>
+      <PanelSection holdOffScreen={hold} className="card" id="sec-share" title={t.sectionShare}>
         <SharePanel stateRef={stateRef} pageLabel={pageLabel} />
       </PanelSection>
       <SolverStatus mode={session.solverMode} reason={session.solverReason} />

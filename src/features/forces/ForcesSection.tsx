@@ -16,17 +16,30 @@ export interface ForcesSectionProps {
   className?: string;
   /** Offer the mass, gravity and load settings (default); an embed shows toggles and numbers. */
   withSettings?: boolean;
+  /** While true (Play runs), the section's content keeps its last render while it is off screen (PanelSection). */
+  holdOffScreen?: boolean;
 }
 
 /**
  * The forces' section: the "Forces" toggle (the length unit sits with the lengths, LinksSection), then, while Forces is on, the mass model,
  * gravity and loads, the input torque, pin forces and shaking at θ2, and the cycle's torque and flywheel.
  */
-export function ForcesSection({ state, dispatch, className = 'card', withSettings = true }: ForcesSectionProps) {
+export function ForcesSection({
+  state,
+  dispatch,
+  className = 'card',
+  withSettings = true,
+  holdOffScreen,
+}: ForcesSectionProps) {
   const t = forcesMessages.get(state.shell.locale);
   const f = state.forces;
   return (
-    <PanelSection className={`${className} forces-section`} id="sec-forces" title={t.sectionForces}>
+    <PanelSection
+      className={`${className} forces-section`}
+      id="sec-forces"
+      title={t.sectionForces}
+      holdOffScreen={holdOffScreen}
+    >
       <div className="toggles">
         <Toggle
           label={t.forcesToggle}

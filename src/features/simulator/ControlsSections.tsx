@@ -78,7 +78,7 @@ export function LinksSection({ state, dispatch, isLocked, range }: ControlsSecti
   const t = useMessages();
   const from = state.design.lengthUnit;
   return (
-    <PanelSection id="sec-links" title={t.sectionLinks}>
+    <PanelSection holdOffScreen={state.motion.playing} id="sec-links" title={t.sectionLinks}>
       {LENGTH_FIELDS.some((f) => isLocked(f)) ? null : (
         <>
           <Segmented<LengthUnit>
@@ -166,7 +166,7 @@ export function BranchControl({
 export function InputSection(props: ControlsSectionProps) {
   const t = useMessages();
   return (
-    <PanelSection id="sec-input" title={t.sectionInput}>
+    <PanelSection holdOffScreen={props.state.motion.playing} id="sec-input" title={t.sectionInput}>
       <Theta2Control {...props} />
       <BranchControl {...props} />
     </PanelSection>
@@ -235,7 +235,7 @@ export function AnimationSection({ compact, rocking, withoutPlay = false, ...pro
   const t = useMessages();
   const { state, dispatch } = props;
   return (
-    <PanelSection id="sec-anim" title={t.sectionAnimation}>
+    <PanelSection holdOffScreen={state.motion.playing} id="sec-anim" title={t.sectionAnimation}>
       {withoutPlay ? null : <PlayRow {...props} />}
       {!compact ? (
         <>
@@ -267,7 +267,7 @@ export function AnimationSection({ compact, rocking, withoutPlay = false, ...pro
 export function CouplerSection({ state, dispatch, isLocked, range }: ControlsSectionProps & { range: SliderRange }) {
   const t = useMessages();
   return (
-    <PanelSection id="sec-coupler" title={t.sectionCoupler}>
+    <PanelSection holdOffScreen={state.motion.playing} id="sec-coupler" title={t.sectionCoupler}>
       <NumberControl
         field="couplerDistance"
         value={state.design.coupler.distance}
@@ -300,7 +300,7 @@ export function DisplaySection({ state, dispatch }: Omit<ControlsSectionProps, '
     ? SAMPLE_CHOICES
     : [...SAMPLE_CHOICES, state.solver.samples].sort((a, b) => a - b);
   return (
-    <PanelSection id="sec-display" title={t.sectionDisplay}>
+    <PanelSection holdOffScreen={state.motion.playing} id="sec-display" title={t.sectionDisplay}>
       <FlagToggles
         flags={['showGrid', 'showAngles', 'showGhost', 'showTrace', 'showDeadCentres', 'showInstantCentres']}
         state={state.display}

@@ -121,7 +121,8 @@ function LinkageCanvasImpl(props: LinkageCanvasProps) {
     if (width > 0 && height > 0) onSize?.(width, height);
   }, [width, height, onSize]);
   const { bounds, panZoom } = useCanvasHandles(props, canvasRef, width, height);
-  useLinkageDrawing(canvasRef, scene, bounds, view, width, height, stage?.notePageDraw);
+  const covered = useStageShowing(stage);
+  useLinkageDrawing(canvasRef, scene, bounds, view, width, height, stage?.notePageDraw, covered);
   const turnBy = (deltaDeg: number) => {
     if (!onTheta2) return;
     const next = wrapDeg360(Math.round((radToDeg360(scene.theta2) + deltaDeg) * 100) / 100);

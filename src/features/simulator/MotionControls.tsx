@@ -27,7 +27,7 @@ export function MotionControls({ state, dispatch }: MotionControlsProps) {
   const unit = state.motion.omegaUnit;
   const slider = OMEGA_SLIDER[unit];
   return (
-    <PanelSection id="sec-motion" title={t.sectionMotion}>
+    <PanelSection holdOffScreen={state.motion.playing} id="sec-motion" title={t.sectionMotion}>
       <NumberControl
         field="omega2"
         value={omegaToUnit(state.motion.omega2RadPerS, unit)}

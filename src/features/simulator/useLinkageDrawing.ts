@@ -1,10 +1,11 @@
 import { useLayoutEffect, useRef } from 'react';
 import type { RefObject } from 'react';
-import type { Bounds } from '../../shared/canvas/view';
+import type { Bounds, ViewTransform } from '../../shared/canvas/view';
 import { frameToScreen } from '../../shared/canvas/view';
 import type { FrameBackground } from '../../shared/linkage/linkageFrame';
 import { drawLinkageFrame } from '../../shared/linkage/linkageFrame';
 import type { LinkageScene } from '../../shared/linkage/scene';
+import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
 import { benchMark } from '../../shared/benchMarks';
 import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
@@ -30,7 +31,8 @@ function whenIdle(task: () => void): () => void {
  * the view or the size (CSS pixels) changes: the background (grid, curves, ground) is kept in a bitmap once it is
  * drawn twice (drawLinkageFrame), so Play redraws just the linkage over a copy of it. The canvas's data-o2, data-a and data-p
  * say where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas. onDrawn gets how
- * long each draw took (ms).
+ * long each draw took (ms). While covered (the live stage's canvas lies over this one and shows Play) nothing is drawn,
+ * only the joints' places are updated: the canvas is drawn again in the commit that uncovers it.
  */
 export function useLinkageDrawing(
   canvasRef: RefObject<HTMLCanvasElement | null>,
@@ -40,6 +42,7 @@ export function useLinkageDrawing(
   width: number,
   height: number,
   onDrawn?: (ms: number) => void,
+  covered = false,
 ): void {
   // Touched in the drawing effect only.
   const background = useRef<FrameBackground | null>(null);
@@ -47,6 +50,10 @@ export function useLinkageDrawing(
   const measured = useRef(0);
   useLayoutEffect(() => {
     const canvas = canvasRef.current;
+    if (canvas && covered) {
+      markJoints(canvas, scene, fitScene(scene, bounds, width, height, view));
+      return;
+    }
     const sized = canvas && sizeCanvas(canvas, width, height);
     if (!sized) return;
     const started = performance.now();
@@ -59,15 +66,7 @@ export function useLinkageDrawing(
       newCanvas,
     );
     background.current = drawn.background;
-    const transform = drawn.transform;
-    // Where the draggable joints are drawn (CSS pixels), for tests and tools that drive the canvas.
-    const at = (p: { x: number; y: number } | undefined) => {
-      const s = p ? frameToScreen(transform, p) : null;
-      return s ? `${s.x.toFixed(1)},${s.y.toFixed(1)}` : '';
-    };
-    canvas.dataset.o2 = at({ x: 0, y: 0 });
-    canvas.dataset.a = at(scene.pose?.A);
-    canvas.dataset.p = at(scene.pose?.P);
+    markJoints(canvas, scene, drawn.transform);
     onDrawn?.(performance.now() - started);
     benchMark('fourbar:canvas', { theta2Rad: scene.theta2 });
     measured.current += 1;
@@ -92,5 +91,16 @@ export function useLinkageDrawing(
     };
     cancel = whenIdle(redraw);
     return () => cancel();
-  }, [canvasRef, scene, bounds, view, width, height, onDrawn]);
+  }, [canvasRef, scene, bounds, view, width, height, onDrawn, covered]);
+}
+
+/** Writes where the draggable joints are drawn (CSS pixels) on the canvas, for tests and tools that drive it. */
+function markJoints(canvas: HTMLCanvasElement, scene: LinkageScene, transform: ViewTransform): void {
+  const at = (p: { x: number; y: number } | undefined) => {
+    const s = p ? frameToScreen(transform, p) : null;
+    return s ? `${s.x.toFixed(1)},${s.y.toFixed(1)}` : '';
+  };
+  canvas.dataset.o2 = at({ x: 0, y: 0 });
+  canvas.dataset.a = at(scene.pose?.A);
+  canvas.dataset.p = at(scene.pose?.P);
 }

@@ -6,9 +6,9 @@ import type { MechPicture } from '../drawMechanism';
 import type { MechScene } from '../mechScene';
 import { mechPictureAt, poseDigest, selectedAt } from '../mechScene';
 import type { MechDriveRun, MechStageReply, MechStageRequest, MechStageView } from './mechStageProtocol';
+import { createStageClock } from '../../../shared/linkage/stageClock';
 
-/** Longest frame step, seconds, as useAnimationFrame caps it on the page: a backgrounded tab does not jump on return. */
-export const MAX_DT_SECONDS = 0.1;
+export { MAX_DT_SECONDS } from '../../../shared/linkage/stageClock';
 
 /** What draws the stage's pictures: the canvas and the view (mechStagePainter.ts in the worker). */
 export interface MechStagePainter {
@@ -20,14 +20,11 @@ export interface MechStagePainter {
 /** The worker's clock, its animation frames and the way back to the page. */
 export type MechStageHost = StageFrameHost<MechStageReply>;
 
-/** Play as it stands: the playhead drawn last, when, and how it moves. */
+/** Play as it stands: the playhead drawn last and how it moves (its time is the clock's). */
 interface Playing {
   id: number;
   playhead: Playhead;
-  atEpochMs: number;
   drive: MechDriveRun;
-  /** The first step from the page's playhead is not capped: the worker catches up with the page's clock. */
-  first: boolean;
 }
 
 /** A shown picture: the input, or the spec a joint's drag draws. */
@@ -55,15 +52,7 @@ export function createMechStageLoop(
   let view: MechStageView | null = null;
   let playing: Playing | null = null;
   let shown: Shown | null = null;
-  let handle = 0;
   let hasCanvas = false;
-  let readySent = false;
-  const epochNow = (now: number) => host.timeOrigin + now;
-
-  const stopFrames = () => {
-    if (handle) host.cancelFrame(handle);
-    handle = 0;
-  };
 
   /** Draws the scene at input (or the dragged spec); what the page is told of it, or null when nothing was drawn. */
   const draw = (input: number, dragged: MechanismSpec | null, playhead: Playhead) => {
@@ -74,38 +63,32 @@ export function createMechStageLoop(
     return { playhead, pose: poseDigest(picture), selectedAt: selectedAt(picture), drawMs };
   };
 
-  function tick(now: number) {
-    handle = 0;
+  const clock = createStageClock(host, (dt, at) => {
     const p = playing;
-    if (!p || !host.requestFrame) return;
-    const at = epochNow(now);
-    const elapsed = Math.max(0, (at - p.atEpochMs) / 1000);
-    const dt = p.first ? elapsed : Math.min(MAX_DT_SECONDS, elapsed);
+    if (!p) return false;
     const { next } = playFrame(p.playhead, p.drive.ratePerS * dt, p.drive.range, p.drive.fullTurn);
     const drawn = draw(clampTo(p.drive.range, next.input), null, next);
-    if (drawn) {
-      playing = { ...p, playhead: next, atEpochMs: at, first: false };
-      host.reply({ type: 'drawn', id: p.id, atEpochMs: at, shownEpochMs: at, ...drawn });
-    }
-    handle = host.requestFrame(tick);
-  }
+    if (!drawn) return false;
+    playing = { ...p, playhead: next };
+    host.reply({ type: 'drawn', id: p.id, atEpochMs: at, shownEpochMs: at, ...drawn });
+    return true;
+  });
 
   /** Draws the shown picture at once (its input came with a page event) and tells the page at the next frame. */
   function drawShown(s: Shown) {
     const drawn = draw(s.input, s.dragged, { input: s.input, direction: 1, limitAt: null });
-    if (!drawn || !host.requestFrame) return;
-    const at = epochNow(host.now());
-    host.requestFrame(() =>
-      host.reply({ type: 'drawn', id: s.id, atEpochMs: at, shownEpochMs: epochNow(host.now()), ...drawn }),
+    if (!drawn) return;
+    const at = clock.epochNow();
+    clock.atNextFrame(() =>
+      host.reply({ type: 'drawn', id: s.id, atEpochMs: at, shownEpochMs: clock.epochNow(), ...drawn }),
     );
   }
 
   /** Once it has a canvas, a view and a scene, draws the scene once, unseen (compiling the drawing's code), and says so. */
   const warmUp = () => {
-    if (readySent || !hasCanvas || !scene || !view || !host.requestFrame) return;
+    if (clock.readySaid() || !hasCanvas || !scene || !view || !host.requestFrame) return;
     if (!playing && !shown) draw(0, null, { input: 0, direction: 1, limitAt: null });
-    readySent = true;
-    host.reply({ type: 'ready' });
+    clock.sayReady();
   };
 
   return (m) => {
@@ -125,19 +108,19 @@ export function createMechStageLoop(
         break;
       case 'play':
         shown = null;
-        playing = { id: m.id, playhead: m.from, atEpochMs: m.atEpochMs, drive: m.drive, first: true };
-        if (!handle && host.requestFrame) handle = host.requestFrame(tick);
+        playing = { id: m.id, playhead: m.from, drive: m.drive };
+        clock.play(m.atEpochMs);
         break;
       case 'show':
         playing = null;
-        stopFrames();
+        clock.stop();
         shown = { id: m.id, input: m.input, dragged: m.dragged };
         drawShown(shown);
         break;
       case 'stop':
         playing = null;
         shown = null;
-        stopFrames();
+        clock.stop();
         break;
     }
   };

@@ -6,9 +6,10 @@ import { playFrameOf } from '../../../shared/state/playhead';
 import type { CycleResponse } from '../../../shared/solution';
 import type { StageInputs } from '../scene/stageScene';
 import type { StageReply, StageRequest } from './stageProtocol';
+import type { StageFrameHost } from '../../../shared/linkage/liveStage';
+import { createStageClock } from '../../../shared/linkage/stageClock';
 
-/** Longest frame step, seconds, as useAnimationFrame caps it on the page: a backgrounded tab does not jump on return. */
-export const MAX_DT_SECONDS = 0.1;
+export { MAX_DT_SECONDS } from '../../../shared/linkage/stageClock';
 
 /** What draws the live stage's frames: the canvas, its size, the language's tables (stagePainter.ts in the worker). */
 export interface StagePainter {
@@ -21,25 +22,14 @@ export interface StagePainter {
 }
 
 /** The worker's clock and its animation frames, and the way back to the page. */
-export interface StageHost {
-  /** The worker's clock (ms, performance.now) and its origin (epoch ms), so the page's clock and this one agree. */
-  now(): number;
-  timeOrigin: number;
-  /** The worker's requestAnimationFrame, or null where workers have none. */
-  requestFrame: ((callback: (now: number) => void) => number) | null;
-  cancelFrame(handle: number): void;
-  reply(message: StageReply): void;
-}
+export type StageHost = StageFrameHost<StageReply>;
 
-/** What Play is doing: the frame drawn last, when, and how it moves. */
+/** What Play is doing: the frame drawn last and how it moves (its time is the clock's). */
 interface Playing {
   id: number;
   frame: PlayFrame;
-  atEpochMs: number;
   speedDegPerFrame: number;
   range: InputRangeDeg;
-  /** The first step from the page's frame is not capped: the worker catches up with the page's clock. */
-  first: boolean;
 }
 
 /**
@@ -53,26 +43,13 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
   let inputs: StageInputs | null = null;
   let cycle: CycleResponse | null = null;
   let playing: Playing | null = null;
-  let handle = 0;
   let hasCanvas = false;
-  /** Whether 'ready' went to the page (once per worker). */
-  let readySent = false;
-  const epochNow = (now: number) => host.timeOrigin + now;
-
-  const stopFrames = () => {
-    if (handle) host.cancelFrame(handle);
-    handle = 0;
-  };
 
   const draw = (frame: PlayFrame): number | null => (inputs ? painter.draw(frame, inputs) : null);
 
-  function tick(now: number) {
-    handle = 0;
+  const clock = createStageClock(host, (dt, at) => {
     const p = playing;
-    if (!p || !host.requestFrame) return;
-    const at = epochNow(now);
-    const elapsed = Math.max(0, (at - p.atEpochMs) / 1000);
-    const dt = p.first ? elapsed : Math.min(MAX_DT_SECONDS, elapsed);
+    if (!p) return false;
     const next = advanceTheta2(
       p.frame.theta2Deg,
       degreesForElapsed(p.speedDegPerFrame, dt),
@@ -81,23 +58,22 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
       p.range,
     );
     const drawMs = draw(next);
-    if (drawMs !== null) {
-      playing = { ...p, frame: next, atEpochMs: at, first: false };
-      host.reply({ type: 'drawn', id: p.id, frame: next, atEpochMs: at, shownEpochMs: at, drawMs });
-    }
-    handle = host.requestFrame(tick);
-  }
+    if (drawMs === null) return false;
+    playing = { ...p, frame: next };
+    host.reply({ type: 'drawn', id: p.id, frame: next, atEpochMs: at, shownEpochMs: at, drawMs });
+    return true;
+  });
 
   function show(id: number, frame: PlayFrame) {
     // A θ2 drag: drawn at once (its input came with a page frame), nothing moves it on.
     playing = null;
-    stopFrames();
+    clock.stop();
     const drawMs = draw(frame);
-    if (drawMs === null || !host.requestFrame) return;
+    if (drawMs === null) return;
     // Told once the frame it went out with has begun (as the page's own measure of a rendered frame).
-    const at = epochNow(host.now());
-    host.requestFrame(() =>
-      host.reply({ type: 'drawn', id, frame, atEpochMs: at, shownEpochMs: epochNow(host.now()), drawMs }),
+    const at = clock.epochNow();
+    clock.atNextFrame(() =>
+      host.reply({ type: 'drawn', id, frame, atEpochMs: at, shownEpochMs: clock.epochNow(), drawMs }),
     );
   }
 
@@ -107,10 +83,9 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
    * page it is ready: a Play or drag from then on draws from its first frame without the worker's start-up.
    */
   const warmUp = () => {
-    if (readySent || !hasCanvas || !inputs || !host.requestFrame) return;
+    if (clock.readySaid() || !hasCanvas || !inputs || !host.requestFrame) return;
     if (!playing) draw(playFrameOf(inputs.state));
-    readySent = true;
-    host.reply({ type: 'ready' });
+    clock.sayReady();
   };
 
   return (m) => {
@@ -133,15 +108,15 @@ export function createStageLoop(host: StageHost, painter: StagePainter): (reques
         if (inputs) inputs = { ...inputs, cycle };
         break;
       case 'play':
-        playing = { ...m, first: true };
-        if (!handle && host.requestFrame) handle = host.requestFrame(tick);
+        playing = { id: m.id, frame: m.frame, speedDegPerFrame: m.speedDegPerFrame, range: m.range };
+        clock.play(m.atEpochMs);
         break;
       case 'show':
         show(m.id, m.frame);
         break;
       case 'stop':
         playing = null;
-        stopFrames();
+        clock.stop();
         break;
     }
   };
