@@ -211,10 +211,13 @@ test.describe('the simulator', () => {
       // chart's x scale (data-x over the plot's width), 20 moves of each marker.
       const followed = await page.evaluate(() => {
         const canvas = document.querySelector<HTMLCanvasElement>('canvas.linkage-live');
-        // The charts against θ2: those with a marker box over their SVG.
-        const boxes = [...document.querySelectorAll<HTMLElement>('.chart-box')].filter(
-          (b) => b.querySelector('.chart-marker') && b.querySelector('svg g.axis-x path.domain'),
-        );
+        // The charts against θ2 on screen: those with a marker box over their SVG (one below the fold keeps its
+        // marker still until it is scrolled to).
+        const boxes = [...document.querySelectorAll<HTMLElement>('.chart-box')].filter((b) => {
+          const r = b.getBoundingClientRect();
+          const shown = r.bottom > 0 && r.top < window.innerHeight;
+          return shown && b.querySelector('.chart-marker') && b.querySelector('svg g.axis-x path.domain');
+        });
         if (!canvas || boxes.length === 0) throw new Error('no live canvas or no θ2 chart');
         const drawn: number[] = [];
         // The page's own frames, counted as they come.
@@ -440,6 +443,45 @@ test.describe('the simulator', () => {
     expect(theta2Of(await analysisAt.textContent())).toBe(
       Number(await page.getByRole('textbox', { name: /^θ2/ }).inputValue()).toFixed(2),
     );
+  });
+
+  test('while Play runs, a plot below the fold keeps its marker still; scrolled to, it shows the paused θ2 and follows Play', async ({
+    page,
+  }) => {
+    await page.goto('./');
+    await waitReady(page);
+    // At 1280x800 the angle plots are on screen and the transmission plot below them, off screen.
+    const below = page.locator('.transmission-card .chart-box');
+    const belowMarker = below.locator('.chart-marker');
+    const shownMarker = page.locator('.plots .chart-marker').first();
+    await expect(belowMarker).toHaveAttribute('data-x', /\d/);
+    await expect(below).not.toBeInViewport();
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect(page.locator('canvas.linkage-live')).toBeVisible({ timeout: 30_000 });
+    const still = await belowMarker.getAttribute('data-x');
+    // The plot on screen moves its marker again and again meanwhile.
+    for (let i = 0; i < 3; i++) {
+      const x = await shownMarker.getAttribute('data-x');
+      await expect.poll(() => shownMarker.getAttribute('data-x')).not.toBe(x);
+    }
+    expect(await belowMarker.getAttribute('data-x')).toBe(still);
+    // Paused off screen, then scrolled to: the marker is drawn at the paused θ2 (on its chart's own x scale).
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
+    const paused = Number(await page.getByRole('textbox', { name: /^θ2/ }).inputValue());
+    await below.scrollIntoViewIfNeeded();
+    const width = await below.evaluate(
+      (box) => (box.querySelector('svg g.axis-x path.domain') as SVGPathElement).getBBox().width,
+    );
+    await expect
+      .poll(async () => Math.abs((Number(await belowMarker.getAttribute('data-x')) / width) * 360 - paused))
+      .toBeLessThan(0.5);
+    // On screen, it follows Play.
+    await page.getByRole('button', { name: 'Play' }).click();
+    const at = await belowMarker.getAttribute('data-x');
+    await expect.poll(() => belowMarker.getAttribute('data-x')).not.toBe(at);
+    await page.getByRole('button', { name: 'Pause' }).click();
+    await expect(page.getByRole('button', { name: 'Play' })).toBeVisible();
   });
 
   test('switches to Traditional Chinese and back', async ({ page }) => {

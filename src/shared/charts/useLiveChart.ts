@@ -1,6 +1,7 @@
 import { useLayoutEffect, useRef, useState } from 'react';
 import type { RefObject } from 'react';
 import { useElementSize } from '../hooks/useElementSize';
+import { watchOnScreen } from '../hooks/useOnScreen';
 import type { ValueSource } from '../state/externalValue';
 
 /** What every chart handle (angle, rate, transmission) offers the views: new data, a new marker, a new size. */
@@ -68,12 +69,44 @@ export function useLiveChart<D, M, C extends LiveChart<D, M>>(
       chart.setMarker(marker);
       return;
     }
-    const follow = () => chart.setMarker(marker.get());
-    follow();
-    return marker.subscribe(follow);
+    return followOnScreen(boxRef.current, () => chart.setMarker(marker.get()), marker.subscribe);
   }, [chart, marker]);
   useLayoutEffect(() => {
     if (width > 0 && height > 0) chart?.resize(width, height);
   }, [chart, width, height]);
   return { chart, boxRef, svgRef, markerRef };
+}
+
+/**
+ * Draws a marker from its source now and at each change the source tells of (subscribe), but only while box is on
+ * screen (watchOnScreen, with no margin: a marker's move costs the page's thread about as much as the rest of its
+ * frame): a chart below the fold does not move its marker through Play; it is drawn as soon as a check finds it in
+ * view (a scroll, a resize, a render of a watched section). Returns the stop.
+ */
+function followOnScreen(
+  box: Element | null,
+  draw: () => void,
+  subscribe: (listener: () => void) => () => void,
+): () => void {
+  let onScreen = true;
+  let stale = false;
+  const follow = () => {
+    stale = !onScreen;
+    if (onScreen) draw();
+  };
+  follow();
+  const unsubscribe = subscribe(follow);
+  if (!box || typeof window === 'undefined') return unsubscribe;
+  const unwatch = watchOnScreen(
+    box,
+    (now) => {
+      onScreen = now;
+      if (onScreen && stale) follow();
+    },
+    0,
+  );
+  return () => {
+    unwatch();
+    unsubscribe();
+  };
 }

@@ -4,10 +4,11 @@ import type { RefObject } from 'react';
 /** How far outside the view (CSS pixels) an element still counts as on screen: it is brought up to date before it shows. */
 export const ON_SCREEN_MARGIN_PX = 160;
 
-/** A watched element: where it reports, and the scrolling box that clips it (null: only the viewport). */
+/** A watched element: where it reports, the scrolling box that clips it (null: only the viewport), its margin. */
 interface Watched {
   report: (onScreen: boolean) => void;
   clip: Element | null;
+  margin: number;
 }
 
 /**
@@ -27,10 +28,9 @@ function scrollingBox(el: Element): Element | null {
   return null;
 }
 
-/** Whether el's box is within ON_SCREEN_MARGIN_PX of the viewport and of its scrolling box. */
-export function isOnScreen(el: Element, clip: Element | null): boolean {
+/** Whether el's box is within m CSS pixels of the viewport and of its scrolling box. */
+export function isOnScreen(el: Element, clip: Element | null, m = ON_SCREEN_MARGIN_PX): boolean {
   const r = el.getBoundingClientRect();
-  const m = ON_SCREEN_MARGIN_PX;
   let top = -m;
   let bottom = window.innerHeight + m;
   let left = -m;
@@ -47,19 +47,27 @@ export function isOnScreen(el: Element, clip: Element | null): boolean {
 
 function checkAll(): void {
   frame = 0;
-  for (const [el, w] of watched) w.report(isOnScreen(el, w.clip));
+  for (const [el, w] of watched) w.report(isOnScreen(el, w.clip, w.margin));
 }
 
 function scheduleCheck(): void {
   if (!frame) frame = requestAnimationFrame(checkAll);
 }
 
-function watch(el: Element, report: (onScreen: boolean) => void): () => void {
+/**
+ * Reports whether el is on screen (within margin CSS pixels of the viewport and of the box that scrolls it) in the
+ * next animation frame, then whenever a check finds it (see `watched`); returns the stop.
+ */
+export function watchOnScreen(
+  el: Element,
+  report: (onScreen: boolean) => void,
+  margin = ON_SCREEN_MARGIN_PX,
+): () => void {
   if (watched.size === 0) {
     document.addEventListener('scroll', scheduleCheck, { capture: true, passive: true });
     window.addEventListener('resize', scheduleCheck);
   }
-  watched.set(el, { report, clip: scrollingBox(el) });
+  watched.set(el, { report, clip: scrollingBox(el), margin });
   scheduleCheck();
   return () => {
     watched.delete(el);
@@ -80,15 +88,16 @@ export function useOnScreen(ref: RefObject<Element | null>, watching: boolean): 
   useEffect(() => {
     const el = ref.current;
     if (!watching || !el || typeof window === 'undefined') return;
-    const stop = watch(el, setOnScreen);
+    const stop = watchOnScreen(el, setOnScreen);
     return () => {
       stop();
       setOnScreen(true);
     };
   }, [ref, watching]);
-  // Each render of a watcher may have moved what is watched: check again in the next frame.
+  // Each render here (a state's commit) may have moved what is watched (this element or another's): check again in the
+  // next frame.
   useLayoutEffect(() => {
-    if (watching) scheduleCheck();
+    if (watched.size > 0) scheduleCheck();
   });
   return watching ? onScreen : true;
 }

@@ -6,6 +6,7 @@ import type { MechPicture } from '../../../src/features/mechanism/drawMechanism'
 import type { MechScene } from '../../../src/features/mechanism/mechScene';
 import { mechPictureAt, poseDigest, selectedAt } from '../../../src/features/mechanism/mechScene';
 import { moveJoint } from '../../../src/features/mechanism/specEdits';
+import { handRunFrames } from '../../shared/linkage/handRunFrames';
 import { MAX_DT_SECONDS, createMechStageLoop } from '../../../src/features/mechanism/stage/mechStageLoop';
 import type { MechStagePainter } from '../../../src/features/mechanism/stage/mechStageLoop';
 import type {
@@ -51,10 +52,8 @@ function sceneOf(spec: MechanismSpec, selected: string | null = null): MechScene
 
 /** A stage loop on a clock the test moves: frames run when the test says, replies and drawn pictures are kept. */
 function rig(withFrames = true) {
-  let now = 1000;
-  let nextHandle = 1;
-  const frames = new Map<number, (t: number) => void>();
-  const replies: MechStageReply[] = [];
+  const frames = handRunFrames<MechStageReply>(0, withFrames);
+  frames.frameAt(1000);
   const drawn: MechPicture[] = [];
   const painter: MechStagePainter = {
     setCanvas: () => {},
@@ -63,31 +62,15 @@ function rig(withFrames = true) {
       return 0.5;
     },
   };
-  const handle = createMechStageLoop(
-    {
-      now: () => now,
-      timeOrigin: 0,
-      requestFrame: withFrames
-        ? (cb) => {
-            frames.set(nextHandle, cb);
-            return nextHandle++;
-          }
-        : null,
-      cancelFrame: (h) => frames.delete(h),
-      reply: (m) => replies.push(m),
-    },
-    painter,
-  );
+  const handle = createMechStageLoop(frames.host, painter);
+  const { replies } = frames;
   return {
     send: (m: MechStageRequest) => handle(m),
     /** Moves the clock by ms and runs the animation frames then due. */
     frame(ms: number) {
-      now += ms;
-      const due = [...frames.entries()];
-      frames.clear();
-      for (const [, cb] of due) cb(now);
+      frames.frameAt(frames.now() + ms);
     },
-    now: () => now,
+    now: frames.now,
     replies,
     drawn,
     drawnFrames: () => replies.filter((r): r is Extract<MechStageReply, { type: 'drawn' }> => r.type === 'drawn'),

@@ -1,40 +1,19 @@
 import { describe, expect, it } from 'vitest';
-import type { StageFrameHost } from '../../../src/shared/linkage/liveStage';
 import { MAX_DT_SECONDS, createStageClock } from '../../../src/shared/linkage/stageClock';
+import { handRunFrames } from './handRunFrames';
 
 const ORIGIN_MS = 2_000;
 
 /** A worker's clock and animation frames run by hand; step draws when told to and notes each (dt, at) it got. */
 function harness(withFrames = true) {
-  let now = 0;
-  let nextHandle = 1;
-  const pending = new Map<number, (now: number) => void>();
-  const replies: unknown[] = [];
-  const host: StageFrameHost<unknown> = {
-    now: () => now,
-    timeOrigin: ORIGIN_MS,
-    requestFrame: withFrames
-      ? (callback) => {
-          pending.set(nextHandle, callback);
-          return nextHandle++;
-        }
-      : null,
-    cancelFrame: (h) => pending.delete(h),
-    reply: (m) => replies.push(m),
-  };
+  const frames = handRunFrames<unknown>(ORIGIN_MS, withFrames);
   const steps: { dt: number; at: number }[] = [];
   let draws = true;
-  const clock = createStageClock(host, (dt, at) => {
+  const clock = createStageClock(frames.host, (dt, at) => {
     steps.push({ dt, at });
     return draws;
   });
-  const frameAt = (ms: number) => {
-    now = ms;
-    const due = [...pending.values()];
-    pending.clear();
-    for (const callback of due) callback(ms);
-  };
-  return { clock, frameAt, steps, replies, pending, setDraws: (d: boolean) => (draws = d) };
+  return { ...frames, clock, steps, setDraws: (d: boolean) => (draws = d) };
 }
 
 describe('createStageClock', () => {

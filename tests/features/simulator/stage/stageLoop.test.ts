@@ -1,9 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import type { StageHost, StagePainter } from '../../../../src/features/simulator/stage/stageLoop';
+import type { StagePainter } from '../../../../src/features/simulator/stage/stageLoop';
 import { MAX_DT_SECONDS, createStageLoop } from '../../../../src/features/simulator/stage/stageLoop';
 import type { StageReply, StageRequest } from '../../../../src/features/simulator/stage/stageProtocol';
 import { DEFAULT_STATE } from '../../../../src/shared/state/appState';
 import type { PlayFrame } from '../../../../src/shared/state/playhead';
+import { handRunFrames } from '../../../shared/linkage/handRunFrames';
 
 /** The nominal frame rate a speed in degrees per frame refers to (60 frames a second). */
 const FPS = 60;
@@ -11,23 +12,8 @@ const ORIGIN_MS = 5_000;
 
 /** A worker's clock and animation frames run by hand, and a painter that notes what it drew. */
 function harness(withFrames = true, prepare: StagePainter['prepare'] = () => Promise.resolve()) {
-  let clock = 0;
-  let nextHandle = 1;
-  const pending = new Map<number, (now: number) => void>();
-  const replies: StageReply[] = [];
+  const { host, replies, pending, frameAt } = handRunFrames<StageReply>(ORIGIN_MS, withFrames);
   const drawn: PlayFrame[] = [];
-  const host: StageHost = {
-    now: () => clock,
-    timeOrigin: ORIGIN_MS,
-    requestFrame: withFrames
-      ? (callback) => {
-          pending.set(nextHandle, callback);
-          return nextHandle++;
-        }
-      : null,
-    cancelFrame: (h) => pending.delete(h),
-    reply: (m) => replies.push(m),
-  };
   const painter: StagePainter = {
     setCanvas: () => {},
     setSize: () => {},
@@ -38,13 +24,6 @@ function harness(withFrames = true, prepare: StagePainter['prepare'] = () => Pro
     },
   };
   const send = createStageLoop(host, painter);
-  /** Runs the animation frames waiting at now (ms on the worker's clock). */
-  const frameAt = (now: number) => {
-    clock = now;
-    const due = [...pending];
-    pending.clear();
-    for (const [, callback] of due) callback(now);
-  };
   return { send, frameAt, replies, drawn, pending };
 }
 
