@@ -73,7 +73,8 @@ async function shownPin(page: Page, pin: 'A' | 'B' | 'P'): Promise<number[]> {
   const out: number[] = [];
   for (const axis of ['x', 'y', 'z']) {
     const text = await page.getByTestId(`pin-${pin}-${axis}`).innerText();
-    out.push(Number(text.replace('−', '-')));
+    // Every minus: a coordinate under 1e-4 reads in exponent form, its exponent's minus a '−' too (formatNumber).
+    out.push(Number(text.replace(/−/g, '-')));
   }
   return out;
 }
