@@ -291,12 +291,14 @@ async function measureDrag(
           send(v);
         }
         const lastValue = sent[sent.length - 1].v;
-        // θ2 on screen: the page canvas's draws, and the live stage's frames where it draws the drag (a worker's
-        // frame ends when the worker's next animation frame runs, as the page's own frames end at a later rAF).
+        // θ2 on screen: the page canvas's draws, or the live stage's frames where it draws the drag (a worker's
+        // frame ends when the worker's next animation frame runs, as the page's own frames end at a later rAF). Where
+        // the stage draws, the page's canvas lies under it: a draw there is not seen (builds before 0fe6d85 drew it
+        // at each commit, and counting those made their drags look quicker than they were).
         const shown = (): { t: number; v: number; end?: number }[] =>
           kind === 'theta2'
             ? [
-                ...b.draws.slice(drawsFrom).map((d) => {
+                ...(b.stage.length > stageFrom ? [] : b.draws.slice(drawsFrom)).map((d) => {
                   const m = /θ2 (-?[\d.]+)°/.exec(d.label);
                   return { t: d.t, v: m ? Number(m[1]) : Number.NaN };
                 }),
