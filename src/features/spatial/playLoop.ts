@@ -1,11 +1,13 @@
+import { MAX_DT_SECONDS } from '../../shared/linkage/stageClock';
+
 /** The animation-frame calls a loop runs on (a window's, or a dedicated worker's with an OffscreenCanvas). */
 export interface AnimationFrames {
   request(callback: (nowMs: number) => void): number;
   cancel(handle: number): void;
 }
 
-/** Longest step passed on, seconds: a throttled or hidden worker does not jump on return. */
-export const MAX_PLAY_DT_S = 0.1;
+/** Longest step passed on, seconds: a throttled or hidden worker does not jump on return (the stages' cap). */
+export const MAX_PLAY_DT_S = MAX_DT_SECONDS;
 
 /**
  * Runs onFrame(dtS, nowMs) on every animation frame from the second on (dt since the previous frame in seconds, capped

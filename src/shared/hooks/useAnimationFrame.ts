@@ -1,7 +1,5 @@
 import { useEffect, useEffectEvent } from 'react';
-
-/** Longest frame step passed on, seconds: a backgrounded tab does not jump on return. */
-const MAX_DT_SECONDS = 0.1;
+import { MAX_DT_SECONDS } from '../linkage/stageClock';
 
 /**
  * Runs onFrame(dtSeconds, nowMs) on every animation frame while active: one requestAnimationFrame loop, cancelled

@@ -29,7 +29,7 @@ function scrollingBox(el: Element): Element | null {
 }
 
 /** Whether el's box is within m CSS pixels of the viewport and of its scrolling box. */
-export function isOnScreen(el: Element, clip: Element | null, m = ON_SCREEN_MARGIN_PX): boolean {
+function isOnScreen(el: Element, clip: Element | null, m = ON_SCREEN_MARGIN_PX): boolean {
   const r = el.getBoundingClientRect();
   let top = -m;
   let bottom = window.innerHeight + m;

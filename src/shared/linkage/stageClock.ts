@@ -1,6 +1,6 @@
 import type { StageFrameHost } from './liveStage';
 
-/** Longest frame step, seconds, as useAnimationFrame caps it on the page: a backgrounded tab does not jump on return. */
+/** Longest frame step, seconds, for the page's loop (useAnimationFrame) and the workers' (stages, the 3D view): a backgrounded tab does not jump on return. */
 export const MAX_DT_SECONDS = 0.1;
 
 /**
