@@ -26,6 +26,12 @@ export interface RenderQuality {
    * on the page (screenRibbon.ts), plain triangles that a software WebGL draws for far less. Read when the view is made.
    */
   fatMovingLines: boolean;
+  /**
+   * While only the linkage moves (Play, the camera still), the fixed parts are drawn once into a layer and each frame
+   * draws only the moving parts over it (fixedLayer.ts, fixedLayerPlan.ts). For the lean look, whose fixed parts are
+   * most of a software WebGL's frame; a GPU draws the full look whole.
+   */
+  cacheFixedWhileMoving: boolean;
 }
 
 /** The full look, for a hardware GPU. */
@@ -39,6 +45,7 @@ export const FULL_QUALITY: RenderQuality = {
   sphereShading: 'phong',
   fatFixedLines: true,
   fatMovingLines: true,
+  cacheFixedWhileMoving: false,
 };
 
 /** The lean look, for a software WebGL or a view whose frames take too long. */
@@ -52,6 +59,7 @@ export const LEAN_QUALITY: RenderQuality = {
   sphereShading: 'lambert',
   fatFixedLines: false,
   fatMovingLines: false,
+  cacheFixedWhileMoving: true,
 };
 
 const SOFTWARE_RENDERERS = /swiftshader|llvmpipe|softpipe|lavapipe|software|basic render driver|mesa offscreen/i;

@@ -42,6 +42,10 @@ import type { RibbonView } from './screenRibbon';
 import { ribbonIndex, ribbonInto, ribbonVertexCount } from './screenRibbon';
 import { ADAPT_WINDOW, REST_MS, adaptQuality, pixelRatioFor, qualityForRenderer } from './renderQuality';
 import type { SceneEnv } from './sceneEnv';
+import { createFixedLayer } from './fixedLayer';
+import type { FixedLayerParts } from './fixedLayer';
+import { planFixedLayer } from './fixedLayerPlan';
+import type { FixedLayerView } from './fixedLayerPlan';
 import type { PlayRun } from './viewProtocol';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
@@ -311,7 +315,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
     // A frame asked for soon after the last one was drawn is part of a motion (Play, orbit), however long frames take:
     // the lean look draws it with fewer pixels, and once more at full resolution when no change follows within REST_MS
     // of a frame (rest), for the eye and the PNG. A frame drawn directly (resize, PNG) is at rest.
-    const moving = pending !== 0 && !restFrame && askedAt - lastFrameAt < REST_MS;
+    const inMotion = pending !== 0 && !restFrame && askedAt - lastFrameAt < REST_MS;
     restFrame = false;
     if (pending) {
       latencies.push(performance.now() - askedAt);
@@ -320,7 +324,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       if (next !== quality) lower(next);
     }
     pending = 0;
-    const ratio = pixelRatio(moving);
+    const ratio = pixelRatio(inMotion);
     if (ratio !== renderer.getPixelRatio()) {
       renderer.setPixelRatio(ratio);
       renderer.setSize(size.x, size.y, false);
@@ -329,12 +333,48 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       const view = ribbonView();
       for (const m of lines) m.update(view);
     }
-    renderer.render(scene, camera);
+    drawFrame(inMotion);
     frameCount++;
     env.onFrame(frameCount);
     lastFrameAt = performance.now();
     clearTimeout(restTimer);
     restTimer = ratio < pixelRatio(false) ? setTimeout(rest, REST_MS) : 0;
+  };
+  /** The fixed parts' layer (fixedLayer.ts): the view it was drawn for, the last frame's, and off once it failed. */
+  const layer = createFixedLayer(renderer);
+  let layerView: FixedLayerView | null = null;
+  let lastView: FixedLayerView | null = null;
+  let layerFailed = false;
+  let fixedBuilds = 0;
+  const drawingBuffer = new Vector2();
+  const frameView = (): FixedLayerView => {
+    camera.updateMatrixWorld();
+    renderer.getDrawingBufferSize(drawingBuffer);
+    return {
+      camera: [...camera.matrixWorld.elements, ...camera.projectionMatrix.elements],
+      widthPx: drawingBuffer.x,
+      heightPx: drawingBuffer.y,
+      build: fixedBuilds,
+    };
+  };
+  /** Draws the frame: in full, or (Play with the camera still, in a look that caches) the moving parts on the layer. */
+  const drawFrame = (inMotion: boolean) => {
+    const view = frameView();
+    const plan = planFixedLayer({
+      enabled: quality.cacheFixedWhileMoving && !layerFailed,
+      moving: inMotion,
+      cached: layerView,
+      previous: lastView,
+      now: view,
+    });
+    lastView = view;
+    const parts: FixedLayerParts = { scene, camera, fixed, moving };
+    if (plan === 'build') {
+      layerView = layer.build(parts) ? view : null;
+      layerFailed = layerView === null;
+    }
+    if (plan !== 'full' && layerView) layer.draw(parts);
+    else renderer.render(scene, camera);
   };
   /** The view at rest (no change asked for since the last frame): one frame at full resolution. */
   const rest = () => {
@@ -433,6 +473,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       if (!moving.children.some((c) => (c as Line2).material === lineMaterials[i])) lineMaterials.splice(i, 1);
     }
     fixed = new Group();
+    fixedBuilds++;
     const r = l.pinRadius;
     pinA.scale.setScalar(r / 0.045);
     pinB.scale.setScalar(r / 0.045);
@@ -659,6 +700,7 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
     dispose() {
       if (pending) cancelAnimationFrame(pending);
       clearTimeout(restTimer);
+      layer.dispose();
       disposeTree(scene);
       renderer.dispose();
     },

@@ -48,6 +48,7 @@ describe('qualityForRenderer', () => {
       sphereShading: 'lambert',
       fatFixedLines: false,
       fatMovingLines: false,
+      cacheFixedWhileMoving: true,
     });
   });
   it('keeps the full look on a hardware GPU and when the name is hidden', () => {
@@ -61,6 +62,8 @@ describe('qualityForRenderer', () => {
       sphereShading: 'phong',
       fatFixedLines: true,
       fatMovingLines: true,
+      // A GPU draws the full look whole while moving: the fixed parts' layer is for the software WebGL's lean look.
+      cacheFixedWhileMoving: false,
     });
   });
 });
