@@ -112,23 +112,26 @@ async function xAxisDomain(page: Page, testId: string): Promise<[number, number]
  * Share of a PNG's pixels (bytes as downloaded) that differ from its corner's colour by more than 24 in a channel:
  * 0 for a blank image. Decoded by the browser's image decoder, not by the app.
  */
-async function pngInk(page: Page, bytes: Buffer): Promise<number> {
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.naturalWidth;
-    c.height = img.naturalHeight;
-    const ctx = c.getContext('2d')!;
-    ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (Math.max(Math.abs(d[i] - d[0]), Math.abs(d[i + 1] - d[1]), Math.abs(d[i + 2] - d[2])) > 24) n++;
-    }
-    return n / (c.width * c.height);
-  }, bytes.toString('base64'));
+async function pngInk(page: Page, bytes: Buffer, threshold = 24): Promise<number> {
+  return page.evaluate(
+    async ([b64, threshold]) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const ctx = c.getContext('2d')!;
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        if (Math.max(Math.abs(d[i] - d[0]), Math.abs(d[i + 1] - d[1]), Math.abs(d[i + 2] - d[2])) > threshold) n++;
+      }
+      return n / (c.width * c.height);
+    },
+    [bytes.toString('base64'), threshold] as const,
+  );
 }
 
 /** The PNG the Export 3D view PNG button downloads: its facts and bytes. */
@@ -395,6 +398,43 @@ test.describe('Spatial page', () => {
     await page.getByRole('button', { name: 'Pause' }).click();
     // At rest (no frame for REST_MS) one more frame at full resolution: what a screenshot or the eye sees.
     await expect.poll(async () => (await buffer()).width).toBe(rest.css);
+  });
+
+  test("Play with the camera still draws on the fixed parts' layer, in the worker and on the page's thread", async ({
+    page,
+  }) => {
+    for (const route of ['worker', 'main']) {
+      if (route === 'main') {
+        await page.addInitScript(() => {
+          delete (globalThis as { OffscreenCanvas?: unknown }).OffscreenCanvas;
+        });
+      }
+      await openSpatial(page);
+      const canvas = page.getByTestId('spatial-canvas');
+      await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+      await expect(canvas).toHaveAttribute('data-route', route);
+      await expect(canvas).toHaveAttribute('data-quality', 'lean');
+      const count = async (name: string) => Number((await canvas.getAttribute(name)) ?? 0);
+      await expect.poll(() => count('data-frames')).toBeGreaterThan(0);
+      // The sphere (light, translucent: more than 8 of 255 from the card's colour) covers much of the view at rest.
+      const rest = await pngInk(page, await canvas.screenshot(), 8);
+      expect(rest, route).toBeGreaterThan(0.25);
+      const layer0 = await count('data-layer-frames');
+      await page.getByRole('button', { name: 'Play' }).click();
+      await expect.poll(() => count('data-layer-frames'), { timeout: 20_000 }).toBeGreaterThan(layer0 + 10);
+      // A frame of Play on the layer shows the fixed parts too (the sphere, axes, paths), not the links alone.
+      expect(await pngInk(page, await canvas.screenshot(), 8), route).toBeGreaterThan(0.8 * rest);
+      // Orbiting during Play draws in full: the view changes every frame.
+      const f0 = await count('data-frames');
+      const full0 = f0 - (await count('data-layer-frames'));
+      const host = page.locator('.spatial-canvas-host');
+      await host.press('ArrowRight');
+      await expect.poll(() => count('data-frames')).toBeGreaterThan(f0);
+      await expect
+        .poll(async () => (await count('data-frames')) - (await count('data-layer-frames')))
+        .toBeGreaterThan(full0);
+      await page.getByRole('button', { name: 'Pause' }).click();
+    }
   });
 
   test('reads in Traditional Chinese', async ({ page }) => {

@@ -31,6 +31,7 @@ const reply = (m: ViewReply, transfer: Transferable[] = []) => self.postMessage(
 
 /** Frames drawn, when the page was last told (ms), and the timer that tells it of the frames drawn since. */
 let frames = 0;
+let layerFrames = 0;
 let toldAt = Number.NEGATIVE_INFINITY;
 let tellTimer: ReturnType<typeof setTimeout> | 0 = 0;
 
@@ -48,7 +49,7 @@ function tell(): void {
   clearTimeout(tellTimer);
   tellTimer = 0;
   toldAt = now;
-  reply({ type: 'frame', frames, play: playAt });
+  reply({ type: 'frame', frames, layerFrames, play: playAt });
   if (playAt) playAt = { ...playAt, turned: false };
 }
 
@@ -93,8 +94,9 @@ async function handle(m: ViewRequest): Promise<void> {
       scene = createSpatialScene(m.canvas, {
         rendererName: m.rendererName,
         devicePixelRatio: m.devicePixelRatio,
-        onFrame: (n) => {
+        onFrame: (n, onLayer) => {
           frames = n;
+          layerFrames = onLayer;
           tell();
         },
         onQuality: (q, antialias) => reply({ type: 'quality', name: q.name, antialias }),

@@ -43,7 +43,10 @@ async function mainThreadScene(canvas: HTMLCanvasElement, rendererName: string |
     rendererName,
     devicePixelRatio: window.devicePixelRatio || 1,
     // Frames drawn so far, for bench:ui and the e2e (one attribute write per drawn frame).
-    onFrame: (frames) => (canvas.dataset.frames = String(frames)),
+    onFrame: (frames, layerFrames) => {
+      canvas.dataset.frames = String(frames);
+      canvas.dataset.layerFrames = String(layerFrames);
+    },
     onQuality: (q, antialias) => {
       canvas.dataset.quality = q.name;
       canvas.dataset.antialias = String(antialias);
@@ -55,7 +58,7 @@ async function mainThreadScene(canvas: HTMLCanvasElement, rendererName: string |
  * The 3D view: three.js on a canvas sized to its box, drawn by a worker on an OffscreenCanvas where the browser can
  * (the page keeps its thread for the panels), else on the page's thread (its chunk loads here, on this page only);
  * orbit, zoom and pan by mouse, touch and keys; reset and projection tools. The canvas's data-route names where it
- * draws, data-frames counts its frames. Without WebGL a message says so and the rest of the page works.
+ * draws, data-frames counts its frames and data-layer-frames those drawn on the fixed parts' layer. Without WebGL a message says so and the rest of the page works.
  */
 export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, onPlayFrame }: SpatialViewProps) {
   const hostRef = useRef<HTMLDivElement>(null);
@@ -82,8 +85,9 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, on
         ? Promise.reject(new Error('no WebGL'))
         : route === 'worker'
           ? createWorkerScene(canvas, webgl.rendererName, {
-              onFrame: (frames, play) => {
+              onFrame: (frames, layerFrames, play) => {
                 canvas.dataset.frames = String(frames);
+                canvas.dataset.layerFrames = String(layerFrames);
                 if (play) playFrame(play);
               },
               onQuality: (name, antialias) => {

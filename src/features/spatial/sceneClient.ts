@@ -2,9 +2,9 @@ import type { SceneLinkage, ScenePose } from './sceneData';
 import type { Projection, SpatialScene } from './spatialScene';
 import type { PlayAt, PlayRun, ViewMove, ViewReply, ViewRequest } from './viewProtocol';
 
-/** What the page hears from the worker's view: each drawn frame (count, Play's place) and the look. */
+/** What the page hears from the worker's view: each drawn frame (counts, Play's place) and the look. */
 export interface WorkerSceneEvents {
-  onFrame(frames: number, play: PlayAt | null): void;
+  onFrame(frames: number, layerFrames: number, play: PlayAt | null): void;
   onQuality(name: 'full' | 'lean', antialias: boolean): void;
 }
 
@@ -79,7 +79,7 @@ function workerScene(
       else if (m.type === 'failed') fail(m.message);
       else if (m.type === 'frame') {
         frames = m.frames;
-        events.onFrame(m.frames, m.play);
+        events.onFrame(m.frames, m.layerFrames, m.play);
       } else if (m.type === 'quality') events.onQuality(m.name, m.antialias);
       else {
         const p = pngs.get(m.id);

@@ -8,8 +8,8 @@ import type { RenderQuality } from './renderQuality';
 export interface SceneEnv {
   rendererName: string | null;
   devicePixelRatio: number;
-  /** After each drawn frame: frames drawn so far. */
-  onFrame(frames: number): void;
+  /** After each drawn frame: frames drawn so far, and of them those drawn on the fixed parts' layer (fixedLayer.ts). */
+  onFrame(frames: number, layerFrames: number): void;
   /** When the look is chosen or lowered (renderQuality), with the context's MSAA as made. */
   onQuality(quality: RenderQuality, antialias: boolean): void;
 }

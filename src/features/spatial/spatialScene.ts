@@ -298,6 +298,8 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
     camera.updateMatrixWorld();
   };
   let frameCount = 0;
+  /** Of them, the frames drawn on the fixed parts' layer. */
+  let layerFrames = 0;
   let pending = 0;
   /** When the pending frame was asked for (ms), and the last frames' latencies from ask to draw (adaptQuality). */
   let askedAt = 0;
@@ -333,9 +335,9 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       const view = ribbonView();
       for (const m of lines) m.update(view);
     }
-    drawFrame(inMotion);
+    if (drawFrame(inMotion)) layerFrames++;
     frameCount++;
-    env.onFrame(frameCount);
+    env.onFrame(frameCount, layerFrames);
     lastFrameAt = performance.now();
     clearTimeout(restTimer);
     restTimer = ratio < pixelRatio(false) ? setTimeout(rest, REST_MS) : 0;
@@ -357,8 +359,11 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       build: fixedBuilds,
     };
   };
-  /** Draws the frame: in full, or (Play with the camera still, in a look that caches) the moving parts on the layer. */
-  const drawFrame = (inMotion: boolean) => {
+  /**
+   * Draws the frame: in full, or (Play with the camera still, in a look that caches) the moving parts on the layer; true
+   * for the latter.
+   */
+  const drawFrame = (inMotion: boolean): boolean => {
     const view = frameView();
     const plan = planFixedLayer({
       enabled: quality.cacheFixedWhileMoving && !layerFailed,
@@ -373,8 +378,12 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
       layerView = layer.build(parts) ? view : null;
       layerFailed = layerView === null;
     }
-    if (plan !== 'full' && layerView) layer.draw(parts);
-    else renderer.render(scene, camera);
+    if (plan !== 'full' && layerView) {
+      layer.draw(parts);
+      return true;
+    }
+    renderer.render(scene, camera);
+    return false;
   };
   /** The view at rest (no change asked for since the last frame): one frame at full resolution. */
   const rest = () => {

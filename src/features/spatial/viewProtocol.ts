@@ -44,13 +44,14 @@ export interface PlayAt {
 
 /**
  * The worker's replies, keyed on type: ready (the view drew its first frame) or failed (WebGL could not start there:
- * the page draws on its own thread instead); each drawn frame with its count and, during Play, where Play is; a change
+ * the page draws on its own thread instead); each drawn frame with its count (and of those, the frames drawn on the
+ * fixed parts' layer) and, during Play, where Play is; a change
  * of look; a PNG asked for by id (its bytes, or the error's message).
  */
 export type ViewReply =
   | { type: 'ready' }
   | { type: 'failed'; message: string }
-  | { type: 'frame'; frames: number; play: PlayAt | null }
+  | { type: 'frame'; frames: number; layerFrames: number; play: PlayAt | null }
   | { type: 'quality'; name: RenderQuality['name']; antialias: boolean }
   | { type: 'png'; id: number; ok: true; bytes: Uint8Array }
   | { type: 'png'; id: number; ok: false; message: string };
