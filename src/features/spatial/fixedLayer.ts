@@ -256,7 +256,6 @@ export function createFixedLayer(renderer: WebGLRenderer): FixedLayer {
     draw(p) {
       const meshes = movingMeshes(p) ?? [];
       toCanvas();
-      renderer.render(blitScene, blitCamera);
       const own = meshes.map((m) => m.material as Material);
       meshes.forEach((m, i) => (m.material = copyOf(own[i])));
       const fixedShown = p.fixed.visible;
@@ -264,6 +263,9 @@ export function createFixedLayer(renderer: WebGLRenderer): FixedLayer {
       const autoClear = renderer.autoClear;
       renderer.autoClear = false;
       try {
+        // The copy covers every pixel: only the depth is cleared.
+        renderer.clear(false, true, false);
+        renderer.render(blitScene, blitCamera);
         renderer.render(p.scene, p.camera);
       } finally {
         renderer.autoClear = autoClear;
