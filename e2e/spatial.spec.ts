@@ -109,50 +109,42 @@ async function xAxisDomain(page: Page, testId: string): Promise<[number, number]
 }
 
 /**
- * Share of a PNG's pixels (bytes as downloaded) that differ from its corner's colour by more than 24 in a channel:
- * 0 for a blank image. Decoded by the browser's image decoder, not by the app.
+ * Share of a PNG's pixels (bytes) that differ from a reference pixel's colour by more than threshold in a channel,
+ * decoded by the browser's image decoder, not by the app (and on a page canvas: some tests delete OffscreenCanvas).
+ * The reference: the corner, or the bottom's middle 5 px up (the card's colour, below the sphere at 1280x800).
  */
-async function pngInk(page: Page, bytes: Buffer): Promise<number> {
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.naturalWidth;
-    c.height = img.naturalHeight;
-    const ctx = c.getContext('2d')!;
-    ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (Math.max(Math.abs(d[i] - d[0]), Math.abs(d[i + 1] - d[1]), Math.abs(d[i + 2] - d[2])) > 24) n++;
-    }
-    return n / (c.width * c.height);
-  }, bytes.toString('base64'));
+async function inkShare(page: Page, bytes: Buffer, threshold: number, reference: 'corner' | 'bottom'): Promise<number> {
+  return page.evaluate(
+    async ([b64, threshold, reference]) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const ctx = c.getContext('2d')!;
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      const o = reference === 'corner' ? 0 : 4 * ((c.height - 5) * c.width + (c.width >> 1));
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        const diff = Math.max(Math.abs(d[i] - d[o]), Math.abs(d[i + 1] - d[o + 1]), Math.abs(d[i + 2] - d[o + 2]));
+        if (diff > threshold) n++;
+      }
+      return n / (c.width * c.height);
+    },
+    [bytes.toString('base64'), threshold, reference] as const,
+  );
 }
 
+/** Share of a PNG's pixels (bytes as downloaded) more than 24 from its corner's colour: 0 for a blank image. */
+const pngInk = (page: Page, bytes: Buffer) => inkShare(page, bytes, 24, 'corner');
+
 /**
- * The share of a view's screenshot (PNG) not in the card's colour, read 5 px above its bottom's middle (below the
- * sphere at 1280x800), by more than 8 of 255: the faint sphere counts, so a view without its fixed parts shows far less.
+ * Share of a view's screenshot not in the card's colour by more than 8 of 255: the faint sphere counts, so a view
+ * without its fixed parts shows far less.
  */
-async function viewInk(page: Page, bytes: Buffer): Promise<number> {
-  return page.evaluate(async (b64) => {
-    const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-    // A page canvas: the test also runs where OffscreenCanvas is deleted.
-    const c = document.createElement('canvas');
-    c.width = bitmap.width;
-    c.height = bitmap.height;
-    const ctx = c.getContext('2d')!;
-    ctx.drawImage(bitmap, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    const o = 4 * ((c.height - 5) * c.width + (c.width >> 1));
-    let n = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (Math.max(Math.abs(d[i] - d[o]), Math.abs(d[i + 1] - d[o + 1]), Math.abs(d[i + 2] - d[o + 2])) > 8) n++;
-    }
-    return n / (c.width * c.height);
-  }, bytes.toString('base64'));
-}
+const viewInk = (page: Page, bytes: Buffer) => inkShare(page, bytes, 8, 'bottom');
 
 /** The PNG the Export 3D view PNG button downloads: its facts and bytes. */
 async function exportPng(page: Page) {
