@@ -317,6 +317,55 @@ test.describe('the simulator', () => {
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
   });
 
+  test('a θ2 drag the page draws goes over to the worker once the page turns slow, and stays there to the release', async ({
+    page,
+    context,
+  }) => {
+    test.setTimeout(120_000);
+    await page.goto('./?t2=45');
+    await waitReady(page);
+    const live = page.locator('canvas.linkage-live');
+    // The page judges itself from its first draws (at idle after the load; no overlays, so most machines find it
+    // quick at 1x). A busy machine can find it slow: then every drag is the stage's from its first move, and this
+    // test checks that instead.
+    await expect(live).toHaveAttribute('data-page', /^(quick|slow)$/, { timeout: 30_000 });
+    const judgedQuick = (await live.getAttribute('data-page')) === 'quick';
+    test.info().annotations.push({ type: 'page judged', description: judgedQuick ? 'quick' : 'slow' });
+    const cdp = await context.newCDPSession(page);
+    const { x, y } = await theta2Slider(page);
+    await page.mouse.move(x(45), y);
+    await page.mouse.down();
+    await page.mouse.move(x(50), y);
+    let deg = 50;
+    if (judgedQuick) {
+      // The page draws the drag's first moves itself.
+      await expect.poll(() => page.evaluate(shownTheta2InPage)).toBeGreaterThan(49);
+      await expect(live).toBeHidden();
+      // The page turns slow in the middle of the drag: its draws at 12x judge it slow, and a later move of the same
+      // drag goes to the stage.
+      await cdp.send('Emulation.setCPUThrottlingRate', { rate: 12 });
+      // Its draws judge it within a few moves (six draws at most); sixty are plenty on a busy machine.
+      while (deg < 110 && !(await live.isVisible())) await page.mouse.move(x(++deg), y);
+    }
+    await expect(live).toBeVisible();
+    await expect(live).toHaveAttribute('data-page', 'slow');
+    // From here to the release the stage keeps the drag: its canvas is never hidden again before the pointer is up.
+    await live.evaluate((c: HTMLCanvasElement) => {
+      const hidden: boolean[] = [];
+      (window as unknown as { liveHidden: boolean[] }).liveHidden = hidden;
+      new MutationObserver(() => hidden.push(c.hidden)).observe(c, { attributes: true, attributeFilter: ['hidden'] });
+    });
+    const last = deg + 10;
+    while (deg < last) await page.mouse.move(x(++deg), y);
+    await expect.poll(async () => Number(await live.getAttribute('data-theta2'))).toBeGreaterThan(last - 2);
+    expect(await page.evaluate(() => (window as unknown as { liveHidden: boolean[] }).liveHidden)).not.toContain(true);
+    await page.mouse.up();
+    await expect(live).toBeHidden();
+    const dragged = Number(await page.getByRole('textbox', { name: /^θ2/ }).inputValue());
+    expect(Math.abs((await page.evaluate(shownTheta2InPage)) - dragged)).toBeLessThanOrEqual(0.006);
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
+  });
+
   test('on a slow page Pause keeps the frame the worker drew last, though the page is frames behind it', async ({
     page,
     context,

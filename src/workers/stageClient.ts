@@ -7,12 +7,6 @@ import { createStageInputs } from '../features/simulator/stage/stageInputs';
 import type { StageReply, StageRequest } from '../features/simulator/stage/stageProtocol';
 import { createStageRun } from '../features/simulator/stage/stageRun';
 
-/**
- * The early start waits for this many of the page's draws: the first ones carry one-time costs (fonts, compiling, the
- * background's bitmap), and the page times the first frame again at idle until it has as many (useLinkageDrawing).
- */
-const WARM_AFTER_DRAWS = 4;
-
 /** Whether this browser can hand a canvas to a worker (OffscreenCanvas with transferControlToOffscreen). */
 export function canTransfer(): boolean {
   return (
@@ -62,7 +56,8 @@ function markStageFrame(m: Extract<StageReply, { type: 'drawn' }>): void {
  * canvas: a quick page that never plays or drags never loads it. The canvas's data-stage is "attached" once handed
  * over and "ready" once the worker has started and drawn once (tests wait on it). The canvas element shows the
  * frames the worker draws; the page keeps the newest one for its playhead (stageRun.ts), and the canvas's
- * data-theta2 names the θ2 it shows. Marks each drawn frame for bench:ui. Null where a worker cannot draw; a worker
+ * data-theta2 names the θ2 it shows; its data-page is "quick" or "slow" once the page's first draws judged it (a
+ * slow page stays slow: prefersStage). Marks each drawn frame for bench:ui. Null where a worker cannot draw; a worker
  * that fails or says it cannot animate turns the stage off for good (the page draws as before).
  */
 export function createLiveStage(): LiveStage | null {
@@ -128,7 +123,7 @@ export function createLiveStage(): LiveStage | null {
       return false;
     }
   };
-  /** Whether the page draws the linkage too slowly for a drag: the lower median of its latest draws. */
+  /** Whether the page draws the linkage too slowly for a drag (pageDraws: a slow page stays slow). */
   function prefersStage(): boolean {
     return !broken && element !== null && pageDraws.slow();
   }
@@ -138,12 +133,17 @@ export function createLiveStage(): LiveStage | null {
    * drag, whose route is decided from its first move.
    */
   const warmIfSlow = () => {
-    if (!worker && pageDraws.count() >= WARM_AFTER_DRAWS && prefersStage()) start();
+    if (!worker && prefersStage()) start();
+  };
+  /** For tests and tools: the canvas's data-page says how the page was judged (a drag's route), once it is. */
+  const markJudged = () => {
+    if (element && pageDraws.judged()) element.dataset.page = pageDraws.slow() ? 'slow' : 'quick';
   };
   return {
     attach(canvas) {
       if (element === canvas) return;
       element = canvas;
+      markJudged();
       warmIfSlow();
       if (!worker || broken) return;
       try {
@@ -180,6 +180,7 @@ export function createLiveStage(): LiveStage | null {
     },
     notePageDraw(ms) {
       pageDraws.note(ms);
+      markJudged();
       warmIfSlow();
     },
     prefersStage,

@@ -13,6 +13,7 @@ import { followPointers } from '../../shared/hooks/heldPointers';
 import { ExternalValue } from '../../shared/state/externalValue';
 import type { LiveStage } from '../../shared/linkage/liveStage';
 import { CommitPacer, playCommitGapMs } from './commitPacer';
+import { dragViaStage } from './stage/pageDraws';
 
 /**
  * A drag of θ2 with nothing moving it for this long (ms) rests: its value is committed. A drag by no pointer (a script
@@ -218,11 +219,10 @@ function useTheta2Scrub(
       restTimer.current = setTimeout(rest, SCRUB_REST_MS);
       // While Play runs it goes on from here and commits itself.
       if (s.motion.playing && !stopPlay) return;
-      // The drag's frames go to the stage where the page draws slowly, from its first move to its end.
-      if (!draggingRef.current) {
-        viaStage.current = stage?.prefersStage() ?? false;
-        if (!viaStage.current) stage?.warm();
-      }
+      // The drag's frames go to the stage where the page draws slowly (dragViaStage).
+      const first = !draggingRef.current;
+      viaStage.current = dragViaStage(first, viaStage.current, stage?.prefersStage() ?? false);
+      if (first && !viaStage.current) stage?.warm();
       draggingRef.current = true;
       if (viaStage.current) stage?.show(next);
       commitNow(performance.now(), { type: 'setTheta2', deg: next.theta2Deg });

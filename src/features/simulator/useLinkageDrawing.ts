@@ -9,12 +9,16 @@ import { fitScene } from '../../shared/linkage/scene';
 import type { ViewOffset } from '../../shared/state/appState';
 import { benchMark } from '../../shared/benchMarks';
 import { sizeCanvas } from '../../shared/canvas/sizeCanvas';
+import { JUDGED_AFTER_DRAWS } from './stage/pageDraws';
 
 /** A canvas element for the background bitmap. */
 const newCanvas = () => document.createElement('canvas');
 
-/** Draws timed before the page stops redrawing the first frame at idle to time it (see useLinkageDrawing). */
-const MEASURED_DRAWS = 4;
+/**
+ * Draws timed before the page stops redrawing the first frame at idle to time it (see useLinkageDrawing): as many as
+ * the live stage's judgement of the page waits for.
+ */
+const MEASURED_DRAWS = JUDGED_AFTER_DRAWS;
 
 /** Runs task when the page is idle (requestIdleCallback, or a short timeout where there is none); returns its cancel. */
 function whenIdle(task: () => void): () => void {

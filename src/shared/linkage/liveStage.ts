@@ -33,7 +33,10 @@ export interface LiveStage {
   warm(): void;
   /** Notes how long the page took to draw the linkage once (ms): the stage learns how slow the page is. */
   notePageDraw(ms: number): void;
-  /** Whether the page draws the linkage too slowly to keep up with a drag (the lower median of its latest draws). */
+  /**
+   * Whether the page draws the linkage too slowly to keep up with a drag: the lower median of its latest draws is, or
+   * once was, slow (a slow page stays slow).
+   */
   prefersStage(): boolean;
   /** Stops drawing; the stage's canvas hides (showing() turns false). */
   stop(): void;
