@@ -6,6 +6,7 @@ import {
   OrthographicCamera,
   PlaneGeometry,
   Scene,
+  ShaderLib,
   ShaderMaterial,
   Vector4,
   WebGLRenderTarget,
@@ -80,6 +81,23 @@ const FAN_COVER = /* glsl */ `
   if (fcLine < 1.0 && fcLine <= texelFetch(fcOpaqueDepth, fcPx, 0).x) {${LINE_OVER}  }
 `;
 
+const MAIN = 'void main() {';
+const LAST = '#include <dithering_fragment>';
+
+/**
+ * The fragment shader (three's, before its includes are resolved) of a moving part's copy that draws on the layer: the
+ * layer's textures declared, the test against the opaque fixed parts first, and after the last step (the output colour
+ * space, dithering) the surface and line over an opaque part, or the line over a fan. Null when the shader lacks
+ * either place (a three.js whose shaders changed): the layer is then not used.
+ */
+export function layerFragmentShader(source: string, fan: boolean): string | null {
+  if (!source.includes(MAIN) || !source.includes(LAST)) return null;
+  return source.replace(MAIN, `${DECLARATIONS}\n${MAIN}\n${HIDE}`).replace(LAST, `${LAST}\n${fan ? FAN_COVER : COVER}`);
+}
+
+/** The shader libraries of KNOWN_MATERIALS, in order. */
+const KNOWN_SHADERS = ['basic', 'phong', 'lambert'] as const;
+
 /** The moving parts' drawing on the layer: w × h device pixels of colour, opacity and depth. */
 class Targets {
   readonly colour: FramebufferTexture;
@@ -130,6 +148,10 @@ export function createFixedLayer(renderer: WebGLRenderer): FixedLayer {
     fcLineColour: { value: null as FramebufferTexture | null },
     fcLineAlpha: { value: null as WebGLRenderTarget['texture'] | null },
   };
+  const shadersFit = KNOWN_SHADERS.every(
+    (k) =>
+      layerFragmentShader(ShaderLib[k].fragmentShader, false) && layerFragmentShader(ShaderLib[k].fragmentShader, true),
+  );
   /** Each moving material's copy that draws on the layer. */
   const copies = new Map<Material, Material>();
   const copyOf = (m: Material): Material => {
@@ -140,9 +162,7 @@ export function createFixedLayer(renderer: WebGLRenderer): FixedLayer {
     const fan = m.transparent;
     c.onBeforeCompile = (shader) => {
       Object.assign(shader.uniforms, uniforms);
-      shader.fragmentShader = shader.fragmentShader
-        .replace('void main() {', `${DECLARATIONS}\nvoid main() {\n${HIDE}`)
-        .replace('#include <dithering_fragment>', `#include <dithering_fragment>\n${fan ? FAN_COVER : COVER}`);
+      shader.fragmentShader = layerFragmentShader(shader.fragmentShader, fan) ?? shader.fragmentShader;
     };
     c.customProgramCacheKey = () => `fixedLayer:${fan ? 'fan' : 'opaque'}`;
     copies.set(m, c);
@@ -219,7 +239,7 @@ export function createFixedLayer(renderer: WebGLRenderer): FixedLayer {
 
   return {
     build(p) {
-      if (!movingMeshes(p)) return false;
+      if (!shadersFit || !movingMeshes(p)) return false;
       const gl = renderer.getContext();
       const { width, height } = gl.canvas;
       if (!targets || targets.widthPx !== width || targets.heightPx !== height) {
