@@ -1,7 +1,7 @@
 import type { LiveStage } from '../shared/linkage/liveStage';
 import type { InputRangeDeg } from '../shared/state/animation';
 import type { PlayFrame } from '../shared/state/playhead';
-import { benchMark } from '../shared/benchMarks';
+import { BENCH_MARKS, benchMark } from '../shared/benchMarks';
 import { createPageDraws } from '../features/simulator/stage/pageDraws';
 import { createStageInputs } from '../features/simulator/stage/stageInputs';
 import type { StageReply, StageRequest } from '../features/simulator/stage/stageProtocol';
@@ -42,6 +42,8 @@ export function createShownFlag() {
 
 /** Marks a drawn frame 'fourbar:stage-frame' (page time, θ2, the worker's cost) for bench:ui. */
 function markStageFrame(m: Extract<StageReply, { type: 'drawn' }>): void {
+  // Off in normal use: not even the mark's detail is made (a frame of Play's cost on the page's thread).
+  if (!BENCH_MARKS) return;
   benchMark('fourbar:stage-frame', {
     theta2Deg: m.frame.theta2Deg,
     t: m.atEpochMs - performance.timeOrigin,
