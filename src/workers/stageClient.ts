@@ -139,7 +139,9 @@ export function createLiveStage(): LiveStage | null {
   };
   /** For tests and tools: the canvas's data-page says how the page was judged (a drag's route), once it is. */
   const markJudged = () => {
-    if (element && pageDraws.judged()) element.dataset.page = pageDraws.slow() ? 'slow' : 'quick';
+    if (!element || !pageDraws.judged()) return;
+    const judged = pageDraws.slow() ? 'slow' : 'quick';
+    if (element.dataset.page !== judged) element.dataset.page = judged;
   };
   return {
     attach(canvas) {

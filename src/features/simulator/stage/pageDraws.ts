@@ -16,9 +16,9 @@ export const JUDGED_AFTER_DRAWS = 6;
 /**
  * How long the page's latest draws of the linkage took, and whether it is too slow to keep up with a drag. The first
  * draws are the page's own idle redraws of its first frame (useLinkageDrawing), so the answer is known before the
- * first drag. Once slow, a page stays slow: CDP's CPU throttle and a phone's slow core let single short draws through at
- * full speed (a drag's draws over the cached background at 6x took 1.5 to 35 ms), and a window of such lucky draws
- * must not hand the next drag back to the page, whose commits then take 70 to 460 ms.
+ * first drag. Once slow, a page stays slow: CDP's CPU throttle lets single short draws through at full speed (a
+ * drag's draws over the cached background at 6x took 1.5 to 35 ms), and a window of such lucky draws must not hand
+ * the next drag back to the page, whose commits then take 70 to 460 ms.
  */
 export interface PageDraws {
   /** Notes one draw's time (ms); a negative or non-finite time is passed over. */
