@@ -58,7 +58,8 @@ async function mainThreadScene(canvas: HTMLCanvasElement, rendererName: string |
  * The 3D view: three.js on a canvas sized to its box, drawn by a worker on an OffscreenCanvas where the browser can
  * (the page keeps its thread for the panels), else on the page's thread (its chunk loads here, on this page only);
  * orbit, zoom and pan by mouse, touch and keys; reset and projection tools. The canvas's data-route names where it
- * draws, data-frames counts its frames and data-layer-frames those drawn on the fixed parts' layer. Without WebGL a message says so and the rest of the page works.
+ * draws, data-frames counts its frames and data-layer-frames those drawn on the fixed parts' layer. Without WebGL a
+ * message says so and the rest of the page works.
  */
 export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, onPlayFrame }: SpatialViewProps) {
   const hostRef = useRef<HTMLDivElement>(null);

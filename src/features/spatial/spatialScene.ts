@@ -365,6 +365,11 @@ export function createSpatialScene(canvas: HTMLCanvasElement | OffscreenCanvas, 
    */
   const drawFrame = (inMotion: boolean): boolean => {
     const view = frameView();
+    // A box a pixel wide at the moving look's half resolution has no drawing buffer: nothing to plan (or to draw).
+    if (view.widthPx < 1 || view.heightPx < 1) {
+      renderer.render(scene, camera);
+      return false;
+    }
     const plan = planFixedLayer({
       enabled: quality.cacheFixedWhileMoving && !layerFailed,
       moving: inMotion,
