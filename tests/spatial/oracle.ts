@@ -6,11 +6,14 @@
  * the sign of (A - B) . dB/dt4 at each root. Rates are central differences of the 50-digit angle.
  */
 import Decimal from 'decimal.js';
+import { exact } from '../oracle/reference';
 
 const D = Decimal.clone({ precision: 50 });
 type Dec = InstanceType<typeof D>;
 const PI_D = D.acos(-1);
 const ZERO = new D(0);
+/** A double as the exact binary value it holds (decimal.js reads a number through its shortest decimal, which is not). */
+const ex = (x: number): Dec => new D(exact(x));
 
 interface V {
   x: Dec;
@@ -56,7 +59,7 @@ export interface RSSRLengths {
 }
 
 function sphericalModel(l: SphericalArcs): Model {
-  const [a1, a2, a3, a4] = [l.a1, l.a2, l.a3, l.a4].map((x) => new D(x));
+  const [a1, a2, a3, a4] = [l.a1, l.a2, l.a3, l.a4].map(ex);
   const [sa2, ca2, sa4, ca4, ca3] = [D.sin(a2), D.cos(a2), D.sin(a4), D.cos(a4), D.cos(a3)];
   const O4 = v(D.sin(a1), 0, D.cos(a1));
   const u = v(D.cos(a1), 0, D.sin(a1).neg());
@@ -72,8 +75,8 @@ function sphericalModel(l: SphericalArcs): Model {
     }),
   };
   if (l.pDist !== undefined) {
-    const pd = new D(l.pDist);
-    const pa = new D(l.pAngle ?? 0);
+    const pd = ex(l.pDist);
+    const pa = ex(l.pAngle ?? 0);
     model.coupler = (A, B) => {
       const t0 = sub(B, mul(A, dot(A, B)));
       const t = mul(t0, new D(1).div(dot(t0, t0).sqrt()));
@@ -85,7 +88,7 @@ function sphericalModel(l: SphericalArcs): Model {
 }
 
 function rssrModel(l: RSSRLengths): Model {
-  const [r2, r3, r4, a, beta, h2, h4] = [l.r2, l.r3, l.r4, l.a, l.beta, l.h2, l.h4].map((x) => new D(x));
+  const [r2, r3, r4, a, beta, h2, h4] = [l.r2, l.r3, l.r4, l.a, l.beta, l.h2, l.h4].map(ex);
   const w = v(0, D.sin(beta).neg(), D.cos(beta));
   const e1 = v(1, 0, 0);
   const e2 = v(0, D.cos(beta), D.sin(beta));
@@ -148,7 +151,7 @@ export interface OraclePose {
 const H = new D('1e-12');
 
 function oracle(m: Model, theta2: number, open: boolean, omega2: number, alpha2: number): OraclePose | null {
-  const t2 = new D(theta2);
+  const t2 = ex(theta2);
   const c = theta4At(m, t2, open);
   if (c === null) return null;
   const plus = theta4At(m, t2.add(H), open);
@@ -167,8 +170,8 @@ function oracle(m: Model, theta2: number, open: boolean, omega2: number, alpha2:
     d1 = dp.sub(dm).div(H.mul(2));
     d2 = dp.add(dm).div(H.mul(H));
   }
-  const w2 = new D(omega2);
-  const a2 = new D(alpha2);
+  const w2 = ex(omega2);
+  const a2 = ex(alpha2);
   const pointMotion = (f: (x: NonNullable<typeof c>) => V) => {
     const p0 = f(c);
     if (plus === null || minus === null) return { v: v(0, 0, 0), a: v(0, 0, 0) };
@@ -225,7 +228,7 @@ export function rssrOracle(
 export function closer(kind: 'spherical' | 'rssr', l: SphericalArcs | RSSRLengths): (theta2: number) => boolean {
   const m = kind === 'spherical' ? sphericalModel(l as SphericalArcs) : rssrModel(l as RSSRLengths);
   return (theta2) => {
-    const { P, Q, R } = m.pqr(m.A(new D(theta2)));
+    const { P, Q, R } = m.pqr(m.A(ex(theta2)));
     return !P.mul(P).add(Q.mul(Q)).sub(R.mul(R)).isNeg();
   };
 }
