@@ -365,6 +365,62 @@ test.describe('Spatial page', () => {
     await expect.poll(frames).toBeGreaterThan(f0);
   });
 
+  test('a held arrow key turns the view on the worker’s frames until it is released, or its repeats stop', async ({
+    page,
+  }) => {
+    await openSpatial(page, 'page=3d');
+    const canvas = page.getByTestId('spatial-canvas');
+    await expect(page.locator('.spatial-view')).toHaveAttribute('data-state', 'ready', { timeout: 20_000 });
+    await expect(canvas).toHaveAttribute('data-route', 'worker');
+    const host = page.locator('.spatial-canvas-host');
+    await host.focus();
+    const frames = async () => Number(await canvas.getAttribute('data-frames'));
+    const key = (type: 'keydown' | 'keyup', repeat: boolean) =>
+      host.evaluate(
+        (h, [t, r]) =>
+          h.dispatchEvent(new KeyboardEvent(t, { key: 'ArrowRight', code: 'ArrowRight', repeat: r, bubbles: true })),
+        [type, repeat] as const,
+      );
+    // True once the view has drawn nothing over 60 of the page's animation frames (the rest frame after a move included).
+    const still = () =>
+      canvas.evaluate(
+        (c: HTMLCanvasElement) =>
+          new Promise<boolean>((done) => {
+            let last = c.dataset.frames;
+            let quiet = 0;
+            const tick = () => {
+              quiet = c.dataset.frames === last ? quiet + 1 : 0;
+              last = c.dataset.frames;
+              if (quiet >= 60) done(true);
+              else requestAnimationFrame(tick);
+            };
+            requestAnimationFrame(tick);
+          }),
+      );
+    await still();
+    // A press and one repeat, and then no event at all: only the worker's own clock can draw 20 more frames.
+    let f0 = await frames();
+    await key('keydown', false);
+    await key('keydown', true);
+    await expect.poll(frames, { timeout: 20_000 }).toBeGreaterThan(f0 + 20);
+    // One more repeat just before the release (as a held key sends them), so the hold's grace starts again there.
+    await key('keydown', true);
+    await key('keyup', false);
+    const released = await frames();
+    expect(await still()).toBe(true);
+    // The release stops it at once: the hold's 600 ms of grace would draw about 36 frames more at 60 Hz.
+    expect(await frames()).toBeLessThan(released + 20);
+    // A held key whose release never comes (focus taken away by the system) stops when its repeats stop.
+    f0 = await frames();
+    await key('keydown', false);
+    await key('keydown', true);
+    await expect.poll(frames, { timeout: 20_000 }).toBeGreaterThan(f0 + 20);
+    expect(await still()).toBe(true);
+    const f1 = await frames();
+    expect(await still()).toBe(true);
+    expect(await frames()).toBe(f1);
+  });
+
   test('without OffscreenCanvas the page draws the view itself: Play, the look and the PNG', async ({ page }) => {
     await page.addInitScript(() => {
       delete (globalThis as { OffscreenCanvas?: unknown }).OffscreenCanvas;

@@ -1,4 +1,6 @@
 /// <reference lib="webworker" />
+import { applyMove, moveByRates } from '../features/spatial/keyHold';
+import type { ViewRates } from '../features/spatial/keyHold';
 import { scenePose } from '../features/spatial/sceneData';
 import type { SceneLinkage, ScenePose } from '../features/spatial/sceneData';
 import { startPlayLoop } from '../features/spatial/playLoop';
@@ -11,9 +13,9 @@ import type { PlayAt, PlayRun, ViewReply, ViewRequest } from '../features/spatia
 
 declare const self: DedicatedWorkerGlobalScope;
 
-// The Spatial page's 3D view in a worker (issue 32): three.js on the OffscreenCanvas the page handed over, Play on this
-// worker's own animation frames (spatialPlay.ts), each drawn frame told to the page (its count, and Play's θ2 and
-// branch, which the page's panels follow).
+// The Spatial page's 3D view in a worker (issue 32): three.js on the OffscreenCanvas the page handed over, Play and a
+// held key's camera moves on this worker's own animation frames (spatialPlay.ts, keyHold.ts), each drawn frame told to
+// the page (its count, and Play's θ2 and branch, which the page's panels follow).
 let scene: SpatialScene | null = null;
 let linkage: SceneLinkage | null = null;
 /** The page's last pose, shown when Play stops. */
@@ -81,10 +83,28 @@ function setRun(next: PlayRun | null): void {
   lastTurn = null;
   if (afterTurn && play) return;
   play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
-  stopLoop ??= startPlayLoop(
-    { request: (f) => self.requestAnimationFrame(f), cancel: (h) => self.cancelAnimationFrame(h) },
-    tick,
-  );
+  stopLoop ??= startPlayLoop(frameCalls, tick);
+}
+
+const frameCalls = {
+  request: (f: (nowMs: number) => void) => self.requestAnimationFrame(f),
+  cancel: (h: number) => self.cancelAnimationFrame(h),
+};
+
+/** The held keys' speeds while any is held, and the stop of the loop that moves the camera by them each frame. */
+let holdRates: ViewRates | null = null;
+let stopHold: (() => void) | null = null;
+
+function setHold(rates: ViewRates | null): void {
+  holdRates = rates;
+  if (!rates) {
+    stopHold?.();
+    stopHold = null;
+    return;
+  }
+  stopHold ??= startPlayLoop(frameCalls, (dt) => {
+    if (scene && holdRates) moveByRates(scene, holdRates, dt);
+  });
 }
 
 async function handle(m: ViewRequest): Promise<void> {
@@ -123,14 +143,12 @@ async function handle(m: ViewRequest): Promise<void> {
     case 'projection':
       scene.setProjection(m.projection);
       break;
-    case 'move': {
-      const v = m.move;
-      if (v.op === 'orbit') scene.orbitBy(v.dAzimuth, v.dElevation);
-      else if (v.op === 'zoom') scene.zoomBy(v.factor);
-      else if (v.op === 'pan') scene.panBy(v.dx, v.dy);
-      else scene.resetView();
+    case 'move':
+      applyMove(scene, m.move);
       break;
-    }
+    case 'hold':
+      setHold(m.rates);
+      break;
     case 'play':
       setRun(m.run);
       break;

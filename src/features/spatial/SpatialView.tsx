@@ -1,7 +1,7 @@
 import { useEffect, useEffectEvent, useRef, useState } from 'react';
 import type { KeyboardEvent, PointerEvent, RefObject } from 'react';
 import { Segmented } from '../../shared/ui/Segmented';
-import { degToRad } from '../../solver';
+import { HOLD_TIMEOUT_MS, KeyHold, ZOOM_STEP, applyMove } from './keyHold';
 import { createWorkerScene } from './sceneClient';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import type { SpatialMessages } from './spatialMessages';
@@ -30,11 +30,6 @@ export interface SpatialViewProps {
 
 /** Where the view is: its code loading, drawing, or without WebGL (the fallback message). */
 export type ViewStatus = 'loading' | 'ready' | 'no-webgl';
-
-/** Key step of the view: 5° of orbit, 10 % of the height of pan, 1.2× zoom. */
-const ORBIT_STEP = degToRad(5);
-const PAN_STEP = 0.1;
-const ZOOM_STEP = 1.2;
 
 /** The scene on the page's thread: three.js's chunk loads here, on this page only. */
 async function mainThreadScene(canvas: HTMLCanvasElement, rendererName: string | null): Promise<SpatialScene> {
@@ -135,12 +130,7 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, on
   const apply = (moves: readonly ViewMove[]) => {
     const scene = sceneRef.current;
     if (!scene) return;
-    for (const m of moves) {
-      if (m.op === 'orbit') scene.orbitBy(m.dAzimuth, m.dElevation);
-      else if (m.op === 'zoom') scene.zoomBy(m.factor);
-      else if (m.op === 'pan') scene.panBy(m.dx, m.dy);
-      else scene.resetView();
-    }
+    for (const m of moves) applyMove(scene, m);
   };
   const applyMoves = useEffectEvent(apply);
   useEffect(() => {
@@ -176,24 +166,32 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, on
     if (status === 'ready') sceneRef.current?.setProjection(projection);
   }, [status, projection, sceneRef]);
 
+  // Keys (keyHold.ts): a press steps the view; a held key, from its first repeat, moves it at a steady speed on the
+  // view's own frames where it has them (its worker), else by a step per repeat as the keys come.
+  const [keys] = useState(() => new KeyHold());
+  const holdTimer = useRef<ReturnType<typeof setTimeout> | undefined>(undefined);
+  const letGo = () => {
+    clearTimeout(holdTimer.current);
+    if (keys.clear()) sceneRef.current?.hold?.(null);
+  };
+  useEffect(() => () => clearTimeout(holdTimer.current), []);
   const onKeyDown = (e: KeyboardEvent<HTMLDivElement>) => {
     const scene = sceneRef.current;
     if (!scene) return;
-    const pan = e.shiftKey;
-    const keys: Record<string, () => void> = {
-      ArrowLeft: () => (pan ? scene.panBy(-PAN_STEP, 0) : scene.orbitBy(-ORBIT_STEP, 0)),
-      ArrowRight: () => (pan ? scene.panBy(PAN_STEP, 0) : scene.orbitBy(ORBIT_STEP, 0)),
-      ArrowUp: () => (pan ? scene.panBy(0, PAN_STEP) : scene.orbitBy(0, ORBIT_STEP)),
-      ArrowDown: () => (pan ? scene.panBy(0, -PAN_STEP) : scene.orbitBy(0, -ORBIT_STEP)),
-      '+': () => scene.zoomBy(ZOOM_STEP),
-      '=': () => scene.zoomBy(ZOOM_STEP),
-      '-': () => scene.zoomBy(1 / ZOOM_STEP),
-      '0': () => scene.resetView(),
-    };
-    const act = keys[e.key];
-    if (!act) return;
+    const k = keys.down(e.code || e.key, e.key, e.shiftKey, e.repeat && scene.hold !== undefined);
+    if (!k.handled) return;
     e.preventDefault();
-    act();
+    if (k.step) applyMove(scene, k.step);
+    if (k.changed) scene.hold?.(keys.rates());
+    if (keys.size > 0) {
+      clearTimeout(holdTimer.current);
+      holdTimer.current = setTimeout(letGo, HOLD_TIMEOUT_MS);
+    }
+  };
+  const onKeyUp = (e: KeyboardEvent<HTMLDivElement>) => {
+    if (!keys.up(e.code || e.key)) return;
+    sceneRef.current?.hold?.(keys.rates());
+    if (keys.size === 0) clearTimeout(holdTimer.current);
   };
 
   return (
@@ -212,6 +210,8 @@ export function SpatialView({ linkage, pose, sm, sceneRef, warning, onStatus, on
           aria-label={sm.viewLabel}
           aria-describedby="spatial-view-hint"
           onKeyDown={onKeyDown}
+          onKeyUp={onKeyUp}
+          onBlur={letGo}
           onPointerDown={onPointerDown}
           onPointerMove={onPointerMove}
           onPointerUp={onPointerUp}

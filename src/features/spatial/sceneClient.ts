@@ -61,6 +61,7 @@ function workerScene(
       }),
     frames: () => frames,
     play: (run: PlayRun | null) => post({ type: 'play', run }),
+    hold: (rates) => post({ type: 'hold', rates }),
     dispose() {
       worker.terminate();
       for (const p of pngs.values()) p.reject(new Error('the 3D view closed'));

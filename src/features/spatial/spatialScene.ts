@@ -46,6 +46,7 @@ import { createFixedLayer } from './fixedLayer';
 import type { FixedLayerParts } from './fixedLayer';
 import { planFixedLayer } from './fixedLayerPlan';
 import type { FixedLayerView } from './fixedLayerPlan';
+import type { ViewRates } from './keyHold';
 import type { PlayRun } from './viewProtocol';
 
 /** How the 3D view projects: perspective (default) or orthographic. */
@@ -77,6 +78,11 @@ export interface SpatialScene {
    * (again with each new run), or stops it (null; the view then shows the last pose set). Absent: the page plays.
    */
   play?(run: PlayRun | null): void;
+  /**
+   * Only where the view has its own clock (its worker): moves the camera at these speeds on each of its frames until
+   * called again (null: still). Absent: the page steps the view at each of a held key's repeats.
+   */
+  hold?(rates: ViewRates | null): void;
   dispose(): void;
 }
 

@@ -1,5 +1,6 @@
 import type { SpatialBranchName } from '../../shared/state/slices/spatialSlice';
 import type { SpatialModel } from '../../spatial';
+import type { ViewRates } from './keyHold';
 import type { RenderQuality } from './renderQuality';
 import type { SceneLinkage, ScenePose } from './sceneData';
 import type { Projection } from './spatialScene';
@@ -22,8 +23,8 @@ export type ViewMove =
 
 /**
  * The page's requests to the 3D view's worker (spatialScene.worker.ts), keyed on type. The worker draws on the canvas
- * handed over in init, runs Play on its own animation frames while a run is set, and holds the page's last pose for
- * when Play stops.
+ * handed over in init, runs Play on its own animation frames while a run is set, moves the camera on them while keys
+ * are held (hold: their speeds, null when none is), and holds the page's last pose for when Play stops.
  */
 export type ViewRequest =
   | { type: 'init'; canvas: OffscreenCanvas; rendererName: string | null; devicePixelRatio: number }
@@ -33,6 +34,7 @@ export type ViewRequest =
   | { type: 'projection'; projection: Projection }
   | { type: 'move'; move: ViewMove }
   | { type: 'play'; run: PlayRun | null }
+  | { type: 'hold'; rates: ViewRates | null }
   | { type: 'png'; id: number; scale: number };
 
 /** Where the worker's Play is after a frame: θ2 (degrees), the branch, and whether it turned at a limit on this frame. */
