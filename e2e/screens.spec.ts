@@ -140,6 +140,37 @@ for (const size of [
   });
 }
 
+test('a desktop from 1101 to 1440 px wide keeps the top bar in one row, in both languages, on every page', async ({
+  browser,
+}) => {
+  // Two rows at a laptop's 1280 px took 31 px from the simulator's canvas (DesignBar.css, layout.css).
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  const oneRow: string[] = [];
+  for (const lang of ['en', 'zh-TW']) {
+    for (const query of ['', 'page=lab&', 'page=syn&', 'page=mech&', 'page=3d&']) {
+      await page.goto(`./?${query}lang=${lang}`);
+      const bar = page.locator('.topbar');
+      await expect(page.locator('.page-tab.active')).toBeVisible();
+      for (const width of [1101, 1179, 1180, 1280, 1365, 1366, 1440]) {
+        await page.setViewportSize({ width, height: 800 });
+        // The bar's children share one row: none starts below the first's bottom.
+        const rows = await bar.evaluate((b) => {
+          const boxes = [...b.children]
+            .filter((c) => !['absolute', 'fixed'].includes(getComputedStyle(c).position))
+            .map((c) => c.getBoundingClientRect())
+            .filter((r) => r.width > 0 && r.height > 0);
+          const firstBottom = Math.min(...boxes.map((r) => r.bottom));
+          return boxes.length > 0 && boxes.every((r) => r.top < firstBottom - 1) ? 1 : 2;
+        });
+        if (rows !== 1) oneRow.push(`${lang} ${query || 'simulator'} ${width}px`);
+      }
+    }
+  }
+  expect(oneRow).toEqual([]);
+  await context.close();
+});
+
 const HOST = `${ORIGIN}/e2e-course/screens.html`;
 // The default embed (controls and plots), as the app's "Copy embed code" makes it, with two lengths locked.
 const EMBED_SRC = `${ORIGIN}/embed.html?r1=6&r2=2&r3=5&r4=5&t2=45&panels=controls,plots&lock=r1,r4`;
