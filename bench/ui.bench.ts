@@ -299,19 +299,16 @@ async function measureDrag(
         // it at each commit, and counting those made their drags look quicker than they were). A drag the page began
         // and the stage took over (the page found slow mid-drag) is the page's until the stage's first frame: counting
         // no page draw at all then gave the inputs before the switch the wait for that frame (p95 of 0.3 to 1.8 s).
+        const coveredFrom = () => (b.stage.length > stageFrom ? b.stage[stageFrom].t : Number.POSITIVE_INFINITY);
+        const pageDraws = () => b.draws.slice(drawsFrom).filter((d) => d.t < coveredFrom());
         const shown = (): { t: number; v: number; end?: number }[] => {
           if (kind !== 'theta2') return b.plots.slice(plotsFrom).map((c) => ({ t: c.t, v: c.r3 }));
-          const stage = b.stage.slice(stageFrom);
-          const covered = stage.length > 0 ? stage[0].t : Number.POSITIVE_INFINITY;
           return [
-            ...b.draws
-              .slice(drawsFrom)
-              .filter((d) => d.t < covered)
-              .map((d) => {
-                const m = /θ2 (-?[\d.]+)°/.exec(d.label);
-                return { t: d.t, v: m ? Number(m[1]) : Number.NaN };
-              }),
-            ...stage.map((d) => ({ t: d.t, v: d.theta2, end: d.shown })),
+            ...pageDraws().map((d) => {
+              const m = /θ2 (-?[\d.]+)°/.exec(d.label);
+              return { t: d.t, v: m ? Number(m[1]) : Number.NaN };
+            }),
+            ...b.stage.slice(stageFrom).map((d) => ({ t: d.t, v: d.theta2, end: d.shown })),
           ].sort((x, y) => x.t - y.t);
         };
         const cycleShown = () => b.cycles.slice(cyclesFrom).map((c) => ({ t: c.t, v: c.r3 }));
@@ -338,10 +335,7 @@ async function measureDrag(
           exactlyShown: exactlyShown.length,
           cycleLatencies: kind === 'r3' ? latenciesTo(cycleShown()) : [],
           stageFrames: b.stage.length - stageFrom,
-          pageFrames:
-            kind === 'theta2'
-              ? b.draws.slice(drawsFrom).filter((d) => b.stage.length <= stageFrom || d.t < b.stage[stageFrom].t).length
-              : 0,
+          pageFrames: kind === 'theta2' ? pageDraws().length : 0,
         };
       },
       { kind, steps: DRAG_STEPS },
@@ -480,7 +474,6 @@ async function measureNinePoint(browser: Browser, rate: number) {
   }
 }
 
-/** One spatial measure: frames the view drew per second of wall time, and the page thread's own work per drawn frame. */
 /** The Spatial page's stretches: Play, orbit by a key event each frame, orbit by a held key (repeats at 30/s). */
 const SPATIAL_STRETCHES = ['play', 'orbit', 'hold'] as const;
 type SpatialStretch = (typeof SPATIAL_STRETCHES)[number];
@@ -490,6 +483,7 @@ const SPATIAL_LABELS: Record<SpatialStretch, string> = {
   hold: 'orbit by a held key (repeats 30/s)',
 };
 
+/** One spatial measure: frames the view drew per second of wall time, and the page thread's own work per drawn frame. */
 interface SpatialFigures {
   fps: number;
   /** CDP Performance.getMetrics: ScriptDuration (JS) and TaskDuration (every task of the page thread) per frame, ms. */

@@ -55,6 +55,12 @@ function tell(): void {
   if (playAt) playAt = { ...playAt, turned: false };
 }
 
+/** The worker's animation frames, for the loops of Play and of a held key (playLoop.ts). */
+const frameCalls = {
+  request: (f: (nowMs: number) => void) => self.requestAnimationFrame(f),
+  cancel: (h: number) => self.cancelAnimationFrame(h),
+};
+
 /** One frame of Play (dt seconds since the last): the next pose, drawn in the next animation frame (playLoop.ts). */
 function tick(dt: number): void {
   if (!run || !play || !scene || !linkage) return;
@@ -85,11 +91,6 @@ function setRun(next: PlayRun | null): void {
   play = { theta2Deg: next.theta2Deg, branch: next.branch, direction: play?.direction ?? 1 };
   stopLoop ??= startPlayLoop(frameCalls, tick);
 }
-
-const frameCalls = {
-  request: (f: (nowMs: number) => void) => self.requestAnimationFrame(f),
-  cancel: (h: number) => self.cancelAnimationFrame(h),
-};
 
 /** The held keys' speeds while any is held, and the stop of the loop that moves the camera by them each frame. */
 let holdRates: ViewRates | null = null;
